@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency of crux from Debian packages.
+# Idempotent: packages already present are skipped, so both README commands can call it.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libeigen3-dev liburdfdom-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
+  libfmt-dev libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
+  # Independent kinematics reference for tests and the benchmark peer.
+  liborocos-kdl-dev libkdl-parser-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "setup: missing packages (${missing[*]}); run this script as root" >&2
+  exit 1
+fi
+
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,89 @@
+#pragma once
+// The immutable kinematic model of the virtual human (paper, section III-A):
+// a translating root body (e0, no rotation) and 32 revolute joints, with four grasp
+// points. Loaded once from URDF and shared read-only by every thread; the mutable
+// workspace is BodyData.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace crux {
+
+// G = [e0, q]: 3 root translations then the revolute angles (paper, section III-A).
+inline constexpr int kRootDof = 3;
+inline constexpr int kRevoluteDof = 32;
+inline constexpr int kConfigurationDof = kRootDof + kRevoluteDof;
+using Posture = Eigen::Matrix<double, kConfigurationDof, 1>;
+
+// Operational points E = (e0, e1, e2, e3, e4): root, then the limbs in the order of a
+// hold configuration (right hand, left hand, right foot, left foot).
+inline constexpr int kLimbCount = 4;
+inline constexpr int kOperationalPointCount = 1 + kLimbCount;
+enum class Limb : int { RightHand = 0, LeftHand = 1, RightFoot = 2, LeftFoot = 3 };
+const char* limb_name(Limb limb);
+
+// The URDF frames that stand for the grasp points; another humanoid is mapped onto
+// crux by naming its own frames here.
+struct GraspFrameNames {
+  std::array<std::string, kLimbCount> frames{"right_palm", "left_palm", "right_foot_ball",
+                                             "left_foot_ball"};
+};
+
+struct BodyJoint {
+  std::string name;
+  int parent = -1;                 // index into BodyModel::joints, -1 for the world
+  Eigen::Matrix3d origin_rotation;  // joint frame in the parent joint's frame
+  Eigen::Vector3d origin_translation;
+  Eigen::Vector3d axis;            // unit, in the joint frame
+  bool prismatic = false;
+  double lower = 0.0, upper = 0.0;  // radians or metres
+  double mass = 0.0;               // of the links rigidly attached after this joint
+  Eigen::Vector3d centre_of_mass_local = Eigen::Vector3d::Zero();  // in the joint frame
+};
+
+// A fixed frame, expressed in the frame of the moving joint that carries it.
+struct AttachedPoint {
+  int joint = -1;
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+};
+
+struct BodyModel {
+  std::string source;  // the file it was loaded from, for messages
+  std::string name;
+  // Topological order (every parent before its children); index i is coordinate i of
+  // G, so joints 0..2 are the root translations along x, y, z.
+  std::vector<BodyJoint> joints;
+  std::array<AttachedPoint, kLimbCount> grasp_points;
+  std::array<std::string, kLimbCount> grasp_frame_names;
+  // For each operational point, the coordinates whose motion moves it; Jacobian
+  // columns outside this list are always zero.
+  std::array<std::vector<int>, kOperationalPointCount> chains;
+  Posture lower_limits, upper_limits;  // root limits are +-infinity: the root is free
+  double total_mass = 0.0;
+  // Measured on the zero (natural standing) posture with the root at the origin.
+  double root_height_above_soles = 0.0;  // used by the root heuristic H(C4)
+  double stature = 0.0;                  // top of the head above the soles, if framed
+  std::string head_top_frame = "head_top";
+};
+
+// Loads and validates a URDF. Throws InputError("<path>", "<problem>") on any problem:
+// unreadable file or XML, a root that is not 3 prismatic joints along x, y, z, a joint
+// count other than 32 revolute, a joint without limits, an unsupported joint type, or a
+// missing grasp frame.
+BodyModel load_body_model(const std::string& urdf_path, const GraspFrameNames& frames = {});
+BodyModel load_body_model_from_string(const std::string& urdf_xml, const std::string& source,
+                                      const GraspFrameNames& frames = {});
+
+// The repository's 1.70 m human (models/crux_human.urdf), located next to the binary or
+// through CRUX_MODEL_DIR.
+std::string default_body_model_path();
+
+// The natural standing posture (all joint angles 0) with the root at `root`.
+Posture standing_posture(const Eigen::Vector3d& root);
+
+bool within_limits(const BodyModel& model, const Posture& g);
+
+}  // namespace crux

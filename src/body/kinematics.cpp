@@ -1,0 +1,91 @@
+#include "body/kinematics.hpp"
+
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+namespace crux {
+
+BodyData::BodyData(const BodyModel& model) : placements(model.joints.size()) {
+  for (auto& p : points) p.setZero();
+  for (auto& j : jacobians) j.setZero();
+}
+
+namespace {
+
+// Rotation by `angle` about the unit vector `axis` (Rodrigues' formula).
+Eigen::Matrix3d axis_rotation(const Eigen::Vector3d& axis, double angle) {
+  const double s = std::sin(angle);
+  const double c = std::cos(angle);
+  const double t = 1.0 - c;
+  const double x = axis.x(), y = axis.y(), z = axis.z();
+  Eigen::Matrix3d r;
+  r << t * x * x + c, t * x * y - s * z, t * x * z + s * y,  //
+      t * x * y + s * z, t * y * y + c, t * y * z - s * x,   //
+      t * x * z - s * y, t * y * z + s * x, t * z * z + c;
+  return r;
+}
+
+}  // namespace
+
+void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g) {
+  const int n = static_cast<int>(model.joints.size());
+  for (int i = 0; i < n; ++i) {
+    const BodyJoint& joint = model.joints[i];
+    JointPlacement& out = data.placements[i];
+    Eigen::Matrix3d frame;
+    if (joint.parent < 0) {
+      frame = joint.origin_rotation;
+      out.origin = joint.origin_translation;
+    } else {
+      const JointPlacement& parent = data.placements[joint.parent];
+      frame.noalias() = parent.rotation * joint.origin_rotation;
+      out.origin = parent.origin;
+      out.origin.noalias() += parent.rotation * joint.origin_translation;
+    }
+    out.axis.noalias() = frame * joint.axis;
+    if (joint.prismatic) {
+      out.rotation = frame;
+      out.origin += g[i] * out.axis;
+    } else {
+      out.rotation.noalias() = frame * axis_rotation(joint.axis, g[i]);
+    }
+  }
+  data.points[0] = data.placements[kRootDof - 1].origin;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const AttachedPoint& grasp = model.grasp_points[limb];
+    const JointPlacement& carrier = data.placements[grasp.joint];
+    data.points[1 + limb] = carrier.origin;
+    data.points[1 + limb].noalias() += carrier.rotation * grasp.offset;
+  }
+}
+
+void operational_jacobians(const BodyModel& model, BodyData& data) {
+  for (int k = 0; k < kOperationalPointCount; ++k) {
+    const Eigen::Vector3d& point = data.points[k];
+    OperationalJacobian& jacobian = data.jacobians[k];
+    for (const int i : model.chains[k]) {
+      const JointPlacement& joint = data.placements[i];
+      if (model.joints[i].prismatic) {
+        jacobian.col(i) = joint.axis;
+      } else {
+        jacobian.col(i) = joint.axis.cross(point - joint.origin);
+      }
+    }
+  }
+}
+
+const Eigen::Vector3d& centre_of_mass(const BodyModel& model, BodyData& data) {
+  Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+  const int n = static_cast<int>(model.joints.size());
+  for (int i = 0; i < n; ++i) {
+    const BodyJoint& joint = model.joints[i];
+    if (joint.mass == 0.0) continue;
+    const JointPlacement& placement = data.placements[i];
+    weighted += joint.mass * (placement.origin + placement.rotation * joint.centre_of_mass_local);
+  }
+  data.centre_of_mass = weighted / model.total_mass;
+  return data.centre_of_mass;
+}
+
+}  // namespace crux

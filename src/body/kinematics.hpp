@@ -1,0 +1,20 @@
+#pragma once
+// Forward kinematics, operational-point Jacobians and the centre of mass, as free
+// functions over (model, data): none allocates.
+
+#include "body/body_data.hpp"
+#include "body/body_model.hpp"
+
+namespace crux {
+
+// Places every joint frame and the operational points e0..e4 for posture g.
+void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g);
+
+// The five 3 x 35 Jacobians d e_i / d G at the posture of the last forward_kinematics.
+void operational_jacobians(const BodyModel& model, BodyData& data);
+
+// Whole-body centre of mass at the posture of the last forward_kinematics; also stored
+// in data.centre_of_mass.
+const Eigen::Vector3d& centre_of_mass(const BodyModel& model, BodyData& data);
+
+}  // namespace crux

@@ -1,0 +1,219 @@
+// crux ik and crux ik-compare: one reaching query, and the agreement of the two solvers.
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "body/kinematics.hpp"
+#include "cli/commands.hpp"
+#include "cli/progress_bar.hpp"
+#include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
+#include "ik/ik_solver.hpp"
+#include "ik/reach_queries.hpp"
+#include "ik/root_target.hpp"
+
+namespace crux::cli {
+
+namespace {
+
+struct IkOptions {
+  std::string urdf = default_body_model_path();
+  std::string solver = "fast";
+  IkSettings settings;
+  RootTargetParameters root;
+  bool json = false;
+};
+
+void add_ik_options(CLI::App* command, IkOptions& o) {
+  command->add_option("--urdf", o.urdf, "URDF file of the body")->capture_default_str();
+  command->add_option("--alpha", o.settings.paper.step_size, "Step size of the paper's gradient descent")
+      ->capture_default_str();
+  command->add_option("--time-step", o.settings.paper.time_step_s, "Simulated seconds per IK iteration")
+      ->capture_default_str();
+  command->add_option("--timeout", o.settings.paper.timeout_s, "Delta_t: simulated seconds before giving up")
+      ->capture_default_str();
+  command->add_option("--fast-max-iterations", o.settings.fast.max_iterations, "Iteration cap of the fast solver")
+      ->capture_default_str();
+  command->add_option("--grasp-radius", o.settings.tolerances.grasp_radius, "Radius of the grasp spheres (m)")
+      ->capture_default_str();
+  command->add_option("--root-tolerance", o.settings.tolerances.root_radius, "Radius of the root tolerance sphere (m)")
+      ->capture_default_str();
+  command->add_option("--wall-distance", o.root.distance_from_wall, "x of the root target H(C4) (m)")
+      ->capture_default_str();
+  command->add_flag("--json", o.json, "Print JSON instead of text");
+}
+
+void finish_settings(IkOptions& o, bool solver_used) {
+  o.settings.fast.time_step_s = o.settings.paper.time_step_s;
+  if (solver_used) {
+    const auto kind = parse_ik_solver(o.solver);
+    if (!kind) throw InputError("--solver", fmt::format("unknown solver '{}' (expected paper or fast)", o.solver));
+    o.settings.solver = *kind;
+  }
+  if (!(o.settings.paper.step_size > 0) || !(o.settings.paper.time_step_s > 0) || !(o.settings.paper.timeout_s > 0)) {
+    throw InputError("options", "--alpha, --time-step and --timeout must be positive");
+  }
+}
+
+Eigen::Vector3d parse_wall_point(const std::string& text, const char* flag) {
+  std::istringstream in(text);
+  double y = 0, z = 0;
+  char comma = 0;
+  if (!(in >> y >> comma >> z) || comma != ',' || !(in >> std::ws).eof() || !std::isfinite(y) || !std::isfinite(z)) {
+    throw InputError(flag, fmt::format("expected Y,Z in metres, got '{}'", text));
+  }
+  return {0.0, y, z};
+}
+
+nlohmann::ordered_json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+struct IkCommand {
+  IkOptions options;
+  std::array<std::string, kLimbCount> holds;
+  int path_every = 10;
+  std::string path_out;
+
+  void run() {
+    finish_settings(options, true);
+    const BodyModel model = load_body_model(options.urdf);
+    static const char* const flags[kLimbCount] = {"--rh", "--lh", "--rf", "--lf"};
+    ReachTarget target;
+    for (int limb = 0; limb < kLimbCount; ++limb) target.hold_centres[limb] = parse_wall_point(holds[limb], flags[limb]);
+    target.root = root_target(model, target.hold_centres, options.root);
+    BodyData data(model);
+    std::vector<Posture> path;
+    const PathRecorder recorder{path_out.empty() ? nullptr : &path, path_every};
+    const IkResult result = solve_ik(model, data, standing_posture(target.root), target, options.settings, recorder);
+    if (!path_out.empty()) write_path(model, path);
+    forward_kinematics(model, data, result.posture);
+    if (options.json) {
+      nlohmann::ordered_json out;
+      out["solver"] = ik_solver_name(options.settings.solver);
+      out["reached"] = result.reached;
+      out["iterations"] = result.iterations;
+      out["simulated_time_s"] = result.simulated_time_s;
+      out["residual_m"] = result.residual_m;
+      out["root_target"] = vector_json(target.root);
+      out["root"] = vector_json(data.points[0]);
+      out["grasp_points"] = nlohmann::json::array();
+      for (int limb = 0; limb < kLimbCount; ++limb) out["grasp_points"].push_back(vector_json(data.points[1 + limb]));
+      out["centre_of_mass"] = vector_json(centre_of_mass(model, data));
+      out["posture"] = std::vector<double>(result.posture.data(), result.posture.data() + kConfigurationDof);
+      std::cout << out.dump(2) << '\n';
+      return;
+    }
+    std::cout << fmt::format("solver {}: {} after {} iterations ({:.2f} s simulated), residual {:.4f} m\n",
+                             ik_solver_name(options.settings.solver), result.reached ? "reached" : "NOT reached",
+                             result.iterations, result.simulated_time_s, result.residual_m)
+              << fmt::format("root target H(C4) = ({:.3f}, {:.3f}, {:.3f}); root at ({:.3f}, {:.3f}, {:.3f})\n",
+                             target.root.x(), target.root.y(), target.root.z(), data.points[0].x(),
+                             data.points[0].y(), data.points[0].z());
+    if (!result.reached) std::cout << "returned the initial posture G_init, as Algorithm 1 does on time-out\n";
+  }
+
+  void write_path(const BodyModel& model, const std::vector<Posture>& path) const {
+    std::ostringstream csv;
+    csv << "sample";
+    for (const BodyJoint& j : model.joints) csv << ',' << j.name;
+    csv << '\n';
+    for (std::size_t n = 0; n < path.size(); ++n) {
+      csv << n;
+      for (int i = 0; i < kConfigurationDof; ++i) csv << ',' << fmt::format("{:.17g}", path[n][i]);
+      csv << '\n';
+    }
+    write_file_atomically(path_out, csv.str());
+  }
+};
+
+struct IkCompareCommand {
+  IkOptions options;
+  int queries = 2000;
+  std::uint64_t seed = 1;
+
+  void run() {
+    finish_settings(options, false);
+    if (queries <= 0) throw InputError("--queries", "must be positive");
+    const BodyModel model = load_body_model(options.urdf);
+    IkSettings paper = options.settings, fast = options.settings;
+    paper.solver = IkSolverKind::Paper;
+    fast.solver = IkSolverKind::Fast;
+    ReachQuerySettings query_settings;
+    query_settings.root = options.root;
+    const auto batch = climbing_reach_queries(model, fast, queries, seed, query_settings);
+    BodyData data(model);
+    int agree = 0, paper_reached = 0, fast_reached = 0, far_queries = 0;
+    double paper_seconds = 0, fast_seconds = 0;
+    ProgressBar progress("ik-compare", queries);
+    for (int n = 0; n < queries; ++n) {
+      const ReachQuery& q = batch[n];
+      const auto t0 = std::chrono::steady_clock::now();
+      const bool by_paper = solve_ik(model, data, q.start, q.target, paper).reached;
+      const auto t1 = std::chrono::steady_clock::now();
+      const bool by_fast = solve_ik(model, data, q.start, q.target, fast).reached;
+      const auto t2 = std::chrono::steady_clock::now();
+      paper_seconds += std::chrono::duration<double>(t1 - t0).count();
+      fast_seconds += std::chrono::duration<double>(t2 - t1).count();
+      agree += by_paper == by_fast;
+      paper_reached += by_paper;
+      fast_reached += by_fast;
+      far_queries += q.far_move;
+      progress.update(n + 1);
+    }
+    progress.finish();
+    const double agreement = static_cast<double>(agree) / queries;
+    if (options.json) {
+      nlohmann::ordered_json out;
+      out["queries"] = queries;
+      out["seed"] = seed;
+      out["agreement"] = agreement;
+      out["paper_reached"] = paper_reached;
+      out["fast_reached"] = fast_reached;
+      out["far_queries"] = far_queries;
+      out["paper_mean_us"] = 1e6 * paper_seconds / queries;
+      out["fast_mean_us"] = 1e6 * fast_seconds / queries;
+      std::cout << out.dump(2) << '\n';
+      return;
+    }
+    std::cout << fmt::format("{} climbing-like queries (seed {}, {} of them clearly unreachable)\n", queries, seed,
+                             far_queries)
+              << fmt::format("paper solver reached {} ({:.1f} %), fast solver reached {} ({:.1f} %)\n", paper_reached,
+                             100.0 * paper_reached / queries, fast_reached, 100.0 * fast_reached / queries)
+              << fmt::format("verdicts agree on {} queries: {:.2f} %\n", agree, 100.0 * agreement)
+              << fmt::format("mean time per query: paper {:.1f} us, fast {:.1f} us (wall clock, this run)\n",
+                             1e6 * paper_seconds / queries, 1e6 * fast_seconds / queries);
+  }
+};
+
+}  // namespace
+
+void add_ik_commands(CLI::App& app) {
+  auto ik = std::make_shared<IkCommand>();
+  auto* command = app.add_subcommand(
+      "ik", "Solve one reaching query: four hold centres on the wall plane, root target H(C4), from standing");
+  static const char* const limb_help[kLimbCount] = {"Right hand hold centre Y,Z (m)", "Left hand hold centre Y,Z (m)",
+                                                    "Right foot hold centre Y,Z (m)", "Left foot hold centre Y,Z (m)"};
+  static const char* const flags[kLimbCount] = {"--rh", "--lh", "--rf", "--lf"};
+  for (int limb = 0; limb < kLimbCount; ++limb) command->add_option(flags[limb], ik->holds[limb], limb_help[limb])->required();
+  command->add_option("--solver", ik->options.solver, "IK solver: paper (Algorithm 1) or fast")
+      ->capture_default_str();
+  add_ik_options(command, ik->options);
+  command->add_option("--path-out", ik->path_out, "Write the posture path (CSV, one sample per row) to this file");
+  command->add_option("--path-every", ik->path_every, "Sample the path every k iterations")->capture_default_str();
+  command->callback([ik] { ik->run(); });
+
+  auto compare = std::make_shared<IkCompareCommand>();
+  auto* compare_command = app.add_subcommand(
+      "ik-compare", "Run both solvers on climbing-like queries and measure how often their verdicts agree");
+  compare_command->add_option("--queries", compare->queries, "Number of queries")->capture_default_str();
+  compare_command->add_option("--seed", compare->seed, "Seed of the query generator")->capture_default_str();
+  add_ik_options(compare_command, compare->options);
+  compare_command->callback([compare] { compare->run(); });
+}
+
+}  // namespace crux::cli

@@ -1,0 +1,12 @@
+#pragma once
+// Each subcommand registers itself on the application; its callback throws InputError
+// for bad input, which main turns into one line on stderr and exit code 2.
+
+#include <CLI/CLI.hpp>
+
+namespace crux::cli {
+
+void add_model_command(CLI::App& app);
+void add_ik_commands(CLI::App& app);
+
+}  // namespace crux::cli

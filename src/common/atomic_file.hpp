@@ -1,0 +1,14 @@
+#pragma once
+// Result files are written to a temporary sibling and renamed into place, so an
+// interrupted run never leaves a half-written file under the final name.
+
+#include <filesystem>
+#include <string_view>
+
+namespace crux {
+
+// Writes `contents` to `path` atomically (same-directory temporary, fsync, rename).
+// Throws InputError naming `path` when the directory is missing or not writable.
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
+
+}  // namespace crux

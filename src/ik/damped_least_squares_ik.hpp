@@ -1,0 +1,30 @@
+#pragma once
+// crux's fast IK: Levenberg-Marquardt (adaptively damped least squares) on the same
+// cost f(E) as the paper's solver, with joint limits handled by an active set
+// (a joint at a limit and pushed past it is frozen for the step) and by projection.
+// Same inputs, outputs and termination test as Algorithm 1; it gives up early when
+// the cost stops decreasing, which is what makes unreachable queries cheap.
+
+#include "body/body_data.hpp"
+#include "ik/ik_result.hpp"
+#include "ik/reach_target.hpp"
+
+namespace crux {
+
+struct DampedLeastSquaresSettings {
+  double time_step_s = 0.01;  // simulated time charged per linearisation, as for Algorithm 1
+  int max_iterations = 100;
+  double initial_damping = 1e-2;  // lambda, in m^2
+  double min_damping = 1e-6;
+  double max_damping = 1e3;       // beyond this no step lowers f: a local minimum
+  // Stop when `stall_iterations` steps in a row each lower f by less than this share.
+  double stall_relative_decrease = 1e-3;
+  int stall_iterations = 3;
+};
+
+IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, const Posture& g_init,
+                                       const ReachTarget& target, const ReachTolerances& tolerances,
+                                       const DampedLeastSquaresSettings& settings,
+                                       const PathRecorder& recorder = {});
+
+}  // namespace crux

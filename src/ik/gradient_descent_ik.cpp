@@ -1,0 +1,61 @@
+#include "ik/gradient_descent_ik.hpp"
+
+#include <cmath>
+
+#include "body/kinematics.hpp"
+
+namespace crux {
+
+int GradientDescentSettings::max_iterations() const {
+  return static_cast<int>(std::floor(timeout_s / time_step_s + 1e-9));
+}
+
+namespace {
+
+// Gradient of f at the current posture: sum of J_i^T (e_i - e_i_des), column by column
+// over each operational point's chain only.
+void cost_gradient(const BodyModel& model, const BodyData& data, const ReachTarget& target, Posture& gradient) {
+  gradient.setZero();
+  for (int k = 0; k < kOperationalPointCount; ++k) {
+    const Eigen::Vector3d error = data.points[k] - (k == 0 ? target.root : target.hold_centres[k - 1]);
+    for (const int i : model.chains[k]) gradient[i] += data.jacobians[k].col(i).dot(error);
+  }
+}
+
+}  // namespace
+
+IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const Posture& g_init,
+                                   const ReachTarget& target, const ReachTolerances& tolerances,
+                                   const GradientDescentSettings& settings, const PathRecorder& recorder) {
+  const int max_iterations = settings.max_iterations();
+  Posture g = g_init;
+  Posture gradient;
+  forward_kinematics(model, data, g);
+  recorder.start(g);
+  int iteration = 0;
+  bool reached = target_reached(data.points, target, tolerances);
+  while (!reached && iteration < max_iterations) {
+    ++iteration;
+    operational_jacobians(model, data);
+    cost_gradient(model, data, target, gradient);
+    for (int i = 0; i < kConfigurationDof; ++i) {
+      const double next = g[i] - settings.step_size * gradient[i];
+      // "Modify descent direction": a joint whose step would cross its limit stays put.
+      if (next >= model.lower_limits[i] && next <= model.upper_limits[i]) g[i] = next;
+    }
+    forward_kinematics(model, data, g);
+    recorder.sample(iteration, g);
+    reached = target_reached(data.points, target, tolerances);
+  }
+  recorder.finish(iteration, g);
+  IkResult result;
+  result.reached = reached;
+  result.iterations = iteration;
+  result.simulated_time_s = iteration * settings.time_step_s;
+  result.residual_m = grasp_residual(data.points, target);
+  result.posture = reached ? g : g_init;
+  if (!reached) forward_kinematics(model, data, g_init);  // data describes the returned posture
+  return result;
+}
+
+}  // namespace crux

@@ -1,0 +1,21 @@
+#include "ik/ik_solver.hpp"
+
+namespace crux {
+
+const char* ik_solver_name(IkSolverKind kind) { return kind == IkSolverKind::Paper ? "paper" : "fast"; }
+
+std::optional<IkSolverKind> parse_ik_solver(std::string_view name) {
+  if (name == "paper") return IkSolverKind::Paper;
+  if (name == "fast") return IkSolverKind::Fast;
+  return std::nullopt;
+}
+
+IkResult solve_ik(const BodyModel& model, BodyData& data, const Posture& g_init, const ReachTarget& target,
+                  const IkSettings& settings, const PathRecorder& recorder) {
+  if (settings.solver == IkSolverKind::Paper) {
+    return solve_ik_gradient_descent(model, data, g_init, target, settings.tolerances, settings.paper, recorder);
+  }
+  return solve_ik_damped_least_squares(model, data, g_init, target, settings.tolerances, settings.fast, recorder);
+}
+
+}  // namespace crux

@@ -1,0 +1,28 @@
+#pragma once
+// Run-time choice between the paper's gradient descent and crux's fast solver; both
+// share inputs, outputs and the termination test.
+
+#include <optional>
+#include <string_view>
+
+#include "ik/damped_least_squares_ik.hpp"
+#include "ik/gradient_descent_ik.hpp"
+
+namespace crux {
+
+enum class IkSolverKind { Paper, Fast };
+
+const char* ik_solver_name(IkSolverKind kind);
+std::optional<IkSolverKind> parse_ik_solver(std::string_view name);
+
+struct IkSettings {
+  IkSolverKind solver = IkSolverKind::Fast;
+  ReachTolerances tolerances;
+  GradientDescentSettings paper;
+  DampedLeastSquaresSettings fast;
+};
+
+IkResult solve_ik(const BodyModel& model, BodyData& data, const Posture& g_init, const ReachTarget& target,
+                  const IkSettings& settings, const PathRecorder& recorder = {});
+
+}  // namespace crux

@@ -1,0 +1,62 @@
+#include "ik/reach_queries.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "common/random.hpp"
+
+namespace crux {
+
+std::array<Eigen::Vector3d, kLimbCount> start_layout_holds() {
+  constexpr double tile_width = 0.3, tile_height = 0.5;
+  return {Eigen::Vector3d(0.0, 1 * tile_width, 3 * tile_height), Eigen::Vector3d(0.0, 3 * tile_width, 3 * tile_height),
+          Eigen::Vector3d(0.0, 1 * tile_width, 0.0), Eigen::Vector3d(0.0, 3 * tile_width, 0.0)};
+}
+
+Posture start_layout_posture(const BodyModel& model, const IkSettings& settings, const RootTargetParameters& root) {
+  ReachTarget target;
+  target.hold_centres = start_layout_holds();
+  target.root = root_target(model, target.hold_centres, root);
+  BodyData data(model);
+  const IkResult result = solve_ik(model, data, standing_posture(target.root), target, settings);
+  if (!result.reached) throw std::runtime_error("the start layout is not reachable from the standing posture");
+  return result.posture;
+}
+
+std::vector<ReachQuery> climbing_reach_queries(const BodyModel& model, const IkSettings& walk_settings, int count,
+                                               std::uint64_t seed, const ReachQuerySettings& settings) {
+  Random random(seed);
+  BodyData data(model);
+  const Posture home = start_layout_posture(model, walk_settings, settings.root);
+  const auto home_holds = start_layout_holds();
+  Posture posture = home;
+  auto holds = home_holds;
+  std::vector<ReachQuery> queries;
+  queries.reserve(count);
+  for (int n = 0; n < count; ++n) {
+    if (settings.restart_every > 0 && n % settings.restart_every == 0) {
+      posture = home;
+      holds = home_holds;
+    }
+    ReachQuery query;
+    query.start = posture;
+    query.moved_limb = static_cast<Limb>(random.below(kLimbCount));
+    query.far_move = random.uniform() < settings.far_share;
+    const double distance = query.far_move ? random.uniform(settings.far_move_min_m, settings.far_move_max_m)
+                                           : settings.max_move_m * std::sqrt(random.uniform());
+    const double angle = random.uniform(0.0, 2.0 * M_PI);
+    query.target.hold_centres = holds;
+    Eigen::Vector3d& moved = query.target.hold_centres[static_cast<int>(query.moved_limb)];
+    moved += Eigen::Vector3d(0.0, distance * std::cos(angle), distance * std::sin(angle));
+    query.target.root = root_target(model, query.target.hold_centres, settings.root);
+    const IkResult result = solve_ik(model, data, posture, query.target, walk_settings);
+    if (result.reached) {
+      posture = result.posture;
+      holds = query.target.hold_centres;
+    }
+    queries.push_back(query);
+  }
+  return queries;
+}
+
+}  // namespace crux

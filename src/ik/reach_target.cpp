@@ -1,0 +1,35 @@
+#include "ik/reach_target.hpp"
+
+#include <algorithm>
+
+namespace crux {
+
+double grasp_residual(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
+                      const ReachTarget& target) {
+  double worst = 0.0;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    worst = std::max(worst, (points[1 + limb] - target.hold_centres[limb]).norm());
+  }
+  return worst;
+}
+
+bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
+                    const ReachTarget& target, const ReachTolerances& tolerances) {
+  if ((points[0] - target.root).squaredNorm() > tolerances.root_radius * tolerances.root_radius) return false;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const double contact = tolerances.grasp_radius + target.hold_radii[limb];
+    if ((points[1 + limb] - target.hold_centres[limb]).squaredNorm() > contact * contact) return false;
+  }
+  return true;
+}
+
+double reach_cost(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
+                  const ReachTarget& target) {
+  double cost = 0.5 * (points[0] - target.root).squaredNorm();
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    cost += 0.5 * (points[1 + limb] - target.hold_centres[limb]).squaredNorm();
+  }
+  return cost;
+}
+
+}  // namespace crux

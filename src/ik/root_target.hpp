@@ -1,0 +1,21 @@
+#pragma once
+// The root target heuristic H(C4) (paper, III-B; spec item 8).
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "body/body_model.hpp"
+
+namespace crux {
+
+struct RootTargetParameters {
+  double distance_from_wall = 0.30;  // x of the root target, metres from the wall plane
+};
+
+// y: midway between the two foot holds; z: the lowest foot hold plus the root's height
+// above the soles when standing; x: `distance_from_wall`.
+Eigen::Vector3d root_target(const BodyModel& model, const std::array<Eigen::Vector3d, kLimbCount>& hold_centres,
+                            const RootTargetParameters& parameters = {});
+
+}  // namespace crux
