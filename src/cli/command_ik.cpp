@@ -1,6 +1,5 @@
 // crux ik and crux ik-compare: one reaching query, and the agreement of the two solvers.
 
-#include <chrono>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -16,6 +15,7 @@
 #include "common/input_error.hpp"
 #include "ik/ik_solver.hpp"
 #include "ik/reach_queries.hpp"
+#include "ik/solver_agreement.hpp"
 #include "ik/root_target.hpp"
 
 namespace crux::cli {
@@ -39,6 +39,15 @@ void add_ik_options(CLI::App* command, IkOptions& o) {
   command->add_option("--timeout", o.settings.paper.timeout_s, "Delta_t: simulated seconds before giving up")
       ->capture_default_str();
   command->add_option("--fast-max-iterations", o.settings.fast.max_iterations, "Iteration cap of the fast solver")
+      ->capture_default_str();
+  command->add_option("--fast-stall-decrease", o.settings.fast.stall_relative_decrease,
+                      "Fast solver gives up when f drops by less than this share per step...")
+      ->capture_default_str();
+  command->add_option("--fast-stall-iterations", o.settings.fast.stall_iterations,
+                      "...this many steps in a row")
+      ->capture_default_str();
+  command->add_option("--fast-aim", o.settings.fast.aim_fraction,
+                      "Fast solver aims at this share of each tolerance radius")
       ->capture_default_str();
   command->add_option("--grasp-radius", o.settings.tolerances.grasp_radius, "Radius of the grasp spheres (m)")
       ->capture_default_str();
@@ -135,58 +144,48 @@ struct IkCompareCommand {
   IkOptions options;
   int queries = 2000;
   std::uint64_t seed = 1;
+  std::string walk_solver = "paper";
 
   void run() {
     finish_settings(options, false);
     if (queries <= 0) throw InputError("--queries", "must be positive");
     const BodyModel model = load_body_model(options.urdf);
-    IkSettings paper = options.settings, fast = options.settings;
-    paper.solver = IkSolverKind::Paper;
-    fast.solver = IkSolverKind::Fast;
+    IkSettings walk = options.settings;
+    const auto walk_kind = parse_ik_solver(walk_solver);
+    if (!walk_kind) throw InputError("--walk-solver", fmt::format("unknown solver '{}' (expected paper or fast)", walk_solver));
+    walk.solver = *walk_kind;
     ReachQuerySettings query_settings;
     query_settings.root = options.root;
-    const auto batch = climbing_reach_queries(model, fast, queries, seed, query_settings);
-    BodyData data(model);
-    int agree = 0, paper_reached = 0, fast_reached = 0, far_queries = 0;
-    double paper_seconds = 0, fast_seconds = 0;
+    const auto batch = climbing_reach_queries(model, walk, queries, seed, query_settings);
     ProgressBar progress("ik-compare", queries);
-    for (int n = 0; n < queries; ++n) {
-      const ReachQuery& q = batch[n];
-      const auto t0 = std::chrono::steady_clock::now();
-      const bool by_paper = solve_ik(model, data, q.start, q.target, paper).reached;
-      const auto t1 = std::chrono::steady_clock::now();
-      const bool by_fast = solve_ik(model, data, q.start, q.target, fast).reached;
-      const auto t2 = std::chrono::steady_clock::now();
-      paper_seconds += std::chrono::duration<double>(t1 - t0).count();
-      fast_seconds += std::chrono::duration<double>(t2 - t1).count();
-      agree += by_paper == by_fast;
-      paper_reached += by_paper;
-      fast_reached += by_fast;
-      far_queries += q.far_move;
-      progress.update(n + 1);
-    }
+    const SolverAgreement a = compare_solvers(model, batch, options.settings, [&](int done) { progress.update(done); });
     progress.finish();
-    const double agreement = static_cast<double>(agree) / queries;
     if (options.json) {
       nlohmann::ordered_json out;
-      out["queries"] = queries;
+      out["queries"] = a.queries;
       out["seed"] = seed;
-      out["agreement"] = agreement;
-      out["paper_reached"] = paper_reached;
-      out["fast_reached"] = fast_reached;
-      out["far_queries"] = far_queries;
-      out["paper_mean_us"] = 1e6 * paper_seconds / queries;
-      out["fast_mean_us"] = 1e6 * fast_seconds / queries;
+      out["agreement"] = a.agreement();
+      out["paper_reached"] = a.paper_reached;
+      out["fast_reached"] = a.fast_reached;
+      out["only_paper_reached"] = a.only_paper_reached;
+      out["only_fast_reached"] = a.only_fast_reached;
+      out["far_queries"] = a.far_queries;
+      out["paper_mean_iterations"] = static_cast<double>(a.paper_iterations) / a.queries;
+      out["fast_mean_iterations"] = static_cast<double>(a.fast_iterations) / a.queries;
+      out["paper_mean_us"] = 1e6 * a.paper_seconds / a.queries;
+      out["fast_mean_us"] = 1e6 * a.fast_seconds / a.queries;
       std::cout << out.dump(2) << '\n';
       return;
     }
-    std::cout << fmt::format("{} climbing-like queries (seed {}, {} of them clearly unreachable)\n", queries, seed,
-                             far_queries)
-              << fmt::format("paper solver reached {} ({:.1f} %), fast solver reached {} ({:.1f} %)\n", paper_reached,
-                             100.0 * paper_reached / queries, fast_reached, 100.0 * fast_reached / queries)
-              << fmt::format("verdicts agree on {} queries: {:.2f} %\n", agree, 100.0 * agreement)
-              << fmt::format("mean time per query: paper {:.1f} us, fast {:.1f} us (wall clock, this run)\n",
-                             1e6 * paper_seconds / queries, 1e6 * fast_seconds / queries);
+    std::cout << fmt::format("{} climbing-like queries (seed {}, {} of them clearly unreachable)\n", a.queries, seed,
+                             a.far_queries)
+              << fmt::format("paper solver reached {} ({:.1f} %), fast solver reached {} ({:.1f} %)\n", a.paper_reached,
+                             100.0 * a.paper_reached / a.queries, a.fast_reached, 100.0 * a.fast_reached / a.queries)
+              << fmt::format("verdicts agree on {} queries: {:.2f} % (only paper reached {}, only fast reached {})\n",
+                             a.agree, 100.0 * a.agreement(), a.only_paper_reached, a.only_fast_reached)
+              << fmt::format("mean per query: paper {:.1f} iterations, {:.1f} us; fast {:.1f} iterations, {:.1f} us\n",
+                             static_cast<double>(a.paper_iterations) / a.queries, 1e6 * a.paper_seconds / a.queries,
+                             static_cast<double>(a.fast_iterations) / a.queries, 1e6 * a.fast_seconds / a.queries);
   }
 };
 
@@ -212,6 +211,9 @@ void add_ik_commands(CLI::App& app) {
       "ik-compare", "Run both solvers on climbing-like queries and measure how often their verdicts agree");
   compare_command->add_option("--queries", compare->queries, "Number of queries")->capture_default_str();
   compare_command->add_option("--seed", compare->seed, "Seed of the query generator")->capture_default_str();
+  compare_command->add_option("--walk-solver", compare->walk_solver,
+                              "Solver whose reached postures start the next queries of the climbing walk")
+      ->capture_default_str();
   add_ik_options(compare_command, compare->options);
   compare_command->callback([compare] { compare->run(); });
 }

@@ -13,10 +13,20 @@ using TaskJacobian = Eigen::Matrix<double, kTaskSize, kConfigurationDof>;
 using TaskVector = Eigen::Matrix<double, kTaskSize, 1>;
 using TaskMatrix = Eigen::Matrix<double, kTaskSize, kTaskSize>;
 
-void stack_task(const BodyData& data, const ReachTarget& target, TaskJacobian& jacobian, TaskVector& error) {
+// Each operational point aims at the nearest point of a sphere around its target whose
+// radius is `aim_fraction` of the termination test's radius: a point already inside
+// exerts no pull, so the solver seeks the feasible set that the termination test
+// accepts rather than the exact centres, where five conflicting pulls may balance just
+// outside it.
+void task_error(const BodyData& data, const ReachTarget& target, const ReachTolerances& tolerances,
+                double aim_fraction, TaskVector& error) {
   for (int k = 0; k < kOperationalPointCount; ++k) {
-    jacobian.middleRows<3>(3 * k) = data.jacobians[k];
-    error.segment<3>(3 * k) = data.points[k] - (k == 0 ? target.root : target.hold_centres[k - 1]);
+    const Eigen::Vector3d offset = data.points[k] - (k == 0 ? target.root : target.hold_centres[k - 1]);
+    const double radius =
+        aim_fraction * (k == 0 ? tolerances.root_radius : tolerances.grasp_radius + target.hold_radii[k - 1]);
+    const double distance = offset.norm();
+    error.segment<3>(3 * k) = distance > radius ? Eigen::Vector3d(offset * (1.0 - radius / distance))
+                                                : Eigen::Vector3d::Zero();
   }
 }
 
@@ -33,14 +43,15 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
 
   forward_kinematics(model, data, g);
   recorder.start(g);
-  double cost = reach_cost(data.points, target);
+  task_error(data, target, tolerances, settings.aim_fraction, error);
+  double cost = 0.5 * error.squaredNorm();
   double damping = settings.initial_damping;
   int iteration = 0, stalled = 0;
   bool reached = target_reached(data.points, target, tolerances);
   while (!reached && iteration < settings.max_iterations && stalled < settings.stall_iterations) {
     ++iteration;
     operational_jacobians(model, data);
-    stack_task(data, target, jacobian, error);
+    for (int k = 0; k < kOperationalPointCount; ++k) jacobian.middleRows<3>(3 * k) = data.jacobians[k];
     gradient.noalias() = jacobian.transpose() * error;
     // Active set: a joint at a limit whose descent direction points out of range is
     // frozen for this step, so the remaining joints absorb the motion.
@@ -53,6 +64,7 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
     normal.noalias() = jacobian * jacobian.transpose();
     bool improved = false;
     double trial_cost = cost;
+    TaskVector trial_error;
     while (damping <= settings.max_damping) {
       TaskMatrix damped = normal;
       damped.diagonal().array() += damping;
@@ -60,7 +72,8 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
       trial.noalias() = g - jacobian.transpose() * factor.solve(error);
       trial = trial.cwiseMax(model.lower_limits).cwiseMin(model.upper_limits);
       forward_kinematics(model, data, trial);
-      trial_cost = reach_cost(data.points, target);
+      task_error(data, target, tolerances, settings.aim_fraction, trial_error);
+      trial_cost = 0.5 * trial_error.squaredNorm();
       if (trial_cost < cost) {
         improved = true;
         damping = std::max(damping / 3.0, settings.min_damping);
@@ -75,6 +88,7 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
     stalled = (cost - trial_cost) < settings.stall_relative_decrease * cost ? stalled + 1 : 0;
     g = trial;
     cost = trial_cost;
+    error = trial_error;
     recorder.sample(iteration, g);
     reached = target_reached(data.points, target, tolerances);
   }

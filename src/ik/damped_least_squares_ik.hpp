@@ -1,9 +1,11 @@
 #pragma once
-// crux's fast IK: Levenberg-Marquardt (adaptively damped least squares) on the same
-// cost f(E) as the paper's solver, with joint limits handled by an active set
-// (a joint at a limit and pushed past it is frozen for the step) and by projection.
-// Same inputs, outputs and termination test as Algorithm 1; it gives up early when
-// the cost stops decreasing, which is what makes unreachable queries cheap.
+// crux's fast IK: Levenberg-Marquardt (adaptively damped least squares). By default it
+// minimises the paper's f(E); with a positive aim fraction each operational point is
+// pulled only to the nearest point of a sphere inside its tolerance sphere, so that it
+// seeks any posture the termination test accepts (docs/DESIGN.md compares both). Joint limits are handled by an active set (a joint at a limit and
+// pushed past it is frozen for the step) and by projection. Same inputs, outputs and
+// termination test as Algorithm 1; it gives up early when the cost stops decreasing,
+// which is what makes unreachable queries cheap.
 
 #include "body/body_data.hpp"
 #include "ik/ik_result.hpp"
@@ -12,8 +14,10 @@
 namespace crux {
 
 struct DampedLeastSquaresSettings {
-  double time_step_s = 0.01;  // simulated time charged per linearisation, as for Algorithm 1
+  double time_step_s = 0.002;  // simulated time charged per linearisation, as for Algorithm 1
   int max_iterations = 100;
+  // Radius aimed at, as a share of each tolerance radius (grasp contact, root sphere).
+  double aim_fraction = 0.0;
   double initial_damping = 1e-2;  // lambda, in m^2
   double min_damping = 1e-6;
   double max_damping = 1e3;       // beyond this no step lowers f: a local minimum

@@ -10,8 +10,8 @@
 namespace crux {
 
 struct GradientDescentSettings {
-  double step_size = 0.1;    // alpha (calibration: docs/DESIGN.md)
-  double time_step_s = 0.01;  // simulated time per iteration (spec item 9)
+  double step_size = 0.25;     // alpha (calibration: docs/DESIGN.md)
+  double time_step_s = 0.002;  // simulated time per iteration (spec item 9: see docs/DESIGN.md)
   double timeout_s = 5.5;     // Delta_t
   int max_iterations() const;
 };

@@ -1,5 +1,6 @@
 #include "ik/reach_queries.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -12,6 +13,20 @@ std::array<Eigen::Vector3d, kLimbCount> start_layout_holds() {
   return {Eigen::Vector3d(0.0, 1 * tile_width, 3 * tile_height), Eigen::Vector3d(0.0, 3 * tile_width, 3 * tile_height),
           Eigen::Vector3d(0.0, 1 * tile_width, 0.0), Eigen::Vector3d(0.0, 3 * tile_width, 0.0)};
 }
+
+namespace {
+
+// Climbing-like layouts only: arms and legs uncrossed (y grows to the climber's left)
+// and both feet below both hands.
+bool natural_layout(const std::array<Eigen::Vector3d, kLimbCount>& h) {
+  const auto& rh = h[static_cast<int>(Limb::RightHand)];
+  const auto& lh = h[static_cast<int>(Limb::LeftHand)];
+  const auto& rf = h[static_cast<int>(Limb::RightFoot)];
+  const auto& lf = h[static_cast<int>(Limb::LeftFoot)];
+  return rh.y() <= lh.y() && rf.y() <= lf.y() && std::max(rf.z(), lf.z()) < std::min(rh.z(), lh.z());
+}
+
+}  // namespace
 
 Posture start_layout_posture(const BodyModel& model, const IkSettings& settings, const RootTargetParameters& root) {
   ReachTarget target;
@@ -40,14 +55,16 @@ std::vector<ReachQuery> climbing_reach_queries(const BodyModel& model, const IkS
     }
     ReachQuery query;
     query.start = posture;
-    query.moved_limb = static_cast<Limb>(random.below(kLimbCount));
     query.far_move = random.uniform() < settings.far_share;
-    const double distance = query.far_move ? random.uniform(settings.far_move_min_m, settings.far_move_max_m)
-                                           : settings.max_move_m * std::sqrt(random.uniform());
-    const double angle = random.uniform(0.0, 2.0 * M_PI);
-    query.target.hold_centres = holds;
-    Eigen::Vector3d& moved = query.target.hold_centres[static_cast<int>(query.moved_limb)];
-    moved += Eigen::Vector3d(0.0, distance * std::cos(angle), distance * std::sin(angle));
+    do {
+      query.moved_limb = static_cast<Limb>(random.below(kLimbCount));
+      const double distance = query.far_move ? random.uniform(settings.far_move_min_m, settings.far_move_max_m)
+                                             : settings.max_move_m * std::sqrt(random.uniform());
+      const double angle = random.uniform(0.0, 2.0 * M_PI);
+      query.target.hold_centres = holds;
+      query.target.hold_centres[static_cast<int>(query.moved_limb)] +=
+          Eigen::Vector3d(0.0, distance * std::cos(angle), distance * std::sin(angle));
+    } while (!natural_layout(query.target.hold_centres));
     query.target.root = root_target(model, query.target.hold_centres, settings.root);
     const IkResult result = solve_ik(model, data, posture, query.target, walk_settings);
     if (result.reached) {

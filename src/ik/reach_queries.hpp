@@ -1,8 +1,9 @@
 #pragma once
 // Climbing-like IK queries, for comparing solvers (crux ik-compare), benchmarks and
 // tests: from a posture that grasps four holds, one limb moves to a new hold up to
-// about 1 m away; a share of queries are clearly unreachable (the hold is moved 2.5 to
-// 3.5 m away, so two holds are about 3 m apart).
+// about 1 m away, keeping the layout natural (limbs uncrossed, feet below hands); a
+// share of queries are clearly unreachable (the hold is moved 2.5 to 3.5 m away, so
+// two holds are about 3 m apart).
 
 #include <cstdint>
 #include <vector>

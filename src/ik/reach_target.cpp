@@ -15,10 +15,11 @@ double grasp_residual(const std::array<Eigen::Vector3d, kOperationalPointCount>&
 
 bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
                     const ReachTarget& target, const ReachTolerances& tolerances) {
-  if ((points[0] - target.root).squaredNorm() > tolerances.root_radius * tolerances.root_radius) return false;
+  // Written as "within" tests so that a NaN posture never passes.
+  if (!((points[0] - target.root).squaredNorm() <= tolerances.root_radius * tolerances.root_radius)) return false;
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const double contact = tolerances.grasp_radius + target.hold_radii[limb];
-    if ((points[1 + limb] - target.hold_centres[limb]).squaredNorm() > contact * contact) return false;
+    if (!((points[1 + limb] - target.hold_centres[limb]).squaredNorm() <= contact * contact)) return false;
   }
   return true;
 }

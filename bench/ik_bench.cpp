@@ -1,0 +1,103 @@
+// One climbing-like IK query per benchmark iteration, cycling over a fixed batch, for
+// the paper's solver, crux's fast solver and KDL's multi-endpoint tree solver
+// (TreeIkSolverPos_NR_JL), all judged by the same termination test.
+
+#include <benchmark/benchmark.h>
+
+#include <kdl/treeiksolverpos_nr_jl.hpp>
+#include <kdl/treeiksolvervel_wdls.hpp>
+
+#include "body/kinematics.hpp"
+#include "ik/ik_solver.hpp"
+#include "ik/reach_queries.hpp"
+#include "support/kdl_reference.hpp"
+
+namespace crux {
+namespace {
+
+constexpr int kBatch = 500;
+
+IkSettings paper_walk() {
+  IkSettings walk;
+  walk.solver = IkSolverKind::Paper;  // the walk of crux ik-compare
+  return walk;
+}
+
+struct Fixture {
+  BodyModel model = load_body_model(default_body_model_path());
+  IkSettings settings;
+  std::vector<ReachQuery> queries = climbing_reach_queries(model, paper_walk(), kBatch, 2026);
+};
+
+const Fixture& fixture() {
+  static const Fixture f;
+  return f;
+}
+
+void report_solve_rate(benchmark::State& state, long reached, long attempted) {
+  state.counters["solve_rate"] = attempted > 0 ? static_cast<double>(reached) / attempted : 0.0;
+}
+
+void run_crux_solver(benchmark::State& state, IkSolverKind kind) {
+  const Fixture& f = fixture();
+  IkSettings settings = f.settings;
+  settings.solver = kind;
+  BodyData data(f.model);
+  long n = 0, reached = 0;
+  for (auto _ : state) {
+    const ReachQuery& q = f.queries[n++ % kBatch];
+    const IkResult result = solve_ik(f.model, data, q.start, q.target, settings);
+    reached += result.reached;
+    benchmark::DoNotOptimize(result.posture);
+  }
+  report_solve_rate(state, reached, n);
+}
+
+void BM_IkPaper(benchmark::State& state) { run_crux_solver(state, IkSolverKind::Paper); }
+void BM_IkFast(benchmark::State& state) { run_crux_solver(state, IkSolverKind::Fast); }
+BENCHMARK(BM_IkPaper);
+BENCHMARK(BM_IkFast);
+
+// KDL as a robotics user would set it up: Newton-Raphson with joint limits over the
+// five endpoints (root and grasp frames), velocity IK by weighted damped least squares
+// with the orientation rows weighted zero (crux asks for positions only), KDL's default
+// iteration cap and tolerance. The damping lambda = 0.3 is the best of a scan over
+// 0 (KDL's default; it diverges to NaN here), 0.01, 0.03, 0.1, 0.3 and 1
+// (docs/PERFORMANCE.md).
+void BM_IkKdl(benchmark::State& state) {
+  const Fixture& f = fixture();
+  testing::KdlReference kdl(default_body_model_path(), f.model);
+  const std::vector<std::string> endpoints(kdl.segments().begin(), kdl.segments().end());
+  // KDL needs finite bounds; the root keeps +-100 m, effectively free.
+  Posture lower = f.model.lower_limits, upper = f.model.upper_limits;
+  lower.head<kRootDof>().setConstant(-100.0);
+  upper.head<kRootDof>().setConstant(100.0);
+  const KDL::JntArray q_min = kdl.to_kdl(lower), q_max = kdl.to_kdl(upper);
+  KDL::TreeFkSolverPos_recursive fk(kdl.tree());
+  KDL::TreeIkSolverVel_wdls velocity_ik(kdl.tree(), endpoints);
+  Eigen::MatrixXd task_weight = Eigen::MatrixXd::Zero(6 * endpoints.size(), 6 * endpoints.size());
+  for (std::size_t e = 0; e < endpoints.size(); ++e) task_weight.block<3, 3>(6 * e, 6 * e).setIdentity();
+  velocity_ik.setWeightTS(task_weight);
+  velocity_ik.setLambda(0.3);
+  KDL::TreeIkSolverPos_NR_JL position_ik(kdl.tree(), endpoints, q_min, q_max, fk, velocity_ik);
+  BodyData data(f.model);
+  KDL::JntArray q_out(kConfigurationDof);
+  long n = 0, reached = 0;
+  for (auto _ : state) {
+    const ReachQuery& q = f.queries[n++ % kBatch];
+    KDL::Frames targets;
+    for (std::size_t e = 0; e < endpoints.size(); ++e) {
+      const Eigen::Vector3d& p = e == 0 ? q.target.root : q.target.hold_centres[e - 1];
+      targets[endpoints[e]] = KDL::Frame(KDL::Vector(p.x(), p.y(), p.z()));
+    }
+    position_ik.CartToJnt(kdl.to_kdl(q.start), targets, q_out);
+    const Posture g = kdl.from_kdl(q_out);
+    forward_kinematics(f.model, data, g);
+    reached += target_reached(data.points, q.target, f.settings.tolerances) && within_limits(f.model, g);
+  }
+  report_solve_rate(state, reached, n);
+}
+BENCHMARK(BM_IkKdl);
+
+}  // namespace
+}  // namespace crux

@@ -1,0 +1,145 @@
+#include "ik/ik_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "body/kinematics.hpp"
+#include "ik/reach_queries.hpp"
+#include "support/test_models.hpp"
+
+namespace crux {
+namespace {
+
+using testing::human_model;
+
+constexpr IkSolverKind kSolvers[] = {IkSolverKind::Paper, IkSolverKind::Fast};
+
+IkSettings settings_for(IkSolverKind kind) {
+  IkSettings settings;
+  settings.solver = kind;
+  return settings;
+}
+
+class EachSolver : public ::testing::TestWithParam<IkSolverKind> {};
+
+TEST_P(EachSolver, NeverLeavesTheJointLimitsAlongThePath) {
+  const BodyModel& model = human_model();
+  const IkSettings settings = settings_for(GetParam());
+  constexpr std::uint64_t seed = 77;
+  const auto queries = climbing_reach_queries(model, IkSettings{}, 200, seed);
+  BodyData data(model);
+  std::vector<Posture> path;
+  for (std::size_t n = 0; n < queries.size(); ++n) {
+    const IkResult result = solve_ik(model, data, queries[n].start, queries[n].target, settings, {&path, 1});
+    ASSERT_TRUE(within_limits(model, result.posture)) << "seed " << seed << " query " << n;
+    for (const Posture& g : path) ASSERT_TRUE(within_limits(model, g)) << "seed " << seed << " query " << n;
+  }
+}
+
+TEST_P(EachSolver, ReachesTargetsBuiltByForwardKinematicsNearTheStart) {
+  const BodyModel& model = human_model();
+  const IkSettings settings = settings_for(GetParam());
+  const Posture start = start_layout_posture(model, IkSettings{});
+  BodyData data(model);
+  constexpr std::uint64_t seed = 2026;
+  Random random(seed);
+  for (int sample = 0; sample < 100; ++sample) {
+    Posture goal = start;
+    for (int i = 0; i < kRootDof; ++i) goal[i] += random.uniform(-0.05, 0.05);
+    for (int i = kRootDof; i < kConfigurationDof; ++i) goal[i] += random.uniform(-0.2, 0.2);
+    goal = goal.cwiseMax(model.lower_limits).cwiseMin(model.upper_limits);
+    forward_kinematics(model, data, goal);
+    ReachTarget target;
+    target.root = data.points[0];
+    for (int limb = 0; limb < kLimbCount; ++limb) target.hold_centres[limb] = data.points[1 + limb];
+    const IkResult result = solve_ik(model, data, start, target, settings);
+    ASSERT_TRUE(result.reached) << "seed " << seed << " sample " << sample;
+    EXPECT_LE(result.residual_m, settings.tolerances.grasp_radius + target.hold_radii[0]);
+    forward_kinematics(model, data, result.posture);
+    EXPECT_TRUE(target_reached(data.points, target, settings.tolerances));
+  }
+}
+
+TEST_P(EachSolver, GivesUpWithinItsTimeOutWhenHoldsAreThreeMetresApart) {
+  const BodyModel& model = human_model();
+  const IkSettings settings = settings_for(GetParam());
+  const Posture start = start_layout_posture(model, IkSettings{});
+  ReachTarget target;
+  target.hold_centres = start_layout_holds();
+  for (int hand = 0; hand < 2; ++hand) target.hold_centres[hand].z() += 3.0;  // hands 4.5 m up, feet at 0
+  target.root = root_target(model, target.hold_centres);
+  BodyData data(model);
+  const IkResult result = solve_ik(model, data, start, target, settings);
+  EXPECT_FALSE(result.reached);
+  EXPECT_EQ(result.posture, start) << "Algorithm 1 returns G_init when it gives up";
+  if (GetParam() == IkSolverKind::Paper) {
+    EXPECT_EQ(result.iterations, settings.paper.max_iterations());
+    EXPECT_NEAR(result.simulated_time_s, settings.paper.timeout_s, 1e-9);
+  } else {
+    EXPECT_LE(result.iterations, settings.fast.max_iterations);
+  }
+  EXPECT_GT(result.residual_m, 1.0);
+}
+
+TEST_P(EachSolver, SameInputsGiveBitIdenticalOutputs) {
+  const BodyModel& model = human_model();
+  const IkSettings settings = settings_for(GetParam());
+  const auto queries = climbing_reach_queries(model, IkSettings{}, 40, 5);
+  for (const ReachQuery& q : queries) {
+    BodyData first_data(model), second_data(model);
+    const IkResult first = solve_ik(model, first_data, q.start, q.target, settings);
+    const IkResult second = solve_ik(model, second_data, q.start, q.target, settings);
+    EXPECT_EQ(first.reached, second.reached);
+    EXPECT_EQ(first.iterations, second.iterations);
+    EXPECT_EQ(std::memcmp(first.posture.data(), second.posture.data(), sizeof(double) * kConfigurationDof), 0);
+    EXPECT_EQ(std::memcmp(&first.residual_m, &second.residual_m, sizeof(double)), 0);
+  }
+}
+
+TEST_P(EachSolver, RecordsThePathEveryKIterations) {
+  const BodyModel& model = human_model();
+  const IkSettings settings = settings_for(GetParam());
+  const Posture start = standing_posture({0.3, 0.6, 1.0});
+  ReachTarget target;
+  target.hold_centres = start_layout_holds();
+  target.root = root_target(model, target.hold_centres);
+  BodyData data(model);
+  std::vector<Posture> path;
+  constexpr int every = 3;
+  const IkResult result = solve_ik(model, data, start, target, settings, {&path, every});
+  ASSERT_TRUE(result.reached);
+  const std::size_t expected = 1 + result.iterations / every + (result.iterations % every != 0 ? 1 : 0);
+  EXPECT_EQ(path.size(), expected);
+  EXPECT_EQ(path.front(), start);
+  EXPECT_EQ(path.back(), result.posture);
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, EachSolver, ::testing::ValuesIn(kSolvers),
+                         [](const auto& info) { return std::string(ik_solver_name(info.param)); });
+
+TEST(IkSolver, ParsesSolverNames) {
+  EXPECT_EQ(parse_ik_solver("paper"), IkSolverKind::Paper);
+  EXPECT_EQ(parse_ik_solver("fast"), IkSolverKind::Fast);
+  EXPECT_FALSE(parse_ik_solver("kdl").has_value());
+}
+
+}  // namespace
+}  // namespace crux
+
+namespace crux {
+namespace {
+
+TEST(ReachTarget, NanPostureIsNeverReached) {
+  ReachTarget target;
+  target.hold_centres = start_layout_holds();
+  std::array<Eigen::Vector3d, kOperationalPointCount> points;
+  points[0] = target.root;
+  for (int limb = 0; limb < kLimbCount; ++limb) points[1 + limb] = target.hold_centres[limb];
+  EXPECT_TRUE(target_reached(points, target, {}));
+  points[2].x() = std::nan("");
+  EXPECT_FALSE(target_reached(points, target, {}));
+}
+
+}  // namespace
+}  // namespace crux

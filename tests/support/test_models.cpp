@@ -1,0 +1,87 @@
+#include "support/test_models.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace crux::testing {
+
+const BodyModel& human_model() {
+  static const BodyModel model = load_body_model(default_body_model_path());
+  return model;
+}
+
+std::string human_urdf_text() {
+  std::ifstream in(default_body_model_path());
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Posture random_posture(const BodyModel& model, Random& random, const Eigen::Vector3d& root) {
+  Posture g;
+  for (int i = 0; i < kRootDof; ++i) g[i] = root[i] + random.uniform(-0.5, 0.5);
+  for (int i = kRootDof; i < kConfigurationDof; ++i) g[i] = random.uniform(model.lower_limits[i], model.upper_limits[i]);
+  return g;
+}
+
+std::string synthetic_tree_urdf(std::uint64_t seed) {
+  Random random(seed);
+  std::ostringstream urdf;
+  const auto inertial = [&](double mass) {
+    return fmt::format(
+        "<inertial><origin xyz=\"{} {} {}\" rpy=\"0 0 0\"/><mass value=\"{}\"/>"
+        "<inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial>",
+        random.uniform(-0.1, 0.1), random.uniform(-0.1, 0.1), random.uniform(-0.1, 0.1), mass);
+  };
+  urdf << "<robot name=\"synthetic\"><link name=\"world\"/>"
+       << "<link name=\"rx\"/><link name=\"ry\"/><link name=\"torso\">" << inertial(20.0) << "</link>"
+       << "<joint name=\"root_x\" type=\"prismatic\"><parent link=\"world\"/><child link=\"rx\"/>"
+       << "<axis xyz=\"1 0 0\"/><limit lower=\"-100\" upper=\"100\" effort=\"1\" velocity=\"1\"/></joint>"
+       << "<joint name=\"root_y\" type=\"prismatic\"><parent link=\"rx\"/><child link=\"ry\"/>"
+       << "<axis xyz=\"0 1 0\"/><limit lower=\"-100\" upper=\"100\" effort=\"1\" velocity=\"1\"/></joint>"
+       << "<joint name=\"root_z\" type=\"prismatic\"><parent link=\"ry\"/><child link=\"torso\"/>"
+       << "<axis xyz=\"0 0 1\"/><limit lower=\"-100\" upper=\"100\" effort=\"1\" velocity=\"1\"/></joint>";
+  const char* const frames[kLimbCount] = {"right_palm", "left_palm", "right_foot_ball", "left_foot_ball"};
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    std::string parent = "torso";
+    for (int j = 0; j < 8; ++j) {
+      const std::string link = fmt::format("limb{}_link{}", limb, j);
+      urdf << fmt::format("<link name=\"{}\">{}</link>", link, inertial(random.uniform(0.5, 3.0)));
+      urdf << fmt::format(
+          "<joint name=\"limb{}_joint{}\" type=\"revolute\"><parent link=\"{}\"/><child link=\"{}\"/>"
+          "<origin xyz=\"{} {} {}\" rpy=\"{} {} {}\"/><axis xyz=\"{} {} {}\"/>"
+          "<limit lower=\"{}\" upper=\"{}\" effort=\"1\" velocity=\"1\"/></joint>",
+          limb, j, parent, link, random.uniform(-0.2, 0.2), random.uniform(-0.2, 0.2), random.uniform(-0.3, 0.1),
+          random.uniform(-3, 3), random.uniform(-1.5, 1.5), random.uniform(-3, 3), random.uniform(-1, 1),
+          random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-2.5, -0.1), random.uniform(0.1, 2.5));
+      parent = link;
+    }
+    urdf << fmt::format("<link name=\"{}\"/>", frames[limb])
+         << fmt::format(
+                "<joint name=\"{}_fixed\" type=\"fixed\"><parent link=\"{}\"/><child link=\"{}\"/>"
+                "<origin xyz=\"{} {} {}\" rpy=\"{} 0 0\"/></joint>",
+                frames[limb], parent, frames[limb], random.uniform(-0.1, 0.1), random.uniform(-0.1, 0.1),
+                random.uniform(-0.2, 0.0), random.uniform(-1, 1));
+  }
+  urdf << "</robot>";
+  return urdf.str();
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  if (at == std::string::npos) throw std::runtime_error("test fixture: '" + from + "' not found");
+  return text.replace(at, from.size(), to);
+}
+
+std::filesystem::path write_temporary(const std::string& name, const std::string& contents) {
+  const auto dir = std::filesystem::temp_directory_path() / "crux-tests";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / name;
+  std::ofstream(path, std::ios::binary) << contents;
+  return path;
+}
+
+}  // namespace crux::testing

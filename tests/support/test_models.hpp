@@ -1,0 +1,30 @@
+#pragma once
+// Shared fixtures: the repository's human, random in-limit postures, a synthetic
+// 32-joint tree with arbitrary axes and origins, and URDF text edits for bad models.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "body/body_model.hpp"
+#include "common/random.hpp"
+
+namespace crux::testing {
+
+const BodyModel& human_model();
+std::string human_urdf_text();
+
+// Uniform in every joint's range; the root uniform in a 1 m cube around `root`.
+Posture random_posture(const BodyModel& model, Random& random, const Eigen::Vector3d& root = {0.3, 0.6, 1.0});
+
+// A body with the same root and grasp-frame contract as the human but 4 limbs of 8
+// revolute joints with random axes, origin rotations (rpy) and offsets, and masses.
+std::string synthetic_tree_urdf(std::uint64_t seed);
+
+// Replaces the first occurrence of `from` (which must exist) by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to);
+
+// A fresh file under the test temporary directory holding `contents`.
+std::filesystem::path write_temporary(const std::string& name, const std::string& contents);
+
+}  // namespace crux::testing
