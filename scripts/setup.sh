@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build git
   libeigen3-dev liburdfdom-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
   libfmt-dev libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
   # Independent kinematics reference for tests and the benchmark peer.

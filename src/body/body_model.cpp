@@ -180,7 +180,14 @@ class ModelBuilder {
           out.parent = carrier;
           out.origin_rotation = origin.rotation;
           out.origin_translation = origin.translation;
+          out.origin_rotation_is_identity = origin.rotation == Eigen::Matrix3d::Identity();
           out.axis = axis.normalized();
+          for (int k = 0; k < 3; ++k) {
+            if (std::abs(out.axis[k]) == 1.0) {
+              out.principal_axis = k;
+              out.principal_sign = out.axis[k];
+            }
+          }
           out.lower = lower;
           out.upper = upper;
           model_.joints.push_back(out);

@@ -39,7 +39,11 @@ void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g
       out.origin = joint.origin_translation;
     } else {
       const JointPlacement& parent = data.placements[joint.parent];
-      frame.noalias() = parent.rotation * joint.origin_rotation;
+      if (joint.origin_rotation_is_identity) {
+        frame = parent.rotation;
+      } else {
+        frame.noalias() = parent.rotation * joint.origin_rotation;
+      }
       out.origin = parent.origin;
       out.origin.noalias() += parent.rotation * joint.origin_translation;
     }
@@ -47,6 +51,14 @@ void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g
     if (joint.prismatic) {
       out.rotation = frame;
       out.origin += g[i] * out.axis;
+    } else if (joint.principal_axis >= 0) {
+      // Rotating about a coordinate axis k mixes only the two other columns.
+      const int k = joint.principal_axis, a = (k + 1) % 3, b = (k + 2) % 3;
+      const double s = joint.principal_sign * std::sin(g[i]);
+      const double c = std::cos(g[i]);
+      out.rotation.col(k) = frame.col(k);
+      out.rotation.col(a) = c * frame.col(a) + s * frame.col(b);
+      out.rotation.col(b) = c * frame.col(b) - s * frame.col(a);
     } else {
       out.rotation.noalias() = frame * axis_rotation(joint.axis, g[i]);
     }

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "crux 0.1.0");
   crux::cli::add_model_command(app);
   crux::cli::add_ik_commands(app);
+  crux::cli::add_demo_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
