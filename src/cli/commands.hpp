@@ -9,5 +9,7 @@ namespace crux::cli {
 void add_model_command(CLI::App& app);
 void add_ik_commands(CLI::App& app);
 void add_demo_command(CLI::App& app);
+void add_filter_stats_command(CLI::App& app);
+void add_wall_command(CLI::App& app);
 
 }  // namespace crux::cli

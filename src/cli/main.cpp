@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   crux::cli::add_model_command(app);
   crux::cli::add_ik_commands(app);
   crux::cli::add_demo_command(app);
+  crux::cli::add_wall_command(app);
+  crux::cli::add_filter_stats_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -25,6 +27,8 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const CLI::RuntimeError& e) {
+    return e.get_exit_code();  // the command has already reported why
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "crux: %s (see 'crux --help')\n", e.what());
     return 2;

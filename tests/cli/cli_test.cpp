@@ -1,44 +1,20 @@
 // The crux binary end to end: JSON keys, one-line errors and exit codes.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "support/run_crux.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
 namespace {
 
-struct Outcome {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
-
-Outcome run_crux(const std::string& arguments) {
-  const auto err_path = testing::write_temporary("cli_stderr.txt", "");
-  const std::string command = std::string(CRUX_BINARY) + " " + arguments + " 2>" + err_path.string();
-  FILE* pipe = popen(command.c_str(), "r");
-  Outcome run{-1, "", ""};
-  std::array<char, 4096> buffer;
-  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) run.out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  FILE* err = std::fopen(err_path.c_str(), "r");
-  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), err)) run.err.append(buffer.data(), n);
-  std::fclose(err);
-  return run;
-}
-
-int count_lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
 TEST(Cli, ModelJsonHasTheDocumentedKeys) {
-  const Outcome run = run_crux("model --json");
+  const testing::Outcome run = testing::run_crux("model --json");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto json = nlohmann::json::parse(run.out);
   EXPECT_EQ(json["dof_root"], 3);
@@ -56,9 +32,9 @@ TEST(Cli, BadModelIsOneLineAndExitCode2) {
   const auto bad = testing::write_temporary("cli_bad.urdf", "<robot name='x'><link name='a'/>");
   for (const std::string& command : std::vector<std::string>{"model --urdf " + bad.string(), "model --urdf /nonexistent.urdf",
                                     "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --urdf " + bad.string()}) {
-    const Outcome run = run_crux(command);
+    const testing::Outcome run = testing::run_crux(command);
     EXPECT_EQ(run.exit_code, 2) << command;
-    EXPECT_EQ(count_lines(run.err), 1) << run.err;
+    EXPECT_EQ(testing::count_lines(run.err), 1) << run.err;
     EXPECT_EQ(run.err.rfind("crux: ", 0), 0u) << run.err;
     EXPECT_TRUE(run.out.empty());
   }
@@ -67,15 +43,15 @@ TEST(Cli, BadModelIsOneLineAndExitCode2) {
 TEST(Cli, BadArgumentsExitWithCode2) {
   for (const std::string command : {"ik --rh 0.3 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0", "ik --rh 0.3,1.5",
                                     "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --solver kdl", "frobnicate"}) {
-    const Outcome run = run_crux(command);
+    const testing::Outcome run = testing::run_crux(command);
     EXPECT_EQ(run.exit_code, 2) << command;
-    EXPECT_EQ(count_lines(run.err), 1) << run.err;
+    EXPECT_EQ(testing::count_lines(run.err), 1) << run.err;
   }
 }
 
 TEST(Cli, IkReportsTheIssuesKeysForBothSolvers) {
   for (const std::string solver : {"paper", "fast"}) {
-    const Outcome run = run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --json --solver " + solver);
+    const testing::Outcome run = testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --json --solver " + solver);
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto json = nlohmann::json::parse(run.out);
     EXPECT_EQ(json["solver"], solver);
@@ -87,13 +63,13 @@ TEST(Cli, IkReportsTheIssuesKeysForBothSolvers) {
 }
 
 TEST(Cli, IkOnUnreachableHoldsSaysSo) {
-  const Outcome run = run_crux("ik --rh 0.3,4.5 --lh 0.9,4.5 --rf 0.3,0 --lf 0.9,0 --json --solver fast");
+  const testing::Outcome run = testing::run_crux("ik --rh 0.3,4.5 --lh 0.9,4.5 --rf 0.3,0 --lf 0.9,0 --json --solver fast");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_FALSE(nlohmann::json::parse(run.out)["reached"].get<bool>());
 }
 
 TEST(Cli, IkCompareReportsAgreement) {
-  const Outcome run = run_crux("ik-compare --queries 30 --seed 3 --json");
+  const testing::Outcome run = testing::run_crux("ik-compare --queries 30 --seed 3 --json");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto json = nlohmann::json::parse(run.out);
   EXPECT_EQ(json["queries"], 30);
@@ -107,8 +83,8 @@ TEST(Cli, IkCompareReportsAgreement) {
 TEST(Cli, IkPathIsWrittenAsCsv) {
   const auto out = std::filesystem::temp_directory_path() / "crux-tests" / "path.csv";
   std::filesystem::remove(out);
-  const Outcome run =
-      run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --solver paper --path-every 5 --path-out " + out.string());
+  const testing::Outcome run =
+      testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --solver paper --path-every 5 --path-out " + out.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   ASSERT_TRUE(std::filesystem::exists(out));
   EXPECT_GT(std::filesystem::file_size(out), 100u);

@@ -1,0 +1,49 @@
+#include "agent_space/moving_grid.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace crux {
+
+GridPlacement place_grid(const GridParameters& grid, Limb free_limb, const Eigen::Vector3d& limb_position) {
+  const auto& anchor = grid.anchors[static_cast<int>(free_limb)];
+  GridPlacement placement;
+  placement.tile_width = grid.tile_width;
+  placement.tile_height = grid.tile_height;
+  placement.columns = grid.columns;
+  placement.rows = grid.rows;
+  // The anchor is the centre of its tile: half a tile in from that tile's corner.
+  placement.origin = {limb_position.y() - (anchor[0] + 0.5) * grid.tile_width,
+                      limb_position.z() - (anchor[1] + 0.5) * grid.tile_height};
+  return placement;
+}
+
+int GridPlacement::tile_of(const Eigen::Vector3d& point) const {
+  const double column = std::floor((point.y() - origin.x()) / tile_width);
+  const double row = std::floor((point.z() - origin.y()) / tile_height);
+  if (!(column >= 0 && column < columns && row >= 0 && row < rows)) return kOutsideGrid;  // NaN is outside too
+  return static_cast<int>(row) * columns + static_cast<int>(column);
+}
+
+Eigen::Vector3d GridPlacement::tile_centre(int tile) const {
+  const int column = tile % columns, row = tile / columns;
+  return {0.0, origin.x() + (column + 0.5) * tile_width, origin.y() + (row + 0.5) * tile_height};
+}
+
+int hold_in_tile(const Wall& wall, const GridPlacement& placement, int tile) {
+  const Eigen::Vector3d centre = placement.tile_centre(tile);
+  int best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < wall.hold_count(); ++i) {
+    const Eigen::Vector3d& p = wall.holds[i].position;
+    if (placement.tile_of(p) != tile) continue;
+    const double distance = (Eigen::Vector2d(p.y(), p.z()) - Eigen::Vector2d(centre.y(), centre.z())).squaredNorm();
+    if (distance < best_distance) {  // strict: ties keep the lower index
+      best_distance = distance;
+      best = i;
+    }
+  }
+  return best;
+}
+
+}  // namespace crux

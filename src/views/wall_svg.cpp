@@ -1,0 +1,531 @@
+#include "views/wall_svg.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace crux {
+namespace {
+
+struct LimbStyle {
+  const char* code;
+  const char* name;
+  const char* colour;
+};
+// Limb order. Okabe-Ito colours, told apart by colour-blind readers; none is the grid's.
+constexpr std::array<LimbStyle, kLimbCount> kLimbStyles{{
+    {"RH", "right hand", "#d55e00"},
+    {"LH", "left hand", "#0072b2"},
+    {"RF", "right foot", "#e69f00"},
+    {"LF", "left foot", "#cc79a7"},
+}};
+
+constexpr const char* kHoldColour = "#222222";
+constexpr const char* kHoldIdColour = "#444444";
+constexpr const char* kGreyedColour = "#bbbbbb";  // holds outside the moving grid
+constexpr const char* kGridColour = "#7f93b0";
+constexpr const char* kTileColour = "#6a3d9a";  // a hold's tile and each tile's hold
+constexpr const char* kAnchorColour = "#1a9641";
+constexpr const char* kAnchorTileFill = "#e5f5e9";
+
+constexpr double kTitleFontSize = 15;
+constexpr double kSubtitleFontSize = 10.5;
+constexpr double kLabelFontSize = 11;     // axes and legend
+constexpr double kHoldFontSize = 9;       // hold ids and tile labels
+constexpr double kTileNumberFontSize = 8;
+
+// Page layout, in pixels.
+constexpr double kPageMargin = 12;
+constexpr double kPlotLeft = 62;        // room for the z tick labels and axis title
+constexpr double kPlotPadding = 32;     // around the content, room for the hold labels
+constexpr double kBelowPlot = 52;       // y tick labels and axis title
+constexpr double kLegendGap = 24;
+constexpr double kLegendRowHeight = 18;
+constexpr double kLegendSwatchWidth = 26;
+constexpr double kMinimumHoldRadius = 2;  // small holds stay visible
+constexpr double kMinimumTickGap = 30;    // between metre lines
+constexpr double kTickSpacing = 0.5;      // metres, doubled while lines would crowd
+
+// Where the labels of a hold go, relative to its circle.
+constexpr double kLabelOffset = 4;
+constexpr double kStartRingGap = 2.5;   // first start ring, then one more per limb
+constexpr double kStartRingStep = 3;
+constexpr double kChosenRingGap = 9;    // outside the start rings
+
+std::string xml_escaped(std::string_view text) {
+  std::string escaped;
+  escaped.reserve(text.size());
+  for (const char c : text) {
+    switch (c) {
+      case '&': escaped += "&amp;"; break;
+      case '<': escaped += "&lt;"; break;
+      case '>': escaped += "&gt;"; break;
+      case '"': escaped += "&quot;"; break;
+      case '\'': escaped += "&apos;"; break;
+      default:
+        // XML 1.0 forbids the other control characters even as references.
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+          escaped += "\xEF\xBF\xBD";  // U+FFFD REPLACEMENT CHARACTER
+        } else {
+          escaped += c;
+        }
+    }
+  }
+  return escaped;
+}
+
+// SVG cannot measure text, so the page is sized from a generous sans-serif average.
+double estimated_text_width(std::string_view text, double font_size) {
+  const auto code_points = std::count_if(text.begin(), text.end(), [](char c) {
+    return (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // not a UTF-8 continuation byte
+  });
+  return 0.6 * font_size * static_cast<double>(code_points);
+}
+
+// A rectangle of the wall plane, in metres.
+struct Extent {
+  double y_min = std::numeric_limits<double>::infinity();
+  double y_max = -std::numeric_limits<double>::infinity();
+  double z_min = std::numeric_limits<double>::infinity();
+  double z_max = -std::numeric_limits<double>::infinity();
+
+  void include(double y, double z) {
+    y_min = std::min(y_min, y);
+    y_max = std::max(y_max, y);
+    z_min = std::min(z_min, z);
+    z_max = std::max(z_max, z);
+  }
+  bool empty() const { return !(y_min <= y_max); }
+};
+
+// The front view maps the wall plane to the screen as the climber, facing the wall, sees
+// it. y grows to the climber's left, so it grows leftwards on screen (screen x = -y,
+// mirrored from the usual plot); z grows up (screen y = -z).
+struct FrontView {
+  double y_max = 0, z_max = 0;  // the wall point drawn at the plot's top-left corner
+  double left = 0, top = 0;     // that corner on screen
+  double scale = 1;             // pixels per metre
+
+  double screen_x(double y) const { return left + (y_max - y) * scale; }
+  double screen_y(double z) const { return top + (z_max - z) * scale; }
+};
+
+enum class Swatch { Hold, StartHold, Finish, GridTile, HoldTile, ChosenHold, OutsideHold, Anchor };
+
+struct LegendEntry {
+  Swatch swatch;
+  std::string text;
+  int limb = 0;  // for Swatch::StartHold
+};
+
+class WallFigure {
+ public:
+  WallFigure(const Wall& wall, const WallSvgOptions& options) : wall_(wall), options_(options) {
+    if (options.grid) {
+      hold_tiles_.reserve(wall.holds.size());
+      for (const Hold& hold : wall.holds) hold_tiles_.push_back(options.grid->tile_of(hold.position));
+    }
+    if (options.mark_start) {
+      for (int limb = 0; limb < kLimbCount; ++limb) {
+        const int index = wall.start[limb];
+        if (index >= 0 && index < wall.hold_count()) start_limbs_[index].push_back(limb);
+      }
+    }
+    lay_out();
+  }
+
+  std::string render() {
+    out_.reserve(512 + 400 * wall_.holds.size());
+    write_document_start();
+    write_header();
+    write_plot_frame();
+    if (options_.grid) write_grid();
+    write_finish_line();
+    write_holds();
+    if (options_.grid) write_tile_projection();
+    if (!start_limbs_.empty()) write_start_marks();
+    if (options_.number_holds) write_hold_ids();
+    if (options_.grid) write_hold_tiles();
+    if (anchor_tile_ != kOutsideGrid) write_anchor();
+    write_axis_titles();
+    write_legend();
+    out_ += "</svg>\n";
+    return std::move(out_);
+  }
+
+ private:
+  template <typename... Args>
+  void emit(fmt::format_string<Args...> format, Args&&... args) {
+    fmt::format_to(std::back_inserter(out_), format, std::forward<Args>(args)...);
+  }
+
+  double hold_radius_pixels(const Hold& hold) const {
+    return std::max(kMinimumHoldRadius, hold.radius * options_.pixels_per_metre);
+  }
+  bool outside_grid(int index) const { return options_.grid && hold_tiles_[index] == kOutsideGrid; }
+  double hold_x(const Hold& hold) const { return view_.screen_x(hold.position.y()); }
+  double hold_y(const Hold& hold) const { return view_.screen_y(hold.position.z()); }
+
+  void lay_out() {
+    const double scale = options_.pixels_per_metre;
+    Extent extent;
+    for (const Hold& hold : wall_.holds) {
+      extent.include(hold.position.y() - hold.radius, hold.position.z() - hold.radius);
+      extent.include(hold.position.y() + hold.radius, hold.position.z() + hold.radius);
+    }
+    if (options_.grid) {
+      const GridPlacement& grid = *options_.grid;
+      extent.include(grid.origin.x(), grid.origin.y());
+      extent.include(grid.origin.x() + grid.columns * grid.tile_width, grid.origin.y() + grid.rows * grid.tile_height);
+    }
+    if (extent.empty()) {  // nothing to draw but the finish line: one metre of wall
+      extent.include(0.0, 0.0);
+      extent.include(1.0, 0.0);
+    }
+    extent.include(extent.y_min, wall_.finish_height);  // the finish line is always in view
+    const double padding = kPlotPadding / scale;
+    extent_ = {extent.y_min - padding, extent.y_max + padding, extent.z_min - padding, extent.z_max + padding};
+    plot_width_ = (extent_.y_max - extent_.y_min) * scale;
+    plot_height_ = (extent_.z_max - extent_.z_min) * scale;
+
+    subtitles_.push_back("front view, as the climber facing the wall sees it");
+    if (options_.grid) {
+      std::string grid_line = fmt::format("moving grid of {} x {} tiles", options_.grid->columns, options_.grid->rows);
+      if (options_.grid_limb) grid_line += fmt::format(", placed for the {}", limb_style(*options_.grid_limb).name);
+      subtitles_.push_back(std::move(grid_line));
+    }
+    const double plot_top = kPageMargin + 22 + 15 * static_cast<double>(subtitles_.size());
+    view_ = {extent_.y_max, extent_.z_max, kPlotLeft, plot_top, scale};
+
+    if (options_.grid && options_.grid_limb) {
+      const std::array<int, 2> anchor = GridParameters{}.anchors[static_cast<int>(*options_.grid_limb)];
+      if (anchor[0] < options_.grid->columns && anchor[1] < options_.grid->rows) {
+        anchor_tile_ = anchor[1] * options_.grid->columns + anchor[0];
+      }
+    }
+    fill_legend();
+
+    y_axis_title_ = "y (m), to the climber's left";
+    const double y_axis_title_width = 36 + estimated_text_width(y_axis_title_, kLabelFontSize);
+    legend_left_ = kPlotLeft + std::max(plot_width_, y_axis_title_width) + kLegendGap;
+    double legend_width = 0;
+    for (const LegendEntry& entry : legend_) {
+      legend_width = std::max(legend_width, kLegendSwatchWidth + 6 + estimated_text_width(entry.text, kLabelFontSize));
+    }
+    double header_width = estimated_text_width(wall_.name, kTitleFontSize);
+    for (const std::string& line : subtitles_) {
+      header_width = std::max(header_width, estimated_text_width(line, kSubtitleFontSize));
+    }
+    page_width_ = std::ceil(std::max(legend_left_ + legend_width, kPageMargin + header_width) + kPageMargin);
+    page_height_ = std::ceil(std::max(plot_top + plot_height_ + kBelowPlot,
+                                      plot_top + kLegendRowHeight * static_cast<double>(legend_.size()) + kPageMargin));
+
+    tick_spacing_ = kTickSpacing;
+    while (tick_spacing_ * scale < kMinimumTickGap) tick_spacing_ *= 2;
+  }
+
+  static const LimbStyle& limb_style(Limb limb) { return kLimbStyles[static_cast<int>(limb)]; }
+
+  void fill_legend() {
+    legend_.push_back({Swatch::Hold, options_.number_holds ? "hold, with its id" : "hold"});
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      if (!start_limbs_.contains(wall_.start[limb])) continue;  // not marked, or no such hold
+      const LimbStyle& style = kLimbStyles[limb];
+      legend_.push_back({Swatch::StartHold, fmt::format("{}: {} start hold", style.code, style.name), limb});
+    }
+    legend_.push_back({Swatch::Finish, fmt::format("finish height, {:.2f} m", wall_.finish_height)});
+    if (!options_.grid) return;
+    legend_.push_back({Swatch::GridTile, "grid tile, with its number"});
+    legend_.push_back({Swatch::HoldTile, "tile a hold lies in"});
+    legend_.push_back({Swatch::ChosenHold, "hold nearest its tile's centre"});
+    legend_.push_back({Swatch::OutsideHold, "hold outside the grid"});
+    if (anchor_tile_ != kOutsideGrid) {
+      legend_.push_back({Swatch::Anchor, fmt::format("anchor P of the {}", limb_style(*options_.grid_limb).name)});
+    }
+  }
+
+  void write_document_start() {
+    out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
+    emit("<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{0:.0f}\" height=\"{1:.0f}\" "
+         "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
+         page_width_, page_height_);
+    emit("<title>{}</title>\n", xml_escaped(wall_.name));
+    emit("<rect width=\"{:.0f}\" height=\"{:.0f}\" fill=\"white\"/>\n", page_width_, page_height_);
+  }
+
+  void write_header() {
+    emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-weight=\"bold\" fill=\"#111111\">{}</text>\n",
+         kPageMargin, kPageMargin + 14, kTitleFontSize, xml_escaped(wall_.name));
+    for (std::size_t i = 0; i < subtitles_.size(); ++i) {
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"#555555\">{}</text>\n", kPageMargin,
+           kPageMargin + 32 + 15 * static_cast<double>(i), kSubtitleFontSize, xml_escaped(subtitles_[i]));
+    }
+  }
+
+  // The plot's frame, light lines every tick_spacing_ metres and their labels.
+  void write_plot_frame() {
+    const double left = view_.left, top = view_.top, right = left + plot_width_, bottom = top + plot_height_;
+    out_ += "<g class=\"metre-lines\" stroke=\"#e8e8e8\" stroke-width=\"1\">\n";
+    const auto first_y = static_cast<long>(std::ceil(extent_.y_min / tick_spacing_));
+    const auto last_y = static_cast<long>(std::floor(extent_.y_max / tick_spacing_));
+    for (long k = first_y; k <= last_y; ++k) {
+      const double x = view_.screen_x(static_cast<double>(k) * tick_spacing_);
+      emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", x, top, bottom);
+    }
+    const auto first_z = static_cast<long>(std::ceil(extent_.z_min / tick_spacing_));
+    const auto last_z = static_cast<long>(std::floor(extent_.z_max / tick_spacing_));
+    for (long k = first_z; k <= last_z; ++k) {
+      const double y = view_.screen_y(static_cast<double>(k) * tick_spacing_);
+      emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", left, y, right);
+    }
+    out_ += "</g>\n";
+    emit("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\" "
+         "stroke-width=\"1\"/>\n",
+         left, top, plot_width_, plot_height_);
+
+    emit("<g class=\"tick-labels\" font-size=\"{}\" fill=\"#555555\">\n", kLabelFontSize - 1);
+    for (long k = first_y; k <= last_y; ++k) {
+      const double y = static_cast<double>(k) * tick_spacing_;
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{:.1f}</text>\n", view_.screen_x(y), bottom + 14, y);
+    }
+    for (long k = first_z; k <= last_z; ++k) {
+      const double z = static_cast<double>(k) * tick_spacing_;
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">{:.1f}</text>\n", left - 5, view_.screen_y(z) + 3.5, z);
+    }
+    out_ += "</g>\n";
+  }
+
+  // The tiles, with the anchor tile tinted and each tile's number in its top corner.
+  void write_grid() {
+    const GridPlacement& grid = *options_.grid;
+    const double y0 = grid.origin.x(), z0 = grid.origin.y();
+    const double y1 = y0 + grid.columns * grid.tile_width, z1 = z0 + grid.rows * grid.tile_height;
+    if (anchor_tile_ != kOutsideGrid) {
+      const int column = anchor_tile_ % grid.columns, row = anchor_tile_ / grid.columns;
+      emit("<rect class=\"anchor-tile\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"/>\n",
+           view_.screen_x(y0 + (column + 1) * grid.tile_width), view_.screen_y(z0 + (row + 1) * grid.tile_height),
+           grid.tile_width * view_.scale, grid.tile_height * view_.scale, kAnchorTileFill);
+    }
+    emit("<g class=\"moving-grid\" stroke=\"{}\" stroke-width=\"0.8\">\n", kGridColour);
+    for (int column = 1; column < grid.columns; ++column) {
+      const double x = view_.screen_x(y0 + column * grid.tile_width);
+      emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", x, view_.screen_y(z1),
+           view_.screen_y(z0));
+    }
+    for (int row = 1; row < grid.rows; ++row) {
+      const double y = view_.screen_y(z0 + row * grid.tile_height);
+      emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", view_.screen_x(y1), y,
+           view_.screen_x(y0));
+    }
+    emit("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke-width=\"1.5\"/>\n",
+         view_.screen_x(y1), view_.screen_y(z1), (y1 - y0) * view_.scale, (z1 - z0) * view_.scale);
+    out_ += "</g>\n";
+
+    emit("<g class=\"tile-numbers\" font-size=\"{}\" fill=\"{}\">\n", kTileNumberFontSize, kGridColour);
+    for (int tile = 0; tile < grid.columns * grid.rows; ++tile) {
+      const int column = tile % grid.columns, row = tile / grid.columns;
+      // The tile's top corner on the screen's left is its corner of larger y and z.
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", view_.screen_x(y0 + (column + 1) * grid.tile_width) + 3,
+           view_.screen_y(z0 + (row + 1) * grid.tile_height) + kTileNumberFontSize + 1, tile);
+    }
+    out_ += "</g>\n";
+  }
+
+  void write_finish_line() {
+    const double y = view_.screen_y(wall_.finish_height), right = view_.left + plot_width_;
+    emit("<line class=\"finish\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" "
+         "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
+         view_.left, y, right, y);
+    emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-style=\"italic\" text-anchor=\"end\" "
+         "fill=\"#444444\">finish</text>\n",
+         right - 4, y - 4, kLabelFontSize - 1);
+  }
+
+  void write_holds() {
+    out_ += "<g class=\"holds\">\n";
+    for (int i = 0; i < wall_.hold_count(); ++i) {
+      const Hold& hold = wall_.holds[i];
+      emit("<circle id=\"hold-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\"/>\n", hold.id, hold_x(hold),
+           hold_y(hold), hold_radius_pixels(hold), outside_grid(i) ? kGreyedColour : kHoldColour);
+    }
+    out_ += "</g>\n";
+  }
+
+  // Grid -> wall: a ring around the hold each tile projects onto.
+  void write_tile_projection() {
+    const GridPlacement& grid = *options_.grid;
+    emit("<g class=\"tile-holds\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\">\n", kTileColour);
+    for (int tile = 0; tile < grid.columns * grid.rows; ++tile) {
+      const int index = hold_in_tile(wall_, grid, tile);
+      if (index < 0) continue;
+      const Hold& hold = wall_.holds[index];
+      emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", hold_x(hold), hold_y(hold),
+           hold_radius_pixels(hold) + kChosenRingGap);
+    }
+    out_ += "</g>\n";
+  }
+
+  // One coloured ring per limb on its start hold, and the limbs' codes on the hold's left.
+  void write_start_marks() {
+    emit("<g class=\"start-marks\" font-size=\"{}\" font-weight=\"bold\">\n", kHoldFontSize + 1);
+    for (const auto& [index, limbs] : start_limbs_) {
+      const Hold& hold = wall_.holds[index];
+      const double x = hold_x(hold), y = hold_y(hold), radius = hold_radius_pixels(hold);
+      for (std::size_t k = 0; k < limbs.size(); ++k) {
+        const LimbStyle& style = kLimbStyles[limbs[k]];
+        emit("<circle id=\"start-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
+             "stroke-width=\"2\"/>\n",
+             style.code, x, y, radius + kStartRingGap + kStartRingStep * static_cast<double>(k), style.colour);
+      }
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">", x - radius - kChosenRingGap - 2, y + 3.5);
+      for (std::size_t k = 0; k < limbs.size(); ++k) {
+        const LimbStyle& style = kLimbStyles[limbs[k]];
+        emit("{}<tspan fill=\"{}\">{}</tspan>", k == 0 ? "" : "/", style.colour, style.code);
+      }
+      out_ += "</text>\n";
+    }
+    out_ += "</g>\n";
+  }
+
+  void write_hold_ids() {
+    emit("<g class=\"hold-ids\" font-size=\"{}\" fill=\"{}\">\n", kHoldFontSize, kHoldIdColour);
+    for (int i = 0; i < wall_.hold_count(); ++i) {
+      const Hold& hold = wall_.holds[i];
+      const double radius = hold_radius_pixels(hold);
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\"{}>{}</text>\n", hold_x(hold) + radius + kLabelOffset,
+           hold_y(hold) - radius - 1, outside_grid(i) ? fmt::format(" fill=\"{}\"", kGreyedColour) : "", hold.id);
+    }
+    out_ += "</g>\n";
+  }
+
+  // Wall -> grid: the number of the tile each hold lies in, below its id.
+  void write_hold_tiles() {
+    emit("<g class=\"hold-tiles\" font-size=\"{}\" fill=\"{}\">\n", kHoldFontSize, kTileColour);
+    for (int i = 0; i < wall_.hold_count(); ++i) {
+      if (outside_grid(i)) continue;
+      const Hold& hold = wall_.holds[i];
+      const double radius = hold_radius_pixels(hold);
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">t{}</text>\n", hold_x(hold) + radius + kLabelOffset,
+           hold_y(hold) + radius + kHoldFontSize, hold_tiles_[i]);
+    }
+    out_ += "</g>\n";
+  }
+
+  // The P_i point: the anchor tile's centre, placed on the free limb.
+  void write_anchor() {
+    const Eigen::Vector3d centre = options_.grid->tile_centre(anchor_tile_);
+    emit("<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" "
+         "stroke-width=\"1\"/>\n",
+         view_.screen_x(centre.y()), view_.screen_y(centre.z()), kAnchorColour);
+  }
+
+  // y is mirrored (see FrontView), so its title carries an arrow pointing left.
+  void write_axis_titles() {
+    const double bottom = view_.top + plot_height_;
+    const double z_title_x = 18, z_title_y = view_.top + plot_height_ / 2;
+    emit("<g class=\"axis-titles\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
+    emit("<text x=\"{0:.2f}\" y=\"{1:.2f}\" text-anchor=\"middle\" transform=\"rotate(-90 {0:.2f} {1:.2f})\">"
+         "z (m), up</text>\n",
+         z_title_x, z_title_y);
+    const double title_width = 36 + estimated_text_width(y_axis_title_, kLabelFontSize);
+    const double arrow_x = view_.left + std::max(0.0, (plot_width_ - title_width) / 2), arrow_y = bottom + 36;
+    emit("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#333333\" stroke-width=\"1.2\"/>\n",
+         arrow_x + 4, arrow_y, arrow_x + 30, arrow_y);
+    emit("<polygon points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\"/>\n", arrow_x, arrow_y, arrow_x + 8,
+         arrow_y - 4, arrow_x + 8, arrow_y + 4);
+    emit("<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", arrow_x + 36, arrow_y + 4, xml_escaped(y_axis_title_));
+    out_ += "</g>\n";
+  }
+
+  void write_legend() {
+    emit("<g class=\"legend\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
+    for (std::size_t i = 0; i < legend_.size(); ++i) {
+      const LegendEntry& entry = legend_[i];
+      const double y = view_.top + kLegendRowHeight * (static_cast<double>(i) + 0.5);
+      write_swatch(entry, legend_left_ + kLegendSwatchWidth / 2, y);
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", legend_left_ + kLegendSwatchWidth + 6, y + 4,
+           xml_escaped(entry.text));
+    }
+    out_ += "</g>\n";
+  }
+
+  void write_swatch(const LegendEntry& entry, double x, double y) {
+    constexpr double radius = 4.5;
+    const auto disc = [&](const char* colour) {
+      emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"{}\"/>\n", x, y, radius, colour);
+    };
+    const auto ring = [&](double ring_radius, const char* colour, double width) {
+      emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"/>\n", x, y,
+           ring_radius, colour, width);
+    };
+    switch (entry.swatch) {
+      case Swatch::Hold: disc(kHoldColour); break;
+      case Swatch::StartHold:
+        disc(kHoldColour);
+        ring(radius + kStartRingGap, kLimbStyles[entry.limb].colour, 2);
+        break;
+      case Swatch::Finish:
+        emit("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" stroke-width=\"1.2\" "
+             "stroke-dasharray=\"6 4\"/>\n",
+             x - 12, y, x + 12, y);
+        break;
+      case Swatch::GridTile:
+        emit("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"none\" stroke=\"{}\" "
+             "stroke-width=\"0.8\"/>\n",
+             x - 11, y - 7, kGridColour);
+        emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\">12</text>\n", x - 9, y + 1,
+             kTileNumberFontSize, kGridColour);
+        break;
+      case Swatch::HoldTile:
+        emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">t12</text>\n", x,
+             y + 3, kHoldFontSize, kTileColour);
+        break;
+      case Swatch::ChosenHold:
+        disc(kHoldColour);
+        ring(radius + 3.5, kTileColour, 1.2);
+        break;
+      case Swatch::OutsideHold: disc(kGreyedColour); break;
+      case Swatch::Anchor:
+        emit("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"{}\"/>\n", x - 11, y - 7,
+             kAnchorTileFill);
+        emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" stroke-width=\"1\"/>\n", x, y,
+             kAnchorColour);
+        break;
+    }
+  }
+
+  const Wall& wall_;
+  const WallSvgOptions& options_;
+  std::vector<int> hold_tiles_;                 // per hold, with a grid
+  std::map<int, std::vector<int>> start_limbs_;  // hold index -> limbs starting on it
+  int anchor_tile_ = kOutsideGrid;
+  Extent extent_;  // the plot, in metres
+  FrontView view_;
+  double plot_width_ = 0, plot_height_ = 0, page_width_ = 0, page_height_ = 0;
+  double legend_left_ = 0;
+  double tick_spacing_ = kTickSpacing;
+  std::vector<std::string> subtitles_;
+  std::string y_axis_title_;
+  std::vector<LegendEntry> legend_;
+  std::string out_;
+};
+
+}  // namespace
+
+std::string render_wall_svg(const Wall& wall, const WallSvgOptions& options) {
+  if (!(options.pixels_per_metre > 0) || !std::isfinite(options.pixels_per_metre)) {
+    throw std::invalid_argument(fmt::format("render_wall_svg: pixels_per_metre must be positive, not {}",
+                                            options.pixels_per_metre));
+  }
+  return WallFigure(wall, options).render();
+}
+
+}  // namespace crux

@@ -1,0 +1,34 @@
+#pragma once
+// The immutable climbing wall (paper, section III-A): hold spheres in the wall plane,
+// the start configuration and the finishing height. Any layout is allowed, not only
+// the paper's grid.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "body/body_model.hpp"
+
+namespace crux {
+
+struct Hold {
+  int id = 0;  // positive and unique within a wall; 0 means "no hold" in configurations
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  double radius = 0.04;
+};
+
+struct Wall {
+  std::string name;
+  std::vector<Hold> holds;
+  // Hold indices (into `holds`) of the start configuration, limb order.
+  std::array<int, kLimbCount> start{0, 0, 0, 0};
+  double finish_height = 2.5;  // the episode ends when the centre of mass reaches it
+
+  int hold_count() const { return static_cast<int>(holds.size()); }
+  // Index of the hold with this id, or -1.
+  int index_of(int id) const;
+};
+
+}  // namespace crux

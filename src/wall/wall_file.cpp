@@ -1,0 +1,329 @@
+#include "wall/wall_file.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
+
+namespace crux {
+namespace {
+
+using Json = nlohmann::json;
+
+constexpr std::array<std::string_view, 6> kTopLevelKeys{"format", "version", "name", "finish_height", "start", "holds"};
+constexpr std::array<std::string_view, 3> kHoldKeys{"id", "position", "radius"};
+constexpr std::size_t kMinimumHoldCount = kLimbCount;
+
+// nlohmann's error id for a number too large for a double (e.g. 1e999).
+constexpr int kNumberOverflowError = 406;
+
+// A JSON string literal, escaped, so that keys and values quoted in a message can
+// never break it over several lines.
+std::string json_quoted(std::string_view text) { return Json(text).dump(); }
+
+// What a value is, for "must be X, got Y": numbers and booleans by value, the rest by type.
+std::string describe(const Json& value) {
+  return value.is_number() || value.is_boolean() ? value.dump() : value.type_name();
+}
+
+std::string location(const std::string& path) { return path.empty() ? "at the top level" : "in " + path; }
+
+std::string child_path(const std::string& parent, std::string_view key) {
+  return parent.empty() ? std::string(key) : fmt::format("{}.{}", parent, key);
+}
+
+// "parse error at line 3, column 7: syntax error while parsing value - invalid
+// literal; ..." -> "JSON syntax error at line 3, column 7: invalid literal; ...".
+std::string syntax_problem(const std::string& parser_message) {
+  static const std::regex kPosition(R"(at line (\d+), column (\d+): (?:syntax error while parsing [a-z ]+ - )?(.*))");
+  std::smatch match;
+  if (!std::regex_search(parser_message, match, kPosition)) return "JSON syntax error: " + parser_message;
+  return fmt::format("JSON syntax error at line {}, column {}: {}", match[1].str(), match[2].str(), match[3].str());
+}
+
+// First pass over the text, before building the document: the DOM parser keeps the
+// last of duplicate keys silently and reports an overflowing number (1e999) without
+// its position, so this pass tracks where it is in the document to name both.
+class JsonStructureCheck final : public Json::json_sax_t {
+ public:
+  const std::string& problem() const { return problem_; }
+
+  bool null() override { return value_done(); }
+  bool boolean(bool) override { return value_done(); }
+  bool number_integer(number_integer_t) override { return value_done(); }
+  bool number_unsigned(number_unsigned_t) override { return value_done(); }
+  bool number_float(number_float_t, const string_t&) override { return value_done(); }
+  bool string(string_t&) override { return value_done(); }
+  bool binary(binary_t&) override { return value_done(); }
+
+  bool start_object(std::size_t) override { return open(false); }
+  bool key(string_t& key) override {
+    Frame& object = frames_.back();
+    if (!object.keys.insert(key).second) {
+      problem_ = fmt::format("duplicate key {} {}", json_quoted(key), location(path(frames_.size() - 1)));
+      return false;
+    }
+    object.key = key;
+    return true;
+  }
+  bool end_object() override { return container_done(); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool end_array() override { return container_done(); }
+
+  bool parse_error(std::size_t, const std::string& last_token, const Json::exception& error) override {
+    if (error.id == kNumberOverflowError) {
+      const std::string where = path(frames_.size());
+      problem_ = fmt::format("{} is not finite ({} overflows a double)", where.empty() ? "the value" : where, last_token);
+    } else {
+      problem_ = syntax_problem(error.what());
+    }
+    return false;
+  }
+
+ private:
+  struct Frame {
+    bool is_array = false;
+    std::size_t index = 0;  // arrays: the element being read
+    std::string key;        // objects: the member being read
+    std::set<std::string> keys;
+  };
+
+  // The path ("holds[2].position[1]") of the value being read in frames_[depth - 1].
+  std::string path(std::size_t depth) const {
+    std::string text;
+    for (std::size_t i = 0; i < depth; ++i) {
+      text = frames_[i].is_array ? fmt::format("{}[{}]", text, frames_[i].index) : child_path(text, frames_[i].key);
+    }
+    return text;
+  }
+  bool open(bool is_array) {
+    frames_.emplace_back().is_array = is_array;
+    return true;
+  }
+  bool value_done() {
+    if (!frames_.empty() && frames_.back().is_array) ++frames_.back().index;
+    return true;
+  }
+  bool container_done() {
+    frames_.pop_back();
+    return value_done();
+  }
+
+  std::vector<Frame> frames_;
+  std::string problem_;
+};
+
+// Second pass: the document's meaning. Paths in messages follow the file
+// ("holds[3].radius"); hold indices are 0-based, as in the file's array.
+class WallReader {
+ public:
+  explicit WallReader(const std::string& source) : source_(source) {}
+
+  Wall read(const Json& root) const {
+    if (!root.is_object()) fail("the top level must be a JSON object, got " + describe(root));
+    check_format(root);
+    check_version(root);
+    reject_unknown_keys(root, "", kTopLevelKeys);
+    Wall wall;
+    wall.name = text(root, "", "name");
+    wall.finish_height = number(root, "", "finish_height");
+    wall.holds = holds(field(root, "", "holds"));
+    wall.start = start(field(root, "", "start"), wall);
+    return wall;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& problem) const { throw InputError(source_, problem); }
+
+  void check_format(const Json& root) const {
+    const auto format = root.find("format");
+    if (format == root.end()) fail(fmt::format("format is missing; a wall file has \"format\": {}", json_quoted(kWallFormatName)));
+    if (*format != kWallFormatName) fail(fmt::format("format must be {}, got {}", json_quoted(kWallFormatName), format->dump()));
+  }
+
+  void check_version(const Json& root) const {
+    const auto version = root.find("version");
+    if (version == root.end()) fail(fmt::format("version is missing (supported versions: {})", kWallFormatVersion));
+    if (!version->is_number_integer()) fail("version must be an integer, got " + describe(*version));
+    if (*version != kWallFormatVersion) {
+      fail(fmt::format("version {} is not supported (supported versions: {})", version->dump(), kWallFormatVersion));
+    }
+  }
+
+  template <std::size_t N>
+  void reject_unknown_keys(const Json& object, const std::string& path,
+                           const std::array<std::string_view, N>& allowed) const {
+    for (const auto& [key, value] : object.items()) {
+      if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+        fail(fmt::format("unknown key {} {} (allowed: {})", json_quoted(key), location(path), fmt::join(allowed, ", ")));
+      }
+    }
+  }
+
+  const Json& field(const Json& object, const std::string& path, std::string_view key) const {
+    const auto found = object.find(key);
+    if (found == object.end()) fail(child_path(path, key) + " is missing");
+    return *found;
+  }
+
+  std::string text(const Json& object, const std::string& path, std::string_view key) const {
+    const Json& value = field(object, path, key);
+    if (!value.is_string()) fail(fmt::format("{} must be a string, got {}", child_path(path, key), describe(value)));
+    return value.get<std::string>();
+  }
+
+  // Finite: the structure check has already rejected numbers that overflow a double,
+  // and JSON has no literal for NaN or infinity.
+  double number(const Json& object, const std::string& path, std::string_view key) const {
+    const Json& value = field(object, path, key);
+    if (!value.is_number()) fail(fmt::format("{} must be a number, got {}", child_path(path, key), describe(value)));
+    return value.get<double>();
+  }
+
+  int hold_id(const Json& value, const std::string& path) const {
+    const bool positive = value.is_number_unsigned() ? value.get<std::uint64_t>() > 0
+                                                     : value.is_number_integer() && value.get<std::int64_t>() > 0;
+    if (!positive) fail(fmt::format("{} must be a positive integer, got {}", path, describe(value)));
+    constexpr auto kLargestId = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
+    if (value.get<std::uint64_t>() > kLargestId) {
+      fail(fmt::format("{} is {}, larger than the largest supported hold id {}", path, value.dump(), kLargestId));
+    }
+    return value.get<int>();
+  }
+
+  Eigen::Vector3d position(const Json& value, const std::string& path) const {
+    if (!value.is_array()) fail(fmt::format("{} must be an array of 3 numbers [x, y, z], got {}", path, describe(value)));
+    if (value.size() != 3) fail(fmt::format("{} must have 3 coordinates [x, y, z], got {}", path, value.size()));
+    Eigen::Vector3d result;
+    for (int axis = 0; axis < 3; ++axis) {
+      const Json& coordinate = value[axis];
+      if (!coordinate.is_number()) {
+        fail(fmt::format("{}[{}] must be a number, got {}", path, axis, describe(coordinate)));
+      }
+      result[axis] = coordinate.get<double>();
+    }
+    return result;
+  }
+
+  Hold hold(const Json& value, const std::string& path) const {
+    if (!value.is_object()) fail(fmt::format("{} must be an object, got {}", path, describe(value)));
+    reject_unknown_keys(value, path, kHoldKeys);
+    Hold result;
+    result.id = hold_id(field(value, path, "id"), path + ".id");
+    result.position = position(field(value, path, "position"), path + ".position");
+    result.radius = number(value, path, "radius");
+    if (!(result.radius > 0.0)) fail(fmt::format("{}.radius must be positive, got {}", path, Json(result.radius).dump()));
+    return result;
+  }
+
+  std::vector<Hold> holds(const Json& value) const {
+    if (!value.is_array()) fail("holds must be an array, got " + describe(value));
+    if (value.size() < kMinimumHoldCount) {
+      fail(fmt::format("holds has {} entries; a wall needs at least {} holds (one per limb)", value.size(),
+                       kMinimumHoldCount));
+    }
+    std::vector<Hold> result;
+    std::unordered_map<int, std::size_t> index_of_id;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      result.push_back(hold(value[i], fmt::format("holds[{}]", i)));
+      const auto [first, inserted] = index_of_id.emplace(result.back().id, i);
+      if (!inserted) fail(fmt::format("duplicate hold id {} (holds[{}] and holds[{}])", result.back().id, first->second, i));
+    }
+    return result;
+  }
+
+  std::array<int, kLimbCount> start(const Json& value, const Wall& wall) const {
+    if (!value.is_object()) fail("start must be an object, got " + describe(value));
+    std::array<std::string_view, kLimbCount> limbs;
+    for (int limb = 0; limb < kLimbCount; ++limb) limbs[limb] = limb_name(static_cast<Limb>(limb));
+    reject_unknown_keys(value, "start", limbs);
+    std::array<int, kLimbCount> indices{};
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      const std::string path = child_path("start", limbs[limb]);
+      const int id = hold_id(field(value, "start", limbs[limb]), path);
+      indices[limb] = wall.index_of(id);
+      if (indices[limb] < 0) fail(fmt::format("{} names hold {}, which is not in holds", path, id));
+      for (int earlier = 0; earlier < limb; ++earlier) {
+        if (indices[earlier] == indices[limb]) {
+          fail(fmt::format("start.{} and {} both name hold {}; each limb needs its own hold", limbs[earlier], path, id));
+        }
+      }
+    }
+    return indices;
+  }
+
+  const std::string& source_;
+};
+
+std::string number_text(double value) { return Json(value).dump(); }
+
+std::string hold_line(const Hold& hold) {
+  return fmt::format(R"(    {{"id": {}, "position": [{}, {}, {}], "radius": {}}})", hold.id, number_text(hold.position.x()),
+                     number_text(hold.position.y()), number_text(hold.position.z()), number_text(hold.radius));
+}
+
+std::string start_line(const Wall& wall) {
+  std::vector<std::string> members;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    members.push_back(fmt::format("{}: {}", json_quoted(limb_name(static_cast<Limb>(limb))), wall.holds.at(wall.start[limb]).id));
+  }
+  return fmt::format("  \"start\": {{{}}},\n", fmt::join(members, ", "));
+}
+
+}  // namespace
+
+Wall parse_wall(const std::string& json_text, const std::string& source) {
+  if (json_text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(source, "the file is empty");
+  JsonStructureCheck check;
+  if (!Json::sax_parse(json_text, &check)) throw InputError(source, check.problem());
+  return WallReader(source).read(Json::parse(json_text));
+}
+
+Wall load_wall(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputError(path, "is a directory, not a wall file");
+  if (!std::filesystem::exists(path, error)) throw InputError(path, "no such file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, std::string("cannot read the file: ") + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_wall(text.str(), path);
+}
+
+std::string wall_to_json(const Wall& wall) {
+  std::vector<std::string> holds;
+  for (const Hold& hold : wall.holds) holds.push_back(hold_line(hold));
+  return fmt::format("{{\n  \"format\": {},\n  \"version\": {},\n  \"name\": {},\n  \"finish_height\": {},\n{}"
+                     "  \"holds\": [\n{}\n  ]\n}}\n",
+                     json_quoted(kWallFormatName), kWallFormatVersion, json_quoted(wall.name), number_text(wall.finish_height),
+                     start_line(wall), fmt::join(holds, ",\n"));
+}
+
+void save_wall(const std::string& path, const Wall& wall) {
+  const std::string text = wall_to_json(wall);
+  try {
+    parse_wall(text, "");
+  } catch (const InputError& problem) {
+    throw InputError(path, std::string("not written, the wall would not load back: ") + problem.what());
+  }
+  write_file_atomically(path, text);
+}
+
+}  // namespace crux

@@ -1,0 +1,83 @@
+// crux wall and crux filter-stats end to end.
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/run_crux.hpp"
+#include "support/test_models.hpp"
+
+namespace crux {
+namespace {
+
+using testing::run_crux;
+
+std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "crux-tests" / ("wall-cli-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
+TEST(CliWall, GenerateChecksTheStartAndShowReadsItBack) {
+  const auto file = scratch("wall.json");
+  const auto generated = run_crux("wall generate --seed 4 -o " + file.string());
+  ASSERT_EQ(generated.exit_code, 0) << generated.err;
+  EXPECT_NE(generated.out.find("reachable"), std::string::npos);
+  const auto shown = run_crux("wall show " + file.string() + " --json");
+  ASSERT_EQ(shown.exit_code, 0) << shown.err;
+  const auto json = nlohmann::json::parse(shown.out);
+  EXPECT_EQ(json["holds"], 45);
+  EXPECT_TRUE(json["start_reachable"].get<bool>());
+  EXPECT_EQ(json["start"]["right_hand"], 17);
+  EXPECT_EQ(json["start"]["left_foot"], 4);
+}
+
+TEST(CliWall, UnreachableStartIsReportedWithExitCode3) {
+  const auto file = scratch("far.json");
+  // Rows of 1.5 m: the hands' start row is 4.5 m above the feet.
+  const auto outcome = run_crux("wall generate --seed 4 --tile-height 1.5 -o " + file.string());
+  EXPECT_EQ(outcome.exit_code, 3);
+  EXPECT_NE(outcome.err.find("not reachable"), std::string::npos);
+  EXPECT_EQ(testing::count_lines(outcome.err), 1);
+}
+
+TEST(CliWall, ShowDrawsTheGridAsSvg) {
+  const auto file = scratch("grid.json");
+  ASSERT_EQ(run_crux("wall generate --seed 2 -o " + file.string()).exit_code, 0);
+  const auto svg = scratch("grid.svg");
+  const auto outcome = run_crux("wall show " + file.string() + " --grid right_hand --at 0.3,1.5 --json --svg " + svg.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const auto json = nlohmann::json::parse(outcome.out);
+  EXPECT_EQ(json["grid"]["limb"], "right_hand");
+  EXPECT_EQ(json["grid"]["tile_holds"].size(), 35u);
+  std::ifstream in(svg);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("<svg"), std::string::npos);
+}
+
+TEST(CliWall, BadWallFileIsOneLineAndExitCode2) {
+  const auto file = testing::write_temporary("cli_bad_wall.json", "{\"format\": \"crux-wall\", \"version\": 1,\n  \"holds\": [}");
+  for (const std::string& command : {"wall show " + file.string(), std::string("wall show /nonexistent/wall.json"),
+                                     "wall show " + file.string() + " --grid elbow"}) {
+    const auto outcome = run_crux(command);
+    EXPECT_EQ(outcome.exit_code, 2) << command;
+    EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
+  }
+}
+
+TEST(CliFilterStats, ReportsPassSharesBesideThePapers) {
+  const auto outcome = run_crux("filter-stats --walls 2 --seed 3 --json");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const auto json = nlohmann::json::parse(outcome.out);
+  EXPECT_EQ(json["configurations4"], 2u * 45 * 44 * 43 * 42);
+  EXPECT_EQ(json["configurations3"], 2u * 4 * 45 * 44 * 43);
+  EXPECT_GT(json["pass3"].get<double>(), json["pass4"].get<double>());
+  EXPECT_EQ(json["readings"].size(), 4u);
+  EXPECT_DOUBLE_EQ(json["paper_pass3"].get<double>(), 0.073);
+}
+
+}  // namespace
+}  // namespace crux
