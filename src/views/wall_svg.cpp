@@ -38,27 +38,30 @@ constexpr const char* kAnchorTileFill = "#e5f5e9";
 
 constexpr double kTitleFontSize = 15;
 constexpr double kSubtitleFontSize = 10.5;
-constexpr double kLabelFontSize = 11;     // axes and legend
-constexpr double kHoldFontSize = 9;       // hold ids and tile labels
+constexpr double kLabelFontSize = 11;  // axes and legend
+constexpr double kHoldFontSize = 9;    // hold ids and tile labels
 constexpr double kTileNumberFontSize = 8;
 
 // Page layout, in pixels.
 constexpr double kPageMargin = 12;
-constexpr double kPlotLeft = 62;        // room for the z tick labels and axis title
-constexpr double kPlotPadding = 32;     // around the content, room for the hold labels
-constexpr double kBelowPlot = 52;       // y tick labels and axis title
-constexpr double kLegendGap = 24;
+constexpr double kPlotLeft = 62;     // room for the z tick labels and axis title
+constexpr double kPlotPadding = 32;  // around the content, room for the hold labels
+constexpr double kBelowPlot = 52;    // y tick labels and axis title
+constexpr double kLegendGap = 56;    // room for the finish label, right of the plot
 constexpr double kLegendRowHeight = 18;
 constexpr double kLegendSwatchWidth = 26;
 constexpr double kMinimumHoldRadius = 2;  // small holds stay visible
 constexpr double kMinimumTickGap = 30;    // between metre lines
 constexpr double kTickSpacing = 0.5;      // metres, doubled while lines would crowd
 
-// Where the labels of a hold go, relative to its circle.
-constexpr double kLabelOffset = 4;
-constexpr double kStartRingGap = 2.5;   // first start ring, then one more per limb
+// Rings around a hold, in pixels outside its circle: one per limb starting on it, then
+// the grid -> wall ring outside them. Its id goes above the rings, its tile below.
+constexpr double kStartRingGap = 2.5;
 constexpr double kStartRingStep = 3;
-constexpr double kChosenRingGap = 9;    // outside the start rings
+constexpr double kChosenRingGap = 5.5;
+constexpr double kLabelGap = 3;
+
+double start_ring_gap(std::size_t limb_rank) { return kStartRingGap + kStartRingStep * static_cast<double>(limb_rank); }
 
 std::string xml_escaped(std::string_view text) {
   std::string escaped;
@@ -151,10 +154,11 @@ class WallFigure {
     write_finish_line();
     write_holds();
     if (options_.grid) write_tile_projection();
-    if (!start_limbs_.empty()) write_start_marks();
+    if (!start_limbs_.empty()) write_start_rings();
+    if (anchor_tile_ != kOutsideGrid) write_anchor();
     if (options_.number_holds) write_hold_ids();
     if (options_.grid) write_hold_tiles();
-    if (anchor_tile_ != kOutsideGrid) write_anchor();
+    if (!start_limbs_.empty()) write_start_codes();  // last: the most important labels
     write_axis_titles();
     write_legend();
     out_ += "</svg>\n";
@@ -170,6 +174,13 @@ class WallFigure {
   double hold_radius_pixels(const Hold& hold) const {
     return std::max(kMinimumHoldRadius, hold.radius * options_.pixels_per_metre);
   }
+  std::size_t start_limb_count(int index) const {
+    const auto found = start_limbs_.find(index);
+    return found == start_limbs_.end() ? 0 : found->second.size();
+  }
+  double chosen_ring_gap(int index) const { return std::max(kChosenRingGap, start_ring_gap(start_limb_count(index))); }
+  // The same for every hold, so that labels line up; from the rings a hold may carry.
+  double label_gap() const { return (options_.grid ? kChosenRingGap : start_ring_gap(0)) + kLabelGap; }
   bool outside_grid(int index) const { return options_.grid && hold_tiles_[index] == kOutsideGrid; }
   double hold_x(const Hold& hold) const { return view_.screen_x(hold.position.y()); }
   double hold_y(const Hold& hold) const { return view_.screen_y(hold.position.z()); }
@@ -202,7 +213,7 @@ class WallFigure {
       if (options_.grid_limb) grid_line += fmt::format(", placed for the {}", limb_style(*options_.grid_limb).name);
       subtitles_.push_back(std::move(grid_line));
     }
-    const double plot_top = kPageMargin + 22 + 15 * static_cast<double>(subtitles_.size());
+    const double plot_top = kPageMargin + 31 + 15 * static_cast<double>(subtitles_.size());
     view_ = {extent_.y_max, extent_.z_max, kPlotLeft, plot_top, scale};
 
     if (options_.grid && options_.grid_limb) {
@@ -245,7 +256,7 @@ class WallFigure {
     if (!options_.grid) return;
     legend_.push_back({Swatch::GridTile, "grid tile, with its number"});
     legend_.push_back({Swatch::HoldTile, "tile a hold lies in"});
-    legend_.push_back({Swatch::ChosenHold, "hold nearest its tile's centre"});
+    legend_.push_back({Swatch::ChosenHold, "hold its tile maps to (nearest centre)"});
     legend_.push_back({Swatch::OutsideHold, "hold outside the grid"});
     if (anchor_tile_ != kOutsideGrid) {
       legend_.push_back({Swatch::Anchor, fmt::format("anchor P of the {}", limb_style(*options_.grid_limb).name)});
@@ -254,9 +265,11 @@ class WallFigure {
 
   void write_document_start() {
     out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-    emit("<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{0:.0f}\" height=\"{1:.0f}\" "
-         "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
-         page_width_, page_height_);
+    emit(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" "
+        "width=\"{0:.0f}\" height=\"{1:.0f}\" "
+        "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
+        page_width_, page_height_);
     emit("<title>{}</title>\n", xml_escaped(wall_.name));
     emit("<rect width=\"{:.0f}\" height=\"{:.0f}\" fill=\"white\"/>\n", page_width_, page_height_);
   }
@@ -287,9 +300,10 @@ class WallFigure {
       emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", left, y, right);
     }
     out_ += "</g>\n";
-    emit("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\" "
-         "stroke-width=\"1\"/>\n",
-         left, top, plot_width_, plot_height_);
+    emit(
+        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\" "
+        "stroke-width=\"1\"/>\n",
+        left, top, plot_width_, plot_height_);
 
     emit("<g class=\"tick-labels\" font-size=\"{}\" fill=\"#555555\">\n", kLabelFontSize - 1);
     for (long k = first_y; k <= last_y; ++k) {
@@ -341,12 +355,13 @@ class WallFigure {
 
   void write_finish_line() {
     const double y = view_.screen_y(wall_.finish_height), right = view_.left + plot_width_;
-    emit("<line class=\"finish\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" "
-         "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
-         view_.left, y, right, y);
-    emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-style=\"italic\" text-anchor=\"end\" "
-         "fill=\"#444444\">finish</text>\n",
-         right - 4, y - 4, kLabelFontSize - 1);
+    emit(
+        "<line class=\"finish\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" "
+        "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
+        view_.left, y, right, y);
+    // Outside the plot, where no hold label can cover it.
+    emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-style=\"italic\" fill=\"#444444\">finish</text>\n",
+         right + 4, y + 3.5, kLabelFontSize - 1);
   }
 
   void write_holds() {
@@ -362,69 +377,96 @@ class WallFigure {
   // Grid -> wall: a ring around the hold each tile projects onto.
   void write_tile_projection() {
     const GridPlacement& grid = *options_.grid;
-    emit("<g class=\"tile-holds\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\">\n", kTileColour);
+    emit("<g class=\"tile-holds\" fill=\"none\" stroke=\"{}\" stroke-width=\"1\">\n", kTileColour);
     for (int tile = 0; tile < grid.columns * grid.rows; ++tile) {
       const int index = hold_in_tile(wall_, grid, tile);
       if (index < 0) continue;
       const Hold& hold = wall_.holds[index];
       emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", hold_x(hold), hold_y(hold),
-           hold_radius_pixels(hold) + kChosenRingGap);
+           hold_radius_pixels(hold) + chosen_ring_gap(index));
     }
     out_ += "</g>\n";
   }
 
-  // One coloured ring per limb on its start hold, and the limbs' codes on the hold's left.
-  void write_start_marks() {
-    emit("<g class=\"start-marks\" font-size=\"{}\" font-weight=\"bold\">\n", kHoldFontSize + 1);
+  // Labels go over a white halo, to stay legible where they cross lines or each other:
+  // the group is defined once and drawn twice, stroked white and then plain.
+  template <typename... Args>
+  void begin_haloed_labels(std::string_view group_class, fmt::format_string<Args...> attributes, Args&&... args) {
+    emit("<defs>\n<g class=\"{0}\" id=\"{0}\" ", group_class);
+    emit(attributes, std::forward<Args>(args)...);
+    out_ += ">\n";
+  }
+  void end_haloed_labels(std::string_view group_class) {
+    emit(
+        "</g>\n</defs>\n<use xlink:href=\"#{0}\" stroke=\"white\" stroke-width=\"3\" stroke-linejoin=\"round\"/>\n"
+        "<use xlink:href=\"#{0}\"/>\n",
+        group_class);
+  }
+
+  // One coloured ring per limb on its start hold.
+  void write_start_rings() {
+    out_ += "<g class=\"start-rings\" fill=\"none\" stroke-width=\"2\">\n";
     for (const auto& [index, limbs] : start_limbs_) {
       const Hold& hold = wall_.holds[index];
-      const double x = hold_x(hold), y = hold_y(hold), radius = hold_radius_pixels(hold);
       for (std::size_t k = 0; k < limbs.size(); ++k) {
         const LimbStyle& style = kLimbStyles[limbs[k]];
-        emit("<circle id=\"start-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
-             "stroke-width=\"2\"/>\n",
-             style.code, x, y, radius + kStartRingGap + kStartRingStep * static_cast<double>(k), style.colour);
+        emit("<circle id=\"start-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" stroke=\"{}\"/>\n", style.code,
+             hold_x(hold), hold_y(hold), hold_radius_pixels(hold) + start_ring_gap(k), style.colour);
       }
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">", x - radius - kChosenRingGap - 2, y + 3.5);
+    }
+    out_ += "</g>\n";
+  }
+
+  // The limbs' codes on the left of their start hold.
+  void write_start_codes() {
+    begin_haloed_labels("start-marks", "font-size=\"{}\" font-weight=\"bold\" text-anchor=\"end\"", kHoldFontSize + 1);
+    for (const auto& [index, limbs] : start_limbs_) {
+      const Hold& hold = wall_.holds[index];
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">",
+           hold_x(hold) - hold_radius_pixels(hold) - chosen_ring_gap(index) - kLabelGap, hold_y(hold) + 3.5);
       for (std::size_t k = 0; k < limbs.size(); ++k) {
         const LimbStyle& style = kLimbStyles[limbs[k]];
         emit("{}<tspan fill=\"{}\">{}</tspan>", k == 0 ? "" : "/", style.colour, style.code);
       }
       out_ += "</text>\n";
     }
-    out_ += "</g>\n";
+    end_haloed_labels("start-marks");
   }
 
   void write_hold_ids() {
-    emit("<g class=\"hold-ids\" font-size=\"{}\" fill=\"{}\">\n", kHoldFontSize, kHoldIdColour);
+    begin_haloed_labels("hold-ids", "font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\"", kHoldFontSize,
+                        kHoldIdColour);
     for (int i = 0; i < wall_.hold_count(); ++i) {
       const Hold& hold = wall_.holds[i];
       const double radius = hold_radius_pixels(hold);
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\"{}>{}</text>\n", hold_x(hold) + radius + kLabelOffset,
-           hold_y(hold) - radius - 1, outside_grid(i) ? fmt::format(" fill=\"{}\"", kGreyedColour) : "", hold.id);
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\"{}>{}</text>\n", hold_x(hold), hold_y(hold) - radius - label_gap(),
+           outside_grid(i) ? fmt::format(" fill=\"{}\"", kGreyedColour) : "", hold.id);
     }
-    out_ += "</g>\n";
+    end_haloed_labels("hold-ids");
   }
 
-  // Wall -> grid: the number of the tile each hold lies in, below its id.
+  // Wall -> grid: the number of the tile each hold lies in, below it.
   void write_hold_tiles() {
-    emit("<g class=\"hold-tiles\" font-size=\"{}\" fill=\"{}\">\n", kHoldFontSize, kTileColour);
+    begin_haloed_labels("hold-tiles", "font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\"", kHoldFontSize,
+                        kTileColour);
     for (int i = 0; i < wall_.hold_count(); ++i) {
       if (outside_grid(i)) continue;
       const Hold& hold = wall_.holds[i];
       const double radius = hold_radius_pixels(hold);
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">t{}</text>\n", hold_x(hold) + radius + kLabelOffset,
-           hold_y(hold) + radius + kHoldFontSize, hold_tiles_[i]);
+      // The baseline sits a cap height below the gap.
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">t{}</text>\n", hold_x(hold), hold_y(hold) + radius + label_gap() + 7,
+           hold_tiles_[i]);
     }
-    out_ += "</g>\n";
+    end_haloed_labels("hold-tiles");
   }
 
   // The P_i point: the anchor tile's centre, placed on the free limb.
   void write_anchor() {
     const Eigen::Vector3d centre = options_.grid->tile_centre(anchor_tile_);
-    emit("<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" "
-         "stroke-width=\"1\"/>\n",
-         view_.screen_x(centre.y()), view_.screen_y(centre.z()), kAnchorColour);
+    emit(
+        "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" "
+        "stroke-width=\"1\"/>\n",
+        view_.screen_x(centre.y()), view_.screen_y(centre.z()), kAnchorColour);
   }
 
   // y is mirrored (see FrontView), so its title carries an arrow pointing left.
@@ -432,9 +474,10 @@ class WallFigure {
     const double bottom = view_.top + plot_height_;
     const double z_title_x = 18, z_title_y = view_.top + plot_height_ / 2;
     emit("<g class=\"axis-titles\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
-    emit("<text x=\"{0:.2f}\" y=\"{1:.2f}\" text-anchor=\"middle\" transform=\"rotate(-90 {0:.2f} {1:.2f})\">"
-         "z (m), up</text>\n",
-         z_title_x, z_title_y);
+    emit(
+        "<text x=\"{0:.2f}\" y=\"{1:.2f}\" text-anchor=\"middle\" transform=\"rotate(-90 {0:.2f} {1:.2f})\">"
+        "z (m), up</text>\n",
+        z_title_x, z_title_y);
     const double title_width = 36 + estimated_text_width(y_axis_title_, kLabelFontSize);
     const double arrow_x = view_.left + std::max(0.0, (plot_width_ - title_width) / 2), arrow_y = bottom + 36;
     emit("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#333333\" stroke-width=\"1.2\"/>\n",
@@ -473,14 +516,16 @@ class WallFigure {
         ring(radius + kStartRingGap, kLimbStyles[entry.limb].colour, 2);
         break;
       case Swatch::Finish:
-        emit("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" stroke-width=\"1.2\" "
-             "stroke-dasharray=\"6 4\"/>\n",
-             x - 12, y, x + 12, y);
+        emit(
+            "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" stroke-width=\"1.2\" "
+            "stroke-dasharray=\"6 4\"/>\n",
+            x - 12, y, x + 12, y);
         break;
       case Swatch::GridTile:
-        emit("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"none\" stroke=\"{}\" "
-             "stroke-width=\"0.8\"/>\n",
-             x - 11, y - 7, kGridColour);
+        emit(
+            "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"none\" stroke=\"{}\" "
+            "stroke-width=\"0.8\"/>\n",
+            x - 11, y - 7, kGridColour);
         emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\">12</text>\n", x - 9, y + 1,
              kTileNumberFontSize, kGridColour);
         break;
@@ -490,7 +535,7 @@ class WallFigure {
         break;
       case Swatch::ChosenHold:
         disc(kHoldColour);
-        ring(radius + 3.5, kTileColour, 1.2);
+        ring(radius + 3.5, kTileColour, 1);
         break;
       case Swatch::OutsideHold: disc(kGreyedColour); break;
       case Swatch::Anchor:
@@ -504,7 +549,7 @@ class WallFigure {
 
   const Wall& wall_;
   const WallSvgOptions& options_;
-  std::vector<int> hold_tiles_;                 // per hold, with a grid
+  std::vector<int> hold_tiles_;                  // per hold, with a grid
   std::map<int, std::vector<int>> start_limbs_;  // hold index -> limbs starting on it
   int anchor_tile_ = kOutsideGrid;
   Extent extent_;  // the plot, in metres
@@ -522,8 +567,8 @@ class WallFigure {
 
 std::string render_wall_svg(const Wall& wall, const WallSvgOptions& options) {
   if (!(options.pixels_per_metre > 0) || !std::isfinite(options.pixels_per_metre)) {
-    throw std::invalid_argument(fmt::format("render_wall_svg: pixels_per_metre must be positive, not {}",
-                                            options.pixels_per_metre));
+    throw std::invalid_argument(
+        fmt::format("render_wall_svg: pixels_per_metre must be positive, not {}", options.pixels_per_metre));
   }
   return WallFigure(wall, options).render();
 }

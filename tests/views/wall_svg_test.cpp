@@ -178,7 +178,9 @@ TEST(WallSvgTest, IsAWellFormedStandaloneDocument) {
   const std::string svg = render_wall_svg(lattice_wall(3, 4, 0.3, 0.5));
   EXPECT_EQ(check_well_formed(svg), "");
   EXPECT_TRUE(svg.starts_with("<?xml version=\"1.0\""));
-  EXPECT_NE(svg.find("<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\""), std::string::npos);
+  const std::string root = element_with(svg, "<svg");
+  EXPECT_EQ(attribute(root, "xmlns"), "http://www.w3.org/2000/svg");
+  EXPECT_EQ(attribute(root, "version"), "1.1");
   EXPECT_NE(svg.find("fill=\"white\""), std::string::npos);
   EXPECT_NE(svg.find(">lattice 3 x 4</text>"), std::string::npos);
   EXPECT_NE(svg.find("class=\"finish\""), std::string::npos);
@@ -227,7 +229,8 @@ TEST(WallSvgTest, MarksEachStartHoldWithItsLimb) {
   EXPECT_EQ(as_set(group_texts(svg, "start-marks")), (std::set<std::string>{"RH", "LH", "RF", "LF"}));
   // Each limb has its own colour.
   std::set<std::string> colours;
-  for (const char* code : codes) colours.insert(attribute(element_with(svg, fmt::format("id=\"start-{}\"", code)), "stroke"));
+  for (const char* code : codes)
+    colours.insert(attribute(element_with(svg, fmt::format("id=\"start-{}\"", code)), "stroke"));
   EXPECT_EQ(colours.size(), 4u);
 }
 
