@@ -11,5 +11,6 @@ void add_ik_commands(CLI::App& app);
 void add_demo_command(CLI::App& app);
 void add_filter_stats_command(CLI::App& app);
 void add_wall_command(CLI::App& app);
+void add_learning_commands(CLI::App& app);
 
 }  // namespace crux::cli

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   crux::cli::add_demo_command(app);
   crux::cli::add_wall_command(app);
   crux::cli::add_filter_stats_command(app);
+  crux::cli::add_learning_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

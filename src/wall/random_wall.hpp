@@ -15,7 +15,7 @@ struct RandomWallParameters {
   double tile_height = 0.5;
   double sigma = 0.08;  // standard deviation of each hold's displacement in y and in z
   double hold_radius = 0.04;
-  double finish_height = 2.5;
+  double finish_height = 3.0;  // calibrated on the optimal climb length (docs/DESIGN.md)
   // Start configuration as (column, row) vertices, columns from the climber's right,
   // rows from the bottom, limb order (spec item 5).
   std::array<std::array<int, 2>, kLimbCount> start_vertices{{{1, 3}, {3, 3}, {1, 0}, {3, 0}}};

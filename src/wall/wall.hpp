@@ -24,7 +24,7 @@ struct Wall {
   std::vector<Hold> holds;
   // Hold indices (into `holds`) of the start configuration, limb order.
   std::array<int, kLimbCount> start{0, 0, 0, 0};
-  double finish_height = 2.5;  // the episode ends when the centre of mass reaches it
+  double finish_height = 3.0;  // the episode ends when the centre of mass reaches it (docs/DESIGN.md)
 
   int hold_count() const { return static_cast<int>(holds.size()); }
   // Index of the hold with this id, or -1.

@@ -1,0 +1,86 @@
+#include "climbing/climbing_mdp.hpp"
+
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "body/kinematics.hpp"
+#include "common/input_error.hpp"
+
+namespace crux {
+
+ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters)
+    : model_(model),
+      wall_(wall),
+      parameters_(parameters),
+      data_(model),
+      reacher_(model, wall, parameters.reachability),
+      possible_(wall.hold_count()),
+      candidates_(wall.hold_count()),
+      tile_representative_(parameters.grid.tile_count()),
+      tile_best_distance_(parameters.grid.tile_count()) {
+  const Posture* start = reacher_.reach_start();
+  if (start == nullptr) throw InputError(wall_.name, "the start configuration is not reachable");
+  start_posture_ = *start;
+  reset();
+}
+
+void ClimbingMdp::reset() {
+  configuration_ = start_configuration(wall_).with(Limb::RightHand, kFree);
+  posture_ = start_posture_;
+  describe();
+}
+
+void ClimbingMdp::describe() {
+  forward_kinematics(model_, data_, posture_);
+  const Limb free = configuration_.free_limb();
+  const GridPlacement placement = place_grid(parameters_.grid, free, data_.points[1 + static_cast<int>(free)]);
+  state_.wall = encode(configuration_, wall_.hold_count());
+  state_.grid = encode(describe_state(wall_, configuration_, placement), parameters_.grid);
+
+  candidate_count_ = static_cast<std::size_t>(possible_actions(wall_, configuration_, parameters_.filter, possible_));
+  std::fill(tile_representative_.begin(), tile_representative_.end(), -1);
+  std::fill(tile_best_distance_.begin(), tile_best_distance_.end(), std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < candidate_count_; ++i) {
+    const Eigen::Vector3d& position = wall_.holds[possible_[i]].position;
+    const int tile = placement.tile_of(position);
+    candidates_[i] = {possible_[i], tile == kOutsideGrid ? kNoAction : tile, false};
+    if (tile == kOutsideGrid) continue;
+    // Grid -> wall: the possible hold nearest the tile's centre (first listed on ties).
+    const Eigen::Vector3d centre = placement.tile_centre(tile);
+    const double distance = (Eigen::Vector2d(position.y(), position.z()) - Eigen::Vector2d(centre.y(), centre.z())).squaredNorm();
+    if (distance < tile_best_distance_[tile]) {
+      tile_best_distance_[tile] = distance;
+      tile_representative_[tile] = static_cast<int>(i);
+    }
+  }
+  for (const int representative : tile_representative_) {
+    if (representative >= 0) candidates_[representative].represents_grid_action = true;
+  }
+}
+
+StepOutcome ClimbingMdp::step(ActionCode hold) {
+  const Limb free = configuration_.free_limb();
+  const HoldConfiguration complete = configuration_.with(free, hold);
+  StepOutcome outcome;
+  const Posture* reached = reacher_.reach(posture_, complete);
+  if (reached == nullptr) {
+    outcome.reward = parameters_.rewards.unreachable;
+    return outcome;
+  }
+  outcome.reached = true;
+  outcome.root_rise_m = (*reached)[2] - posture_[2];  // G[2] is e0's height
+  if (reacher_.centre_of_mass_height(*reached) >= wall_.finish_height) {
+    outcome.finished = true;
+    outcome.reward = parameters_.rewards.finish;
+    reset();
+    return outcome;
+  }
+  outcome.reward = parameters_.rewards.step;
+  posture_ = *reached;
+  configuration_ = complete.with(next_free_limb(free), kFree);
+  describe();
+  return outcome;
+}
+
+}  // namespace crux

@@ -1,0 +1,77 @@
+#pragma once
+// The climbing MDP (paper, sections III-C and III-D, Algorithm 2): a state is a
+// 3-configuration with its agent-space descriptor, an action a hold with its tile.
+// A step runs IK from the current posture to the new 4-configuration with the root
+// target H(C4); only this class touches the kinematics, the learner sees codes.
+
+#include <span>
+#include <vector>
+
+#include "agent_space/agent_descriptor.hpp"
+#include "climbing/configuration_reacher.hpp"
+#include "configurations/possible_actions.hpp"
+#include "configurations/reachability.hpp"
+#include "learning/action_selection.hpp"
+
+namespace crux {
+
+struct Rewards {
+  double unreachable = -1000.0;  // stay in place
+  double step = -1.0;            // a reachable 4-configuration
+  double finish = 200000.0;      // the centre of mass passed the finishing height
+};
+
+struct ClimbingParameters {
+  FilterParameters filter;
+  GridParameters grid;
+  ReachabilityParameters reachability;
+  Rewards rewards;
+};
+
+struct StepOutcome {
+  bool reached = false;    // the 4-configuration was C-reachable
+  bool finished = false;   // ... and the centre of mass passed the finishing height
+  double reward = 0.0;
+  double root_rise_m = 0.0;  // change of e0's height (0 when not reached)
+};
+
+class ClimbingMdp {
+ public:
+  // Solves the start configuration from standing; throws InputError naming the wall if
+  // it is not reachable (such a wall is reported, never silently used).
+  ClimbingMdp(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters);
+
+  // Back to the start configuration with the right hand free (Algorithm 2, lines 1-3).
+  void reset();
+
+  const StateCouple& state() const { return state_; }
+  std::span<const ActionCandidate> candidates() const { return {candidates_.data(), candidate_count_}; }
+  StepOutcome step(ActionCode hold);
+
+  const HoldConfiguration& configuration() const { return configuration_; }
+  const Posture& posture() const { return posture_; }
+  const Posture& start_posture() const { return start_posture_; }
+  const ConfigurationReacher& reacher() const { return reacher_; }
+  const Wall& wall() const { return wall_; }
+  int wall_action_count() const { return wall_.hold_count(); }
+  int grid_action_count() const { return parameters_.grid.tile_count(); }
+
+ private:
+  void describe();  // the state couple and candidates of (configuration_, posture_)
+
+  const BodyModel& model_;
+  const Wall& wall_;
+  ClimbingParameters parameters_;
+  BodyData data_;
+  ConfigurationReacher reacher_;
+  Posture start_posture_, posture_;
+  HoldConfiguration configuration_;  // a 3-configuration
+  StateCouple state_;
+  std::vector<int> possible_;
+  std::vector<ActionCandidate> candidates_;
+  std::size_t candidate_count_ = 0;
+  std::vector<int> tile_representative_;  // per tile: candidate index nearest its centre
+  std::vector<double> tile_best_distance_;
+};
+
+}  // namespace crux

@@ -1,0 +1,37 @@
+#include "climbing/configuration_reacher.hpp"
+
+#include "body/kinematics.hpp"
+
+namespace crux {
+
+ConfigurationReacher::ConfigurationReacher(const BodyModel& model, const Wall& wall,
+                                           const ReachabilityParameters& parameters)
+    : model_(model), wall_(wall), parameters_(parameters), data_(model) {}
+
+const Posture* ConfigurationReacher::reach(const Posture& from, const HoldConfiguration& complete) {
+  const std::uint64_t code = encode(complete, wall_.hold_count());
+  if (const Posture* cached = cache_.reached(code)) return cached;
+  if (cache_.known_unreachable(code)) return nullptr;
+  const ReachTarget target = reach_target(model_, wall_, complete, parameters_.root);
+  const IkResult result = solve_ik(model_, data_, from, target, parameters_.ik);
+  ++solves_;
+  if (result.reached) {
+    cache_.store_reached(code, result.posture);
+    return cache_.reached(code);
+  }
+  if (parameters_.cache_unreachable) cache_.store_unreachable(code);
+  return nullptr;
+}
+
+const Posture* ConfigurationReacher::reach_start() {
+  const HoldConfiguration start = start_configuration(wall_);
+  const ReachTarget target = reach_target(model_, wall_, start, parameters_.root);
+  return reach(standing_posture(target.root), start);
+}
+
+double ConfigurationReacher::centre_of_mass_height(const Posture& posture) {
+  forward_kinematics(model_, data_, posture);
+  return centre_of_mass(model_, data_).z();
+}
+
+}  // namespace crux

@@ -1,0 +1,42 @@
+#pragma once
+// Whether a 4-configuration is C-reachable from a posture, and with which posture,
+// answered once per 4-configuration through the cache (section III-C). The climbing
+// MDP and the exact planner share it, so they apply the same reachability test.
+
+#include "body/body_data.hpp"
+#include "climbing/posture_cache.hpp"
+#include "configurations/reachability.hpp"
+
+namespace crux {
+
+struct ReachabilityParameters {
+  IkSettings ik;
+  RootTargetParameters root;
+  bool cache_unreachable = true;
+};
+
+class ConfigurationReacher {
+ public:
+  ConfigurationReacher(const BodyModel& model, const Wall& wall, const ReachabilityParameters& parameters);
+
+  // The posture grasping `complete`, solved by IK from `from` unless cached; null when
+  // not reachable. The pointer stays valid for the reacher's lifetime.
+  const Posture* reach(const Posture& from, const HoldConfiguration& complete);
+
+  // The start configuration solved from standing (and cached); null if unreachable.
+  const Posture* reach_start();
+
+  double centre_of_mass_height(const Posture& posture);
+  const PostureCache& cache() const { return cache_; }
+  std::size_t solves() const { return solves_; }
+
+ private:
+  const BodyModel& model_;
+  const Wall& wall_;
+  ReachabilityParameters parameters_;
+  BodyData data_;
+  PostureCache cache_;
+  std::size_t solves_ = 0;
+};
+
+}  // namespace crux

@@ -1,0 +1,213 @@
+#include "experiments/experiment_config.hpp"
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "common/input_error.hpp"
+
+namespace crux {
+
+std::vector<ConfigField> config_fields(ExperimentConfig& c) {
+  ExperimentSettings& s = c.settings;
+  LearningParameters& l = s.learning;
+  ClimbingParameters& m = l.climbing;
+  IkSettings& ik = m.reachability.ik;
+  return {
+      {"experiment.runs", "--runs", "Runs per condition", &s.runs},
+      {"experiment.seed", "--seed", "Experiment seed; walls and runs derive from it", &s.seed},
+      {"experiment.threads", "--threads", "Worker threads (0: all cores)", &s.threads},
+      {"experiment.iterations", "--iterations", "Learning iterations (real actions) per run", &l.iterations},
+      {"experiment.beginning_iterations", "--beginning", "Iterations of Table I's beginning window",
+       &c.beginning_iterations},
+      {"experiment.plan", "--plan", "Compute each wall's exact shortest climb", &s.plan},
+      {"experiment.greedy_cap", "--greedy-cap", "Actions allowed to the greedy policy's evaluation climb",
+       &l.greedy_cap},
+      {"learning.alpha", "--learning-rate", "Q-learning step size alpha", &l.dyna.rates.alpha},
+      {"learning.gamma", "--gamma", "Discount factor gamma", &l.dyna.rates.gamma},
+      {"learning.planning_steps", "--planning-steps", "Dyna planning updates per real step", &l.dyna.planning_steps},
+      {"learning.epsilon", "--epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon},
+      {"rewards.unreachable", "--reward-unreachable", "Reward of an unreachable 4-configuration",
+       &m.rewards.unreachable},
+      {"rewards.step", "--reward-step", "Reward of a reachable 4-configuration", &m.rewards.step},
+      {"rewards.finish", "--reward-finish", "Reward when the centre of mass passes the finishing height",
+       &m.rewards.finish},
+      {"ik.solver", "--solver", "IK solver: fast or paper (Algorithm 1)", &c.solver},
+      {"ik.alpha", "--ik-alpha", "Step size of the paper's gradient descent", &ik.paper.step_size},
+      {"ik.time_step", "--ik-time-step", "Simulated seconds per IK iteration", &ik.paper.time_step_s},
+      {"ik.timeout", "--ik-timeout", "Delta_t: simulated seconds before IK gives up", &ik.paper.timeout_s},
+      {"ik.fast_max_iterations", "--fast-max-iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations},
+      {"ik.grasp_radius", "--grasp-radius", "Radius of the grasp spheres (m)", &ik.tolerances.grasp_radius},
+      {"ik.root_tolerance", "--root-tolerance", "Radius of the root tolerance sphere (m)", &ik.tolerances.root_radius},
+      {"ik.wall_distance", "--wall-distance", "x of the root target H(C4) (m)", &m.reachability.root.distance_from_wall},
+      {"ik.cache_unreachable", "--cache-unreachable", "Cache unreachable verdicts", &m.reachability.cache_unreachable},
+      {"filter.max_span", "--max-span", "Largest distance between two holds of a configuration (m)",
+       &m.filter.max_span_m},
+      {"filter.reading", "--reading", "Reading of 'both feet above the hands'", &c.reading},
+      {"grid.columns", "--grid-columns", "Columns of the moving grid", &m.grid.columns},
+      {"grid.rows", "--grid-rows", "Rows of the moving grid", &m.grid.rows},
+      {"grid.tile_width", "--grid-tile-width", "Tile width of the moving grid (m)", &m.grid.tile_width},
+      {"grid.tile_height", "--grid-tile-height", "Tile height of the moving grid (m)", &m.grid.tile_height},
+      {"walls.columns", "--wall-columns", "Tiles across a random wall", &s.walls.columns},
+      {"walls.rows", "--wall-rows", "Tiles up a random wall", &s.walls.rows},
+      {"walls.tile_width", "--wall-tile-width", "Tile width of a random wall (m)", &s.walls.tile_width},
+      {"walls.tile_height", "--wall-tile-height", "Tile height of a random wall (m)", &s.walls.tile_height},
+      {"walls.sigma", "--wall-sigma", "Standard deviation of hold displacement (m)", &s.walls.sigma},
+      {"walls.hold_radius", "--hold-radius", "Hold radius (m)", &s.walls.hold_radius},
+      {"walls.finish_height", "--finish-height", "Finishing height of the centre of mass (m)", &s.walls.finish_height},
+  };
+}
+
+namespace {
+
+std::string toml_double(double value) {
+  std::string text = fmt::format("{}", value);
+  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+  return text;
+}
+
+std::string toml_string(const std::string& value) {
+  std::string out = "\"";
+  for (const char ch : value) {
+    if (ch == '"' || ch == '\\') out += '\\';
+    out += ch;
+  }
+  return out + "\"";
+}
+
+void assign(const std::string& path, const ConfigField& field, const toml::node& node) {
+  const auto where = [&] {
+    return fmt::format("line {}: {}", node.source().begin.line, field.key);
+  };
+  std::visit(
+      [&](auto* target) {
+        using T = std::remove_pointer_t<decltype(target)>;
+        if constexpr (std::is_same_v<T, double>) {
+          if (const auto v = node.value<double>(); v && std::isfinite(*v)) {
+            *target = *v;
+            return;
+          }
+          throw InputError(path, where() + " must be a finite number");
+        } else if constexpr (std::is_same_v<T, int>) {
+          if (const auto v = node.as_integer(); v && v->get() >= std::numeric_limits<int>::min() &&
+                                                v->get() <= std::numeric_limits<int>::max()) {
+            *target = static_cast<int>(v->get());
+            return;
+          }
+          throw InputError(path, where() + " must be an integer");
+        } else if constexpr (std::is_same_v<T, std::uint64_t>) {
+          if (const auto v = node.as_integer(); v && v->get() >= 0) {
+            *target = static_cast<std::uint64_t>(v->get());
+            return;
+          }
+          throw InputError(path, where() + " must be a non-negative integer");
+        } else if constexpr (std::is_same_v<T, bool>) {
+          if (const auto v = node.as_boolean()) {
+            *target = v->get();
+            return;
+          }
+          throw InputError(path, where() + " must be true or false");
+        } else {
+          if (const auto v = node.as_string()) {
+            *target = v->get();
+            return;
+          }
+          throw InputError(path, where() + " must be a string");
+        }
+      },
+      field.target);
+}
+
+}  // namespace
+
+void apply_config_file(const std::string& path, ExperimentConfig& config) {
+  toml::table table;
+  try {
+    table = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    const std::string description(e.description());
+    if (e.source().begin.line == 0) throw InputError(path, "cannot read the config file: " + description);
+    throw InputError(path, fmt::format("TOML syntax error at line {}, column {}: {}", e.source().begin.line,
+                                       e.source().begin.column, description));
+  }
+  std::map<std::string, const ConfigField*> known;
+  const std::vector<ConfigField> fields = config_fields(config);
+  for (const ConfigField& field : fields) known[field.key] = &field;
+  for (const auto& [section, section_node] : table) {
+    const toml::table* entries = section_node.as_table();
+    if (entries == nullptr) {
+      throw InputError(path, fmt::format("line {}: '{}' must be a [section]", section_node.source().begin.line,
+                                         section.str()));
+    }
+    for (const auto& [name, node] : *entries) {
+      const std::string key = std::string(section.str()) + "." + std::string(name.str());
+      const auto it = known.find(key);
+      if (it == known.end()) throw InputError(path, fmt::format("line {}: unknown key {}", node.source().begin.line, key));
+      assign(path, *it->second, node);
+    }
+  }
+}
+
+void finalize_config(ExperimentConfig& config) {
+  ExperimentSettings& s = config.settings;
+  const auto solver = parse_ik_solver(config.solver);
+  if (!solver) throw InputError("ik.solver", fmt::format("unknown solver '{}' (expected fast or paper)", config.solver));
+  s.learning.climbing.reachability.ik.solver = *solver;
+  s.learning.climbing.reachability.ik.fast.time_step_s = s.learning.climbing.reachability.ik.paper.time_step_s;
+  const auto reading = parse_reading(config.reading);
+  if (!reading) throw InputError("filter.reading", fmt::format("unknown reading '{}'", config.reading));
+  s.learning.climbing.filter.feet_above_hands = *reading;
+  const auto require = [](bool ok, const char* what) {
+    if (!ok) throw InputError("config", what);
+  };
+  require(s.runs > 0, "experiment.runs must be positive");
+  require(s.threads >= 0, "experiment.threads must be 0 (all cores) or positive");
+  require(s.learning.iterations > 0, "experiment.iterations must be positive");
+  require(config.beginning_iterations > 0, "experiment.beginning_iterations must be positive");
+  require(s.learning.dyna.rates.alpha > 0 && s.learning.dyna.rates.alpha <= 1, "learning.alpha must be in (0, 1]");
+  require(s.learning.dyna.rates.gamma >= 0 && s.learning.dyna.rates.gamma < 1, "learning.gamma must be in [0, 1)");
+  require(s.learning.dyna.planning_steps >= 0, "learning.planning_steps must be >= 0");
+  require(s.learning.dyna.epsilon >= 0 && s.learning.dyna.epsilon <= 1, "learning.epsilon must be in [0, 1]");
+  require(s.learning.climbing.grid.columns > 0 && s.learning.climbing.grid.rows > 0, "grid columns and rows must be positive");
+  require(s.walls.columns > 0 && s.walls.rows > 0, "walls.columns and walls.rows must be positive");
+  require(s.walls.hold_radius > 0, "walls.hold_radius must be positive");
+  const IkSettings& ik = s.learning.climbing.reachability.ik;
+  require(ik.paper.step_size > 0 && ik.paper.time_step_s > 0 && ik.paper.timeout_s > 0,
+          "ik.alpha, ik.time_step and ik.timeout must be positive");
+}
+
+std::string config_to_toml(ExperimentConfig& config) {
+  std::ostringstream out;
+  out << "# crux effective configuration: every parameter of this run (docs/OUTPUTS.md)\n";
+  std::string section;
+  for (const ConfigField& field : config_fields(config)) {
+    const std::string field_section = field.key.substr(0, field.key.find('.'));
+    if (field_section != section) {
+      out << (section.empty() ? "" : "\n") << '[' << field_section << "]\n";
+      section = field_section;
+    }
+    out << field.key.substr(field.key.find('.') + 1) << " = ";
+    std::visit(
+        [&](auto* target) {
+          using T = std::remove_pointer_t<decltype(target)>;
+          if constexpr (std::is_same_v<T, double>) {
+            out << toml_double(*target);
+          } else if constexpr (std::is_same_v<T, bool>) {
+            out << (*target ? "true" : "false");
+          } else if constexpr (std::is_same_v<T, std::string>) {
+            out << toml_string(*target);
+          } else {
+            out << *target;
+          }
+        },
+        field.target);
+    out << "  # " << field.help << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace crux

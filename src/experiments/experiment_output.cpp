@@ -1,0 +1,217 @@
+#include "experiments/experiment_output.hpp"
+
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "agent_space/agent_descriptor.hpp"
+#include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
+#include "experiments/table_one.hpp"
+#include "learning/q_table_file.hpp"
+#include "wall/wall_file.hpp"
+
+namespace crux {
+
+namespace fs = std::filesystem;
+
+const PaperTableOne& paper_table_one() {
+  // Section IV, Table I (w-greedy, g-greedy, random).
+  static const PaperTableOne table{
+      {{{7.3, 0.4, 2.0}, {9.4, 4.3, 2.0}}, {{12.0, 1.8, 2.0}, {10.6, 3.4, 2.0}}},
+      {{{1.00, 0.46, 0.43}, {1.00, 0.60, 0.43}}, {{1.00, 0.45, 0.44}, {1.00, 0.57, 0.44}}}};
+  return table;
+}
+
+namespace {
+
+void make_directory(const fs::path& directory) {
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec || !fs::is_directory(directory)) throw InputError(directory.string(), "cannot create the output folder");
+}
+
+std::string number(double value) { return fmt::format("{:.17g}", value); }
+
+// Σ over agent-space states with each free limb of Q_grid(s, tile): Fig. 2b's maps.
+std::vector<std::array<double, kLimbCount>> q_grid_maps(const QTable& q, const GridParameters& grid) {
+  std::vector<std::array<double, kLimbCount>> maps(grid.tile_count(), std::array<double, kLimbCount>{});
+  q.for_each_row([&](StateCode s, std::span<const double> values, std::span<const std::uint32_t>) {
+    const int limb = static_cast<int>(decode_agent_state(static_cast<std::uint32_t>(s), grid).free_limb);
+    for (int tile = 0; tile < grid.tile_count(); ++tile) maps[tile][limb] += values[tile];
+  });
+  return maps;
+}
+
+std::string regime_curve_csv(const ExperimentResult& result, int iterations) {
+  std::ostringstream csv;
+  csv << "condition,iteration,w_greedy,g_greedy,random\n";
+  for (const Condition condition : kConditions) {
+    const auto& runs = result.conditions[static_cast<int>(condition)].runs;
+    std::vector<std::array<double, kRegimeCount>> cumulative(iterations, std::array<double, kRegimeCount>{});
+    for (const RunResult& run : runs) {
+      std::array<double, kRegimeCount> count{};
+      for (int i = 0; i < iterations && i < static_cast<int>(run.iterations.size()); ++i) {
+        count[static_cast<int>(run.iterations[i].regime)] += 1.0;
+        for (int r = 0; r < kRegimeCount; ++r) cumulative[i][r] += count[r] / static_cast<double>(runs.size());
+      }
+    }
+    for (int i = 0; i < iterations; ++i) {
+      csv << condition_name(condition) << ',' << i + 1 << ',' << number(cumulative[i][0]) << ','
+          << number(cumulative[i][1]) << ',' << number(cumulative[i][2]) << '\n';
+    }
+  }
+  return csv.str();
+}
+
+}  // namespace
+
+void write_run_files(const fs::path& directory, const RunResult& run, const BodyModel& model) {
+  make_directory(directory);
+  std::ostringstream iterations;
+  iterations << "iteration,episode,regime,hold,success,root_rise_cm,reward\n";
+  for (std::size_t i = 0; i < run.iterations.size(); ++i) {
+    const IterationRecord& r = run.iterations[i];
+    iterations << i + 1 << ',' << r.episode << ',' << regime_name(r.regime) << ',' << r.hold_id << ','
+               << (r.success ? 1 : 0) << ',' << number(100.0 * r.root_rise_m) << ',' << number(r.reward) << '\n';
+  }
+  write_file_atomically(directory / "iterations.csv", iterations.str());
+  std::ostringstream episodes;
+  episodes << "episode,length\n";
+  for (std::size_t e = 0; e < run.episode_lengths.size(); ++e) episodes << e << ',' << run.episode_lengths[e] << '\n';
+  write_file_atomically(directory / "episodes.csv", episodes.str());
+  save_q_table((directory / "q_grid.bin").string(), run.q_grid);
+  std::ostringstream climb;
+  climb << "step";
+  for (const BodyJoint& joint : model.joints) climb << ',' << joint.name;
+  climb << '\n';
+  for (std::size_t s = 0; s < run.last_climb.size(); ++s) {
+    climb << s;
+    for (int i = 0; i < kConfigurationDof; ++i) climb << ',' << number(run.last_climb[s][i]);
+    climb << '\n';
+  }
+  write_file_atomically(directory / "climb.csv", climb.str());
+}
+
+nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const ExperimentSettings& settings,
+                                          int beginning) {
+  nlohmann::ordered_json out;
+  out["format"] = "crux-summary";
+  out["version"] = 1;
+  out["seed"] = settings.seed;
+  out["runs"] = settings.runs;
+  out["iterations"] = settings.learning.iterations;
+  out["beginning_iterations"] = beginning;
+  out["solver"] = ik_solver_name(settings.learning.climbing.reachability.ik.solver);
+  out["seconds"] = result.seconds;
+  nlohmann::ordered_json table;
+  for (const Condition condition : kConditions) {
+    const auto cells = table_one(result.conditions[static_cast<int>(condition)].runs, beginning);
+    for (const Window window : {Window::Beginning, Window::Overall}) {
+      for (int r = 0; r < kRegimeCount; ++r) {
+        const RegimeStats& s = cells[static_cast<int>(window)][r];
+        table[condition_name(condition)][window_name(window)][regime_name(static_cast<Regime>(r))] = {
+            {"actions", s.actions_per_run}, {"success_rate", s.success_rate}, {"vertical_cm", s.vertical_cm}};
+      }
+    }
+  }
+  out["table1"] = table;
+  nlohmann::ordered_json lengths, runs, maps;
+  for (const Condition condition : kConditions) {
+    const ConditionResult& c = result.conditions[static_cast<int>(condition)];
+    const char* name = condition_name(condition);
+    lengths[name] = nlohmann::json::array();
+    runs[name] = nlohmann::json::array();
+    std::vector<std::array<double, kLimbCount>> mean_map(settings.learning.climbing.grid.tile_count(),
+                                                         std::array<double, kLimbCount>{});
+    for (std::size_t i = 0; i < c.runs.size(); ++i) {
+      const RunResult& run = c.runs[i];
+      const ExperimentWall& wall = result.walls[c.wall_of_run[i]];
+      lengths[name].push_back(run.episode_lengths);
+      runs[name].push_back({{"wall", wall.wall.name},
+                            {"wall_seed", wall.seed},
+                            {"learning_seed", c.learning_seeds[i]},
+                            {"episodes", run.episode_lengths.size()},
+                            {"greedy_length", run.greedy_length},
+                            {"plan_length", wall.plan.found ? wall.plan.length : -1},
+                            {"explored_pairs", run.explored_pairs},
+                            {"explored_share", wall.filtered_pairs > 0 ? static_cast<double>(run.explored_pairs) /
+                                                                             static_cast<double>(wall.filtered_pairs)
+                                                                       : 0.0},
+                            {"ik_solves", run.ik_solves},
+                            {"reached_configurations", run.reached_configurations},
+                            {"unreachable_configurations", run.unreachable_configurations}});
+      const auto map = q_grid_maps(run.q_grid, settings.learning.climbing.grid);
+      for (std::size_t t = 0; t < map.size(); ++t) {
+        for (int l = 0; l < kLimbCount; ++l) mean_map[t][l] += map[t][l] / static_cast<double>(c.runs.size());
+      }
+    }
+    for (int l = 0; l < kLimbCount; ++l) {
+      std::vector<double> tiles;
+      for (const auto& tile : mean_map) tiles.push_back(tile[l]);
+      maps[name][limb_name(static_cast<Limb>(l))] = tiles;
+    }
+  }
+  out["episode_lengths"] = lengths;
+  out["run_facts"] = runs;
+  out["qgrid_maps"] = maps;
+  nlohmann::ordered_json walls = nlohmann::json::array();
+  for (const ExperimentWall& w : result.walls) {
+    walls.push_back({{"name", w.wall.name},
+                     {"seed", w.seed},
+                     {"rejected_seeds", w.rejected_seeds},
+                     {"plan_length", w.plan.found ? w.plan.length : -1},
+                     {"plan_holds", w.plan.hold_ids}});
+  }
+  out["walls"] = walls;
+  return out;
+}
+
+void write_experiment(const fs::path& directory, const ExperimentResult& result, const ExperimentSettings& settings,
+                      const BodyModel& model, const std::string& config_toml, int beginning) {
+  make_directory(directory);
+  write_file_atomically(directory / "config.toml", config_toml);
+  make_directory(directory / "walls");
+  for (std::size_t w = 0; w < result.walls.size(); ++w) {
+    const bool training = static_cast<int>(w) < settings.runs;
+    save_wall((directory / "walls" / fmt::format("{}_{}.json", training ? "training" : "transfer",
+                                                  w % settings.runs)).string(),
+              result.walls[w].wall);
+  }
+  for (const Condition condition : kConditions) {
+    const ConditionResult& c = result.conditions[static_cast<int>(condition)];
+    for (std::size_t i = 0; i < c.runs.size(); ++i) {
+      write_run_files(directory / "runs" / fmt::format("{}_{}", condition_name(condition), i), c.runs[i], model);
+    }
+  }
+  make_directory(directory / "figures");
+  write_file_atomically(directory / "figures" / "fig3_regimes.csv", regime_curve_csv(result, settings.learning.iterations));
+  std::ostringstream fig4;
+  fig4 << "condition,run,episode,length\n";
+  for (const Condition condition : kConditions) {
+    const ConditionResult& c = result.conditions[static_cast<int>(condition)];
+    for (std::size_t i = 0; i < c.runs.size(); ++i) {
+      for (std::size_t e = 0; e < c.runs[i].episode_lengths.size(); ++e) {
+        fig4 << condition_name(condition) << ',' << i << ',' << e << ',' << c.runs[i].episode_lengths[e] << '\n';
+      }
+    }
+  }
+  write_file_atomically(directory / "figures" / "fig4_episode_lengths.csv", fig4.str());
+  const nlohmann::ordered_json summary = experiment_summary(result, settings, beginning);
+  std::ostringstream fig2b;
+  fig2b << "condition,free_limb,tile,column,row,value\n";
+  const GridParameters& grid = settings.learning.climbing.grid;
+  for (const Condition condition : kConditions) {
+    for (int l = 0; l < kLimbCount; ++l) {
+      const auto& tiles = summary["qgrid_maps"][condition_name(condition)][limb_name(static_cast<Limb>(l))];
+      for (int t = 0; t < grid.tile_count(); ++t) {
+        fig2b << condition_name(condition) << ',' << limb_name(static_cast<Limb>(l)) << ',' << t << ','
+              << t % grid.columns << ',' << t / grid.columns << ',' << number(tiles[t].get<double>()) << '\n';
+      }
+    }
+  }
+  write_file_atomically(directory / "figures" / "fig2b_qgrid_maps.csv", fig2b.str());
+  write_file_atomically(directory / "summary.json", summary.dump(2) + "\n");
+}
+
+}  // namespace crux

@@ -1,0 +1,67 @@
+#include "experiments/learning_run.hpp"
+
+namespace crux {
+
+namespace {
+
+// One climb from the start following the best Q_wall action. The cache may grow, but
+// no table is updated.
+int greedy_climb_length(ClimbingMdp& mdp, const QTable& q_wall, int cap) {
+  mdp.reset();
+  for (int step = 1; step <= cap; ++step) {
+    const auto candidates = mdp.candidates();
+    if (candidates.empty()) return -1;
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < candidates.size(); ++i) {
+      if (q_wall.value(mdp.state().wall, candidates[i].wall) > q_wall.value(mdp.state().wall, candidates[best].wall)) best = i;
+    }
+    if (mdp.step(candidates[best].wall).finished) return step;
+  }
+  return -1;
+}
+
+}  // namespace
+
+RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningParameters& parameters,
+                       std::uint64_t seed, const QTable* initial_q_grid,
+                       const std::function<void(int)>& progress) {
+  ClimbingMdp mdp(model, wall, parameters.climbing);
+  DynaQAgent agent(mdp.wall_action_count(), mdp.grid_action_count(), parameters.dyna);
+  if (initial_q_grid != nullptr) agent.set_q_grid(*initial_q_grid);
+  Random random(seed);
+  RunResult result;
+  result.iterations.reserve(parameters.iterations);
+  std::vector<Posture> climb{mdp.posture()};
+  int episode = 0, episode_start = 0;
+  agent.observe(mdp.state(), mdp.candidates());
+  for (int iteration = 0; iteration < parameters.iterations; ++iteration) {
+    const StateCouple state = mdp.state();
+    const std::span<const ActionCandidate> candidates = mdp.candidates();
+    const ActionChoice choice = agent.choose(state, candidates, random);
+    const ActionCandidate action = candidates[choice.candidate];
+    const StepOutcome outcome = mdp.step(action.wall);
+    agent.observe(mdp.state(), mdp.candidates());
+    agent.learn({state.wall, state.grid, action.wall, action.grid, outcome.reward, mdp.state().wall, mdp.state().grid},
+                random);
+    result.iterations.push_back(
+        {episode, choice.regime, wall.holds[action.wall].id, outcome.reached, outcome.root_rise_m, outcome.reward});
+    if (outcome.reached && !outcome.finished) climb.push_back(mdp.posture());
+    if (outcome.finished) {
+      result.episode_lengths.push_back(iteration + 1 - episode_start);
+      episode_start = iteration + 1;
+      ++episode;
+      result.last_climb = std::move(climb);
+      climb.assign(1, mdp.posture());
+    }
+    if (progress) progress(iteration + 1);
+  }
+  result.greedy_length = greedy_climb_length(mdp, agent.q_wall(), parameters.greedy_cap);
+  result.q_grid = agent.q_grid();
+  result.reached_configurations = mdp.reacher().cache().reached_count();
+  result.unreachable_configurations = mdp.reacher().cache().unreachable_count();
+  result.ik_solves = mdp.reacher().solves();
+  result.explored_pairs = agent.model().size();
+  return result;
+}
+
+}  // namespace crux

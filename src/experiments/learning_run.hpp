@@ -1,0 +1,50 @@
+#pragma once
+// One learning run on one wall (Algorithm 2): Dyna-Q over the climbing MDP for a fixed
+// number of iterations, one real action each, recording what Table I and Figs. 2b, 3
+// and 4 are made of.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "climbing/climbing_mdp.hpp"
+#include "learning/dyna_q.hpp"
+
+namespace crux {
+
+struct LearningParameters {
+  ClimbingParameters climbing;
+  DynaSettings dyna;
+  int iterations = 8000;
+  int greedy_cap = 500;  // actions allowed to the greedy policy's evaluation climb
+};
+
+struct IterationRecord {
+  int episode = 0;
+  Regime regime = Regime::Random;
+  int hold_id = 0;  // the hold tried
+  bool success = false;
+  double root_rise_m = 0.0;
+  double reward = 0.0;
+};
+
+struct RunResult {
+  std::vector<IterationRecord> iterations;
+  std::vector<int> episode_lengths;  // completed episodes, in iterations (failed ones included)
+  QTable q_grid{1};
+  std::vector<Posture> last_climb;   // postures of the last completed climb, start first
+  std::size_t reached_configurations = 0, unreachable_configurations = 0, ik_solves = 0;
+  std::size_t explored_pairs = 0;    // distinct problem-space (state, action) pairs taken
+  // Length of one climb by the learnt greedy policy (best Q_wall action, ties to the
+  // first candidate) after learning; -1 if it does not finish within greedy_cap actions.
+  int greedy_length = -1;
+};
+
+// Deterministic in `seed`. `initial_q_grid` starts the grid table from transferred
+// knowledge; Q_wall always starts empty.
+RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningParameters& parameters,
+                       std::uint64_t seed, const QTable* initial_q_grid = nullptr,
+                       const std::function<void(int iterations_done)>& progress = {});
+
+}  // namespace crux

@@ -1,0 +1,117 @@
+#include "experiments/paper_experiment.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "climbing/configuration_reacher.hpp"
+#include "common/random.hpp"
+
+namespace crux {
+
+const char* condition_name(Condition condition) {
+  switch (condition) {
+    case Condition::Training: return "training";
+    case Condition::Transfer: return "transfer";
+    case Condition::Control: return "control";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr int kTrainingRole = 0, kTransferRole = 1;
+constexpr int kWallAttempts = 100;
+
+// Every (3-configuration, possible action) pair is one freed limb of a 4-configuration
+// that passes the filter (each rule only compares held holds, so freeing a limb keeps a
+// configuration passing).
+std::uint64_t filtered_pairs(const Wall& wall, const FilterParameters& filter) {
+  const int n = wall.hold_count();
+  std::uint64_t passing = 0;
+  HoldConfiguration c;
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+      for (int d = 0; d < n; ++d)
+        for (int e = 0; e < n; ++e) {
+          if (a == b || a == d || a == e || b == d || b == e || d == e) continue;
+          c.holds = {a, b, d, e};
+          passing += passes_filter(wall, c, filter);
+        }
+  return 4 * passing;
+}
+
+std::uint64_t learning_seed(std::uint64_t seed, Condition condition, int run) {
+  // Transfer and control share run i's seed: common random numbers for the paired test.
+  const int stream = condition == Condition::Training ? 0 : 1;
+  return derive_seed(derive_seed(seed, 1000 + stream), static_cast<std::uint64_t>(run));
+}
+
+}  // namespace
+
+ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& settings, int role, int run) {
+  ExperimentWall out;
+  const std::uint64_t stream = derive_seed(derive_seed(settings.seed, static_cast<std::uint64_t>(role)), run);
+  for (int attempt = 0; attempt < kWallAttempts; ++attempt) {
+    const std::uint64_t seed = derive_seed(stream, static_cast<std::uint64_t>(attempt));
+    Wall wall = generate_random_wall(seed, settings.walls);
+    ConfigurationReacher reacher(model, wall, settings.learning.climbing.reachability);
+    if (reacher.reach_start() == nullptr) {
+      out.rejected_seeds.push_back(seed);
+      continue;
+    }
+    wall.name = fmt::format("{} wall {} (seed {})", role == kTrainingRole ? "training" : "transfer", run, seed);
+    out.wall = std::move(wall);
+    out.seed = seed;
+    return out;
+  }
+  throw std::runtime_error(fmt::format("no reachable start in {} random walls", kWallAttempts));
+}
+
+ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSettings& settings,
+                                      const std::function<void(int)>& progress) {
+  const auto started = std::chrono::steady_clock::now();
+  const int runs = settings.runs;
+  std::optional<tbb::global_control> limit;
+  if (settings.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
+
+  ExperimentResult result;
+  result.walls.resize(2 * runs);
+  tbb::parallel_for(0, 2 * runs, [&](int w) {
+    ExperimentWall& wall = result.walls[w];
+    wall = draw_wall(model, settings, w < runs ? kTrainingRole : kTransferRole, w % runs);
+    wall.filtered_pairs = filtered_pairs(wall.wall, settings.learning.climbing.filter);
+    if (settings.plan) wall.plan = shortest_plan(model, wall.wall, settings.learning.climbing);
+  });
+
+  for (ConditionResult& c : result.conditions) {
+    c.runs.resize(runs);
+    c.wall_of_run.resize(runs);
+    c.learning_seeds.resize(runs);
+  }
+  std::atomic<int> done{0};
+  const auto run_one = [&](Condition condition, int i, const QTable* initial) {
+    ConditionResult& c = result.conditions[static_cast<int>(condition)];
+    c.wall_of_run[i] = condition == Condition::Training ? i : runs + i;
+    c.learning_seeds[i] = learning_seed(settings.seed, condition, i);
+    c.runs[i] = run_learning(model, result.walls[c.wall_of_run[i]].wall, settings.learning, c.learning_seeds[i], initial);
+    if (progress) progress(++done);
+  };
+  tbb::parallel_for(0, runs, [&](int i) { run_one(Condition::Training, i, nullptr); });
+  tbb::parallel_for(0, 2 * runs, [&](int k) {
+    const int i = k / 2;
+    if (k % 2 == 0) {
+      run_one(Condition::Transfer, i, &result.conditions[static_cast<int>(Condition::Training)].runs[i].q_grid);
+    } else {
+      run_one(Condition::Control, i, nullptr);
+    }
+  });
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace crux

@@ -1,0 +1,70 @@
+#include "experiments/shortest_plan.hpp"
+
+#include <deque>
+#include <unordered_map>
+
+#include "common/input_error.hpp"
+
+namespace crux {
+
+namespace {
+
+struct Node {
+  HoldConfiguration configuration;  // a 3-configuration
+  const Posture* posture;
+  int depth;
+  long parent;
+  int hold;  // the hold taken to get here (index), -1 at the start
+};
+
+}  // namespace
+
+Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
+                   const PlanSettings& settings) {
+  ConfigurationReacher reacher(model, wall, parameters.reachability);
+  const Posture* start = reacher.reach_start();
+  if (start == nullptr) throw InputError(wall.name, "the start configuration is not reachable");
+  std::vector<Node> nodes{{start_configuration(wall).with(Limb::RightHand, kFree), start, 0, -1, -1}};
+  std::unordered_map<std::uint64_t, bool> seen{{encode(nodes[0].configuration, wall.hold_count()), true}};
+  std::deque<std::size_t> frontier{0};
+  std::vector<int> possible(wall.hold_count());
+  Plan plan;
+  const auto finish = [&](std::size_t parent, int hold) {
+    plan.found = true;
+    std::vector<std::pair<int, Limb>> steps{{hold, nodes[parent].configuration.free_limb()}};
+    for (long n = static_cast<long>(parent); nodes[n].parent >= 0; n = nodes[n].parent) {
+      steps.push_back({nodes[n].hold, nodes[nodes[n].parent].configuration.free_limb()});
+    }
+    for (auto it = steps.rbegin(); it != steps.rend(); ++it) {
+      plan.hold_ids.push_back(wall.holds[it->first].id);
+      plan.limbs.push_back(it->second);
+    }
+    plan.length = static_cast<int>(plan.hold_ids.size());
+  };
+  while (!frontier.empty() && !plan.found && plan.expanded_states < settings.max_states) {
+    const std::size_t current = frontier.front();
+    frontier.pop_front();
+    const Node node = nodes[current];
+    if (node.depth >= settings.max_length) break;
+    ++plan.expanded_states;
+    const Limb free = node.configuration.free_limb();
+    const int count = possible_actions(wall, node.configuration, parameters.filter, possible);
+    for (int i = 0; i < count && !plan.found; ++i) {
+      const HoldConfiguration complete = node.configuration.with(free, possible[i]);
+      const Posture* reached = reacher.reach(*node.posture, complete);
+      if (reached == nullptr) continue;
+      if (reacher.centre_of_mass_height(*reached) >= wall.finish_height) {
+        finish(current, possible[i]);
+        break;
+      }
+      const HoldConfiguration next = complete.with(next_free_limb(free), kFree);
+      if (!seen.emplace(encode(next, wall.hold_count()), true).second) continue;
+      nodes.push_back({next, reached, node.depth + 1, static_cast<long>(current), possible[i]});
+      frontier.push_back(nodes.size() - 1);
+    }
+  }
+  plan.ik_solves = reacher.solves();
+  return plan;
+}
+
+}  // namespace crux

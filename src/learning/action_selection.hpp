@@ -1,0 +1,43 @@
+#pragma once
+// Action selection, Algorithm 3: w-greedy (the best action for Q_wall, if it has
+// already been taken in this state), else g-greedy (the best action for Q_grid, if
+// already taken in this agent-space state), else a random possible action; each of the
+// first two also gives way to exploration with probability epsilon.
+
+#include <cstdint>
+#include <span>
+
+#include "common/random.hpp"
+#include "learning/q_table.hpp"
+
+namespace crux {
+
+enum class Regime : std::uint8_t { WGreedy = 0, GGreedy = 1, Random = 2 };
+inline constexpr int kRegimeCount = 3;
+const char* regime_name(Regime regime);
+
+// A possible action in both representations. `represents_grid_action` marks, for each
+// grid action, the one candidate that the grid action maps back to (the hold nearest
+// its tile's centre): g-greedy may only return such a candidate.
+struct ActionCandidate {
+  ActionCode wall = kNoAction;
+  ActionCode grid = kNoAction;
+  bool represents_grid_action = false;
+};
+
+struct StateCouple {
+  StateCode wall = 0;
+  StateCode grid = 0;
+};
+
+struct ActionChoice {
+  std::size_t candidate = 0;  // index into the candidates
+  Regime regime = Regime::Random;
+};
+
+// Ties between equally valued best actions are broken uniformly at random. Requires at
+// least one candidate.
+ActionChoice select_action(const QTable& q_wall, const QTable& q_grid, const StateCouple& state,
+                           std::span<const ActionCandidate> candidates, double epsilon, Random& random);
+
+}  // namespace crux

@@ -1,0 +1,45 @@
+#pragma once
+// Dyna's learnt model (Algorithm 2, line 24): the last (s', r) seen for each
+// problem-space pair (s, a), with the agent-space descriptors of s, a and s' so that
+// planning can update both tables. Pairs are kept in first-seen order so that a uniform
+// draw over them is reproducible.
+
+#include <unordered_map>
+#include <vector>
+
+#include "learning/q_table.hpp"
+
+namespace crux {
+
+// A transition in both representations; grid_action is kNoAction when the action's
+// hold lies outside the grid.
+struct Experience {
+  StateCode wall_state = 0, grid_state = 0;
+  ActionCode wall_action = kNoAction, grid_action = kNoAction;
+  double reward = 0.0;
+  StateCode next_wall_state = 0, next_grid_state = 0;
+};
+
+class DeterministicModel {
+ public:
+  void record(const Experience& experience);
+  std::size_t size() const { return order_.size(); }
+  const Experience& at(std::size_t index) const { return entries_[order_[index]]; }
+
+ private:
+  struct PairKey {
+    StateCode state;
+    ActionCode action;
+    bool operator==(const PairKey&) const = default;
+  };
+  struct PairHash {
+    std::size_t operator()(const PairKey& k) const noexcept {
+      return std::hash<StateCode>()(k.state * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(k.action));
+    }
+  };
+  std::unordered_map<PairKey, std::size_t, PairHash> index_;
+  std::vector<Experience> entries_;
+  std::vector<std::size_t> order_;
+};
+
+}  // namespace crux

@@ -1,0 +1,61 @@
+#include "learning/q_table.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+namespace crux {
+
+QTable::QTable(int action_count) : action_count_(action_count) { assert(action_count > 0); }
+
+std::size_t QTable::row_of(StateCode s) {
+  const auto [it, inserted] = rows_.try_emplace(s, rows_.size());
+  if (inserted) {
+    values_.resize(values_.size() + action_count_, 0.0);
+    visits_.resize(visits_.size() + action_count_, 0);
+  }
+  return it->second;
+}
+
+const double* QTable::row_values(StateCode s) const {
+  const auto it = rows_.find(s);
+  return it == rows_.end() ? nullptr : values_.data() + it->second * action_count_;
+}
+
+double QTable::value(StateCode s, ActionCode a) const {
+  const double* row = row_values(s);
+  return row == nullptr ? 0.0 : row[a];
+}
+
+std::uint32_t QTable::visits(StateCode s, ActionCode a) const {
+  const auto it = rows_.find(s);
+  return it == rows_.end() ? 0 : visits_[it->second * action_count_ + a];
+}
+
+void QTable::set_value(StateCode s, ActionCode a, double value) { values_[row_of(s) * action_count_ + a] = value; }
+
+void QTable::add_visit(StateCode s, ActionCode a) { ++visits_[row_of(s) * action_count_ + a]; }
+
+void QTable::set_visits(StateCode s, ActionCode a, std::uint32_t visits) {
+  visits_[row_of(s) * action_count_ + a] = visits;
+}
+
+double QTable::best_value(StateCode s, std::span<const ActionCode> available) const {
+  if (available.empty()) return 0.0;
+  const double* row = row_values(s);
+  if (row == nullptr) return 0.0;
+  double best = row[available[0]];
+  for (const ActionCode a : available.subspan(1)) best = std::max(best, row[a]);
+  return best;
+}
+
+void QTable::for_each_row(
+    const std::function<void(StateCode, std::span<const double>, std::span<const std::uint32_t>)>& visit) const {
+  std::vector<std::pair<StateCode, std::size_t>> ordered(rows_.begin(), rows_.end());
+  std::sort(ordered.begin(), ordered.end());
+  for (const auto& [state, row] : ordered) {
+    visit(state, std::span<const double>(values_.data() + row * action_count_, action_count_),
+          std::span<const std::uint32_t>(visits_.data() + row * action_count_, action_count_));
+  }
+}
+
+}  // namespace crux

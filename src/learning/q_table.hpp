@@ -1,0 +1,51 @@
+#pragma once
+// A Q-table over integer states and actions: sparse in states (a row is created when a
+// state's value is first written), dense in actions. Unwritten values are 0, the
+// initial value of every Q-table here (spec item 18). It also counts, per pair, the real
+// experiences of it, which is what "already taken" means in Algorithm 3.
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+namespace crux {
+
+using StateCode = std::uint64_t;
+using ActionCode = std::int32_t;
+inline constexpr ActionCode kNoAction = -1;
+
+class QTable {
+ public:
+  explicit QTable(int action_count);
+
+  int action_count() const { return action_count_; }
+  std::size_t state_count() const { return rows_.size(); }
+
+  double value(StateCode s, ActionCode a) const;
+  std::uint32_t visits(StateCode s, ActionCode a) const;
+  bool taken(StateCode s, ActionCode a) const { return visits(s, a) > 0; }
+
+  void set_value(StateCode s, ActionCode a, double value);
+  void add_visit(StateCode s, ActionCode a);
+  void set_visits(StateCode s, ActionCode a, std::uint32_t visits);
+
+  // max over `available` of Q(s, a); 0 when nothing is available.
+  double best_value(StateCode s, std::span<const ActionCode> available) const;
+
+  // Every stored row, in increasing state order (for files and maps).
+  void for_each_row(const std::function<void(StateCode, std::span<const double>, std::span<const std::uint32_t>)>&
+                        visit) const;
+
+ private:
+  std::size_t row_of(StateCode s);  // creates the row
+  const double* row_values(StateCode s) const;
+
+  int action_count_;
+  std::unordered_map<StateCode, std::size_t> rows_;
+  std::vector<double> values_;
+  std::vector<std::uint32_t> visits_;
+};
+
+}  // namespace crux

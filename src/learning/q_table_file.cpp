@@ -1,0 +1,114 @@
+#include "learning/q_table_file.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
+
+namespace crux {
+
+namespace {
+
+constexpr char kMagic[8] = {'C', 'R', 'U', 'X', 'Q', 'T', 'A', 'B'};
+constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 8;
+
+std::uint64_t fnv1a(const std::string& bytes, std::size_t length) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (std::size_t i = 0; i < length; ++i) {
+    hash ^= static_cast<unsigned char>(bytes[i]);
+    hash *= 0x100000001b3ULL;
+  }
+  return hash;
+}
+
+template <typename T>
+void put(std::string& out, T value) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &value, sizeof(T));
+  for (std::size_t i = 0; i < sizeof(T); ++i) out.push_back(static_cast<char>((bits >> (8 * i)) & 0xFF));
+}
+
+template <typename T>
+T get(const std::string& in, std::size_t& at) {
+  std::uint64_t bits = 0;
+  for (std::size_t i = 0; i < sizeof(T); ++i) bits |= static_cast<std::uint64_t>(static_cast<unsigned char>(in[at + i])) << (8 * i);
+  at += sizeof(T);
+  T value;
+  std::memcpy(&value, &bits, sizeof(T));
+  return value;
+}
+
+}  // namespace
+
+void save_q_table(const std::string& path, const QTable& table) {
+  std::string out(kMagic, sizeof(kMagic));
+  put<std::uint32_t>(out, kQTableFileVersion);
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(table.action_count()));
+  put<std::uint64_t>(out, table.state_count());
+  table.for_each_row([&](StateCode state, std::span<const double> values, std::span<const std::uint32_t> visits) {
+    put<std::uint64_t>(out, state);
+    for (const double v : values) put<double>(out, v);
+    for (const std::uint32_t v : visits) put<std::uint32_t>(out, v);
+  });
+  put<std::uint64_t>(out, fnv1a(out, out.size()));
+  write_file_atomically(path, out);
+}
+
+QTable load_q_table(const std::string& path, int expected_action_count) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory, not a Q-table file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot open the file (missing or unreadable)");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (bytes.empty()) throw InputError(path, "the file is empty");
+  if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
+    throw InputError(path, "not a crux Q-table file (no CRUXQTAB header)");
+  }
+  if (bytes.size() < kHeaderSize) throw InputError(path, "truncated: the header is incomplete");
+  std::size_t at = sizeof(kMagic);
+  const auto version = get<std::uint32_t>(bytes, at);
+  if (version != kQTableFileVersion) {
+    throw InputError(path, fmt::format("unsupported Q-table file version {} (this crux reads version {})", version,
+                                       kQTableFileVersion));
+  }
+  const auto actions = get<std::uint32_t>(bytes, at);
+  const auto rows = get<std::uint64_t>(bytes, at);
+  const std::uint64_t row_size = 8 + 12 * static_cast<std::uint64_t>(actions);
+  if (actions == 0 || rows > (bytes.size() - kHeaderSize) / row_size) {
+    throw InputError(path, fmt::format("truncated or corrupted: {} rows of {} actions do not fit in {} bytes", rows,
+                                       actions, bytes.size()));
+  }
+  const std::uint64_t expected_size = kHeaderSize + rows * row_size + 8;
+  if (bytes.size() != expected_size) {
+    throw InputError(path, fmt::format("{}: expected {} bytes for {} rows, found {}",
+                                       bytes.size() < expected_size ? "truncated" : "trailing data", expected_size,
+                                       rows, bytes.size()));
+  }
+  std::size_t checksum_at = bytes.size() - 8;
+  if (get<std::uint64_t>(bytes, checksum_at) != fnv1a(bytes, bytes.size() - 8)) {
+    throw InputError(path, "corrupted: the checksum does not match the contents");
+  }
+  if (static_cast<int>(actions) != expected_action_count) {
+    throw InputError(path, fmt::format("the table has {} actions where {} are expected (a different grid?)", actions,
+                                       expected_action_count));
+  }
+  QTable table(static_cast<int>(actions));
+  for (std::uint64_t r = 0; r < rows; ++r) {
+    const auto state = get<std::uint64_t>(bytes, at);
+    for (std::uint32_t a = 0; a < actions; ++a) {
+      const double value = get<double>(bytes, at);
+      if (!std::isfinite(value)) throw InputError(path, fmt::format("corrupted: a value of state {} is not finite", state));
+      table.set_value(state, static_cast<ActionCode>(a), value);
+    }
+    for (std::uint32_t a = 0; a < actions; ++a) table.set_visits(state, static_cast<ActionCode>(a), get<std::uint32_t>(bytes, at));
+  }
+  return table;
+}
+
+}  // namespace crux

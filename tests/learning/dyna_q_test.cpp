@@ -1,0 +1,72 @@
+#include "learning/dyna_q.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace crux {
+namespace {
+
+// Two states, two actions each, deterministic, continuing with a reset like the
+// climbing MDP: in A, "stay" (-1, A) or "go" (-1, B); in B, "finish" (+10, back to A) or
+// "back" (-1, A). With gamma = 0.9: V(A) = -1 + 0.9 V(B), V(B) = 10 + 0.9 V(A), so
+// V(A) = 8 / 0.19 and V(B) = 10 + 0.9 V(A).
+constexpr StateCode A = 0, B = 1;
+const double kValueA = 8.0 / 0.19;
+const double kValueB = 10.0 + 0.9 * kValueA;
+
+Experience transition(StateCode s, ActionCode a) {
+  if (s == A) return {A, A, a, a, -1.0, a == 0 ? A : B, a == 0 ? A : B};
+  return {B, B, a, a, a == 0 ? 10.0 : -1.0, A, A};
+}
+
+TEST(DynaQ, PlanningConvergesToTheKnownOptimalValuesInBothTables) {
+  DynaQAgent agent(2, 2, DynaSettings{});
+  const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
+  agent.observe({A, A}, both);
+  agent.observe({B, B}, both);
+  constexpr std::uint64_t seed = 8;
+  Random random(seed);
+  for (int round = 0; round < 400; ++round) {
+    for (const StateCode s : {A, B}) {
+      for (const ActionCode a : {0, 1}) agent.learn(transition(s, a), random);
+    }
+  }
+  for (const QTable* q : {&agent.q_wall(), &agent.q_grid()}) {
+    EXPECT_NEAR(q->value(A, 1), kValueA, 1e-6) << "seed " << seed;
+    EXPECT_NEAR(q->value(A, 0), -1.0 + 0.9 * kValueA, 1e-6);
+    EXPECT_NEAR(q->value(B, 0), kValueB, 1e-6);
+    EXPECT_NEAR(q->value(B, 1), -1.0 + 0.9 * kValueA, 1e-6);
+  }
+  EXPECT_EQ(agent.model().size(), 4u);
+  EXPECT_EQ(agent.q_wall().visits(A, 1), 400u) << "planning does not count as taking an action";
+}
+
+TEST(DynaQ, OneRealStepPlusPlanningOnASingleExperience) {
+  DynaSettings settings;
+  settings.planning_steps = 3;
+  DynaQAgent agent(2, 2, settings);
+  const ActionCandidate one[1] = {{0, 0, true}};
+  agent.observe({A, A}, one);
+  agent.observe({B, B}, one);
+  Random random(1);
+  agent.learn({A, A, 0, 0, -1.0, B, B}, random);
+  // Four updates of Q(A,0) with Q(B,.) = 0: q <- q + 0.1 (-1 - q), from 0.
+  double q = 0.0;
+  for (int i = 0; i < 4; ++i) q += 0.1 * (-1.0 - q);
+  EXPECT_DOUBLE_EQ(agent.q_wall().value(A, 0), q);
+  EXPECT_DOUBLE_EQ(agent.q_grid().value(A, 0), q);
+}
+
+TEST(DynaQ, AGridActionOutsideTheGridUpdatesOnlyTheWallTable) {
+  DynaSettings settings;
+  settings.planning_steps = 0;
+  DynaQAgent agent(2, 2, settings);
+  Random random(1);
+  agent.learn({A, A, 1, kNoAction, -1000.0, A, A}, random);
+  EXPECT_DOUBLE_EQ(agent.q_wall().value(A, 1), -100.0);
+  EXPECT_EQ(agent.q_grid().state_count(), 0u);
+}
+
+}  // namespace
+}  // namespace crux
