@@ -13,6 +13,7 @@
 #include "experiments/experiment_config.hpp"
 #include "experiments/experiment_output.hpp"
 #include "experiments/table_one.hpp"
+#include "experiments/transfer_comparison.hpp"
 #include "learning/q_table_file.hpp"
 #include "wall/wall_file.hpp"
 
@@ -153,6 +154,15 @@ struct PaperCommand {
       }
       std::cout << fmt::format("  exact shortest climb: {:.1f} actions on average ({} of {} walls; the paper: about 10)\n",
                                found ? plan / found : 0.0, found, result.walls.size());
+    }
+    std::cout << fmt::format("\nTransfer against control (same walls and seeds), 95 % intervals over {} runs:\n", runs);
+    for (const MetricComparison& m : compare_transfer(result, config.settings.learning.iterations)) {
+      const auto& tr = m.per_condition[static_cast<int>(Condition::Transfer)];
+      const auto& co = m.per_condition[static_cast<int>(Condition::Control)];
+      const PairedTest& t = m.transfer_minus_control;
+      std::cout << fmt::format("  {:<50} transfer {:7.1f} +- {:5.1f}, control {:7.1f} +- {:5.1f}; difference {:+7.1f} +- {:5.1f} (p = {:.3g})\n",
+                               m.metric->description, tr.mean, tr.half_width, co.mean, co.half_width,
+                               t.difference.mean, t.difference.half_width, t.p_value);
     }
     std::cout << fmt::format("\nwrote {} ({:.1f} s)\n", output, result.seconds);
   }

@@ -8,6 +8,7 @@
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "experiments/table_one.hpp"
+#include "experiments/transfer_comparison.hpp"
 #include "learning/q_table_file.hpp"
 #include "wall/wall_file.hpp"
 
@@ -116,6 +117,23 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
     }
   }
   out["table1"] = table;
+  nlohmann::ordered_json comparison;
+  for (const MetricComparison& m : compare_transfer(result, settings.learning.iterations)) {
+    nlohmann::ordered_json entry;
+    entry["description"] = m.metric->description;
+    for (const Condition c : kConditions) {
+      const MeanInterval& v = m.per_condition[static_cast<int>(c)];
+      entry[condition_name(c)] = {{"mean", v.mean}, {"ci95", {v.mean - v.half_width, v.mean + v.half_width}}};
+    }
+    const PairedTest& t = m.transfer_minus_control;
+    entry["transfer_minus_control"] = {{"mean", t.difference.mean},
+                                       {"ci95", {t.difference.mean - t.difference.half_width,
+                                                 t.difference.mean + t.difference.half_width}},
+                                       {"t", t.t},
+                                       {"p_value", t.p_value}};
+    comparison[m.metric->name] = entry;
+  }
+  out["transfer_vs_control"] = comparison;
   nlohmann::ordered_json lengths, runs, maps;
   for (const Condition condition : kConditions) {
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];

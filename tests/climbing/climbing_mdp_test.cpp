@@ -1,0 +1,109 @@
+#include "climbing/climbing_mdp.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "common/input_error.hpp"
+
+#include "support/test_models.hpp"
+#include "wall/random_wall.hpp"
+
+namespace crux {
+namespace {
+
+struct Fixture {
+  const BodyModel& model = testing::human_model();
+  Wall wall = generate_random_wall(1);
+  ClimbingParameters parameters;
+};
+
+TEST(ClimbingMdp, StartsInTheStartConfigurationWithTheRightHandFree) {
+  Fixture f;
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  EXPECT_EQ(mdp.configuration().free_limb(), Limb::RightHand);
+  EXPECT_EQ(mdp.configuration().holds[1], f.wall.start[1]);
+  EXPECT_FALSE(mdp.candidates().empty());
+  for (const ActionCandidate& c : mdp.candidates()) {
+    EXPECT_TRUE(passes_filter(f.wall, mdp.configuration().with(Limb::RightHand, c.wall), f.parameters.filter));
+  }
+}
+
+TEST(ClimbingMdp, UnreachableStaysWithMinus1000AndReachableRotatesTheFreeLimb) {
+  Fixture f;
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  const StateCouple before = mdp.state();
+  int reachable = -1, unreachable = -1;
+  for (const ActionCandidate& c : mdp.candidates()) {
+    ClimbingMdp probe(f.model, f.wall, f.parameters);
+    const StepOutcome o = probe.step(c.wall);
+    if (o.reached && !o.finished && reachable < 0) reachable = c.wall;
+    if (!o.reached && unreachable < 0) unreachable = c.wall;
+  }
+  ASSERT_GE(reachable, 0);
+  ASSERT_GE(unreachable, 0);
+  const StepOutcome failed = mdp.step(unreachable);
+  EXPECT_EQ(failed.reward, -1000.0);
+  EXPECT_EQ(failed.root_rise_m, 0.0);
+  EXPECT_EQ(mdp.state().wall, before.wall);
+  EXPECT_EQ(mdp.state().grid, before.grid);
+  const Posture posture_before = mdp.posture();
+  const StepOutcome moved = mdp.step(reachable);
+  EXPECT_EQ(moved.reward, -1.0);
+  EXPECT_EQ(mdp.configuration().free_limb(), Limb::LeftHand);
+  EXPECT_EQ(mdp.configuration().holds[0], reachable);
+  EXPECT_DOUBLE_EQ(moved.root_rise_m, mdp.posture()[2] - posture_before[2]);
+}
+
+TEST(ClimbingMdp, IkRunsOncePer4Configuration) {
+  Fixture f;
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  const ActionCode hold = mdp.candidates()[0].wall;
+  mdp.step(hold);
+  const std::size_t solves = mdp.reacher().solves();
+  mdp.reset();
+  mdp.step(hold);
+  EXPECT_EQ(mdp.reacher().solves(), solves) << "the verdict comes from the cache, reached or not";
+}
+
+TEST(ClimbingMdp, PassingTheFinishingHeightEndsTheEpisodeAndResets) {
+  Fixture f;
+  f.wall.finish_height = -10.0;  // any reachable move finishes
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  const StateCouple start = mdp.state();
+  for (const ActionCandidate& c : mdp.candidates()) {
+    const StepOutcome o = mdp.step(c.wall);
+    if (!o.reached) continue;
+    EXPECT_TRUE(o.finished);
+    EXPECT_EQ(o.reward, 200000.0);
+    EXPECT_EQ(mdp.state().wall, start.wall);
+    EXPECT_EQ(mdp.configuration().free_limb(), Limb::RightHand);
+    return;
+  }
+  FAIL() << "no reachable move from the start";
+}
+
+TEST(ClimbingMdp, AWallWhoseStartIsUnreachableIsRefused) {
+  Fixture f;
+  RandomWallParameters far;
+  far.tile_height = 1.5;  // hands 4.5 m above the feet
+  const Wall wall = generate_random_wall(1, far);
+  EXPECT_THROW(ClimbingMdp(f.model, wall, f.parameters), InputError);
+}
+
+TEST(ClimbingMdp, EveryGridActionHasExactlyOneRepresentative) {
+  Fixture f;
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  std::map<ActionCode, int> representatives;
+  for (const ActionCandidate& c : mdp.candidates()) {
+    if (c.grid != kNoAction) {
+      representatives[c.grid] += c.represents_grid_action;
+    } else {
+      EXPECT_FALSE(c.represents_grid_action);
+    }
+  }
+  for (const auto& [tile, count] : representatives) EXPECT_EQ(count, 1) << "tile " << tile;
+}
+
+}  // namespace
+}  // namespace crux

@@ -1,0 +1,44 @@
+#include "experiments/shortest_plan.hpp"
+
+#include <gtest/gtest.h>
+
+#include "support/test_models.hpp"
+#include "wall/random_wall.hpp"
+
+namespace crux {
+namespace {
+
+// The plan must be a real climb: replaying its holds in the MDP finishes after exactly
+// `length` actions, each reachable.
+TEST(ShortestPlan, ReplaysAsAClimbOfItsLength) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = generate_random_wall(3);
+  const ClimbingParameters parameters;
+  const Plan plan = shortest_plan(model, wall, parameters);
+  ASSERT_TRUE(plan.found);
+  ASSERT_EQ(static_cast<int>(plan.hold_ids.size()), plan.length);
+  ClimbingMdp mdp(model, wall, parameters);
+  for (int i = 0; i < plan.length; ++i) {
+    EXPECT_EQ(mdp.configuration().free_limb(), plan.limbs[i]);
+    const StepOutcome o = mdp.step(wall.index_of(plan.hold_ids[i]));
+    ASSERT_TRUE(o.reached) << "action " << i;
+    EXPECT_EQ(o.finished, i == plan.length - 1) << "action " << i;
+  }
+}
+
+TEST(ShortestPlan, IsShortest) {
+  // With the finishing height just above the start, one reachable move may finish;
+  // breadth-first order must then return 1, and never more than a longer finish height.
+  const BodyModel& model = testing::human_model();
+  Wall wall = generate_random_wall(3);
+  const ClimbingParameters parameters;
+  const Plan full = shortest_plan(model, wall, parameters);
+  wall.finish_height = 1.0;
+  const Plan low = shortest_plan(model, wall, parameters);
+  ASSERT_TRUE(low.found);
+  EXPECT_LE(low.length, full.length);
+  EXPECT_GE(low.length, 1);
+}
+
+}  // namespace
+}  // namespace crux
