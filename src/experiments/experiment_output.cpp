@@ -8,6 +8,7 @@
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "experiments/table_one.hpp"
+#include "experiments/statistics.hpp"
 #include "experiments/transfer_comparison.hpp"
 #include "learning/q_table_file.hpp"
 #include "wall/wall_file.hpp"
@@ -117,6 +118,32 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
     }
   }
   out["table1"] = table;
+  // The same cells as means over runs, each run's value computed on its own, with 95 %
+  // intervals (a run without actions of a regime has no rate and is left out).
+  nlohmann::ordered_json intervals;
+  for (const Condition condition : kConditions) {
+    const auto& runs = result.conditions[static_cast<int>(condition)].runs;
+    for (const Window window : {Window::Beginning, Window::Overall}) {
+      for (int r = 0; r < kRegimeCount; ++r) {
+        std::vector<double> actions, rates, rises;
+        for (const RunResult& run : runs) {
+          const RegimeStats s = regime_stats({run}, static_cast<Regime>(r), window == Window::Beginning ? beginning : -1);
+          actions.push_back(s.actions_per_run);
+          if (s.actions > 0) rates.push_back(s.success_rate);
+          if (s.successes > 0) rises.push_back(s.vertical_cm);
+        }
+        nlohmann::ordered_json cell;
+        for (const auto& [name, values] : {std::pair<const char*, const std::vector<double>&>{"actions", actions},
+                                           {"success_rate", rates},
+                                           {"vertical_cm", rises}}) {
+          const MeanInterval m = mean_interval(values);
+          cell[name] = {{"mean", m.mean}, {"ci95", {m.mean - m.half_width, m.mean + m.half_width}}, {"runs", m.n}};
+        }
+        intervals[condition_name(condition)][window_name(window)][regime_name(static_cast<Regime>(r))] = cell;
+      }
+    }
+  }
+  out["table1_over_runs"] = intervals;
   nlohmann::ordered_json comparison;
   for (const MetricComparison& m : compare_transfer(result, settings.learning.iterations)) {
     nlohmann::ordered_json entry;
