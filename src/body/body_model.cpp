@@ -3,11 +3,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <mutex>
 #include <optional>
-#include <sstream>
 
 #include <console_bridge/console.h>
 #include <Eigen/Geometry>
@@ -17,6 +15,7 @@
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
 #include "common/input_error.hpp"
+#include "common/input_file.hpp"
 
 namespace crux {
 
@@ -263,13 +262,7 @@ BodyModel load_body_model_from_string(const std::string& urdf_xml, const std::st
 }
 
 BodyModel load_body_model(const std::string& urdf_path, const GraspFrameNames& frames) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(urdf_path, ec)) throw InputError(urdf_path, "is a directory, not a URDF file");
-  std::ifstream in(urdf_path, std::ios::binary);
-  if (!in) throw InputError(urdf_path, "cannot open the file (missing or unreadable)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return load_body_model_from_string(text.str(), urdf_path, frames);
+  return load_body_model_from_string(read_input_file(urdf_path, "URDF file"), urdf_path, frames);
 }
 
 std::string default_body_model_path() {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "body/kinematics.hpp"
+#include "cli/cli_parsing.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress_bar.hpp"
 #include "common/atomic_file.hpp"
@@ -68,16 +69,6 @@ void finish_settings(IkOptions& o, bool solver_used) {
   if (!(o.settings.paper.step_size > 0) || !(o.settings.paper.time_step_s > 0) || !(o.settings.paper.timeout_s > 0)) {
     throw InputError("options", "--alpha, --time-step and --timeout must be positive");
   }
-}
-
-Eigen::Vector3d parse_wall_point(const std::string& text, const char* flag) {
-  std::istringstream in(text);
-  double y = 0, z = 0;
-  char comma = 0;
-  if (!(in >> y >> comma >> z) || comma != ',' || !(in >> std::ws).eof() || !std::isfinite(y) || !std::isfinite(z)) {
-    throw InputError(flag, fmt::format("expected Y,Z in metres, got '{}'", text));
-  }
-  return {0.0, y, z};
 }
 
 nlohmann::ordered_json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "agent_space/moving_grid.hpp"
+#include "cli/cli_parsing.hpp"
 #include "cli/commands.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
@@ -19,14 +20,6 @@
 namespace crux::cli {
 
 namespace {
-
-std::optional<Limb> parse_limb(const std::string& name) {
-  static const char* const short_names[kLimbCount] = {"rh", "lh", "rf", "lf"};
-  for (int limb = 0; limb < kLimbCount; ++limb) {
-    if (name == limb_name(static_cast<Limb>(limb)) || name == short_names[limb]) return static_cast<Limb>(limb);
-  }
-  return std::nullopt;
-}
 
 struct StartCheckOptions {
   std::string urdf = default_body_model_path();
@@ -100,7 +93,7 @@ struct ShowCommand {
       limb = parse_limb(grid_limb);
       if (!limb) throw InputError("--grid", fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", grid_limb));
       Eigen::Vector3d at = wall.holds[wall.start[static_cast<int>(*limb)]].position;
-      if (!grid_at.empty()) at = parse_point(grid_at);
+      if (!grid_at.empty()) at = parse_wall_point(grid_at, "--at");
       placement = place_grid(grid, *limb, at);
     }
     if (!svg.empty()) {
@@ -110,16 +103,6 @@ struct ShowCommand {
       write_file_atomically(svg, render_wall_svg(wall, options));
     }
     json ? print_json(wall, reach, placement, limb) : print_text(wall, reach, placement);
-  }
-
-  static Eigen::Vector3d parse_point(const std::string& text) {
-    std::istringstream in(text);
-    double y = 0, z = 0;
-    char comma = 0;
-    if (!(in >> y >> comma >> z) || comma != ',' || !(in >> std::ws).eof()) {
-      throw InputError("--at", fmt::format("expected Y,Z in metres, got '{}'", text));
-    }
-    return {0.0, y, z};
   }
 
   void print_text(const Wall& wall, const IkResult& reach, const std::optional<GridPlacement>& placement) const {

@@ -2,14 +2,12 @@
 
 #include <cmath>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include <fmt/format.h>
 
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
+#include "common/input_file.hpp"
 
 namespace crux {
 
@@ -61,11 +59,7 @@ void save_q_table(const std::string& path, const QTable& table) {
 }
 
 QTable load_q_table(const std::string& path, int expected_action_count) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory, not a Q-table file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open the file (missing or unreadable)");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = read_input_file(path, "Q-table file");
   if (bytes.empty()) throw InputError(path, "the file is empty");
   if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
     throw InputError(path, "not a crux Q-table file (no CRUXQTAB header)");

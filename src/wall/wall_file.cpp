@@ -2,15 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cstdint>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
@@ -21,6 +16,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
+#include "common/input_file.hpp"
 
 namespace crux {
 namespace {
@@ -296,16 +292,7 @@ Wall parse_wall(const std::string& json_text, const std::string& source) {
   return WallReader(source).read(Json::parse(json_text));
 }
 
-Wall load_wall(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) throw InputError(path, "is a directory, not a wall file");
-  if (!std::filesystem::exists(path, error)) throw InputError(path, "no such file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, std::string("cannot read the file: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_wall(text.str(), path);
-}
+Wall load_wall(const std::string& path) { return parse_wall(read_input_file(path, "wall file"), path); }
 
 std::string wall_to_json(const Wall& wall) {
   std::vector<std::string> holds;

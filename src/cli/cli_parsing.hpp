@@ -1,0 +1,37 @@
+#pragma once
+// Parsing of command-line values shared by several commands.
+
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include <Eigen/Core>
+#include <fmt/format.h>
+
+#include "body/body_model.hpp"
+#include "common/input_error.hpp"
+
+namespace crux::cli {
+
+// "Y,Z" in metres, a point on the wall plane x = 0; InputError naming `flag` otherwise.
+inline Eigen::Vector3d parse_wall_point(const std::string& text, const char* flag) {
+  std::istringstream in(text);
+  double y = 0, z = 0;
+  char comma = 0;
+  if (!(in >> y >> comma >> z) || comma != ',' || !(in >> std::ws).eof() || !std::isfinite(y) || !std::isfinite(z)) {
+    throw InputError(flag, fmt::format("expected Y,Z in metres, got '{}'", text));
+  }
+  return {0.0, y, z};
+}
+
+// right_hand, left_hand, right_foot, left_foot, or rh, lh, rf, lf.
+inline std::optional<Limb> parse_limb(const std::string& name) {
+  static const char* const short_names[kLimbCount] = {"rh", "lh", "rf", "lf"};
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    if (name == limb_name(static_cast<Limb>(limb)) || name == short_names[limb]) return static_cast<Limb>(limb);
+  }
+  return std::nullopt;
+}
+
+}  // namespace crux::cli
