@@ -12,6 +12,7 @@ GridPlacement place_grid(const GridParameters& grid, Limb free_limb, const Eigen
   placement.tile_height = grid.tile_height;
   placement.columns = grid.columns;
   placement.rows = grid.rows;
+  placement.anchor_tile = anchor[1] * grid.columns + anchor[0];
   // The anchor is the centre of its tile: half a tile in from that tile's corner.
   placement.origin = {limb_position.y() - (anchor[0] + 0.5) * grid.tile_width,
                       limb_position.z() - (anchor[1] + 0.5) * grid.tile_height};

@@ -14,6 +14,8 @@
 
 namespace crux {
 
+inline constexpr int kOutsideGrid = -1;
+
 struct GridParameters {
   int columns = 5;  // across (y), counted from the climber's right
   int rows = 7;     // up (z), counted from the bottom
@@ -26,13 +28,12 @@ struct GridParameters {
   int tile_count() const { return columns * rows; }
 };
 
-inline constexpr int kOutsideGrid = -1;
-
 // The grid placed for a free limb at a position on the wall (only y and z matter).
 struct GridPlacement {
   Eigen::Vector2d origin;  // (y, z) of the corner of tile (0, 0): smallest y and z
   double tile_width = 0.3, tile_height = 0.5;
   int columns = 5, rows = 7;
+  int anchor_tile = kOutsideGrid;  // the tile whose centre is on the free limb
 
   // Tile number (row * columns + column) containing the point, or kOutsideGrid.
   // Tiles are half-open: a point on the edge between two tiles belongs to the tile of

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "agent_space/agent_descriptor.hpp"
 #include "cli/progress_bar.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
@@ -107,15 +108,6 @@ void print_table_one(const ExperimentResult& result, const ExperimentConfig& con
   }
 }
 
-double mean_of_first(const std::vector<RunResult>& runs, std::size_t episodes) {
-  double sum = 0;
-  int n = 0;
-  for (const RunResult& run : runs) {
-    for (std::size_t e = 0; e < std::min(episodes, run.episode_lengths.size()); ++e, ++n) sum += run.episode_lengths[e];
-  }
-  return n > 0 ? sum / n : 0.0;
-}
-
 struct PaperCommand {
   ConfigBinding config_binding;
   std::string output = "out/paper";
@@ -142,8 +134,12 @@ struct PaperCommand {
         episodes += static_cast<double>(r.episode_lengths.size()) / runs;
         if (r.greedy_length > 0) greedy += r.greedy_length, ++greedy_ok;
       }
-      std::cout << fmt::format("  {:<9} {:6.1f} episodes per run; first 5 episodes {:7.1f} actions; greedy climb {} ({} of {} runs finish)\n",
-                               condition_name(c), episodes, mean_of_first(cr.runs, 5),
+      double first_five = 0;
+      for (const RunResult& r : cr.runs) {
+        first_five += iterations_to_complete(r, 5, config.settings.learning.iterations) / runs;
+      }
+      std::cout << fmt::format("  {:<9} {:6.1f} episodes per run; {:7.1f} iterations to complete 5 episodes; greedy climb {} ({} of {} runs finish)\n",
+                               condition_name(c), episodes, first_five,
                                greedy_ok ? fmt::format("{:.1f}", greedy / greedy_ok) : std::string("-"), greedy_ok, runs);
     }
     if (config.settings.plan) {
@@ -156,12 +152,13 @@ struct PaperCommand {
                                found ? plan / found : 0.0, found, result.walls.size());
     }
     std::cout << fmt::format("\nTransfer against control (same walls and seeds), 95 % intervals over {} runs:\n", runs);
-    for (const MetricComparison& m : compare_transfer(result, config.settings.learning.iterations)) {
+    for (const MetricComparison& m :
+         compare_transfer(result, config.settings.learning.iterations, config.beginning_iterations)) {
       const auto& tr = m.per_condition[static_cast<int>(Condition::Transfer)];
       const auto& co = m.per_condition[static_cast<int>(Condition::Control)];
       const PairedTest& t = m.transfer_minus_control;
       std::cout << fmt::format("  {:<50} transfer {:7.1f} +- {:5.1f}, control {:7.1f} +- {:5.1f}; difference {:+7.1f} +- {:5.1f} (p = {:.3g})\n",
-                               m.metric->description, tr.mean, tr.half_width, co.mean, co.half_width,
+                               m.metric.description, tr.mean, tr.half_width, co.mean, co.half_width,
                                t.difference.mean, t.difference.half_width, t.p_value);
     }
     std::cout << fmt::format("\nwrote {} ({:.1f} s)\n", output, result.seconds);
@@ -180,7 +177,17 @@ struct SingleRunCommand {
     const BodyModel model = load_body_model(urdf);
     const Wall wall = wall_choice.load(config);
     std::optional<QTable> initial;
-    if (!q_grid_path.empty()) initial = load_q_table(q_grid_path, config.settings.learning.climbing.grid.tile_count());
+    if (!q_grid_path.empty()) {
+      const GridParameters& grid = config.settings.learning.climbing.grid;
+      initial = load_q_table(q_grid_path, grid.tile_count());
+      // Codes beyond this grid's would be read as states of another shape.
+      initial->for_each_row([&](StateCode state, auto, auto) {
+        if (state >= agent_state_count(grid)) {
+          throw InputError(q_grid_path, fmt::format("state code {} does not exist on a {} x {} grid", state,
+                                                    grid.columns, grid.rows));
+        }
+      });
+    }
     ProgressBar progress(initial ? "transfer" : "train", config.settings.learning.iterations);
     const std::uint64_t seed = config.settings.seed;
     const RunResult result = run_learning(model, wall, config.settings.learning, seed, initial ? &*initial : nullptr,

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -52,6 +53,14 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"grid.rows", "--grid-rows", "Rows of the moving grid", &m.grid.rows},
       {"grid.tile_width", "--grid-tile-width", "Tile width of the moving grid (m)", &m.grid.tile_width},
       {"grid.tile_height", "--grid-tile-height", "Tile height of the moving grid (m)", &m.grid.tile_height},
+      {"grid.right_hand_anchor_column", "--rh-anchor-column", "Right hand's anchor tile P_1: column", &m.grid.anchors[0][0]},
+      {"grid.right_hand_anchor_row", "--rh-anchor-row", "Right hand's anchor tile P_1: row", &m.grid.anchors[0][1]},
+      {"grid.left_hand_anchor_column", "--lh-anchor-column", "Left hand's anchor tile P_2: column", &m.grid.anchors[1][0]},
+      {"grid.left_hand_anchor_row", "--lh-anchor-row", "Left hand's anchor tile P_2: row", &m.grid.anchors[1][1]},
+      {"grid.right_foot_anchor_column", "--rf-anchor-column", "Right foot's anchor tile P_3: column", &m.grid.anchors[2][0]},
+      {"grid.right_foot_anchor_row", "--rf-anchor-row", "Right foot's anchor tile P_3: row", &m.grid.anchors[2][1]},
+      {"grid.left_foot_anchor_column", "--lf-anchor-column", "Left foot's anchor tile P_4: column", &m.grid.anchors[3][0]},
+      {"grid.left_foot_anchor_row", "--lf-anchor-row", "Left foot's anchor tile P_4: row", &m.grid.anchors[3][1]},
       {"walls.columns", "--wall-columns", "Tiles across a random wall", &s.walls.columns},
       {"walls.rows", "--wall-rows", "Tiles up a random wall", &s.walls.rows},
       {"walls.tile_width", "--wall-tile-width", "Tile width of a random wall (m)", &s.walls.tile_width},
@@ -103,6 +112,17 @@ void assign(const std::string& path, const ConfigField& field, const toml::node&
           if (const auto v = node.as_integer(); v && v->get() >= 0) {
             *target = static_cast<std::uint64_t>(v->get());
             return;
+          }
+          // TOML integers are signed 64-bit: larger seeds are written as strings.
+          if (const auto v = node.as_string()) {
+            const std::string& text = v->get();
+            std::size_t used = 0;
+            try {
+              if (!text.empty() && text[0] != '-') *target = std::stoull(text, &used);
+            } catch (const std::exception&) {
+              used = 0;
+            }
+            if (used > 0 && used == text.size()) return;
           }
           throw InputError(path, where() + " must be a non-negative integer");
         } else if constexpr (std::is_same_v<T, bool>) {
@@ -172,8 +192,23 @@ void finalize_config(ExperimentConfig& config) {
   require(s.learning.dyna.rates.gamma >= 0 && s.learning.dyna.rates.gamma < 1, "learning.gamma must be in [0, 1)");
   require(s.learning.dyna.planning_steps >= 0, "learning.planning_steps must be >= 0");
   require(s.learning.dyna.epsilon >= 0 && s.learning.dyna.epsilon <= 1, "learning.epsilon must be in [0, 1]");
-  require(s.learning.climbing.grid.columns > 0 && s.learning.climbing.grid.rows > 0, "grid columns and rows must be positive");
-  require(s.walls.columns > 0 && s.walls.rows > 0, "walls.columns and walls.rows must be positive");
+  const GridParameters& grid = s.learning.climbing.grid;
+  require(grid.columns > 0 && grid.rows > 0, "grid columns and rows must be positive");
+  for (const auto& anchor : grid.anchors) {
+    require(anchor[0] >= 0 && anchor[0] < grid.columns && anchor[1] >= 0 && anchor[1] < grid.rows,
+            "every grid anchor must be a tile of the grid");
+  }
+  int start_columns = 0, start_rows = 0;
+  for (const auto& vertex : s.walls.start_vertices) {
+    start_columns = std::max(start_columns, vertex[0]);
+    start_rows = std::max(start_rows, vertex[1]);
+  }
+  require(s.walls.columns >= start_columns && s.walls.rows >= start_rows,
+          "walls.columns and walls.rows must reach the start holds (at least 3 tiles each)");
+  require(s.walls.tile_width > 0 && s.walls.tile_height > 0, "walls tile sizes must be positive");
+  require(grid.tile_width > 0 && grid.tile_height > 0, "grid tile sizes must be positive");
+  const double state_codes = 4.0 * std::pow(grid.tile_count() + 1.0, 3.0);
+  require(state_codes < 4294967296.0, "the grid has too many tiles for 32-bit agent-state codes");
   require(s.walls.hold_radius > 0, "walls.hold_radius must be positive");
   const IkSettings& ik = s.learning.climbing.reachability.ik;
   require(ik.paper.step_size > 0 && ik.paper.time_step_s > 0 && ik.paper.timeout_s > 0,
@@ -200,6 +235,12 @@ std::string config_to_toml(ExperimentConfig& config) {
             out << (*target ? "true" : "false");
           } else if constexpr (std::is_same_v<T, std::string>) {
             out << toml_string(*target);
+          } else if constexpr (std::is_same_v<T, std::uint64_t>) {
+            if (*target > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+              out << '"' << *target << '"';
+            } else {
+              out << *target;
+            }
           } else {
             out << *target;
           }

@@ -35,6 +35,12 @@ void make_directory(const fs::path& directory) {
 
 std::string number(double value) { return fmt::format("{:.17g}", value); }
 
+// [low, high] of a 95 % interval, or null when fewer than two runs give no interval.
+nlohmann::json interval_json(const MeanInterval& m) {
+  if (m.n < 2) return nullptr;
+  return {m.mean - m.half_width, m.mean + m.half_width};
+}
+
 // Σ over agent-space states with each free limb of Q_grid(s, tile): Fig. 2b's maps.
 std::vector<std::array<double, kLimbCount>> q_grid_maps(const QTable& q, const GridParameters& grid) {
   std::vector<std::array<double, kLimbCount>> maps(grid.tile_count(), std::array<double, kLimbCount>{});
@@ -137,7 +143,7 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
                                            {"success_rate", rates},
                                            {"vertical_cm", rises}}) {
           const MeanInterval m = mean_interval(values);
-          cell[name] = {{"mean", m.mean}, {"ci95", {m.mean - m.half_width, m.mean + m.half_width}}, {"runs", m.n}};
+          cell[name] = {{"mean", m.mean}, {"ci95", interval_json(m)}, {"runs", m.n}};
         }
         intervals[condition_name(condition)][window_name(window)][regime_name(static_cast<Regime>(r))] = cell;
       }
@@ -145,20 +151,19 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
   }
   out["table1_over_runs"] = intervals;
   nlohmann::ordered_json comparison;
-  for (const MetricComparison& m : compare_transfer(result, settings.learning.iterations)) {
+  for (const MetricComparison& m : compare_transfer(result, settings.learning.iterations, beginning)) {
     nlohmann::ordered_json entry;
-    entry["description"] = m.metric->description;
+    entry["description"] = m.metric.description;
     for (const Condition c : kConditions) {
       const MeanInterval& v = m.per_condition[static_cast<int>(c)];
-      entry[condition_name(c)] = {{"mean", v.mean}, {"ci95", {v.mean - v.half_width, v.mean + v.half_width}}};
+      entry[condition_name(c)] = {{"mean", v.mean}, {"ci95", interval_json(v)}};
     }
     const PairedTest& t = m.transfer_minus_control;
     entry["transfer_minus_control"] = {{"mean", t.difference.mean},
-                                       {"ci95", {t.difference.mean - t.difference.half_width,
-                                                 t.difference.mean + t.difference.half_width}},
+                                       {"ci95", interval_json(t.difference)},
                                        {"t", t.t},
                                        {"p_value", t.p_value}};
-    comparison[m.metric->name] = entry;
+    comparison[m.metric.name] = entry;
   }
   out["transfer_vs_control"] = comparison;
   nlohmann::ordered_json lengths, runs, maps;

@@ -55,11 +55,11 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
     }
     if (progress) progress(iteration + 1);
   }
-  result.greedy_length = greedy_climb_length(mdp, agent.q_wall(), parameters.greedy_cap);
-  result.q_grid = agent.q_grid();
   result.reached_configurations = mdp.reacher().cache().reached_count();
   result.unreachable_configurations = mdp.reacher().cache().unreachable_count();
   result.ik_solves = mdp.reacher().solves();
+  result.greedy_length = greedy_climb_length(mdp, agent.q_wall(), parameters.greedy_cap);
+  result.q_grid = agent.q_grid();
   result.explored_pairs = agent.model().size();
   return result;
 }

@@ -1,6 +1,6 @@
 #include "experiments/paper_experiment.hpp"
 
-#include <atomic>
+#include <mutex>
 #include <chrono>
 #include <stdexcept>
 
@@ -93,13 +93,17 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSe
     c.wall_of_run.resize(runs);
     c.learning_seeds.resize(runs);
   }
-  std::atomic<int> done{0};
+  std::mutex progress_mutex;
+  int done = 0;
   const auto run_one = [&](Condition condition, int i, const QTable* initial) {
     ConditionResult& c = result.conditions[static_cast<int>(condition)];
     c.wall_of_run[i] = condition == Condition::Training ? i : runs + i;
     c.learning_seeds[i] = learning_seed(settings.seed, condition, i);
     c.runs[i] = run_learning(model, result.walls[c.wall_of_run[i]].wall, settings.learning, c.learning_seeds[i], initial);
-    if (progress) progress(++done);
+    if (progress) {
+      const std::lock_guard lock(progress_mutex);
+      progress(++done);
+    }
   };
   tbb::parallel_for(0, runs, [&](int i) { run_one(Condition::Training, i, nullptr); });
   tbb::parallel_for(0, 2 * runs, [&](int k) {

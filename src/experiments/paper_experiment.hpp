@@ -52,7 +52,7 @@ struct ExperimentResult {
   double seconds = 0.0;  // wall clock, informative
 };
 
-// Progress: the number of runs finished out of 3 x runs.
+// Progress: the number of runs finished out of 3 x runs (called under a lock).
 ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSettings& settings,
                                       const std::function<void(int runs_done)>& progress = {});
 

@@ -2,14 +2,15 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 namespace crux {
 
 namespace {
 
-constexpr int kWindow = 2000;
 constexpr std::size_t kEarlyEpisodes = 5, kLateEpisodes = 10;
 
-// Episodes completed whose last action falls in [first, last).
+// Episodes completed whose last action falls in (first, last].
 double episodes_between(const RunResult& run, int first, int last) {
   int end = 0, count = 0;
   for (const int length : run.episode_lengths) {
@@ -19,49 +20,54 @@ double episodes_between(const RunResult& run, int first, int last) {
   return count;
 }
 
-double mean_length(const std::vector<int>& lengths, std::size_t from, std::size_t to) {
-  if (to <= from) return 0.0;
-  double sum = 0;
-  for (std::size_t i = from; i < to; ++i) sum += lengths[i];
-  return sum / static_cast<double>(to - from);
+double early_episodes(const RunResult& run, int, int window) { return episodes_between(run, 0, window); }
+double late_episodes(const RunResult& run, int iterations, int window) {
+  return episodes_between(run, iterations - window, iterations);
 }
-
-double early_episodes(const RunResult& run, int) { return episodes_between(run, 0, kWindow); }
-double late_episodes(const RunResult& run, int iterations) {
-  return episodes_between(run, iterations - kWindow, iterations);
+double first_episodes(const RunResult& run, int iterations, int) {
+  return iterations_to_complete(run, kEarlyEpisodes, iterations);
 }
-double first_lengths(const RunResult& run, int iterations) {
-  // A run that never finishes counts its whole length, a lower bound on its first episode.
-  if (run.episode_lengths.empty()) return iterations;
-  return mean_length(run.episode_lengths, 0, std::min(kEarlyEpisodes, run.episode_lengths.size()));
-}
-double last_lengths(const RunResult& run, int iterations) {
+// Fewer than 10 completed episodes: the mean of those there are; none: the run's length.
+double last_lengths(const RunResult& run, int iterations, int) {
   const std::size_t n = run.episode_lengths.size();
   if (n == 0) return iterations;
-  return mean_length(run.episode_lengths, n - std::min(kLateEpisodes, n), n);
+  const std::size_t from = n - std::min(kLateEpisodes, n);
+  double sum = 0;
+  for (std::size_t i = from; i < n; ++i) sum += run.episode_lengths[i];
+  return sum / static_cast<double>(n - from);
 }
 
 }  // namespace
 
-const std::vector<EpisodeMetric>& episode_metrics() {
-  static const std::vector<EpisodeMetric> metrics{
-      {"early_episodes", "episodes completed in the first 2000 iterations", early_episodes, true},
-      {"first_5_length", "mean length of the first 5 episodes (iterations)", first_lengths, false},
-      {"late_episodes", "episodes completed in the last 2000 iterations", late_episodes, true},
-      {"last_10_length", "mean length of the last 10 episodes (iterations)", last_lengths, false},
+double iterations_to_complete(const RunResult& run, std::size_t episodes, int iterations) {
+  if (run.episode_lengths.size() < episodes) return iterations;
+  double total = 0;
+  for (std::size_t e = 0; e < episodes; ++e) total += run.episode_lengths[e];
+  return total;
+}
+
+std::vector<EpisodeMetric> episode_metrics(int iterations, int window) {
+  std::vector<EpisodeMetric> metrics{
+      {"early_episodes", fmt::format("episodes completed in the first {} iterations", window), early_episodes},
+      {"first_5_iterations", "iterations to complete the first 5 episodes (capped at the run)", first_episodes},
   };
+  if (iterations >= 2 * window) {
+    metrics.push_back(
+        {"late_episodes", fmt::format("episodes completed in the last {} iterations", window), late_episodes});
+  }
+  metrics.push_back({"last_10_length", "mean length of the last 10 episodes (iterations)", last_lengths});
   return metrics;
 }
 
-std::vector<MetricComparison> compare_transfer(const ExperimentResult& result, int iterations) {
+std::vector<MetricComparison> compare_transfer(const ExperimentResult& result, int iterations, int window) {
   std::vector<MetricComparison> out;
-  for (const EpisodeMetric& metric : episode_metrics()) {
+  for (const EpisodeMetric& metric : episode_metrics(iterations, window)) {
     MetricComparison comparison;
-    comparison.metric = &metric;
+    comparison.metric = metric;
     std::array<std::vector<double>, 3> values;
     for (const Condition c : kConditions) {
       for (const RunResult& run : result.conditions[static_cast<int>(c)].runs) {
-        values[static_cast<int>(c)].push_back(metric.of_run(run, iterations));
+        values[static_cast<int>(c)].push_back(metric.of_run(run, iterations, window));
       }
       comparison.per_condition[static_cast<int>(c)] = mean_interval(values[static_cast<int>(c)]);
     }

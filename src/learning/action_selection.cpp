@@ -1,6 +1,6 @@
 #include "learning/action_selection.hpp"
 
-#include <cassert>
+#include <stdexcept>
 
 namespace crux {
 
@@ -40,7 +40,7 @@ long best_candidate(std::span<const ActionCandidate> candidates, Value value, El
 
 ActionChoice select_action(const QTable& q_wall, const QTable& q_grid, const StateCouple& state,
                            std::span<const ActionCandidate> candidates, double epsilon, Random& random) {
-  assert(!candidates.empty());
+  if (candidates.empty()) throw std::invalid_argument("select_action: a state without possible actions");
   const long w = best_candidate(
       candidates, [&](const ActionCandidate& c) { return q_wall.value(state.wall, c.wall); },
       [](const ActionCandidate&) { return true; }, random);

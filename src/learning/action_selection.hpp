@@ -35,8 +35,8 @@ struct ActionChoice {
   Regime regime = Regime::Random;
 };
 
-// Ties between equally valued best actions are broken uniformly at random. Requires at
-// least one candidate.
+// Ties between equally valued best actions are broken uniformly at random. Throws
+// std::invalid_argument when there is no candidate.
 ActionChoice select_action(const QTable& q_wall, const QTable& q_grid, const StateCouple& state,
                            std::span<const ActionCandidate> candidates, double epsilon, Random& random);
 

@@ -216,12 +216,7 @@ class WallFigure {
     const double plot_top = kPageMargin + 31 + 15 * static_cast<double>(subtitles_.size());
     view_ = {extent_.y_max, extent_.z_max, kPlotLeft, plot_top, scale};
 
-    if (options_.grid && options_.grid_limb) {
-      const std::array<int, 2> anchor = GridParameters{}.anchors[static_cast<int>(*options_.grid_limb)];
-      if (anchor[0] < options_.grid->columns && anchor[1] < options_.grid->rows) {
-        anchor_tile_ = anchor[1] * options_.grid->columns + anchor[0];
-      }
-    }
+    if (options_.grid && options_.grid_limb) anchor_tile_ = options_.grid->anchor_tile;
     fill_legend();
 
     y_axis_title_ = "y (m), to the climber's left";

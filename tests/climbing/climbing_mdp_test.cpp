@@ -91,6 +91,12 @@ TEST(ClimbingMdp, AWallWhoseStartIsUnreachableIsRefused) {
   EXPECT_THROW(ClimbingMdp(f.model, wall, f.parameters), InputError);
 }
 
+TEST(ClimbingMdp, AStartWithoutPossibleActionsIsRefused) {
+  Fixture f;
+  f.parameters.filter.max_span_m = 0.2;  // no hold is near enough to any other
+  EXPECT_THROW(ClimbingMdp(f.model, f.wall, f.parameters), InputError);
+}
+
 TEST(ClimbingMdp, EveryGridActionHasExactlyOneRepresentative) {
   Fixture f;
   ClimbingMdp mdp(f.model, f.wall, f.parameters);

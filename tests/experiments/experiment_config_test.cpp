@@ -67,3 +67,31 @@ TEST(ExperimentConfig, MissingFileIsAnInputError) {
 
 }  // namespace
 }  // namespace crux
+
+namespace crux {
+namespace {
+
+TEST(ExperimentConfig, SeedsBeyondTomlIntegersRoundTripAsStrings) {
+  ExperimentConfig config;
+  config.settings.seed = 18000000000000000000ULL;  // above 2^63
+  const auto path = testing::write_temporary("big_seed.toml", config_to_toml(config));
+  ExperimentConfig reread;
+  apply_config_file(path.string(), reread);
+  EXPECT_EQ(reread.settings.seed, 18000000000000000000ULL);
+}
+
+TEST(ExperimentConfig, RangesThatWouldBreakWallsOrCodesAreRefused) {
+  ExperimentConfig small_wall;
+  small_wall.settings.walls.rows = 2;  // the hands start on row 3
+  EXPECT_THROW(finalize_config(small_wall), InputError);
+  ExperimentConfig huge_grid;
+  huge_grid.settings.learning.climbing.grid.columns = 40;
+  huge_grid.settings.learning.climbing.grid.rows = 40;  // 4 x 1601^3 codes overflow 32 bits
+  EXPECT_THROW(finalize_config(huge_grid), InputError);
+  ExperimentConfig bad_anchor;
+  bad_anchor.settings.learning.climbing.grid.anchors[0] = {5, 4};
+  EXPECT_THROW(finalize_config(bad_anchor), InputError);
+}
+
+}  // namespace
+}  // namespace crux

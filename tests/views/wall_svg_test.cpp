@@ -278,6 +278,7 @@ TEST(WallSvgTest, DrawsTheMovingGridAndBothProjections) {
   const Wall wall = lattice_wall(6, 10, 0.3, 0.5);
   GridPlacement grid;
   grid.origin = {-0.15, -0.25};
+  grid.anchor_tile = 4 * 5 + 1;  // the right hand's anchor, column 1 of row 4
   WallSvgOptions options;
   options.grid = grid;
   options.grid_limb = Limb::RightHand;
