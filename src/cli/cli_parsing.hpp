@@ -11,6 +11,7 @@
 
 #include "body/body_model.hpp"
 #include "common/input_error.hpp"
+#include "ik/ik_solver.hpp"
 
 namespace crux::cli {
 
@@ -23,6 +24,13 @@ inline Eigen::Vector3d parse_wall_point(const std::string& text, const char* fla
     throw InputError(flag, fmt::format("expected Y,Z in metres, got '{}'", text));
   }
   return {0.0, y, z};
+}
+
+// "paper" or "fast"; InputError naming `flag` otherwise.
+inline IkSolverKind require_ik_solver(const std::string& name, const char* flag) {
+  const auto kind = parse_ik_solver(name);
+  if (!kind) throw InputError(flag, fmt::format("unknown solver '{}' (expected paper or fast)", name));
+  return *kind;
 }
 
 // right_hand, left_hand, right_foot, left_foot, or rh, lh, rf, lf.

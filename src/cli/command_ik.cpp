@@ -61,11 +61,7 @@ void add_ik_options(CLI::App* command, IkOptions& o) {
 
 void finish_settings(IkOptions& o, bool solver_used) {
   o.settings.fast.time_step_s = o.settings.paper.time_step_s;
-  if (solver_used) {
-    const auto kind = parse_ik_solver(o.solver);
-    if (!kind) throw InputError("--solver", fmt::format("unknown solver '{}' (expected paper or fast)", o.solver));
-    o.settings.solver = *kind;
-  }
+  if (solver_used) o.settings.solver = require_ik_solver(o.solver, "--solver");
   if (!(o.settings.paper.step_size > 0) || !(o.settings.paper.time_step_s > 0) || !(o.settings.paper.timeout_s > 0)) {
     throw InputError("options", "--alpha, --time-step and --timeout must be positive");
   }
@@ -142,9 +138,7 @@ struct IkCompareCommand {
     if (queries <= 0) throw InputError("--queries", "must be positive");
     const BodyModel model = load_body_model(options.urdf);
     IkSettings walk = options.settings;
-    const auto walk_kind = parse_ik_solver(walk_solver);
-    if (!walk_kind) throw InputError("--walk-solver", fmt::format("unknown solver '{}' (expected paper or fast)", walk_solver));
-    walk.solver = *walk_kind;
+    walk.solver = require_ik_solver(walk_solver, "--walk-solver");
     ReachQuerySettings query_settings;
     query_settings.root = options.root;
     const auto batch = climbing_reach_queries(model, walk, queries, seed, query_settings);

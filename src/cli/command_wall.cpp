@@ -33,9 +33,7 @@ struct StartCheckOptions {
 
   IkResult check(const Wall& wall) const {
     IkSettings settings;
-    const auto kind = parse_ik_solver(solver);
-    if (!kind) throw InputError("--solver", fmt::format("unknown solver '{}' (expected paper or fast)", solver));
-    settings.solver = *kind;
+    settings.solver = require_ik_solver(solver, "--solver");
     const BodyModel model = load_body_model(urdf);
     BodyData data(model);
     return solve_start(model, data, wall, settings, root);
