@@ -31,14 +31,18 @@ Eigen::Vector3d GridPlacement::tile_centre(int tile) const {
   return {0.0, origin.x() + (column + 0.5) * tile_width, origin.y() + (row + 0.5) * tile_height};
 }
 
+double GridPlacement::squared_distance_to_centre(int tile, const Eigen::Vector3d& point) const {
+  const Eigen::Vector3d centre = tile_centre(tile);
+  return (Eigen::Vector2d(point.y(), point.z()) - Eigen::Vector2d(centre.y(), centre.z())).squaredNorm();
+}
+
 int hold_in_tile(const Wall& wall, const GridPlacement& placement, int tile) {
-  const Eigen::Vector3d centre = placement.tile_centre(tile);
   int best = -1;
   double best_distance = std::numeric_limits<double>::infinity();
   for (int i = 0; i < wall.hold_count(); ++i) {
     const Eigen::Vector3d& p = wall.holds[i].position;
     if (placement.tile_of(p) != tile) continue;
-    const double distance = (Eigen::Vector2d(p.y(), p.z()) - Eigen::Vector2d(centre.y(), centre.z())).squaredNorm();
+    const double distance = placement.squared_distance_to_centre(tile, p);
     if (distance < best_distance) {  // strict: ties keep the lower index
       best_distance = distance;
       best = i;

@@ -40,6 +40,9 @@ struct GridPlacement {
   // larger y (or larger z).
   int tile_of(const Eigen::Vector3d& point) const;
   Eigen::Vector3d tile_centre(int tile) const;  // on the wall plane x = 0
+  // Squared distance, in the wall plane, from a point to a tile's centre: the measure
+  // by which a tile maps back to a hold.
+  double squared_distance_to_centre(int tile, const Eigen::Vector3d& point) const;
 };
 
 GridPlacement place_grid(const GridParameters& grid, Limb free_limb, const Eigen::Vector3d& limb_position);

@@ -4,16 +4,13 @@
 
 #include <fmt/format.h>
 
-#include "body/kinematics.hpp"
 #include "common/input_error.hpp"
 
 namespace crux {
 
 ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters)
-    : model_(model),
-      wall_(wall),
+    : wall_(wall),
       parameters_(parameters),
-      data_(model),
       reacher_(model, wall, parameters.reachability),
       possible_(wall.hold_count()),
       candidates_(wall.hold_count()),
@@ -34,13 +31,12 @@ ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const Climbin
 void ClimbingMdp::reset() {
   configuration_ = start_configuration(wall_).with(Limb::RightHand, kFree);
   posture_ = start_posture_;
-  describe();
+  describe(reacher_.place(posture_));
 }
 
-void ClimbingMdp::describe() {
-  forward_kinematics(model_, data_, posture_);
+void ClimbingMdp::describe(const BodyData& body) {
   const Limb free = configuration_.free_limb();
-  const GridPlacement placement = place_grid(parameters_.grid, free, data_.points[1 + static_cast<int>(free)]);
+  const GridPlacement placement = place_grid(parameters_.grid, free, body.points[1 + static_cast<int>(free)]);
   state_.wall = encode(configuration_, wall_.hold_count());
   state_.grid = encode(describe_state(wall_, configuration_, placement), parameters_.grid);
 
@@ -53,8 +49,7 @@ void ClimbingMdp::describe() {
     candidates_[i] = {possible_[i], tile == kOutsideGrid ? kNoAction : tile, false};
     if (tile == kOutsideGrid) continue;
     // Grid -> wall: the possible hold nearest the tile's centre (first listed on ties).
-    const Eigen::Vector3d centre = placement.tile_centre(tile);
-    const double distance = (Eigen::Vector2d(position.y(), position.z()) - Eigen::Vector2d(centre.y(), centre.z())).squaredNorm();
+    const double distance = placement.squared_distance_to_centre(tile, position);
     if (distance < tile_best_distance_[tile]) {
       tile_best_distance_[tile] = distance;
       tile_representative_[tile] = static_cast<int>(i);
@@ -76,7 +71,8 @@ StepOutcome ClimbingMdp::step(ActionCode hold) {
   }
   outcome.reached = true;
   outcome.root_rise_m = (*reached)[2] - posture_[2];  // G[2] is e0's height
-  if (reacher_.centre_of_mass_height(*reached) >= wall_.finish_height) {
+  const BodyData& body = reacher_.place(*reached);
+  if (body.centre_of_mass.z() >= wall_.finish_height) {
     outcome.finished = true;
     outcome.reward = parameters_.rewards.finish;
     reset();
@@ -85,7 +81,7 @@ StepOutcome ClimbingMdp::step(ActionCode hold) {
   outcome.reward = parameters_.rewards.step;
   posture_ = *reached;
   configuration_ = complete.with(next_free_limb(free), kFree);
-  describe();
+  describe(body);
   return outcome;
 }
 

@@ -57,12 +57,11 @@ class ClimbingMdp {
   int grid_action_count() const { return parameters_.grid.tile_count(); }
 
  private:
-  void describe();  // the state couple and candidates of (configuration_, posture_)
+  // The state couple and candidates of configuration_, with `body` placed at posture_.
+  void describe(const BodyData& body);
 
-  const BodyModel& model_;
   const Wall& wall_;
   ClimbingParameters parameters_;
-  BodyData data_;
   ConfigurationReacher reacher_;
   Posture start_posture_, posture_;
   HoldConfiguration configuration_;  // a 3-configuration

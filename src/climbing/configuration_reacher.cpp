@@ -29,9 +29,10 @@ const Posture* ConfigurationReacher::reach_start() {
   return reach(standing_posture(target.root), start);
 }
 
-double ConfigurationReacher::centre_of_mass_height(const Posture& posture) {
+const BodyData& ConfigurationReacher::place(const Posture& posture) {
   forward_kinematics(model_, data_, posture);
-  return centre_of_mass(model_, data_).z();
+  centre_of_mass(model_, data_);
+  return data_;
 }
 
 }  // namespace crux

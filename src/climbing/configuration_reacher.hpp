@@ -26,7 +26,8 @@ class ConfigurationReacher {
   // The start configuration solved from standing (and cached); null if unreachable.
   const Posture* reach_start();
 
-  double centre_of_mass_height(const Posture& posture);
+  // Forward kinematics and centre of mass of `posture`; valid until the next call.
+  const BodyData& place(const Posture& posture);
   const PostureCache& cache() const { return cache_; }
   std::size_t solves() const { return solves_; }
 

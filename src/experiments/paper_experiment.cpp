@@ -10,6 +10,7 @@
 
 #include "climbing/configuration_reacher.hpp"
 #include "common/random.hpp"
+#include "configurations/filter_statistics.hpp"
 
 namespace crux {
 
@@ -31,18 +32,11 @@ constexpr int kWallAttempts = 100;
 // that passes the filter (each rule only compares held holds, so freeing a limb keeps a
 // configuration passing).
 std::uint64_t filtered_pairs(const Wall& wall, const FilterParameters& filter) {
-  const int n = wall.hold_count();
-  std::uint64_t passing = 0;
-  HoldConfiguration c;
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b)
-      for (int d = 0; d < n; ++d)
-        for (int e = 0; e < n; ++e) {
-          if (a == b || a == d || a == e || b == d || b == e || d == e) continue;
-          c.holds = {a, b, d, e};
-          passing += passes_filter(wall, c, filter);
-        }
-  return 4 * passing;
+  const auto counts = filter_statistics({wall}, filter);
+  for (std::size_t r = 0; r < kFeetAboveHandsReadings.size(); ++r) {
+    if (kFeetAboveHandsReadings[r] == filter.feet_above_hands) return 4 * counts[r].pass4;
+  }
+  return 0;
 }
 
 std::uint64_t learning_seed(std::uint64_t seed, Condition condition, int run) {

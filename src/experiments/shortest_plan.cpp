@@ -53,7 +53,7 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
       const HoldConfiguration complete = node.configuration.with(free, possible[i]);
       const Posture* reached = reacher.reach(*node.posture, complete);
       if (reached == nullptr) continue;
-      if (reacher.centre_of_mass_height(*reached) >= wall.finish_height) {
+      if (reacher.place(*reached).centre_of_mass.z() >= wall.finish_height) {
         finish(current, possible[i]);
         break;
       }
