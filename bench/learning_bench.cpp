@@ -10,11 +10,12 @@
 namespace crux {
 namespace {
 
-void run_training(benchmark::State& state, IkSolverKind solver) {
+void run_training(benchmark::State& state, IkSolverKind solver, Planner planner = Planner::Uniform) {
   const BodyModel model = load_body_model(default_body_model_path());
   const Wall wall = generate_random_wall(1);
   LearningParameters parameters;
   parameters.climbing.reachability.ik.solver = solver;
+  parameters.dyna.planner = planner;
   long episodes = 0;
   for (auto _ : state) {
     const RunResult result = run_learning(model, wall, parameters, 42);
@@ -26,7 +27,11 @@ void run_training(benchmark::State& state, IkSolverKind solver) {
 
 void BM_TrainingRunFast(benchmark::State& state) { run_training(state, IkSolverKind::Fast); }
 void BM_TrainingRunPaper(benchmark::State& state) { run_training(state, IkSolverKind::Paper); }
+void BM_TrainingRunFastPrioritized(benchmark::State& state) {
+  run_training(state, IkSolverKind::Fast, Planner::Prioritized);
+}
 BENCHMARK(BM_TrainingRunFast)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_TrainingRunFastPrioritized)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_TrainingRunPaper)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <span>
 
-#include "common/random.hpp"
+#include "common/random_stream.hpp"
 #include "learning/q_table.hpp"
 
 namespace crux {
@@ -35,9 +35,24 @@ struct ActionChoice {
   Regime regime = Regime::Random;
 };
 
-// Ties between equally valued best actions are broken uniformly at random. Throws
-// std::invalid_argument when there is no candidate.
+// The draws of Algorithm 3, each from its own named stream, addressed by iteration:
+//   epsilon:       the two exploration tests (lines 3 and 8);
+//   tie_break:     a random priority per action, the best priority winning among
+//                  equally valued best actions;
+//   random_action: a random priority per hold, the best priority being the random
+//                  action (line 12).
+// Priorities keyed by action rather than by position in the candidate list keep two
+// runs coupled: if they offer overlapping actions at the same iteration, they most
+// often pick the same one, while each pick stays uniform over what is offered.
+struct SelectionStreams {
+  explicit SelectionStreams(std::uint64_t seed)
+      : epsilon(seed, "epsilon"), tie_break(seed, "tie_break"), random_action(seed, "random_action") {}
+  RandomStream epsilon, tie_break, random_action;
+};
+
+// Throws std::invalid_argument when there is no candidate.
 ActionChoice select_action(const QTable& q_wall, const QTable& q_grid, const StateCouple& state,
-                           std::span<const ActionCandidate> candidates, double epsilon, Random& random);
+                           std::span<const ActionCandidate> candidates, double epsilon,
+                           const SelectionStreams& streams, std::uint64_t iteration);
 
 }  // namespace crux

@@ -2,8 +2,10 @@
 // Dyna's learnt model (Algorithm 2, line 24): the last (s', r) seen for each
 // problem-space pair (s, a), with the agent-space descriptors of s, a and s' so that
 // planning can update both tables. Pairs are kept in first-seen order so that a uniform
-// draw over them is reproducible.
+// draw over them is reproducible; each state knows the pairs that lead to it, for
+// prioritized sweeping.
 
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -22,9 +24,12 @@ struct Experience {
 
 class DeterministicModel {
  public:
-  void record(const Experience& experience);
-  std::size_t size() const { return order_.size(); }
-  const Experience& at(std::size_t index) const { return entries_[order_[index]]; }
+  // Returns the pair's index (its rank in first-seen order).
+  std::size_t record(const Experience& experience);
+  std::size_t size() const { return entries_.size(); }
+  const Experience& at(std::size_t index) const { return entries_[index]; }
+  // Indices of the pairs whose last recorded next state is `wall_state`.
+  std::span<const std::size_t> predecessors(StateCode wall_state) const;
 
  private:
   struct PairKey {
@@ -39,7 +44,7 @@ class DeterministicModel {
   };
   std::unordered_map<PairKey, std::size_t, PairHash> index_;
   std::vector<Experience> entries_;
-  std::vector<std::size_t> order_;
+  std::unordered_map<StateCode, std::vector<std::size_t>> predecessors_;
 };
 
 }  // namespace crux

@@ -1,11 +1,24 @@
 #include "learning/dyna_q.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace crux {
 
-DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaSettings& settings)
-    : settings_(settings), q_wall_(wall_action_count), q_grid_(grid_action_count) {}
+const char* planner_name(Planner planner) { return planner == Planner::Uniform ? "uniform" : "prioritized"; }
+
+std::optional<Planner> parse_planner(std::string_view name) {
+  if (name == "uniform") return Planner::Uniform;
+  if (name == "prioritized") return Planner::Prioritized;
+  return std::nullopt;
+}
+
+DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaSettings& settings, std::uint64_t seed)
+    : settings_(settings),
+      selection_streams_(seed),
+      planning_stream_(seed, "planning"),
+      q_wall_(wall_action_count),
+      q_grid_(grid_action_count) {}
 
 void DynaQAgent::set_q_grid(QTable q_grid) { q_grid_ = std::move(q_grid); }
 
@@ -35,12 +48,46 @@ void DynaQAgent::update_both(const Experience& e) {
   }
 }
 
-void DynaQAgent::learn(const Experience& experience, Random& random) {
+void DynaQAgent::learn(const Experience& experience) {
   update_both(experience);
   q_wall_.add_visit(experience.wall_state, experience.wall_action);
   if (experience.grid_action != kNoAction) q_grid_.add_visit(experience.grid_state, experience.grid_action);
-  model_.record(experience);
-  for (int i = 0; i < settings_.planning_steps; ++i) update_both(model_.at(random.below(model_.size())));
+  const std::size_t entry = model_.record(experience);
+  if (settings_.planner == Planner::Uniform) {
+    plan_uniformly();
+  } else {
+    sweep(experience.wall_state, entry);
+  }
+  ++steps_;
+}
+
+void DynaQAgent::plan_uniformly() {
+  for (int i = 0; i < settings_.planning_steps; ++i) {
+    update_both(model_.at(planning_stream_.below(model_.size(), steps_, static_cast<std::uint64_t>(i))));
+  }
+}
+
+void DynaQAgent::prioritize(std::size_t entry) {
+  const Experience& e = model_.at(entry);
+  const double target =
+      e.reward + settings_.rates.gamma * q_wall_.best_value(e.next_wall_state, available(wall_actions_, e.next_wall_state));
+  const double priority = std::abs(target - q_wall_.value(e.wall_state, e.wall_action));
+  if (priority > settings_.priority_threshold) queue_.push(entry, priority);
+}
+
+// Sutton and Barto's prioritized sweeping with Algorithm 2's real update kept: the real
+// step has changed Q(s, a), so s's predecessors are queued, and (s, a) itself if its
+// error is not yet spent; then up to planning_steps pairs are popped and replayed, each
+// queueing its own predecessors.
+void DynaQAgent::sweep(StateCode real_state, std::size_t real_entry) {
+  prioritize(real_entry);
+  for (const std::size_t p : model_.predecessors(real_state)) prioritize(p);
+  for (int i = 0; i < settings_.planning_steps && !queue_.empty(); ++i) {
+    const std::size_t entry = queue_.pop();
+    const Experience& e = model_.at(entry);
+    update_both(e);
+    for (const std::size_t p : model_.predecessors(e.wall_state)) prioritize(p);
+  }
 }
 
 }  // namespace crux

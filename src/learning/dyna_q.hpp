@@ -2,27 +2,42 @@
 // Dyna-Q with two Q-tables learnt in parallel (paper, Algorithm 2): Q_wall on
 // problem-space couples and Q_grid on agent-space couples. Real steps update both;
 // the deterministic model, learnt in problem space, replays experienced pairs (50 per
-// real step by default) into both.
+// real step by default) into both: drawn uniformly (Algorithm 2), or by prioritized
+// sweeping, which replays first the pairs whose Q_wall value is most out of date and
+// then their predecessors, so that a change of value travels back along the paths
+// that lead to it.
 
+#include <optional>
 #include <span>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
 #include "learning/action_selection.hpp"
 #include "learning/deterministic_model.hpp"
+#include "learning/prioritized_sweeping.hpp"
 #include "learning/q_learning.hpp"
 
 namespace crux {
 
+enum class Planner { Uniform, Prioritized };
+const char* planner_name(Planner planner);
+std::optional<Planner> parse_planner(std::string_view name);
+
 struct DynaSettings {
   QLearningRates rates;
-  int planning_steps = 50;
-  double epsilon = 0.1;  // Algorithm 3; the paper gives no value (spec item 19)
+  int planning_steps = 50;  // model updates per real step
+  double epsilon = 0.1;     // Algorithm 3; the paper gives no value (spec item 19)
+  Planner planner = Planner::Uniform;
+  double priority_threshold = 1e-6;  // prioritized sweeping queues larger |TD errors| only
 };
 
+// Randomness comes from named streams of `seed` (action selection's, and "planning"),
+// addressed by the number of real steps learnt so far: runs with the same seed share
+// their draws iteration by iteration.
 class DynaQAgent {
  public:
-  DynaQAgent(int wall_action_count, int grid_action_count, const DynaSettings& settings);
+  DynaQAgent(int wall_action_count, int grid_action_count, const DynaSettings& settings, std::uint64_t seed);
 
   // Starts from a Q_grid learnt elsewhere (transfer); its visit counts say what has
   // "already been taken" in agent space.
@@ -32,12 +47,14 @@ class DynaQAgent {
   // every candidate's wall action, and the grid actions that map back to a candidate.
   void observe(const StateCouple& state, std::span<const ActionCandidate> candidates);
 
-  ActionChoice choose(const StateCouple& state, std::span<const ActionCandidate> candidates, Random& random) const {
-    return select_action(q_wall_, q_grid_, state, candidates, settings_.epsilon, random);
+  ActionChoice choose(const StateCouple& state, std::span<const ActionCandidate> candidates) const {
+    return select_action(q_wall_, q_grid_, state, candidates, settings_.epsilon, selection_streams_, steps_);
   }
 
   // Algorithm 2, lines 22-29. The next state must have been observed.
-  void learn(const Experience& experience, Random& random);
+  void learn(const Experience& experience);
+
+  std::uint64_t steps() const { return steps_; }  // real steps learnt
 
   const QTable& q_wall() const { return q_wall_; }
   const QTable& q_grid() const { return q_grid_; }
@@ -45,12 +62,20 @@ class DynaQAgent {
 
  private:
   void update_both(const Experience& e);
+  void plan_uniformly();
+  void sweep(StateCode real_state, std::size_t real_entry);
+  // Queues `entry` at its Q_wall |TD error| if that passes the threshold.
+  void prioritize(std::size_t entry);
   std::span<const ActionCode> available(const std::unordered_map<StateCode, std::vector<ActionCode>>& known,
                                         StateCode state) const;
 
   DynaSettings settings_;
+  SelectionStreams selection_streams_;
+  RandomStream planning_stream_;
+  std::uint64_t steps_ = 0;
   QTable q_wall_, q_grid_;
   DeterministicModel model_;
+  PriorityQueue queue_;
   std::unordered_map<StateCode, std::vector<ActionCode>> wall_actions_, grid_actions_;
 };
 

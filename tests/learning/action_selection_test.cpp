@@ -17,8 +17,8 @@ TEST(ActionSelection, WGreedyWhenTheBestWallActionWasTaken) {
   QTable wall(4), grid(40);
   wall.set_value(5, 2, 3.0);
   wall.add_visit(5, 2);
-  Random random(1);
-  const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, random);
+  const SelectionStreams streams(1);
+  const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, streams, 0);
   EXPECT_EQ(c.regime, Regime::WGreedy);
   EXPECT_EQ(c.candidate, 2u);
 }
@@ -28,8 +28,8 @@ TEST(ActionSelection, GGreedyWhenTheBestWallActionIsNewButTheBestGridActionWasTa
   wall.set_value(5, 0, 1.0);  // best for Q_wall, never taken
   grid.set_value(50, 10, 7.0);
   grid.add_visit(50, 10);
-  Random random(1);
-  const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, random);
+  const SelectionStreams streams(1);
+  const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, streams, 0);
   EXPECT_EQ(c.regime, Regime::GGreedy);
   EXPECT_EQ(c.candidate, 1u) << "tile 10 maps back to its representative, hold 1";
 }
@@ -38,10 +38,10 @@ TEST(ActionSelection, RandomWhenNeitherBestWasTaken) {
   QTable wall(4), grid(40);
   wall.set_value(5, 0, 1.0);
   grid.set_value(50, 11, 1.0);
-  Random random(1);
+  const SelectionStreams streams(1);
   std::set<std::size_t> seen;
   for (int i = 0; i < 200; ++i) {
-    const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, random);
+    const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, streams, i);
     EXPECT_EQ(c.regime, Regime::Random);
     seen.insert(c.candidate);
   }
@@ -54,8 +54,10 @@ TEST(ActionSelection, EpsilonOneAlwaysExplores) {
   wall.add_visit(5, 2);
   grid.set_value(50, 10, 7.0);
   grid.add_visit(50, 10);
-  Random random(2);
-  for (int i = 0; i < 100; ++i) EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 1.0, random).regime, Regime::Random);
+  const SelectionStreams streams(2);
+  for (int i = 0; i < 100; ++i) {
+    EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 1.0, streams, i).regime, Regime::Random);
+  }
 }
 
 TEST(ActionSelection, EpsilonSharesMatchTheAlgorithm) {
@@ -66,10 +68,12 @@ TEST(ActionSelection, EpsilonSharesMatchTheAlgorithm) {
   grid.set_value(50, 10, 7.0);
   grid.add_visit(50, 10);
   constexpr std::uint64_t seed = 3;
-  Random random(seed);
+  const SelectionStreams streams(seed);
   int counts[kRegimeCount] = {0, 0, 0};
   constexpr int n = 100000;
-  for (int i = 0; i < n; ++i) ++counts[static_cast<int>(select_action(wall, grid, kState, kCandidates, 0.3, random).regime)];
+  for (int i = 0; i < n; ++i) {
+    ++counts[static_cast<int>(select_action(wall, grid, kState, kCandidates, 0.3, streams, i).regime)];
+  }
   EXPECT_NEAR(counts[0] / double(n), 0.7, 0.01) << "seed " << seed;
   EXPECT_NEAR(counts[1] / double(n), 0.21, 0.01);
   EXPECT_NEAR(counts[2] / double(n), 0.09, 0.01);
@@ -81,10 +85,60 @@ TEST(ActionSelection, TiesAreBrokenUniformly) {
     wall.set_value(5, a, 4.0);
     wall.add_visit(5, a);
   }
-  Random random(4);
+  constexpr std::uint64_t seed = 4;
+  const SelectionStreams streams(seed);
   int first = 0;
-  for (int i = 0; i < 10000; ++i) first += select_action(wall, grid, kState, kCandidates, 0.0, random).candidate == 1;
-  EXPECT_NEAR(first / 10000.0, 0.5, 0.03);
+  for (int i = 0; i < 10000; ++i) first += select_action(wall, grid, kState, kCandidates, 0.0, streams, i).candidate == 1;
+  EXPECT_NEAR(first / 10000.0, 0.5, 0.03) << "seed " << seed;
+}
+
+TEST(ActionSelection, RandomActionIsUniformOverTheCandidates) {
+  QTable wall(4), grid(40);
+  constexpr std::uint64_t seed = 5;
+  const SelectionStreams streams(seed);
+  int counts[4] = {0, 0, 0, 0};
+  constexpr int n = 40000;
+  for (int i = 0; i < n; ++i) ++counts[select_action(wall, grid, kState, kCandidates, 1.0, streams, i).candidate];
+  for (const int count : counts) EXPECT_NEAR(count / double(n), 0.25, 0.01) << "seed " << seed;
+}
+
+// Common random numbers: what one run draws at an iteration does not depend on what it
+// drew before, nor on how many candidates tied, nor on the order of the candidates.
+TEST(ActionSelection, DrawsAtAnIterationDependOnlyOnWhatIsOffered) {
+  QTable wall(4), grid(40);
+  const SelectionStreams streams(6);
+  const ActionCandidate reversed[4] = {kCandidates[3], kCandidates[2], kCandidates[1], kCandidates[0]};
+  for (std::uint64_t i = 0; i < 200; ++i) {
+    const ActionChoice a = select_action(wall, grid, kState, kCandidates, 1.0, streams, i);
+    const ActionChoice b = select_action(wall, grid, kState, reversed, 1.0, streams, i);
+    EXPECT_EQ(kCandidates[a.candidate].wall, reversed[b.candidate].wall) << "iteration " << i;
+  }
+  // Run 1 meets a three-way tie at iteration 0 and run 2 a two-way tie; at iteration 1
+  // both offer the same actions and take the same random action.
+  QTable tied(4);
+  for (const ActionCode a : {0, 1, 2}) tied.set_value(5, a, 1.0), tied.add_visit(5, a);
+  QTable two(4);
+  for (const ActionCode a : {0, 1}) two.set_value(5, a, 1.0), two.add_visit(5, a);
+  select_action(tied, grid, kState, kCandidates, 0.0, streams, 0);
+  select_action(two, grid, kState, kCandidates, 0.0, streams, 0);
+  for (std::uint64_t i = 1; i < 50; ++i) {
+    EXPECT_EQ(select_action(tied, grid, kState, kCandidates, 1.0, streams, i).candidate,
+              select_action(two, grid, kState, kCandidates, 1.0, streams, i).candidate);
+  }
+}
+
+TEST(ActionSelection, ATieBetweenTheSameActionsGoesTheSameWayWhateverElseIsOffered) {
+  // Holds 1 and 2 tie for Q_wall in both runs; run 2 also offers hold 0 at a lower value.
+  QTable wall(4), grid(40);
+  for (const ActionCode a : {1, 2}) wall.set_value(5, a, 4.0), wall.add_visit(5, a);
+  wall.set_value(5, 0, 1.0);
+  const ActionCandidate two[2] = {kCandidates[1], kCandidates[2]};
+  const SelectionStreams streams(7);
+  for (std::uint64_t i = 0; i < 100; ++i) {
+    const ActionChoice a = select_action(wall, grid, kState, two, 0.0, streams, i);
+    const ActionChoice b = select_action(wall, grid, kState, kCandidates, 0.0, streams, i);
+    EXPECT_EQ(two[a.candidate].wall, kCandidates[b.candidate].wall) << "iteration " << i;
+  }
 }
 
 }  // namespace

@@ -21,15 +21,14 @@ Experience transition(StateCode s, ActionCode a) {
 }
 
 TEST(DynaQ, PlanningConvergesToTheKnownOptimalValuesInBothTables) {
-  DynaQAgent agent(2, 2, DynaSettings{});
+  constexpr std::uint64_t seed = 8;
+  DynaQAgent agent(2, 2, DynaSettings{}, seed);
   const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
   agent.observe({A, A}, both);
   agent.observe({B, B}, both);
-  constexpr std::uint64_t seed = 8;
-  Random random(seed);
   for (int round = 0; round < 400; ++round) {
     for (const StateCode s : {A, B}) {
-      for (const ActionCode a : {0, 1}) agent.learn(transition(s, a), random);
+      for (const ActionCode a : {0, 1}) agent.learn(transition(s, a));
     }
   }
   for (const QTable* q : {&agent.q_wall(), &agent.q_grid()}) {
@@ -45,12 +44,11 @@ TEST(DynaQ, PlanningConvergesToTheKnownOptimalValuesInBothTables) {
 TEST(DynaQ, OneRealStepPlusPlanningOnASingleExperience) {
   DynaSettings settings;
   settings.planning_steps = 3;
-  DynaQAgent agent(2, 2, settings);
+  DynaQAgent agent(2, 2, settings, 1);
   const ActionCandidate one[1] = {{0, 0, true}};
   agent.observe({A, A}, one);
   agent.observe({B, B}, one);
-  Random random(1);
-  agent.learn({A, A, 0, 0, -1.0, B, B}, random);
+  agent.learn({A, A, 0, 0, -1.0, B, B});
   // Four updates of Q(A,0) with Q(B,.) = 0: q <- q + 0.1 (-1 - q), from 0.
   double q = 0.0;
   for (int i = 0; i < 4; ++i) q += 0.1 * (-1.0 - q);
@@ -61,9 +59,8 @@ TEST(DynaQ, OneRealStepPlusPlanningOnASingleExperience) {
 TEST(DynaQ, AGridActionOutsideTheGridUpdatesOnlyTheWallTable) {
   DynaSettings settings;
   settings.planning_steps = 0;
-  DynaQAgent agent(2, 2, settings);
-  Random random(1);
-  agent.learn({A, A, 1, kNoAction, -1000.0, A, A}, random);
+  DynaQAgent agent(2, 2, settings, 1);
+  agent.learn({A, A, 1, kNoAction, -1000.0, A, A});
   EXPECT_DOUBLE_EQ(agent.q_wall().value(A, 1), -100.0);
   EXPECT_EQ(agent.q_grid().state_count(), 0u);
 }

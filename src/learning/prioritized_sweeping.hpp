@@ -1,0 +1,35 @@
+#pragma once
+// The queue of prioritized sweeping (Moore and Atkeson 1993; Sutton and Barto 2018,
+// section 8.4): (state, action) pairs of the learnt model, each queued once at the
+// largest priority it was given, popped highest first. Equal priorities pop the pair
+// the model learnt first, so planning needs no random numbers.
+
+#include <cstddef>
+#include <vector>
+
+namespace crux {
+
+class PriorityQueue {
+ public:
+  // Queues model entry `entry`, or raises its priority if it is queued lower.
+  void push(std::size_t entry, double priority);
+  bool empty() const { return queued_ == 0; }
+  std::size_t size() const { return queued_; }
+  // The entry of highest priority, removed from the queue. Precondition: !empty().
+  std::size_t pop();
+
+ private:
+  struct Item {
+    double priority;
+    std::size_t entry;
+  };
+  static bool lower(const Item& a, const Item& b) {
+    return a.priority < b.priority || (a.priority == b.priority && a.entry > b.entry);
+  }
+
+  std::vector<Item> heap_;          // may hold stale items, superseded by a raise
+  std::vector<double> priority_of_;  // per entry: its queued priority, or -1 when not queued
+  std::size_t queued_ = 0;
+};
+
+}  // namespace crux
