@@ -37,6 +37,15 @@ struct ConfigBinding {
     }
   }
 
+  CLI::Option* option(const std::string& flag) const {
+    ExperimentConfig scratch;
+    const auto fields = config_fields(scratch);
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      if (fields[i].flag == flag) return options[i];
+    }
+    return nullptr;
+  }
+
   ExperimentConfig resolve() {
     ExperimentConfig config;
     if (!config_path.empty()) apply_config_file(config_path, config);
@@ -78,11 +87,11 @@ void print_table_one(const ExperimentResult& result, const ExperimentConfig& con
   const PaperTableOne& paper = paper_table_one();
   std::array<std::array<std::array<RegimeStats, kRegimeCount>, 2>, 3> ours;
   for (const Condition c : kConditions) {
-    ours[static_cast<int>(c)] = table_one(result.conditions[static_cast<int>(c)].runs, config.beginning_iterations);
+    ours[static_cast<int>(c)] = table_one(result.conditions[static_cast<int>(c)].runs, config.settings.analysis.beginning);
   }
   std::cout << fmt::format(
       "\nTable I: ours (paper's in brackets), over {} runs per condition; beginning = first {} iterations\n",
-      config.settings.runs, config.beginning_iterations);
+      config.settings.runs(), config.settings.analysis.beginning);
   for (const Window w : {Window::Beginning, Window::Overall}) {
     std::cout << fmt::format("\n{:<26}{:>16}{:>16}{:>10}\n", window_name(w), "training", "transfer", "control");
     for (int metric = 0; metric < 3; ++metric) {
@@ -108,22 +117,67 @@ void print_table_one(const ExperimentResult& result, const ExperimentConfig& con
   }
 }
 
+void print_transfer_analysis(const ExperimentAnalysis& analysis, const ExperimentSettings& settings) {
+  std::cout << fmt::format(
+      "\nTransfer against control, paired by wall and seed ({} walls x {} seeds); means over walls with 95 % "
+      "intervals:\n",
+      settings.wall_pairs, settings.seeds_per_wall);
+  for (const MetricComparison& m : analysis.metrics) {
+    const auto& tr = m.per_condition[static_cast<int>(Condition::Transfer)];
+    const auto& co = m.per_condition[static_cast<int>(Condition::Control)];
+    const ClusteredDifference& d = m.transfer_minus_control;
+    std::cout << fmt::format("  {} ({} is better)\n", m.metric.description, m.metric.higher_is_better ? "higher" : "lower");
+    std::cout << fmt::format(
+        "    transfer {:.4g} +- {:.3g}, control {:.4g} +- {:.3g}; difference {:+.4g} ({:+.0f} %), t-interval over walls "
+        "[{:.4g}, {:.4g}], cluster bootstrap [{:.4g}, {:.4g}], p = {:.3g}; paired r = {:.2f}; walls for 80 % power: "
+        "{}\n",
+        tr.mean, tr.half_width, co.mean, co.half_width, d.mean, 100 * m.relative_difference, d.t_low, d.t_high,
+        d.bootstrap_low, d.bootstrap_high, d.p_value, m.paired_correlation,
+        m.walls_for_power > 0 ? std::to_string(m.walls_for_power) : "-");
+  }
+  std::cout << fmt::format("\nTake-off (first episode of at most {} iterations, at least half w-greedy):\n",
+                           settings.analysis.threshold_length);
+  for (const Condition c : kConditions) {
+    const ExperimentAnalysis::TakeOff& t = analysis.take_off[static_cast<int>(c)];
+    std::cout << fmt::format("  {:<9} {} of {} runs take off; median iteration {}\n", condition_name(c), t.taken_off,
+                             t.runs, t.taken_off > 0 ? fmt::format("{:.0f}", t.median_iteration) : "-");
+  }
+  std::cout << fmt::format("Transfer and control runs first differ at iteration {:.1f} (median over pairs)\n",
+                           analysis.median_first_divergence);
+}
+
 struct PaperCommand {
   ConfigBinding config_binding;
   std::string output = "out/paper";
   std::string urdf = default_body_model_path();
+  int runs = 0;
+  CLI::Option* runs_option = nullptr;
+
+  void bind(CLI::App* command) {
+    config_binding.bind(command);
+    runs_option = command->add_option("--runs", runs, "N walls with one seed each: --walls N --seeds-per-wall 1")
+                      ->excludes(config_binding.option("--walls"))
+                      ->excludes(config_binding.option("--seeds-per-wall"));
+  }
 
   void run() {
     ExperimentConfig config = config_binding.resolve();
+    if (runs_option->count() > 0) {
+      if (runs <= 0) throw InputError("--runs", "must be positive");
+      config.settings.wall_pairs = runs;
+      config.settings.seeds_per_wall = 1;
+    }
     const BodyModel model = load_body_model(urdf);
-    const int runs = config.settings.runs;
-    std::cerr << fmt::format("crux paper: {} runs x 3 conditions x {} iterations ({} solver), seed {}\n", runs,
-                             config.settings.learning.iterations, config.solver, config.settings.seed);
-    ProgressBar progress("runs", 3L * runs);
-    const ExperimentResult result =
-        run_paper_experiment(model, config.settings, [&](int done) { progress.update(done); });
+    const ExperimentSettings& settings = config.settings;
+    const int total = settings.runs();
+    std::cerr << fmt::format("crux paper: {} walls x {} seeds x 3 conditions x {} iterations ({} solver), seed {}\n",
+                             settings.wall_pairs, settings.seeds_per_wall, settings.learning.iterations, config.solver,
+                             settings.seed);
+    ProgressBar progress("runs", 3L * total);
+    const ExperimentResult result = run_paper_experiment(model, settings, [&](int done) { progress.update(done); });
     progress.finish();
-    write_experiment(output, result, config.settings, model, config_to_toml(config), config.beginning_iterations);
+    const ExperimentAnalysis analysis = analyse_experiment(result, settings);
+    write_experiment(output, result, analysis, settings, model, config_to_toml(config));
     print_table_one(result, config);
     std::cout << "\nEpisode lengths (mean over runs):\n";
     for (const Condition c : kConditions) {
@@ -131,18 +185,15 @@ struct PaperCommand {
       double episodes = 0, greedy = 0;
       int greedy_ok = 0;
       for (const RunResult& r : cr.runs) {
-        episodes += static_cast<double>(r.episode_lengths.size()) / runs;
+        episodes += static_cast<double>(r.episode_lengths.size()) / total;
         if (r.greedy_length > 0) greedy += r.greedy_length, ++greedy_ok;
       }
-      double first_five = 0;
-      for (const RunResult& r : cr.runs) {
-        first_five += iterations_to_complete(r, 5, config.settings.learning.iterations) / runs;
-      }
-      std::cout << fmt::format("  {:<9} {:6.1f} episodes per run; {:7.1f} iterations to complete 5 episodes; greedy climb {} ({} of {} runs finish)\n",
-                               condition_name(c), episodes, first_five,
-                               greedy_ok ? fmt::format("{:.1f}", greedy / greedy_ok) : std::string("-"), greedy_ok, runs);
+      std::cout << fmt::format("  {:<9} {:6.1f} episodes per run; greedy climb {} ({} of {} runs finish)\n",
+                               condition_name(c), episodes,
+                               greedy_ok ? fmt::format("{:.1f}", greedy / greedy_ok) : std::string("-"), greedy_ok,
+                               total);
     }
-    if (config.settings.plan) {
+    if (settings.plan) {
       double plan = 0;
       int found = 0;
       for (const ExperimentWall& w : result.walls) {
@@ -151,16 +202,7 @@ struct PaperCommand {
       std::cout << fmt::format("  exact shortest climb: {:.1f} actions on average ({} of {} walls; the paper: about 10)\n",
                                found ? plan / found : 0.0, found, result.walls.size());
     }
-    std::cout << fmt::format("\nTransfer against control (same walls and seeds), 95 % intervals over {} runs:\n", runs);
-    for (const MetricComparison& m :
-         compare_transfer(result, config.settings.learning.iterations, config.beginning_iterations)) {
-      const auto& tr = m.per_condition[static_cast<int>(Condition::Transfer)];
-      const auto& co = m.per_condition[static_cast<int>(Condition::Control)];
-      const PairedTest& t = m.transfer_minus_control;
-      std::cout << fmt::format("  {:<50} transfer {:7.1f} +- {:5.1f}, control {:7.1f} +- {:5.1f}; difference {:+7.1f} +- {:5.1f} (p = {:.3g})\n",
-                               m.metric.description, tr.mean, tr.half_width, co.mean, co.half_width,
-                               t.difference.mean, t.difference.half_width, t.p_value);
-    }
+    print_transfer_analysis(analysis, settings);
     std::cout << fmt::format("\nwrote {} ({:.1f} s)\n", output, result.seconds);
   }
 };
@@ -206,7 +248,7 @@ struct SingleRunCommand {
     summary["episode_lengths"] = result.episode_lengths;
     summary["greedy_length"] = result.greedy_length;
     summary["ik_solves"] = result.ik_solves;
-    const auto cells = table_one({result}, config.beginning_iterations);
+    const auto cells = table_one({result}, config.settings.analysis.beginning);
     for (const Window w : {Window::Beginning, Window::Overall}) {
       for (int r = 0; r < kRegimeCount; ++r) {
         const RegimeStats& s = cells[static_cast<int>(w)][r];
@@ -267,7 +309,7 @@ void add_learning_commands(CLI::App& app) {
   auto* p = app.add_subcommand("paper", "Run the paper's experiment (training, transfer, control) and print Table I");
   p->add_option("-o,--output", paper->output, "Output folder")->capture_default_str();
   p->add_option("--urdf", paper->urdf, "URDF file of the body")->capture_default_str();
-  paper->config_binding.bind(p);
+  paper->bind(p);
   p->callback([paper] { paper->run(); });
 
   auto train = std::make_shared<SingleRunCommand>();

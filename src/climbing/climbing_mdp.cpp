@@ -29,6 +29,7 @@ ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const Climbin
 }
 
 void ClimbingMdp::reset() {
+  left_hold_ = start_configuration(wall_).hold(Limb::RightHand);
   configuration_ = start_configuration(wall_).with(Limb::RightHand, kFree);
   posture_ = start_posture_;
   describe(reacher_.place(posture_));
@@ -36,20 +37,20 @@ void ClimbingMdp::reset() {
 
 void ClimbingMdp::describe(const BodyData& body) {
   const Limb free = configuration_.free_limb();
-  const GridPlacement placement = place_grid(parameters_.grid, free, body.points[1 + static_cast<int>(free)]);
+  placement_ = place_grid(parameters_.grid, free, body.points[1 + static_cast<int>(free)]);
   state_.wall = encode(configuration_, wall_.hold_count());
-  state_.grid = encode(describe_state(wall_, configuration_, placement), parameters_.grid);
+  state_.grid = encode(describe_state(wall_, configuration_, placement_), parameters_.grid);
 
   candidate_count_ = static_cast<std::size_t>(possible_actions(wall_, configuration_, parameters_.filter, possible_));
   std::fill(tile_representative_.begin(), tile_representative_.end(), -1);
   std::fill(tile_best_distance_.begin(), tile_best_distance_.end(), std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < candidate_count_; ++i) {
     const Eigen::Vector3d& position = wall_.holds[possible_[i]].position;
-    const int tile = placement.tile_of(position);
+    const int tile = placement_.tile_of(position);
     candidates_[i] = {possible_[i], tile == kOutsideGrid ? kNoAction : tile, false};
     if (tile == kOutsideGrid) continue;
     // Grid -> wall: the possible hold nearest the tile's centre (first listed on ties).
-    const double distance = placement.squared_distance_to_centre(tile, position);
+    const double distance = placement_.squared_distance_to_centre(tile, position);
     if (distance < tile_best_distance_[tile]) {
       tile_best_distance_[tile] = distance;
       tile_representative_[tile] = static_cast<int>(i);
@@ -80,6 +81,7 @@ StepOutcome ClimbingMdp::step(ActionCode hold) {
   }
   outcome.reward = parameters_.rewards.step;
   posture_ = *reached;
+  left_hold_ = complete.hold(next_free_limb(free));
   configuration_ = complete.with(next_free_limb(free), kFree);
   describe(body);
   return outcome;

@@ -49,6 +49,10 @@ class ClimbingMdp {
   StepOutcome step(ActionCode hold);
 
   const HoldConfiguration& configuration() const { return configuration_; }
+  // The moving grid of the current state, and the hold its free limb held in the last
+  // 4-configuration (taking it again is a move that goes nowhere).
+  const GridPlacement& placement() const { return placement_; }
+  int left_hold() const { return left_hold_; }
   const Posture& posture() const { return posture_; }
   const Posture& start_posture() const { return start_posture_; }
   const ConfigurationReacher& reacher() const { return reacher_; }
@@ -65,6 +69,8 @@ class ClimbingMdp {
   ConfigurationReacher reacher_;
   Posture start_posture_, posture_;
   HoldConfiguration configuration_;  // a 3-configuration
+  GridPlacement placement_;
+  int left_hold_ = kFree;
   StateCouple state_;
   std::vector<int> possible_;
   std::vector<ActionCandidate> candidates_;

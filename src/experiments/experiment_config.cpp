@@ -19,12 +19,19 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
   ClimbingParameters& m = l.climbing;
   IkSettings& ik = m.reachability.ik;
   return {
-      {"experiment.runs", "--runs", "Runs per condition", &s.runs},
+      {"experiment.walls", "--walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs},
+      {"experiment.seeds_per_wall", "--seeds-per-wall", "Learning seeds per wall pair", &s.seeds_per_wall},
       {"experiment.seed", "--seed", "Experiment seed; walls and runs derive from it", &s.seed},
       {"experiment.threads", "--threads", "Worker threads (0: all cores)", &s.threads},
       {"experiment.iterations", "--iterations", "Learning iterations (real actions) per run", &l.iterations},
-      {"experiment.beginning_iterations", "--beginning", "Iterations of Table I's beginning window",
-       &c.beginning_iterations},
+      {"experiment.beginning_iterations", "--beginning",
+       "Iterations of Table I's beginning window, and of the early and late windows of the metrics",
+       &s.analysis.beginning},
+      {"experiment.threshold_length", "--threshold-length",
+       "Episode length (iterations) that counts as climbing well: time to threshold and take-off",
+       &s.analysis.threshold_length},
+      {"experiment.bootstrap_resamples", "--bootstrap-resamples", "Resamples of the cluster bootstrap over walls",
+       &s.analysis.bootstrap_resamples},
       {"experiment.plan", "--plan", "Compute each wall's exact shortest climb", &s.plan},
       {"experiment.greedy_cap", "--greedy-cap", "Actions allowed to the greedy policy's evaluation climb",
        &l.greedy_cap},
@@ -32,6 +39,11 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"learning.gamma", "--gamma", "Discount factor gamma", &l.dyna.rates.gamma},
       {"learning.planning_steps", "--planning-steps", "Dyna planning updates per real step", &l.dyna.planning_steps},
       {"learning.epsilon", "--epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon},
+      {"learning.planner", "--planner",
+       "Dyna planning: uniform (Algorithm 2) or prioritized (prioritized sweeping, same number of updates)",
+       &c.planner},
+      {"learning.priority_threshold", "--priority-threshold",
+       "Prioritized sweeping queues pairs whose |TD error| exceeds this", &l.dyna.priority_threshold},
       {"rewards.unreachable", "--reward-unreachable", "Reward of an unreachable 4-configuration",
        &m.rewards.unreachable},
       {"rewards.step", "--reward-step", "Reward of a reachable 4-configuration", &m.rewards.step},
@@ -172,26 +184,42 @@ void apply_config_file(const std::string& path, ExperimentConfig& config) {
   }
 }
 
+namespace {
+constexpr long long kMaxRunsPerCondition = 1000000;
+}  // namespace
+
 void finalize_config(ExperimentConfig& config) {
   ExperimentSettings& s = config.settings;
   const auto solver = parse_ik_solver(config.solver);
   if (!solver) throw InputError("ik.solver", fmt::format("unknown solver '{}' (expected fast or paper)", config.solver));
   s.learning.climbing.reachability.ik.solver = *solver;
   s.learning.climbing.reachability.ik.fast.time_step_s = s.learning.climbing.reachability.ik.paper.time_step_s;
+  const auto planner = parse_planner(config.planner);
+  if (!planner) {
+    throw InputError("learning.planner", fmt::format("unknown planner '{}' (expected uniform or prioritized)", config.planner));
+  }
+  s.learning.dyna.planner = *planner;
   const auto reading = parse_reading(config.reading);
   if (!reading) throw InputError("filter.reading", fmt::format("unknown reading '{}'", config.reading));
   s.learning.climbing.filter.feet_above_hands = *reading;
   const auto require = [](bool ok, const char* what) {
     if (!ok) throw InputError("config", what);
   };
-  require(s.runs > 0, "experiment.runs must be positive");
+  require(s.wall_pairs > 0, "experiment.walls must be positive");
+  require(s.seeds_per_wall > 0, "experiment.seeds_per_wall must be positive");
+  require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition,
+          "experiment.walls x experiment.seeds_per_wall must be at most 1000000 runs per condition");
   require(s.threads >= 0, "experiment.threads must be 0 (all cores) or positive");
   require(s.learning.iterations > 0, "experiment.iterations must be positive");
-  require(config.beginning_iterations > 0, "experiment.beginning_iterations must be positive");
+  require(s.analysis.beginning > 0, "experiment.beginning_iterations must be positive");
+  require(s.analysis.threshold_length > 0, "experiment.threshold_length must be positive");
+  require(s.analysis.bootstrap_resamples >= 100 && s.analysis.bootstrap_resamples <= 10000000,
+          "experiment.bootstrap_resamples must be in [100, 10000000]");
   require(s.learning.dyna.rates.alpha > 0 && s.learning.dyna.rates.alpha <= 1, "learning.alpha must be in (0, 1]");
   require(s.learning.dyna.rates.gamma >= 0 && s.learning.dyna.rates.gamma < 1, "learning.gamma must be in [0, 1)");
   require(s.learning.dyna.planning_steps >= 0, "learning.planning_steps must be >= 0");
   require(s.learning.dyna.epsilon >= 0 && s.learning.dyna.epsilon <= 1, "learning.epsilon must be in [0, 1]");
+  require(s.learning.dyna.priority_threshold >= 0, "learning.priority_threshold must be >= 0");
   const GridParameters& grid = s.learning.climbing.grid;
   require(grid.columns > 0 && grid.rows > 0, "grid columns and rows must be positive");
   for (const auto& anchor : grid.anchors) {

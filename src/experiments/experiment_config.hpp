@@ -14,8 +14,8 @@ namespace crux {
 
 struct ExperimentConfig {
   ExperimentSettings settings;
-  int beginning_iterations = 2000;  // Table I's "beginning" window
   std::string solver = "fast";
+  std::string planner = planner_name(Planner::Uniform);
   std::string reading = reading_name(FilterParameters{}.feet_above_hands);
 };
 

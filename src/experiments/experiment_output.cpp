@@ -1,5 +1,7 @@
 #include "experiments/experiment_output.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -9,7 +11,6 @@
 #include "common/input_error.hpp"
 #include "experiments/table_one.hpp"
 #include "experiments/statistics.hpp"
-#include "experiments/transfer_comparison.hpp"
 #include "learning/q_table_file.hpp"
 #include "wall/wall_file.hpp"
 
@@ -101,15 +102,26 @@ void write_run_files(const fs::path& directory, const RunResult& run, const Body
   write_file_atomically(directory / "climb.csv", climb.str());
 }
 
-nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const ExperimentSettings& settings,
-                                          int beginning) {
+namespace {
+
+// A number that may be NaN (a correlation without variance) as JSON: null then.
+nlohmann::json finite_or_null(double value) { return std::isfinite(value) ? nlohmann::json(value) : nullptr; }
+
+}  // namespace
+
+nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const ExperimentAnalysis& analysis,
+                                          const ExperimentSettings& settings) {
+  const int beginning = settings.analysis.beginning;
   nlohmann::ordered_json out;
   out["format"] = "crux-summary";
-  out["version"] = 1;
+  out["version"] = 2;
   out["seed"] = settings.seed;
-  out["runs"] = settings.runs;
+  out["walls"] = settings.wall_pairs;
+  out["seeds_per_wall"] = settings.seeds_per_wall;
+  out["runs_per_condition"] = settings.runs();
   out["iterations"] = settings.learning.iterations;
   out["beginning_iterations"] = beginning;
+  out["threshold_length"] = settings.analysis.threshold_length;
   out["solver"] = ik_solver_name(settings.learning.climbing.reachability.ik.solver);
   out["seconds"] = result.seconds;
   nlohmann::ordered_json table;
@@ -151,21 +163,39 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
   }
   out["table1_over_runs"] = intervals;
   nlohmann::ordered_json comparison;
-  for (const MetricComparison& m : compare_transfer(result, settings.learning.iterations, beginning)) {
+  for (const MetricComparison& m : analysis.metrics) {
     nlohmann::ordered_json entry;
     entry["description"] = m.metric.description;
+    entry["higher_is_better"] = m.metric.higher_is_better;
     for (const Condition c : kConditions) {
       const MeanInterval& v = m.per_condition[static_cast<int>(c)];
-      entry[condition_name(c)] = {{"mean", v.mean}, {"ci95", interval_json(v)}};
+      entry[condition_name(c)] = {{"mean", v.mean}, {"ci95_over_walls", interval_json(v)}};
     }
-    const PairedTest& t = m.transfer_minus_control;
-    entry["transfer_minus_control"] = {{"mean", t.difference.mean},
-                                       {"ci95", interval_json(t.difference)},
-                                       {"t", t.t},
-                                       {"p_value", t.p_value}};
+    const ClusteredDifference& d = m.transfer_minus_control;
+    entry["transfer_minus_control"] = {{"mean", d.mean},
+                                       {"ci95_t_over_walls", {d.t_low, d.t_high}},
+                                       {"ci95_cluster_bootstrap", {d.bootstrap_low, d.bootstrap_high}},
+                                       {"t", finite_or_null(d.t)},
+                                       {"p_value", d.p_value},
+                                       {"walls", d.clusters},
+                                       {"pairs", d.pairs}};
+    entry["relative_difference"] = finite_or_null(m.relative_difference);
+    entry["paired_correlation"] = finite_or_null(m.paired_correlation);
+    entry["walls_for_80_percent_power"] = m.walls_for_power > 0 ? nlohmann::json(m.walls_for_power) : nullptr;
     comparison[m.metric.name] = entry;
   }
   out["transfer_vs_control"] = comparison;
+  nlohmann::ordered_json take_off;
+  for (const Condition c : kConditions) {
+    const ExperimentAnalysis::TakeOff& t = analysis.take_off[static_cast<int>(c)];
+    take_off[condition_name(c)] = {{"runs", t.runs},
+                                   {"taken_off", t.taken_off},
+                                   {"share", t.runs > 0 ? static_cast<double>(t.taken_off) / t.runs : 0.0},
+                                   {"median_iteration", t.taken_off > 0 ? nlohmann::json(t.median_iteration) : nullptr}};
+  }
+  out["take_off"] = take_off;
+  out["transfer_control_divergence"] = {{"median_first_divergence", analysis.median_first_divergence},
+                                        {"first_divergence", analysis.first_divergence}};
   nlohmann::ordered_json lengths, runs, maps;
   for (const Condition condition : kConditions) {
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];
@@ -179,8 +209,10 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
       const ExperimentWall& wall = result.walls[c.wall_of_run[i]];
       lengths[name].push_back(run.episode_lengths);
       runs[name].push_back({{"wall", wall.wall.name},
+                            {"wall_pair", c.cluster_of_run[i]},
                             {"wall_seed", wall.seed},
                             {"learning_seed", c.learning_seeds[i]},
+                            {"take_off_iteration", take_off_iteration(run, settings.analysis.threshold_length)},
                             {"episodes", run.episode_lengths.size()},
                             {"greedy_length", run.greedy_length},
                             {"plan_length", wall.plan.found ? wall.plan.length : -1},
@@ -217,15 +249,15 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
   return out;
 }
 
-void write_experiment(const fs::path& directory, const ExperimentResult& result, const ExperimentSettings& settings,
-                      const BodyModel& model, const std::string& config_toml, int beginning) {
+void write_experiment(const fs::path& directory, const ExperimentResult& result, const ExperimentAnalysis& analysis,
+                      const ExperimentSettings& settings, const BodyModel& model, const std::string& config_toml) {
   make_directory(directory);
   write_file_atomically(directory / "config.toml", config_toml);
   make_directory(directory / "walls");
   for (std::size_t w = 0; w < result.walls.size(); ++w) {
-    const bool training = static_cast<int>(w) < settings.runs;
+    const bool training = static_cast<int>(w) < settings.wall_pairs;
     save_wall((directory / "walls" / fmt::format("{}_{}.json", training ? "training" : "transfer",
-                                                  w % settings.runs)).string(),
+                                                  w % settings.wall_pairs)).string(),
               result.walls[w].wall);
   }
   for (const Condition condition : kConditions) {
@@ -247,7 +279,7 @@ void write_experiment(const fs::path& directory, const ExperimentResult& result,
     }
   }
   write_file_atomically(directory / "figures" / "fig4_episode_lengths.csv", fig4.str());
-  const nlohmann::ordered_json summary = experiment_summary(result, settings, beginning);
+  const nlohmann::ordered_json summary = experiment_summary(result, analysis, settings);
   std::ostringstream fig2b;
   fig2b << "condition,free_limb,tile,column,row,value\n";
   const GridParameters& grid = settings.learning.climbing.grid;

@@ -26,9 +26,8 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
                        std::uint64_t seed, const QTable* initial_q_grid,
                        const std::function<void(int)>& progress) {
   ClimbingMdp mdp(model, wall, parameters.climbing);
-  DynaQAgent agent(mdp.wall_action_count(), mdp.grid_action_count(), parameters.dyna);
+  DynaQAgent agent(mdp.wall_action_count(), mdp.grid_action_count(), parameters.dyna, seed);
   if (initial_q_grid != nullptr) agent.set_q_grid(*initial_q_grid);
-  Random random(seed);
   RunResult result;
   result.iterations.reserve(parameters.iterations);
   std::vector<Posture> climb{mdp.posture()};
@@ -37,14 +36,24 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
   for (int iteration = 0; iteration < parameters.iterations; ++iteration) {
     const StateCouple state = mdp.state();
     const std::span<const ActionCandidate> candidates = mdp.candidates();
-    const ActionChoice choice = agent.choose(state, candidates, random);
+    const ActionChoice choice = agent.choose(state, candidates);
     const ActionCandidate action = candidates[choice.candidate];
+    IterationRecord record{episode, choice.regime, wall.holds[action.wall].id};
+    record.grid_state = static_cast<std::uint32_t>(state.grid);
+    record.tile = action.grid;
+    record.back_to_left_hold = action.wall == mdp.left_hold();
+    if (action.grid != kNoAction) {
+      const Eigen::Vector3d offset = wall.holds[action.wall].position - mdp.placement().tile_centre(action.grid);
+      record.tile_offset_y = static_cast<float>(offset.y());
+      record.tile_offset_z = static_cast<float>(offset.z());
+    }
     const StepOutcome outcome = mdp.step(action.wall);
     agent.observe(mdp.state(), mdp.candidates());
-    agent.learn({state.wall, state.grid, action.wall, action.grid, outcome.reward, mdp.state().wall, mdp.state().grid},
-                random);
-    result.iterations.push_back(
-        {episode, choice.regime, wall.holds[action.wall].id, outcome.reached, outcome.root_rise_m, outcome.reward});
+    agent.learn({state.wall, state.grid, action.wall, action.grid, outcome.reward, mdp.state().wall, mdp.state().grid});
+    record.success = outcome.reached;
+    record.root_rise_m = outcome.root_rise_m;
+    record.reward = outcome.reward;
+    result.iterations.push_back(record);
     if (outcome.reached && !outcome.finished) climb.push_back(mdp.posture());
     if (outcome.finished) {
       result.episode_lengths.push_back(iteration + 1 - episode_start);

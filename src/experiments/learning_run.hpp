@@ -27,6 +27,13 @@ struct IterationRecord {
   bool success = false;
   double root_rise_m = 0.0;
   double reward = 0.0;
+  // In agent space, for the diagnosis of transferred choices: the state, the tile tried
+  // (kNoAction outside the grid), the hold's offset from that tile's centre (y, z, in
+  // m), and whether the hold is the one the free limb just left.
+  std::uint32_t grid_state = 0;
+  ActionCode tile = kNoAction;
+  float tile_offset_y = 0.0f, tile_offset_z = 0.0f;
+  bool back_to_left_hold = false;
 };
 
 struct RunResult {

@@ -39,6 +39,7 @@ std::uint64_t filtered_pairs(const Wall& wall, const FilterParameters& filter) {
   return 0;
 }
 
+// With one seed per wall, run r's seed is what it was before walls had several seeds.
 std::uint64_t learning_seed(std::uint64_t seed, Condition condition, int run) {
   // Transfer and control share run i's seed: common random numbers for the paired test.
   const int stream = condition == Condition::Training ? 0 : 1;
@@ -69,15 +70,15 @@ ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& setti
 ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSettings& settings,
                                       const std::function<void(int)>& progress) {
   const auto started = std::chrono::steady_clock::now();
-  const int runs = settings.runs;
+  const int walls = settings.wall_pairs, runs = settings.runs();
   std::optional<tbb::global_control> limit;
   if (settings.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
 
   ExperimentResult result;
-  result.walls.resize(2 * runs);
-  tbb::parallel_for(0, 2 * runs, [&](int w) {
+  result.walls.resize(2 * walls);
+  tbb::parallel_for(0, 2 * walls, [&](int w) {
     ExperimentWall& wall = result.walls[w];
-    wall = draw_wall(model, settings, w < runs ? kTrainingRole : kTransferRole, w % runs);
+    wall = draw_wall(model, settings, w < walls ? kTrainingRole : kTransferRole, w % walls);
     wall.filtered_pairs = filtered_pairs(wall.wall, settings.learning.climbing.filter);
     if (settings.plan) wall.plan = shortest_plan(model, wall.wall, settings.learning.climbing);
   });
@@ -85,13 +86,16 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSe
   for (ConditionResult& c : result.conditions) {
     c.runs.resize(runs);
     c.wall_of_run.resize(runs);
+    c.cluster_of_run.resize(runs);
     c.learning_seeds.resize(runs);
   }
   std::mutex progress_mutex;
   int done = 0;
   const auto run_one = [&](Condition condition, int i, const QTable* initial) {
     ConditionResult& c = result.conditions[static_cast<int>(condition)];
-    c.wall_of_run[i] = condition == Condition::Training ? i : runs + i;
+    const int pair = i / settings.seeds_per_wall;
+    c.cluster_of_run[i] = pair;
+    c.wall_of_run[i] = condition == Condition::Training ? pair : walls + pair;
     c.learning_seeds[i] = learning_seed(settings.seed, condition, i);
     c.runs[i] = run_learning(model, result.walls[c.wall_of_run[i]].wall, settings.learning, c.learning_seeds[i], initial);
     if (progress) {

@@ -1,9 +1,12 @@
 #pragma once
-// The experiment of section IV, in three paired conditions:
-//   training: learning on training wall i from empty tables;
-//   transfer: learning on transfer wall i starting from training run i's Q_grid only;
-//   control:  learning on transfer wall i from empty tables (what transfer must beat).
-// Run i's walls and seeds derive from the experiment seed and i. Runs execute in
+// The experiment of section IV, in three paired conditions, over W wall pairs with K
+// learning seeds each (run r = w K + k):
+//   training: learning on training wall w from empty tables;
+//   transfer: learning on transfer wall w starting from training run r's Q_grid only;
+//   control:  learning on transfer wall w from empty tables, with transfer run r's seed
+//             (what transfer must beat).
+// Walls derive from the experiment seed and w, learning seeds from it and r. Runs on one
+// wall are not independent: the wall is the cluster of the statistics. Runs execute in
 // parallel (TBB); every result is stored by index, so any thread count gives the same
 // bytes as a serial run.
 
@@ -23,13 +26,25 @@ enum class Condition { Training = 0, Transfer = 1, Control = 2 };
 inline constexpr std::array<Condition, 3> kConditions{Condition::Training, Condition::Transfer, Condition::Control};
 const char* condition_name(Condition condition);
 
+// How runs are analysed (docs/OUTPUTS.md): Table I's beginning window, the episode
+// length that counts as climbing well, and the cluster bootstrap's size.
+struct AnalysisSettings {
+  int beginning = 2000;       // iterations; also the early and late windows of the metrics
+  int threshold_length = 60;  // time to threshold and take-off
+  int bootstrap_resamples = 10000;
+};
+
 struct ExperimentSettings {
   LearningParameters learning;
+  AnalysisSettings analysis;
   RandomWallParameters walls;
-  int runs = 6;
+  int wall_pairs = 6;      // training wall w and transfer wall w
+  int seeds_per_wall = 1;  // learning seeds per wall pair
   std::uint64_t seed = 1;
   int threads = 0;  // 0: all cores
   bool plan = true;  // compute each wall's exact shortest climb
+
+  int runs() const { return wall_pairs * seeds_per_wall; }  // per condition
 };
 
 struct ExperimentWall {
@@ -43,16 +58,17 @@ struct ExperimentWall {
 struct ConditionResult {
   std::vector<RunResult> runs;
   std::vector<std::size_t> wall_of_run;   // index into ExperimentResult::walls
+  std::vector<std::size_t> cluster_of_run;  // the wall pair w of run r
   std::vector<std::uint64_t> learning_seeds;
 };
 
 struct ExperimentResult {
-  std::vector<ExperimentWall> walls;  // training walls 0..runs-1, then transfer walls
+  std::vector<ExperimentWall> walls;  // training walls 0..W-1, then transfer walls
   std::array<ConditionResult, 3> conditions;
   double seconds = 0.0;  // wall clock, informative
 };
 
-// Progress: the number of runs finished out of 3 x runs (called under a lock).
+// Progress: the number of runs finished out of 3 x runs() (called under a lock).
 ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSettings& settings,
                                       const std::function<void(int runs_done)>& progress = {});
 

@@ -1,6 +1,9 @@
 #include "experiments/transfer_comparison.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -20,17 +23,34 @@ double episodes_between(const RunResult& run, int first, int last) {
   return count;
 }
 
-double early_episodes(const RunResult& run, int, int window) { return episodes_between(run, 0, window); }
-double late_episodes(const RunResult& run, int iterations, int window) {
-  return episodes_between(run, iterations - window, iterations);
+double early_episodes(const RunResult& run, const MetricWindows& w) { return episodes_between(run, 0, w.window); }
+double late_episodes(const RunResult& run, const MetricWindows& w) {
+  return episodes_between(run, w.iterations - w.window, w.iterations);
 }
-double first_episodes(const RunResult& run, int iterations, int) {
-  return iterations_to_complete(run, kEarlyEpisodes, iterations);
+double first_episodes(const RunResult& run, const MetricWindows& w) {
+  return iterations_to_complete(run, kEarlyEpisodes, w.iterations);
+}
+// A run that completes no episode: its length, a lower bound.
+double jumpstart(const RunResult& run, const MetricWindows& w) {
+  return run.episode_lengths.empty() ? w.iterations : run.episode_lengths.front();
+}
+double time_to_threshold(const RunResult& run, const MetricWindows& w) {
+  int end = 0;
+  for (const int length : run.episode_lengths) {
+    end += length;
+    if (length <= w.threshold_length) return end;
+  }
+  return w.iterations;
+}
+double total_reward(const RunResult& run, const MetricWindows&) {
+  double sum = 0.0;
+  for (const IterationRecord& r : run.iterations) sum += r.reward;
+  return sum;
 }
 // Fewer than 10 completed episodes: the mean of those there are; none: the run's length.
-double last_lengths(const RunResult& run, int iterations, int) {
+double last_lengths(const RunResult& run, const MetricWindows& w) {
   const std::size_t n = run.episode_lengths.size();
-  if (n == 0) return iterations;
+  if (n == 0) return w.iterations;
   const std::size_t from = n - std::min(kLateEpisodes, n);
   double sum = 0;
   for (std::size_t i = from; i < n; ++i) sum += run.episode_lengths[i];
@@ -46,33 +66,73 @@ double iterations_to_complete(const RunResult& run, std::size_t episodes, int it
   return total;
 }
 
-std::vector<EpisodeMetric> episode_metrics(int iterations, int window) {
-  std::vector<EpisodeMetric> metrics{
-      {"early_episodes", fmt::format("episodes completed in the first {} iterations", window), early_episodes},
-      {"first_5_iterations", "iterations to complete the first 5 episodes (capped at the run)", first_episodes},
-  };
-  if (iterations >= 2 * window) {
-    metrics.push_back(
-        {"late_episodes", fmt::format("episodes completed in the last {} iterations", window), late_episodes});
+int take_off_iteration(const RunResult& run, int threshold_length) {
+  int start = 0;
+  for (const int length : run.episode_lengths) {
+    if (length <= threshold_length) {
+      int w_greedy = 0;
+      for (int i = start; i < start + length; ++i) w_greedy += run.iterations[i].regime == Regime::WGreedy;
+      if (2 * w_greedy >= length) return start + length;
+    }
+    start += length;
   }
-  metrics.push_back({"last_10_length", "mean length of the last 10 episodes (iterations)", last_lengths});
+  return -1;
+}
+
+int first_divergence(const RunResult& a, const RunResult& b) {
+  const std::size_t n = std::min(a.iterations.size(), b.iterations.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (a.iterations[i].hold_id != b.iterations[i].hold_id || a.iterations[i].success != b.iterations[i].success) {
+      return static_cast<int>(i) + 1;
+    }
+  }
+  return -1;
+}
+
+std::vector<EpisodeMetric> episode_metrics(const MetricWindows& w) {
+  std::vector<EpisodeMetric> metrics{
+      {"early_episodes", fmt::format("episodes completed in the first {} iterations", w.window), true, early_episodes},
+      {"jumpstart", "length of the first episode (iterations; the run's length if none)", false, jumpstart},
+      {"time_to_threshold",
+       fmt::format("iterations to the end of the first episode of at most {} (the run's length if none)",
+                   w.threshold_length),
+       false, time_to_threshold},
+      {"first_5_iterations", "iterations to complete the first 5 episodes (capped at the run)", false, first_episodes},
+      {"total_reward", "total reward of the run (area under its reward curve)", true, total_reward},
+  };
+  if (w.iterations >= 2 * w.window) {
+    metrics.push_back({"late_episodes", fmt::format("episodes completed in the last {} iterations", w.window), true,
+                       late_episodes});
+  }
+  metrics.push_back({"last_10_length", "mean length of the last 10 episodes (asymptotic performance)", false,
+                     last_lengths});
   return metrics;
 }
 
-std::vector<MetricComparison> compare_transfer(const ExperimentResult& result, int iterations, int window) {
+std::vector<MetricComparison> compare_transfer(const ExperimentResult& result, const MetricWindows& windows,
+                                               std::uint64_t bootstrap_seed, int bootstrap_resamples) {
   std::vector<MetricComparison> out;
-  for (const EpisodeMetric& metric : episode_metrics(iterations, window)) {
+  const auto& transfer = result.conditions[static_cast<int>(Condition::Transfer)];
+  for (const EpisodeMetric& metric : episode_metrics(windows)) {
     MetricComparison comparison;
     comparison.metric = metric;
     std::array<std::vector<double>, 3> values;
     for (const Condition c : kConditions) {
-      for (const RunResult& run : result.conditions[static_cast<int>(c)].runs) {
-        values[static_cast<int>(c)].push_back(metric.of_run(run, iterations, window));
-      }
-      comparison.per_condition[static_cast<int>(c)] = mean_interval(values[static_cast<int>(c)]);
+      const ConditionResult& condition = result.conditions[static_cast<int>(c)];
+      for (const RunResult& run : condition.runs) values[static_cast<int>(c)].push_back(metric.of_run(run, windows));
+      comparison.per_condition[static_cast<int>(c)] =
+          mean_interval(cluster_means(values[static_cast<int>(c)], condition.cluster_of_run));
     }
-    comparison.transfer_minus_control = paired_t_test(values[static_cast<int>(Condition::Transfer)],
-                                                      values[static_cast<int>(Condition::Control)]);
+    const auto& t = values[static_cast<int>(Condition::Transfer)];
+    const auto& c = values[static_cast<int>(Condition::Control)];
+    comparison.transfer_minus_control =
+        clustered_paired_difference(t, c, transfer.cluster_of_run, bootstrap_seed, bootstrap_resamples);
+    const double control_mean = comparison.per_condition[static_cast<int>(Condition::Control)].mean;
+    comparison.relative_difference = control_mean != 0.0 ? comparison.transfer_minus_control.mean / std::abs(control_mean)
+                                                         : std::numeric_limits<double>::quiet_NaN();
+    comparison.paired_correlation = pearson_correlation(t, c);
+    comparison.walls_for_power = clusters_for_power(comparison.transfer_minus_control.mean,
+                                                    comparison.transfer_minus_control.standard_deviation);
     out.push_back(comparison);
   }
   return out;

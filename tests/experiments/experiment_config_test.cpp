@@ -10,12 +10,13 @@ namespace {
 
 TEST(ExperimentConfig, FileSetsValuesAndTheWrittenConfigReadsBackTheSame) {
   const auto path = testing::write_temporary("config.toml",
-                                             "[experiment]\nruns = 3\nseed = 12\n[learning]\nepsilon = 0.2\n"
+                                             "[experiment]\nwalls = 3\nseeds_per_wall = 2\nseed = 12\n[learning]\nepsilon = 0.2\n"
                                              "[ik]\nsolver = \"paper\"\n[walls]\nfinish_height = 2\n");
   ExperimentConfig config;
   apply_config_file(path.string(), config);
   finalize_config(config);
-  EXPECT_EQ(config.settings.runs, 3);
+  EXPECT_EQ(config.settings.wall_pairs, 3);
+  EXPECT_EQ(config.settings.runs(), 6);
   EXPECT_EQ(config.settings.seed, 12u);
   EXPECT_DOUBLE_EQ(config.settings.learning.dyna.epsilon, 0.2);
   EXPECT_EQ(config.settings.learning.climbing.reachability.ik.solver, IkSolverKind::Paper);
@@ -51,10 +52,12 @@ TEST_P(BadConfigFile, IsOneClearInputError) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, BadConfigFile,
-    ::testing::Values(BadConfig{"syntax", "[experiment]\nruns = = 3\n", "line 2"},
+    ::testing::Values(BadConfig{"syntax", "[experiment]\nwalls = = 3\n", "line 2"},
                       BadConfig{"unknown_key", "[learning]\nalpah = 0.2\n", "unknown key learning.alpah"},
-                      BadConfig{"wrong_type", "[experiment]\nruns = \"six\"\n", "experiment.runs must be an integer"},
-                      BadConfig{"not_a_section", "runs = 3\n", "must be a [section]"},
+                      BadConfig{"wrong_type", "[experiment]\nwalls = \"six\"\n", "experiment.walls must be an integer"},
+                      BadConfig{"too_many_runs", "[experiment]\nwalls = 2000000\nseeds_per_wall = 2000000\n",
+                                "at most 1000000 runs"},
+                      BadConfig{"not_a_section", "walls = 3\n", "must be a [section]"},
                       BadConfig{"bad_solver", "[ik]\nsolver = \"kdl\"\n", "unknown solver 'kdl'"},
                       BadConfig{"bad_range", "[learning]\ngamma = 1.5\n", "learning.gamma"},
                       BadConfig{"negative_seed", "[experiment]\nseed = -4\n", "non-negative"}),

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 ExperimentSettings small_settings(int threads) {
   ExperimentSettings settings;
-  settings.runs = 2;
+  settings.wall_pairs = 2;
   settings.learning.iterations = 400;
   settings.seed = 77;
   settings.threads = threads;
@@ -41,8 +41,11 @@ fs::path fresh_directory(const std::string& name) {
 TEST(PaperExperiment, SameSeedGivesIdenticalFilesWithOneOrTwoThreads) {
   const BodyModel& model = testing::human_model();
   const fs::path one = fresh_directory("threads1"), two = fresh_directory("threads2");
-  write_experiment(one, run_paper_experiment(model, small_settings(1)), small_settings(1), model, "", 100);
-  write_experiment(two, run_paper_experiment(model, small_settings(2)), small_settings(2), model, "", 100);
+  for (const auto& [directory, threads] : {std::pair{one, 1}, std::pair{two, 2}}) {
+    const ExperimentSettings settings = small_settings(threads);
+    const ExperimentResult result = run_paper_experiment(model, settings);
+    write_experiment(directory, result, analyse_experiment(result, settings), settings, model, "");
+  }
   int compared = 0;
   // summary.json differs only in the wall-clock time it records.
   auto first_summary = nlohmann::json::parse(read_bytes(one / "summary.json"));
@@ -81,7 +84,8 @@ TEST(PaperExperiment, ControlRunsOnTransferWallsAndTransferStartsFromTraining) {
 TEST(PaperExperiment, SummaryHasTheDocumentedKeys) {
   const BodyModel& model = testing::human_model();
   const ExperimentSettings settings = small_settings(2);
-  const auto summary = experiment_summary(run_paper_experiment(model, settings), settings, 100);
+  const ExperimentResult result = run_paper_experiment(model, settings);
+  const auto summary = experiment_summary(result, analyse_experiment(result, settings), settings);
   for (const char* condition : {"training", "transfer", "control"}) {
     for (const char* window : {"beginning", "overall"}) {
       for (const char* regime : {"w_greedy", "g_greedy", "random"}) {
@@ -90,7 +94,39 @@ TEST(PaperExperiment, SummaryHasTheDocumentedKeys) {
       }
     }
     EXPECT_EQ(summary["episode_lengths"][condition].size(), 2u);
+    EXPECT_TRUE(summary["take_off"][condition].contains("share"));
   }
+  for (const char* metric : {"early_episodes", "jumpstart", "time_to_threshold", "total_reward", "last_10_length"}) {
+    const auto& entry = summary["transfer_vs_control"][metric];
+    EXPECT_EQ(entry["transfer_minus_control"]["walls"], 2) << metric;
+    EXPECT_TRUE(entry.contains("paired_correlation")) << metric;
+    EXPECT_EQ(entry["transfer_minus_control"]["ci95_cluster_bootstrap"].size(), 2u) << metric;
+  }
+  EXPECT_EQ(summary["transfer_control_divergence"]["first_divergence"].size(), 2u);
+}
+
+TEST(PaperExperiment, SeedsPerWallShareTheWallAndFormItsCluster) {
+  const BodyModel& model = testing::human_model();
+  ExperimentSettings settings = small_settings(2);
+  settings.wall_pairs = 2;
+  settings.seeds_per_wall = 2;
+  settings.learning.iterations = 150;
+  const ExperimentResult result = run_paper_experiment(model, settings);
+  EXPECT_EQ(result.walls.size(), 4u) << "two training and two transfer walls";
+  for (const Condition condition : kConditions) {
+    const ConditionResult& c = result.conditions[static_cast<int>(condition)];
+    ASSERT_EQ(c.runs.size(), 4u);
+    EXPECT_EQ(c.cluster_of_run, (std::vector<std::size_t>{0, 0, 1, 1}));
+    EXPECT_EQ(c.wall_of_run[0], c.wall_of_run[1]);
+    EXPECT_NE(c.wall_of_run[1], c.wall_of_run[2]);
+    EXPECT_NE(c.learning_seeds[0], c.learning_seeds[1]);
+  }
+  // With one seed per wall, run r's learning seed does not depend on the number of walls.
+  ExperimentSettings four = small_settings(2), two = small_settings(2);
+  four.wall_pairs = 4;
+  four.learning.iterations = two.learning.iterations = 10;
+  EXPECT_EQ(run_paper_experiment(model, four).conditions[0].learning_seeds[1],
+            run_paper_experiment(model, two).conditions[0].learning_seeds[1]);
 }
 
 }  // namespace

@@ -1,0 +1,54 @@
+#include "experiments/experiment_analysis.hpp"
+
+#include <algorithm>
+
+#include "common/random_stream.hpp"
+
+namespace crux {
+
+std::uint64_t bootstrap_seed(const ExperimentSettings& settings) {
+  return RandomStream(settings.seed, "bootstrap").bits(0, 0);
+}
+
+namespace {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return -1.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+MetricWindows metric_windows(const ExperimentSettings& settings) {
+  return {settings.learning.iterations, settings.analysis.beginning, settings.analysis.threshold_length};
+}
+
+}  // namespace
+
+ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const ExperimentSettings& settings) {
+  ExperimentAnalysis out;
+  out.metrics = compare_transfer(result, metric_windows(settings), bootstrap_seed(settings),
+                                 settings.analysis.bootstrap_resamples);
+  for (const Condition condition : kConditions) {
+    ExperimentAnalysis::TakeOff& t = out.take_off[static_cast<int>(condition)];
+    std::vector<double> iterations;
+    for (const RunResult& run : result.conditions[static_cast<int>(condition)].runs) {
+      ++t.runs;
+      if (const int at = take_off_iteration(run, settings.analysis.threshold_length); at > 0) iterations.push_back(at);
+    }
+    t.taken_off = static_cast<int>(iterations.size());
+    t.median_iteration = median(iterations);
+  }
+  const auto& transfer = result.conditions[static_cast<int>(Condition::Transfer)].runs;
+  const auto& control = result.conditions[static_cast<int>(Condition::Control)].runs;
+  std::vector<double> divergence;
+  for (std::size_t i = 0; i < transfer.size(); ++i) {
+    out.first_divergence.push_back(first_divergence(transfer[i], control[i]));
+    divergence.push_back(out.first_divergence.back() > 0 ? out.first_divergence.back()
+                                                         : settings.learning.iterations + 1);
+  }
+  out.median_first_divergence = median(divergence);
+  return out;
+}
+
+}  // namespace crux
