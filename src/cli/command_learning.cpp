@@ -144,6 +144,23 @@ void print_transfer_analysis(const ExperimentAnalysis& analysis, const Experimen
   }
   std::cout << fmt::format("Transfer and control runs first differ at iteration {:.1f} (median over pairs)\n",
                            analysis.median_first_divergence);
+  std::cout << fmt::format("\nTransfer's choices in its first {} iterations (evidence: earlier tries of the same "
+                           "agent-space pair; far: more than {:.0f} cm from them in the tile):\n",
+                           settings.analysis.beginning, 100 * kFarFromEvidence);
+  const auto share = [](int part, int whole) { return whole > 0 ? fmt::format("{:.0f} %", 100.0 * part / whole) : std::string("-"); };
+  for (int r = 0; r < kRegimeCount; ++r) {
+    const ChoiceProfile& p = analysis.transfer_choices[r];
+    std::cout << fmt::format(
+        "  {:<9} {:6d} actions, {} reachable; back to the hold just left {} (reachable {}); the hold that failed "
+        "just before {} (reachable {}); with evidence {} "
+        "(which succeeded {}); far {} (reachable {}), near (reachable {}); median distance {:.1f} cm\n",
+        regime_name(static_cast<Regime>(r)), p.actions, share(p.successes, p.actions),
+        share(p.back_to_left_hold, p.actions), share(p.back_to_left_hold_successes, p.back_to_left_hold),
+        share(p.repeats_of_failure, p.actions), share(p.repeats_of_failure_successes, p.repeats_of_failure),
+        share(p.with_evidence, p.actions), fmt::format("{:.0f} %", 100 * p.evidence_success_rate),
+        share(p.far, p.with_evidence), share(p.far_successes, p.far), share(p.near_successes, p.near),
+        p.median_distance_cm);
+  }
 }
 
 struct PaperCommand {

@@ -15,8 +15,7 @@ namespace {
 double median(std::vector<double> values) {
   if (values.empty()) return -1.0;
   std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  return percentile(std::move(values), 0.5);
 }
 
 MetricWindows metric_windows(const ExperimentSettings& settings) {
@@ -48,6 +47,7 @@ ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const Expe
                                                          : settings.learning.iterations + 1);
   }
   out.median_first_divergence = median(divergence);
+  out.transfer_choices = diagnose_transfer(result, settings.analysis.beginning);
   return out;
 }
 

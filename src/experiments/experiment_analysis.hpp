@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "experiments/transfer_comparison.hpp"
+#include "experiments/transfer_diagnosis.hpp"
 
 namespace crux {
 
@@ -24,6 +25,7 @@ struct ExperimentAnalysis {
   std::array<TakeOff, 3> take_off;      // per condition
   std::vector<int> first_divergence;    // per transfer/control pair; -1: never
   double median_first_divergence = 0.0;  // "never" counted as the run's length + 1
+  std::array<ChoiceProfile, kRegimeCount> transfer_choices;  // transfer's beginning, per regime
 };
 ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const ExperimentSettings& settings);
 

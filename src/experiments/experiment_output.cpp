@@ -194,6 +194,26 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
                                    {"median_iteration", t.taken_off > 0 ? nlohmann::json(t.median_iteration) : nullptr}};
   }
   out["take_off"] = take_off;
+  nlohmann::ordered_json choices;
+  for (int r = 0; r < kRegimeCount; ++r) {
+    const ChoiceProfile& p = analysis.transfer_choices[r];
+    choices[regime_name(static_cast<Regime>(r))] = {
+        {"actions", p.actions},
+        {"successes", p.successes},
+        {"mean_root_rise_cm", p.mean_root_rise_cm},
+        {"back_to_left_hold", p.back_to_left_hold},
+        {"back_to_left_hold_successes", p.back_to_left_hold_successes},
+        {"repeats_of_failure", p.repeats_of_failure},
+        {"repeats_of_failure_successes", p.repeats_of_failure_successes},
+        {"with_evidence", p.with_evidence},
+        {"evidence_success_rate", p.evidence_success_rate},
+        {"median_distance_from_evidence_cm", p.median_distance_cm >= 0 ? nlohmann::json(p.median_distance_cm) : nullptr},
+        {"far_from_evidence", p.far},
+        {"far_successes", p.far_successes},
+        {"near_evidence", p.near},
+        {"near_successes", p.near_successes}};
+  }
+  out["transfer_choices"] = choices;
   out["transfer_control_divergence"] = {{"median_first_divergence", analysis.median_first_divergence},
                                         {"first_divergence", analysis.first_divergence}};
   nlohmann::ordered_json lengths, runs, maps;
