@@ -30,6 +30,21 @@ void BM_TrainingRunPaper(benchmark::State& state) { run_training(state, IkSolver
 void BM_TrainingRunFastPrioritized(benchmark::State& state) {
   run_training(state, IkSolverKind::Fast, Planner::Prioritized);
 }
+// Algorithm 3 alone on 40 candidates with random-stream draws: the cost that the named
+// streams add to each iteration (the random action hashes every candidate).
+void BM_SelectAction(benchmark::State& state) {
+  QTable wall(45), grid(35);
+  std::vector<ActionCandidate> candidates;
+  for (ActionCode a = 0; a < 40; ++a) candidates.push_back({a, a % 35, a < 35});
+  for (ActionCode a = 0; a < 40; a += 3) wall.set_value(7, a, -100.0), wall.add_visit(7, a);
+  const SelectionStreams streams(1);
+  std::uint64_t iteration = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(select_action(wall, grid, {7, 9}, candidates, 0.1, streams, iteration++));
+  }
+}
+BENCHMARK(BM_SelectAction);
+
 BENCHMARK(BM_TrainingRunFast)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_TrainingRunFastPrioritized)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_TrainingRunPaper)->Unit(benchmark::kMillisecond)->Iterations(1);
