@@ -152,12 +152,12 @@ void print_transfer_analysis(const ExperimentAnalysis& analysis, const Experimen
     const ChoiceProfile& p = analysis.transfer_choices[r];
     std::cout << fmt::format(
         "  {:<9} {:6d} actions, {} reachable; back to the hold just left {} (reachable {}); the hold that failed "
-        "just before {} (reachable {}); with evidence {} "
+        "just before {} (reachable {}); of the others, with evidence {} "
         "(which succeeded {}); far {} (reachable {}), near (reachable {}); median distance {:.1f} cm\n",
         regime_name(static_cast<Regime>(r)), p.actions, share(p.successes, p.actions),
         share(p.back_to_left_hold, p.actions), share(p.back_to_left_hold_successes, p.back_to_left_hold),
         share(p.repeats_of_failure, p.actions), share(p.repeats_of_failure_successes, p.repeats_of_failure),
-        share(p.with_evidence, p.actions), fmt::format("{:.0f} %", 100 * p.evidence_success_rate),
+        share(p.with_evidence, p.actions - p.repeats_of_failure), fmt::format("{:.0f} %", 100 * p.evidence_success_rate),
         share(p.far, p.with_evidence), share(p.far_successes, p.far), share(p.near_successes, p.near),
         p.median_distance_cm);
   }

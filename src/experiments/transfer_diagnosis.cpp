@@ -50,10 +50,10 @@ std::array<ChoiceProfile, kRegimeCount> diagnose_transfer(const ExperimentResult
       p.successes += r.success;
       if (r.success) rise_sum[regime] += 100.0 * r.root_rise_m;
       if (r.back_to_left_hold) ++p.back_to_left_hold, p.back_to_left_hold_successes += r.success;
-      if (k > 0 && !records[k - 1].success && records[k - 1].hold_id == r.hold_id) {
-        ++p.repeats_of_failure, p.repeats_of_failure_successes += r.success;
-      }
-      const auto found = r.tile == kNoAction ? evidence.end() : evidence.find(pair_key(r));
+      const bool repeat = k > 0 && !records[k - 1].success && records[k - 1].hold_id == r.hold_id;
+      if (repeat) ++p.repeats_of_failure, p.repeats_of_failure_successes += r.success;
+      // A repeat is explained by the failure before it; the evidence measures the others.
+      const auto found = repeat || r.tile == kNoAction ? evidence.end() : evidence.find(pair_key(r));
       if (found != evidence.end()) {
         const Evidence& e = found->second;
         ++p.with_evidence;

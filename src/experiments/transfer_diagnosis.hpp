@@ -7,7 +7,8 @@
 // goes nowhere), how often it was reachable, and how far the hold lies, inside its tile,
 // from where the holds of that evidence lay: a tile of 0.3 m x 0.5 m names many holds,
 // and Algorithm 3 takes the one nearest the tile's centre. It also counts the actions
-// that try again the hold that failed at the iteration before.
+// that try again the hold that failed at the iteration before; the evidence is measured
+// on the other actions.
 
 #include <array>
 
@@ -19,7 +20,9 @@ struct ChoiceProfile {
   int actions = 0, successes = 0;
   int back_to_left_hold = 0, back_to_left_hold_successes = 0;
   int repeats_of_failure = 0, repeats_of_failure_successes = 0;  // the hold that failed just before
-  int with_evidence = 0;            // the (state, tile) pair had been tried before
+  // The rest leave the repeats of a failure out: the (state, tile) pair had been tried
+  // before, with that success, at that distance.
+  int with_evidence = 0;
   double evidence_success_rate = 0;  // pooled success of those earlier tries
   int far = 0, far_successes = 0;   // the hold lies more than kFarFromEvidence from them
   int near = 0, near_successes = 0;
