@@ -153,12 +153,13 @@ void print_transfer_analysis(const ExperimentAnalysis& analysis, const Experimen
     std::cout << fmt::format(
         "  {:<9} {:6d} actions, {} reachable; back to the hold just left {} (reachable {}); the hold that failed "
         "just before {} (reachable {}); of the others, with evidence {} "
-        "(which succeeded {}); far {} (reachable {}), near (reachable {}); median distance {:.1f} cm\n",
+        "(which succeeded {}); far {} (reachable {}), near {} (reachable {}); median distance {:.1f} cm\n",
         regime_name(static_cast<Regime>(r)), p.actions, share(p.successes, p.actions),
         share(p.back_to_left_hold, p.actions), share(p.back_to_left_hold_successes, p.back_to_left_hold),
         share(p.repeats_of_failure, p.actions), share(p.repeats_of_failure_successes, p.repeats_of_failure),
         share(p.with_evidence, p.actions - p.repeats_of_failure), fmt::format("{:.0f} %", 100 * p.evidence_success_rate),
-        share(p.far, p.with_evidence), share(p.far_successes, p.far), share(p.near_successes, p.near),
+        share(p.far, p.with_evidence), share(p.far_successes, p.far), share(p.near, p.with_evidence),
+        share(p.near_successes, p.near),
         p.median_distance_cm);
   }
 }
@@ -167,23 +168,9 @@ struct PaperCommand {
   ConfigBinding config_binding;
   std::string output = "out/paper";
   std::string urdf = default_body_model_path();
-  int runs = 0;
-  CLI::Option* runs_option = nullptr;
-
-  void bind(CLI::App* command) {
-    config_binding.bind(command);
-    runs_option = command->add_option("--runs", runs, "N walls with one seed each: --walls N --seeds-per-wall 1")
-                      ->excludes(config_binding.option("--walls"))
-                      ->excludes(config_binding.option("--seeds-per-wall"));
-  }
 
   void run() {
     ExperimentConfig config = config_binding.resolve();
-    if (runs_option->count() > 0) {
-      if (runs <= 0) throw InputError("--runs", "must be positive");
-      config.settings.wall_pairs = runs;
-      config.settings.seeds_per_wall = 1;
-    }
     const BodyModel model = load_body_model(urdf);
     const ExperimentSettings& settings = config.settings;
     const int total = settings.runs();
@@ -265,7 +252,7 @@ struct SingleRunCommand {
     summary["episode_lengths"] = result.episode_lengths;
     summary["greedy_length"] = result.greedy_length;
     summary["ik_solves"] = result.ik_solves;
-    const auto cells = table_one({result}, config.settings.analysis.beginning);
+    const auto cells = table_one(std::span(&result, 1), config.settings.analysis.beginning);
     for (const Window w : {Window::Beginning, Window::Overall}) {
       for (int r = 0; r < kRegimeCount; ++r) {
         const RegimeStats& s = cells[static_cast<int>(w)][r];
@@ -326,7 +313,10 @@ void add_learning_commands(CLI::App& app) {
   auto* p = app.add_subcommand("paper", "Run the paper's experiment (training, transfer, control) and print Table I");
   p->add_option("-o,--output", paper->output, "Output folder")->capture_default_str();
   p->add_option("--urdf", paper->urdf, "URDF file of the body")->capture_default_str();
-  paper->bind(p);
+  paper->config_binding.bind(p);
+  paper->config_binding.option("--runs")
+      ->excludes(paper->config_binding.option("--walls"))
+      ->excludes(paper->config_binding.option("--seeds-per-wall"));
   p->callback([paper] { paper->run(); });
 
   auto train = std::make_shared<SingleRunCommand>();

@@ -15,7 +15,7 @@ namespace {
 double median(std::vector<double> values) {
   if (values.empty()) return -1.0;
   std::sort(values.begin(), values.end());
-  return percentile(std::move(values), 0.5);
+  return percentile(values, 0.5);
 }
 
 MetricWindows metric_windows(const ExperimentSettings& settings) {
@@ -33,7 +33,8 @@ ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const Expe
     std::vector<double> iterations;
     for (const RunResult& run : result.conditions[static_cast<int>(condition)].runs) {
       ++t.runs;
-      if (const int at = take_off_iteration(run, settings.analysis.threshold_length); at > 0) iterations.push_back(at);
+      t.iterations.push_back(take_off_iteration(run, settings.analysis.threshold_length));
+      if (t.iterations.back() > 0) iterations.push_back(t.iterations.back());
     }
     t.taken_off = static_cast<int>(iterations.size());
     t.median_iteration = median(iterations);

@@ -19,6 +19,7 @@ std::uint64_t bootstrap_seed(const ExperimentSettings& settings);
 struct ExperimentAnalysis {
   std::vector<MetricComparison> metrics;
   struct TakeOff {
+    std::vector<int> iterations;  // per run; -1: did not take off
     int runs = 0, taken_off = 0;
     double median_iteration = -1.0;  // over the runs that took off; -1 if none
   };

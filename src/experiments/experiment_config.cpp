@@ -19,6 +19,8 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
   ClimbingParameters& m = l.climbing;
   IkSettings& ik = m.reachability.ik;
   return {
+      {"experiment.runs", "--runs",
+       "N walls with one seed each (sets walls = N, seeds_per_wall = 1); 0: use walls and seeds_per_wall", &c.runs},
       {"experiment.walls", "--walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs},
       {"experiment.seeds_per_wall", "--seeds-per-wall", "Learning seeds per wall pair", &s.seeds_per_wall},
       {"experiment.seed", "--seed", "Experiment seed; walls and runs derive from it", &s.seed},
@@ -205,6 +207,12 @@ void finalize_config(ExperimentConfig& config) {
   const auto require = [](bool ok, const char* what) {
     if (!ok) throw InputError("config", what);
   };
+  require(config.runs >= 0, "experiment.runs must be 0 or positive");
+  if (config.runs > 0) {
+    s.wall_pairs = config.runs;
+    s.seeds_per_wall = 1;
+    config.runs = 0;
+  }
   require(s.wall_pairs > 0, "experiment.walls must be positive");
   require(s.seeds_per_wall > 0, "experiment.seeds_per_wall must be positive");
   require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition,

@@ -14,6 +14,9 @@ namespace crux {
 
 struct ExperimentConfig {
   ExperimentSettings settings;
+  // N walls with one seed each, the paper's design; 0: walls and seeds_per_wall apply.
+  // finalize_config turns it into walls = N, seeds_per_wall = 1 and clears it.
+  int runs = 0;
   std::string solver = "fast";
   std::string planner = planner_name(Planner::Uniform);
   std::string reading = reading_name(FilterParameters{}.feet_above_hands);

@@ -1,6 +1,5 @@
 #include "experiments/experiment_output.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -136,26 +135,31 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
     }
   }
   out["table1"] = table;
-  // The same cells as means over runs, each run's value computed on its own, with 95 %
-  // intervals (a run without actions of a regime has no rate and is left out).
+  // The same cells computed run by run, then averaged per wall and over walls with 95 %
+  // intervals over walls (a run without actions of a regime has no rate and is left out).
   nlohmann::ordered_json intervals;
   for (const Condition condition : kConditions) {
-    const auto& runs = result.conditions[static_cast<int>(condition)].runs;
+    const ConditionResult& c = result.conditions[static_cast<int>(condition)];
     for (const Window window : {Window::Beginning, Window::Overall}) {
       for (int r = 0; r < kRegimeCount; ++r) {
-        std::vector<double> actions, rates, rises;
-        for (const RunResult& run : runs) {
-          const RegimeStats s = regime_stats({run}, static_cast<Regime>(r), window == Window::Beginning ? beginning : -1);
-          actions.push_back(s.actions_per_run);
-          if (s.actions > 0) rates.push_back(s.success_rate);
-          if (s.successes > 0) rises.push_back(s.vertical_cm);
+        struct Values {
+          std::vector<double> values;
+          std::vector<std::size_t> walls;
+          void add(double value, std::size_t wall) { values.push_back(value), walls.push_back(wall); }
+        } actions, rates, rises;
+        for (std::size_t i = 0; i < c.runs.size(); ++i) {
+          const RegimeStats s = regime_stats(std::span(&c.runs[i], 1), static_cast<Regime>(r),
+                                             window == Window::Beginning ? beginning : -1);
+          actions.add(s.actions_per_run, c.cluster_of_run[i]);
+          if (s.actions > 0) rates.add(s.success_rate, c.cluster_of_run[i]);
+          if (s.successes > 0) rises.add(s.vertical_cm, c.cluster_of_run[i]);
         }
         nlohmann::ordered_json cell;
-        for (const auto& [name, values] : {std::pair<const char*, const std::vector<double>&>{"actions", actions},
-                                           {"success_rate", rates},
-                                           {"vertical_cm", rises}}) {
-          const MeanInterval m = mean_interval(values);
-          cell[name] = {{"mean", m.mean}, {"ci95", interval_json(m)}, {"runs", m.n}};
+        for (const auto& [name, v] : {std::pair<const char*, const Values&>{"actions", actions},
+                                      {"success_rate", rates},
+                                      {"vertical_cm", rises}}) {
+          const MeanInterval m = mean_interval(cluster_means(v.values, v.walls));
+          cell[name] = {{"mean", m.mean}, {"ci95_over_walls", interval_json(m)}, {"runs", v.values.size()}, {"walls", m.n}};
         }
         intervals[condition_name(condition)][window_name(window)][regime_name(static_cast<Regime>(r))] = cell;
       }
@@ -181,6 +185,7 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
                                        {"pairs", d.pairs}};
     entry["relative_difference"] = finite_or_null(m.relative_difference);
     entry["paired_correlation"] = finite_or_null(m.paired_correlation);
+    entry["wall_correlation"] = finite_or_null(m.wall_correlation);
     entry["walls_for_80_percent_power"] = m.walls_for_power > 0 ? nlohmann::json(m.walls_for_power) : nullptr;
     comparison[m.metric.name] = entry;
   }
@@ -232,7 +237,9 @@ nlohmann::ordered_json experiment_summary(const ExperimentResult& result, const 
                             {"wall_pair", c.cluster_of_run[i]},
                             {"wall_seed", wall.seed},
                             {"learning_seed", c.learning_seeds[i]},
-                            {"take_off_iteration", take_off_iteration(run, settings.analysis.threshold_length)},
+                            {"take_off_iteration", analysis.take_off[static_cast<int>(condition)].iterations[i]},
+                            {"planning_updates_per_step",
+                             static_cast<double>(run.planning_updates) / static_cast<double>(run.iterations.size())},
                             {"episodes", run.episode_lengths.size()},
                             {"greedy_length", run.greedy_length},
                             {"plan_length", wall.plan.found ? wall.plan.length : -1},

@@ -70,6 +70,7 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
   result.greedy_length = greedy_climb_length(mdp, agent.q_wall(), parameters.greedy_cap);
   result.q_grid = agent.q_grid();
   result.explored_pairs = agent.model().size();
+  result.planning_updates = agent.planning_updates();
   return result;
 }
 

@@ -43,6 +43,7 @@ struct RunResult {
   std::vector<Posture> last_climb;   // postures of the last completed climb, start first
   std::size_t reached_configurations = 0, unreachable_configurations = 0, ik_solves = 0;
   std::size_t explored_pairs = 0;    // distinct problem-space (state, action) pairs taken
+  std::uint64_t planning_updates = 0;  // Dyna's model updates, over the run
   // Length of one climb by the learnt greedy policy (best Q_wall action, ties to the
   // first candidate) after learning; -1 if it does not finish within greedy_cap actions.
   int greedy_length = -1;

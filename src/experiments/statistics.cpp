@@ -138,7 +138,7 @@ double pearson_correlation(const std::vector<double>& a, const std::vector<doubl
   return std::clamp(ab / std::sqrt(aa * bb), -1.0, 1.0);
 }
 
-double percentile(std::vector<double> sorted, double q) {
+double percentile(std::span<const double> sorted, double q) {
   assert(!sorted.empty());
   assert(q >= 0.0 && q <= 1.0);
   assert(std::is_sorted(sorted.begin(), sorted.end()));

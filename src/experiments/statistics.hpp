@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace crux {
@@ -43,7 +44,7 @@ double pearson_correlation(const std::vector<double>& a, const std::vector<doubl
 // by linear interpolation between order statistics: h = (n - 1) q,
 // result = x[floor h] + (h - floor h) (x[floor h + 1] - x[floor h]). This is Hyndman &
 // Fan's type 7, the default of R's quantile() and numpy.percentile.
-double percentile(std::vector<double> sorted, double q);
+double percentile(std::span<const double> sorted, double q);
 
 // Paired comparison (a_i vs b_i, e.g. transfer run vs control run) when pairs are
 // clustered (several seeds on the same wall): pairs on one wall are not independent, so

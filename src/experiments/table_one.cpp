@@ -6,7 +6,7 @@ namespace crux {
 
 const char* window_name(Window window) { return window == Window::Beginning ? "beginning" : "overall"; }
 
-RegimeStats regime_stats(const std::vector<RunResult>& runs, Regime regime, int iterations) {
+RegimeStats regime_stats(std::span<const RunResult> runs, Regime regime, int iterations) {
   RegimeStats stats;
   double rise_m = 0.0;
   for (const RunResult& run : runs) {
@@ -28,7 +28,7 @@ RegimeStats regime_stats(const std::vector<RunResult>& runs, Regime regime, int 
   return stats;
 }
 
-std::array<std::array<RegimeStats, kRegimeCount>, 2> table_one(const std::vector<RunResult>& runs, int beginning) {
+std::array<std::array<RegimeStats, kRegimeCount>, 2> table_one(std::span<const RunResult> runs, int beginning) {
   std::array<std::array<RegimeStats, kRegimeCount>, 2> table;
   for (int r = 0; r < kRegimeCount; ++r) {
     table[static_cast<int>(Window::Beginning)][r] = regime_stats(runs, static_cast<Regime>(r), beginning);

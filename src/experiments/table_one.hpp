@@ -5,6 +5,7 @@
 // 21), over the first iterations of a run ("beginning") and over the whole run.
 
 #include <array>
+#include <span>
 #include <vector>
 
 #include "experiments/learning_run.hpp"
@@ -23,10 +24,10 @@ struct RegimeStats {
 
 // Statistics of one regime over the first `iterations` of each run (all of them if
 // iterations < 0).
-RegimeStats regime_stats(const std::vector<RunResult>& runs, Regime regime, int iterations);
+RegimeStats regime_stats(std::span<const RunResult> runs, Regime regime, int iterations);
 
 // [window][regime] for one condition; `beginning` is the number of iterations of the
 // beginning window (2000 in the paper).
-std::array<std::array<RegimeStats, kRegimeCount>, 2> table_one(const std::vector<RunResult>& runs, int beginning);
+std::array<std::array<RegimeStats, kRegimeCount>, 2> table_one(std::span<const RunResult> runs, int beginning);
 
 }  // namespace crux

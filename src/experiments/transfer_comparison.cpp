@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 
 #include <fmt/format.h>
 
@@ -131,8 +130,13 @@ std::vector<MetricComparison> compare_transfer(const ExperimentResult& result, c
     comparison.relative_difference = control_mean != 0.0 ? comparison.transfer_minus_control.mean / std::abs(control_mean)
                                                          : std::numeric_limits<double>::quiet_NaN();
     comparison.paired_correlation = pearson_correlation(t, c);
-    comparison.walls_for_power = clusters_for_power(comparison.transfer_minus_control.mean,
-                                                    comparison.transfer_minus_control.standard_deviation);
+    comparison.wall_correlation =
+        pearson_correlation(cluster_means(t, transfer.cluster_of_run), cluster_means(c, transfer.cluster_of_run));
+    // One wall has no spread to plan from.
+    comparison.walls_for_power = comparison.transfer_minus_control.clusters < 2
+                                     ? -1
+                                     : clusters_for_power(comparison.transfer_minus_control.mean,
+                                                          comparison.transfer_minus_control.standard_deviation);
     out.push_back(comparison);
   }
   return out;

@@ -43,6 +43,7 @@ struct MetricComparison {
   // total-reward ratio. NaN when control's mean is 0.
   double relative_difference = 0.0;
   double paired_correlation = 0.0;  // Pearson r of transfer and control runs, pair by pair
+  double wall_correlation = 0.0;    // ... of their means per wall, the unit of inference
   int walls_for_power = -1;         // walls for 80 % power at the effect seen (-1: none)
 };
 

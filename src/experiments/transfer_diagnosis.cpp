@@ -17,7 +17,7 @@ struct Evidence {
 };
 
 std::uint64_t pair_key(const IterationRecord& r) {
-  return (static_cast<std::uint64_t>(r.grid_state) << 16) | static_cast<std::uint64_t>(r.tile);
+  return (static_cast<std::uint64_t>(r.grid_state) << 32) | static_cast<std::uint32_t>(r.tile);
 }
 
 void add(std::unordered_map<std::uint64_t, Evidence>& evidence, const IterationRecord& r) {

@@ -24,11 +24,14 @@ struct Experience {
 
 class DeterministicModel {
  public:
+  explicit DeterministicModel(bool track_predecessors = false) : track_predecessors_(track_predecessors) {}
+
   // Returns the pair's index (its rank in first-seen order).
   std::size_t record(const Experience& experience);
   std::size_t size() const { return entries_.size(); }
   const Experience& at(std::size_t index) const { return entries_[index]; }
-  // Indices of the pairs whose last recorded next state is `wall_state`.
+  // Indices of the pairs whose last recorded next state is `wall_state` (empty unless
+  // predecessors are tracked).
   std::span<const std::size_t> predecessors(StateCode wall_state) const;
 
  private:
@@ -44,6 +47,7 @@ class DeterministicModel {
   };
   std::unordered_map<PairKey, std::size_t, PairHash> index_;
   std::vector<Experience> entries_;
+  bool track_predecessors_;
   std::unordered_map<StateCode, std::vector<std::size_t>> predecessors_;
 };
 

@@ -18,7 +18,8 @@ DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaS
       selection_streams_(seed),
       planning_stream_(seed, "planning"),
       q_wall_(wall_action_count),
-      q_grid_(grid_action_count) {}
+      q_grid_(grid_action_count),
+      model_(settings.planner == Planner::Prioritized) {}
 
 void DynaQAgent::set_q_grid(QTable q_grid) { q_grid_ = std::move(q_grid); }
 
@@ -65,28 +66,36 @@ void DynaQAgent::plan_uniformly() {
   for (int i = 0; i < settings_.planning_steps; ++i) {
     update_both(model_.at(planning_stream_.below(model_.size(), steps_, static_cast<std::uint64_t>(i))));
   }
+  planning_updates_ += static_cast<std::uint64_t>(settings_.planning_steps);
 }
 
-void DynaQAgent::prioritize(std::size_t entry) {
+void DynaQAgent::prioritize(std::size_t entry, bool exact) {
   const Experience& e = model_.at(entry);
   const double target =
       e.reward + settings_.rates.gamma * q_wall_.best_value(e.next_wall_state, available(wall_actions_, e.next_wall_state));
   const double priority = std::abs(target - q_wall_.value(e.wall_state, e.wall_action));
-  if (priority > settings_.priority_threshold) queue_.push(entry, priority);
+  if (priority > settings_.priority_threshold) {
+    exact ? queue_.set(entry, priority) : queue_.push(entry, priority);
+  } else if (exact) {
+    queue_.remove(entry);
+  }
 }
 
 // Sutton and Barto's prioritized sweeping with Algorithm 2's real update kept: the real
-// step has changed Q(s, a), so s's predecessors are queued, and (s, a) itself if its
-// error is not yet spent; then up to planning_steps pairs are popped and replayed, each
-// queueing its own predecessors.
+// step has changed Q(s, a), so (s, a) is queued at the error it has left and s's
+// predecessors at theirs; then up to planning_steps pairs are popped and replayed, each
+// queued again at the error its step of alpha left (the model is deterministic, so
+// Moore and Atkeson's full backup is the aim) and queueing its state's predecessors.
 void DynaQAgent::sweep(StateCode real_state, std::size_t real_entry) {
-  prioritize(real_entry);
-  for (const std::size_t p : model_.predecessors(real_state)) prioritize(p);
+  prioritize(real_entry, true);
+  for (const std::size_t p : model_.predecessors(real_state)) prioritize(p, false);
   for (int i = 0; i < settings_.planning_steps && !queue_.empty(); ++i) {
     const std::size_t entry = queue_.pop();
     const Experience& e = model_.at(entry);
     update_both(e);
-    for (const std::size_t p : model_.predecessors(e.wall_state)) prioritize(p);
+    ++planning_updates_;
+    prioritize(entry, true);
+    for (const std::size_t p : model_.predecessors(e.wall_state)) prioritize(p, false);
   }
 }
 

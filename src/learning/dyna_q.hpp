@@ -54,7 +54,9 @@ class DynaQAgent {
   // Algorithm 2, lines 22-29. The next state must have been observed.
   void learn(const Experience& experience);
 
-  std::uint64_t steps() const { return steps_; }  // real steps learnt
+  // Planning updates made so far: planning_steps per real step with the uniform
+  // planner, up to that with prioritized sweeping, which stops when its queue is empty.
+  std::uint64_t planning_updates() const { return planning_updates_; }
 
   const QTable& q_wall() const { return q_wall_; }
   const QTable& q_grid() const { return q_grid_; }
@@ -64,17 +66,18 @@ class DynaQAgent {
   void update_both(const Experience& e);
   void plan_uniformly();
   void sweep(StateCode real_state, std::size_t real_entry);
-  // Queues `entry` at its Q_wall |TD error| if that passes the threshold.
-  void prioritize(std::size_t entry);
+  // Queues `entry` at its Q_wall |TD error| if that passes the threshold. `exact`: the
+  // pair was just updated, so its error replaces what was queued (and may drop it).
+  void prioritize(std::size_t entry, bool exact);
   std::span<const ActionCode> available(const std::unordered_map<StateCode, std::vector<ActionCode>>& known,
                                         StateCode state) const;
 
   DynaSettings settings_;
   SelectionStreams selection_streams_;
   RandomStream planning_stream_;
-  std::uint64_t steps_ = 0;
+  std::uint64_t steps_ = 0, planning_updates_ = 0;
   QTable q_wall_, q_grid_;
-  DeterministicModel model_;
+  DeterministicModel model_;  // tracks predecessors for prioritized sweeping only
   PriorityQueue queue_;
   std::unordered_map<StateCode, std::vector<ActionCode>> wall_actions_, grid_actions_;
 };

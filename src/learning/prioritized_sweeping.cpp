@@ -7,12 +7,36 @@ namespace crux {
 
 void PriorityQueue::push(std::size_t entry, double priority) {
   if (entry >= priority_of_.size()) priority_of_.resize(entry + 1, -1.0);
-  double& current = priority_of_[entry];
-  if (current >= priority) return;
-  if (current < 0.0) ++queued_;
-  current = priority;
+  if (priority_of_[entry] < priority) insert(entry, priority);
+}
+
+void PriorityQueue::set(std::size_t entry, double priority) {
+  if (entry >= priority_of_.size()) priority_of_.resize(entry + 1, -1.0);
+  if (priority_of_[entry] != priority) insert(entry, priority);
+}
+
+void PriorityQueue::remove(std::size_t entry) {
+  if (entry < priority_of_.size() && priority_of_[entry] >= 0.0) {
+    priority_of_[entry] = -1.0;
+    --queued_;
+  }
+}
+
+void PriorityQueue::insert(std::size_t entry, double priority) {
+  if (priority_of_[entry] < 0.0) ++queued_;
+  priority_of_[entry] = priority;
   heap_.push_back({priority, entry});
   std::push_heap(heap_.begin(), heap_.end(), lower);
+  // Stale items are skipped when popped, but low ones may never be: rebuild from the
+  // live priorities before they outnumber them. The pop order depends only on
+  // (priority, entry), so a rebuild changes nothing that is popped.
+  if (heap_.size() > 4 * queued_ + 64) {
+    heap_.clear();
+    for (std::size_t e = 0; e < priority_of_.size(); ++e) {
+      if (priority_of_[e] >= 0.0) heap_.push_back({priority_of_[e], e});
+    }
+    std::make_heap(heap_.begin(), heap_.end(), lower);
+  }
 }
 
 std::size_t PriorityQueue::pop() {

@@ -13,6 +13,9 @@ class PriorityQueue {
  public:
   // Queues model entry `entry`, or raises its priority if it is queued lower.
   void push(std::size_t entry, double priority);
+  // Queues `entry` at exactly this priority (its error is known afresh), lower or not.
+  void set(std::size_t entry, double priority);
+  void remove(std::size_t entry);
   bool empty() const { return queued_ == 0; }
   std::size_t size() const { return queued_; }
   // The entry of highest priority, removed from the queue. Precondition: !empty().
@@ -27,7 +30,9 @@ class PriorityQueue {
     return a.priority < b.priority || (a.priority == b.priority && a.entry > b.entry);
   }
 
-  std::vector<Item> heap_;          // may hold stale items, superseded by a raise
+  void insert(std::size_t entry, double priority);
+
+  std::vector<Item> heap_;          // may hold stale items, superseded by a later priority
   std::vector<double> priority_of_;  // per entry: its queued priority, or -1 when not queued
   std::size_t queued_ = 0;
 };

@@ -71,7 +71,7 @@ TEST(Statistics, PercentileIsNumpyType7) {
   EXPECT_DOUBLE_EQ(percentile(y, 0.25), 15.0);  // h = 0.5: 10 + 0.5 (20 - 10)
   EXPECT_NEAR(percentile(y, 0.8), 32.0, 1e-12);  // h = 1.6: 20 + 0.6 (40 - 20)
   EXPECT_NEAR(percentile(y, 0.025), 10.5, 1e-12);  // h = 0.05: 10 + 0.05 (20 - 10)
-  EXPECT_DOUBLE_EQ(percentile({7}, 0.3), 7.0);
+  EXPECT_DOUBLE_EQ(percentile(std::vector<double>{7}, 0.3), 7.0);
 }
 
 // Three walls with two run pairs each, listed interleaved (ids 7 3 7 9 3 9).

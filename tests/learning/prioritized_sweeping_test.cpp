@@ -25,14 +25,18 @@ TEST(PrioritizedSweeping, QueuePopsHighestFirstRaisesAndNeverLowers) {
 }
 
 // A two-step chain 0 -> 1 -> 2, state 2 offering nothing (its value is 0); alpha 0.5,
-// gamma 0.9, 5 planning updates per real step. Worked by hand:
-// Step 1, (0, 0) -> 1 with r = -1. Real update: Q(0,0) = 0.5 (-1) = -0.5. Its error
-//   |-1 - (-0.5)| = 0.5 queues it; state 0 has no predecessor. Pop (0,0):
-//   Q(0,0) = -0.5 + 0.5 (-1 + 0.5) = -0.75. The queue is empty: 1 update, not 5.
-// Step 2, (1, 0) -> 2 with r = 10. Real update: Q(1,0) = 5. Its error 5 queues it; its
-//   predecessor (0,0) has error |-1 + 0.9 x 5 - (-0.75)| = 4.25. Pop (1,0) (5 > 4.25):
-//   Q(1,0) = 7.5, which raises (0,0) to |-1 + 0.9 x 7.5 + 0.75| = 6.5. Pop (0,0):
-//   Q(0,0) = -0.75 + 0.5 (5.75 + 0.75) = 2.5. The queue is empty.
+// gamma 0.9, 5 planning updates per real step. A popped pair is queued again at the
+// error its update left. Worked by hand:
+// Step 1, (0, 0) -> 1 with r = -1. Real update: Q(0,0) = -0.5, error 0.5; no
+//   predecessor. Five pops of (0,0) halve the error each time: Q(0,0) = -1 + 0.5^6 =
+//   -0.984375, still queued at 0.015625.
+// Step 2, (1, 0) -> 2 with r = 10. Real update: Q(1,0) = 5, queued at 5; its predecessor
+//   (0,0) is raised to |-1 + 0.9 x 5 + 0.984375| = 4.484375.
+//   pop (1,0): Q(1,0) = 7.5, queued at 2.5; (0,0) raised to 5.75 + 0.984375 = 6.734375.
+//   pop (0,0): Q(0,0) = 2.3828125, queued at 3.3671875.
+//   pop (0,0): Q(0,0) = 4.06640625, queued at 1.68359375.
+//   pop (1,0) (2.5): Q(1,0) = 8.75, queued at 1.25; (0,0) raised to 6.875 - 4.06640625.
+//   pop (0,0): Q(0,0) = 4.06640625 + 0.5 x 2.80859375 = 5.470703125.
 TEST(PrioritizedSweeping, DynaSweepsPredecessorsAsComputedByHand) {
   DynaSettings settings;
   settings.rates = {0.5, 0.9};
@@ -44,16 +48,53 @@ TEST(PrioritizedSweeping, DynaSweepsPredecessorsAsComputedByHand) {
   agent.observe({1, 1}, only);
   agent.observe({2, 2}, {});
   agent.learn({0, 0, 0, 0, -1.0, 1, 1});
-  EXPECT_DOUBLE_EQ(agent.q_wall().value(0, 0), -0.75);
+  EXPECT_DOUBLE_EQ(agent.q_wall().value(0, 0), -0.984375);
   agent.learn({1, 1, 0, 0, 10.0, 2, 2});
   for (const QTable* q : {&agent.q_wall(), &agent.q_grid()}) {
-    EXPECT_DOUBLE_EQ(q->value(1, 0), 7.5);
-    EXPECT_DOUBLE_EQ(q->value(0, 0), 2.5);
+    EXPECT_DOUBLE_EQ(q->value(1, 0), 8.75);
+    EXPECT_DOUBLE_EQ(q->value(0, 0), 5.470703125);
   }
+  EXPECT_EQ(agent.planning_updates(), 10u);
+}
+
+TEST(PrioritizedSweeping, AQueueThatRunsDryEndsThePlanningEarly) {
+  DynaSettings settings;
+  settings.rates = {1.0, 0.9};  // a full backup: nothing is left to replay
+  settings.planning_steps = 5;
+  settings.planner = Planner::Prioritized;
+  DynaQAgent agent(1, 1, settings, 1);
+  const ActionCandidate only[1] = {{0, 0, true}};
+  agent.observe({0, 0}, only);
+  agent.observe({1, 1}, {});
+  agent.learn({0, 0, 0, 0, -1.0, 1, 1});
+  EXPECT_DOUBLE_EQ(agent.q_wall().value(0, 0), -1.0);
+  EXPECT_EQ(agent.planning_updates(), 0u);
+}
+
+TEST(PrioritizedSweeping, SetReplacesAPriorityAndRemoveDequeues) {
+  PriorityQueue queue;
+  queue.push(0, 5.0);
+  queue.push(1, 3.0);
+  queue.set(0, 1.0);  // lowered: the item at 5 is stale now
+  EXPECT_EQ(queue.pop(), 1u);
+  EXPECT_EQ(queue.pop(), 0u);
+  EXPECT_TRUE(queue.empty());
+  queue.push(2, 4.0);
+  queue.remove(2);
+  EXPECT_TRUE(queue.empty());
+  // Many raises leave stale items behind; the queue still pops each live entry once.
+  for (int round = 1; round <= 100; ++round) {
+    for (std::size_t e = 0; e < 3; ++e) queue.push(e, round + static_cast<double>(e) / 10);
+  }
+  EXPECT_EQ(queue.size(), 3u);
+  EXPECT_EQ(queue.pop(), 2u);
+  EXPECT_EQ(queue.pop(), 1u);
+  EXPECT_EQ(queue.pop(), 0u);
+  EXPECT_TRUE(queue.empty());
 }
 
 TEST(PrioritizedSweeping, ModelKnowsEachStatesPredecessorsAfterAChangedTransition) {
-  DeterministicModel model;
+  DeterministicModel model(true);
   EXPECT_EQ(model.record({0, 0, 0, 0, -1.0, 5, 5}), 0u);
   EXPECT_EQ(model.record({1, 1, 0, 0, -1.0, 5, 5}), 1u);
   EXPECT_EQ(model.predecessors(5).size(), 2u);
