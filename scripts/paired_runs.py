@@ -1,5 +1,8 @@
 #!/usr/bin/python3
-"""How closely paired learning runs stay together (docs/REPRODUCTION.md).
+"""How closely paired learning runs stay together (docs/REPRODUCTION.md, "Paired runs").
+
+It reads only the per-run CSV files, so it measures any build of crux, including
+those from before summary.json reported divergence and correlations.
 
   paired_runs.py folder PAPER_DIR
       transfer_i against control_i of a `crux paper` folder: the iteration at which each
@@ -61,10 +64,11 @@ def correlation(a, b):
 
 
 def t_quantile_975(dof):
-    # Two-sided 95 % Student-t critical values (standard tables), enough for a report.
+    """Two-sided 95 % Student-t critical value (standard tables); between rows, the row
+    of fewer degrees of freedom, whose wider interval errs on the safe side."""
     table = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262,
-             10: 2.228, 15: 2.131, 20: 2.086, 29: 2.045, 30: 2.042}
-    return table.get(dof, 1.96 if dof > 30 else table[min(k for k in table if k >= dof)])
+             10: 2.228, 15: 2.131, 20: 2.086, 25: 2.060, 29: 2.045, 40: 2.021, 60: 2.000, 120: 1.980}
+    return table[max(k for k in table if k <= dof)]
 
 
 def over_walls(differences_by_wall):
@@ -73,7 +77,7 @@ def over_walls(differences_by_wall):
     mean = statistics.fmean(means)
     sd = statistics.stdev(means) if n > 1 else 0.0
     half = t_quantile_975(n - 1) * sd / math.sqrt(n) if n > 1 else 0.0
-    t = mean / (sd / math.sqrt(n)) if sd > 0 else float("inf")
+    t = mean / (sd / math.sqrt(n)) if sd > 0 else (0.0 if mean == 0 else math.copysign(math.inf, mean))
     return mean, half, t, n
 
 
