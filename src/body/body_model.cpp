@@ -266,10 +266,22 @@ BodyModel load_body_model(const std::string& urdf_path, const GraspFrameNames& f
 }
 
 std::string default_body_model_path() {
+  namespace fs = std::filesystem;
   if (const char* dir = std::getenv("CRUX_MODEL_DIR"); dir != nullptr && *dir != '\0') {
-    return (std::filesystem::path(dir) / "crux_human.urdf").string();
+    return (fs::path(dir) / "crux_human.urdf").string();
   }
-  return CRUX_DEFAULT_MODEL_DIR "/crux_human.urdf";
+  // An installed binary lives in <prefix>/bin beside <prefix>/share/crux; the build tree
+  // mirrors that layout under the build folder, for the binaries at its top and in its
+  // subfolders (tests/, bench/).
+  std::error_code error;
+  const fs::path executable = fs::read_symlink("/proc/self/exe", error);
+  const fs::path relative = fs::path("share") / "crux" / "models" / "crux_human.urdf";
+  if (!error) {
+    for (const fs::path& base : {executable.parent_path(), executable.parent_path().parent_path()}) {
+      if (fs::exists(base / relative, error)) return (base / relative).string();
+    }
+  }
+  return (executable.parent_path().parent_path() / relative).string();  // named by the error that follows
 }
 
 Posture standing_posture(const Eigen::Vector3d& root) {

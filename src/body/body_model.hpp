@@ -81,8 +81,9 @@ BodyModel load_body_model(const std::string& urdf_path, const GraspFrameNames& f
 BodyModel load_body_model_from_string(const std::string& urdf_xml, const std::string& source,
                                       const GraspFrameNames& frames = {});
 
-// The repository's 1.70 m human (models/crux_human.urdf), located next to the binary or
-// through CRUX_MODEL_DIR.
+// The repository's 1.70 m human (models/crux_human.urdf): $CRUX_MODEL_DIR/crux_human.urdf
+// when that variable is set, else share/crux/models/ beside the running binary's folder
+// (an install: <prefix>/bin and <prefix>/share) or inside it (the build tree).
 std::string default_body_model_path();
 
 // The natural standing posture (all joint angles 0) with the root at `root`.

@@ -26,7 +26,7 @@ using testing::replaced;
 using testing::write_temporary;
 
 std::string example_wall_path(const std::string& file_name) {
-  return CRUX_DEFAULT_MODEL_DIR "/../walls/" + file_name;
+  return CRUX_SOURCE_DIR "/walls/" + file_name;
 }
 
 bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# cmake --install into a temporary prefix, then use the install from an unrelated folder:
+# crux finds its model beside itself, and a consumer project builds against
+# find_package(crux) and computes forward kinematics.
+#   install_test.sh BUILD_DIR CONSUMER_SOURCE CXX_FLAGS LINKER_FLAGS
+set -euo pipefail
+build=$1 consumer=$2 cxx_flags=$3 linker_flags=$4
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
+mkdir "$work/elsewhere" && cd "$work/elsewhere"
+unset CRUX_MODEL_DIR
+
+"$work/prefix/bin/crux" model --json > model.json
+grep -q '"dof_revolute": 32' model.json || { echo "crux model --json from the install:"; cat model.json; exit 1; }
+"$work/prefix/bin/crux" train --wall-seed 3 --iterations 200 -o run > /dev/null
+for file in iterations.csv episodes.csv q_grid.bin climb.csv config.toml summary.json; do
+  [ -s "run/$file" ] || { echo "crux train from the install wrote no run/$file"; exit 1; }
+done
+
+cmake -S "$consumer" -B "$work/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" \
+  -DCMAKE_CXX_FLAGS="$cxx_flags" -DCMAKE_EXE_LINKER_FLAGS="$linker_flags" > "$work/consumer.log"
+cmake --build "$work/consumer" >> "$work/consumer.log"
+line=$("$work/consumer/consumer" "$work/prefix/share/crux/models/crux_human.urdf")
+# docs/MODEL.md: standing, the right palm is at (0, -0.1853, -0.2601) from the root.
+case "$line" in
+  "right_palm 0.0000 -0.1853 -0.2601") echo "install test: $line" ;;
+  *) echo "consumer printed '$line', expected the right palm at (0, -0.1853, -0.2601)"; exit 1 ;;
+esac
