@@ -19,16 +19,6 @@
 
 namespace crux {
 
-const char* limb_name(Limb limb) {
-  switch (limb) {
-    case Limb::RightHand: return "right_hand";
-    case Limb::LeftHand: return "left_hand";
-    case Limb::RightFoot: return "right_foot";
-    case Limb::LeftFoot: return "left_foot";
-  }
-  return "?";
-}
-
 namespace {
 
 // urdfdom reports parse errors through console_bridge; keep the first one so that it
@@ -229,8 +219,8 @@ class ModelBuilder {
 
     BodyData data(model_);
     forward_kinematics(model_, data, standing_posture(Eigen::Vector3d::Zero()));
-    const double soles = std::min(data.points[1 + static_cast<int>(Limb::RightFoot)].z(),
-                                  data.points[1 + static_cast<int>(Limb::LeftFoot)].z());
+    const double soles = std::min(data.points[operational_point(Limb::RightFoot)].z(),
+                                  data.points[operational_point(Limb::LeftFoot)].z());
     model_.root_height_above_soles = -soles;
     if (const auto head = find_frame(model_.head_top_frame)) {
       const JointPlacement& carrier = data.placements[head->joint];

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include "body/limb.hpp"
 
 namespace crux {
 
@@ -17,13 +18,6 @@ inline constexpr int kRootDof = 3;
 inline constexpr int kRevoluteDof = 32;
 inline constexpr int kConfigurationDof = kRootDof + kRevoluteDof;
 using Posture = Eigen::Matrix<double, kConfigurationDof, 1>;
-
-// Operational points E = (e0, e1, e2, e3, e4): root, then the limbs in the order of a
-// hold configuration (right hand, left hand, right foot, left foot).
-inline constexpr int kLimbCount = 4;
-inline constexpr int kOperationalPointCount = 1 + kLimbCount;
-enum class Limb : int { RightHand = 0, LeftHand = 1, RightFoot = 2, LeftFoot = 3 };
-const char* limb_name(Limb limb);
 
 // The URDF frames that stand for the grasp points; another humanoid is mapped onto
 // crux by naming its own frames here.

@@ -33,13 +33,4 @@ inline IkSolverKind require_ik_solver(const std::string& name, const char* flag)
   return *kind;
 }
 
-// right_hand, left_hand, right_foot, left_foot, or rh, lh, rf, lf.
-inline std::optional<Limb> parse_limb(const std::string& name) {
-  static const char* const short_names[kLimbCount] = {"rh", "lh", "rf", "lf"};
-  for (int limb = 0; limb < kLimbCount; ++limb) {
-    if (name == limb_name(static_cast<Limb>(limb)) || name == short_names[limb]) return static_cast<Limb>(limb);
-  }
-  return std::nullopt;
-}
-
 }  // namespace crux::cli

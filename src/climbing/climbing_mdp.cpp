@@ -37,7 +37,7 @@ void ClimbingMdp::reset() {
 
 void ClimbingMdp::describe(const BodyData& body) {
   const Limb free = configuration_.free_limb();
-  placement_ = place_grid(parameters_.grid, free, body.points[1 + static_cast<int>(free)]);
+  placement_ = place_grid(parameters_.grid, free, body.points[operational_point(free)]);
   state_.wall = encode(configuration_, wall_.hold_count());
   state_.grid = encode(describe_state(wall_, configuration_, placement_), parameters_.grid);
 

@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "body/body_model.hpp"
+#include "body/limb.hpp"
 
 namespace crux {
 

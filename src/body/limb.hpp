@@ -1,0 +1,23 @@
+#pragma once
+// The four limbs that grasp holds, in the order of a hold configuration (right hand,
+// left hand, right foot, left foot), and the operational points E = (e0, e1, e2, e3, e4)
+// of section III-A: the root, then the limbs in that order.
+
+#include <optional>
+#include <string_view>
+
+namespace crux {
+
+inline constexpr int kLimbCount = 4;
+inline constexpr int kOperationalPointCount = 1 + kLimbCount;
+enum class Limb : int { RightHand = 0, LeftHand = 1, RightFoot = 2, LeftFoot = 3 };
+
+// right_hand, left_hand, right_foot, left_foot: the names of files and outputs.
+const char* limb_name(Limb limb);
+// A limb's name, or its short form rh, lh, rf, lf.
+std::optional<Limb> parse_limb(std::string_view name);
+
+// The index of a limb's grasp point among the operational points (e0 is index 0).
+constexpr int operational_point(Limb limb) { return 1 + static_cast<int>(limb); }
+
+}  // namespace crux
