@@ -8,6 +8,7 @@
 #include <kdl/treeiksolverpos_nr_jl.hpp>
 #include <kdl/treeiksolvervel_wdls.hpp>
 
+#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
 #include "ik/ik_solver.hpp"
 #include "ik/reach_queries.hpp"

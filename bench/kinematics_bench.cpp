@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
 #include "common/random.hpp"
 #include "support/kdl_reference.hpp"

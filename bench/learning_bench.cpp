@@ -4,6 +4,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "body/urdf_loader.hpp"
 #include "experiments/learning_run.hpp"
 #include "wall/random_wall.hpp"
 

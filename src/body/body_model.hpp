@@ -67,19 +67,6 @@ struct BodyModel {
   std::string head_top_frame = "head_top";
 };
 
-// Loads and validates a URDF. Throws InputError("<path>", "<problem>") on any problem:
-// unreadable file or XML, a root that is not 3 prismatic joints along x, y, z, a joint
-// count other than 32 revolute, a joint without limits, an unsupported joint type, or a
-// missing grasp frame.
-BodyModel load_body_model(const std::string& urdf_path, const GraspFrameNames& frames = {});
-BodyModel load_body_model_from_string(const std::string& urdf_xml, const std::string& source,
-                                      const GraspFrameNames& frames = {});
-
-// The repository's 1.70 m human (models/crux_human.urdf): $CRUX_MODEL_DIR/crux_human.urdf
-// when that variable is set, else share/crux/models/ beside the running binary's folder
-// (an install: <prefix>/bin and <prefix>/share) or inside it (the build tree).
-std::string default_body_model_path();
-
 // The natural standing posture (all joint angles 0) with the root at `root`.
 Posture standing_posture(const Eigen::Vector3d& root);
 

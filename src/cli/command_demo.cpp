@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "body/urdf_loader.hpp"
 #include "cli/commands.hpp"
 #include "ik/ik_solver.hpp"
 #include "ik/reach_queries.hpp"

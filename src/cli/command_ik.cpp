@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
 #include "cli/cli_parsing.hpp"
 #include "cli/commands.hpp"

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "body/urdf_loader.hpp"
 #include "cli/commands.hpp"
 #include "agent_space/agent_descriptor.hpp"
 #include "cli/progress_bar.hpp"

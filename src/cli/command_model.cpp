@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "body/urdf_loader.hpp"
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
 #include "cli/commands.hpp"

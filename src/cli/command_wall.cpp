@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "body/urdf_loader.hpp"
 #include "agent_space/moving_grid.hpp"
 #include "cli/cli_parsing.hpp"
 #include "cli/commands.hpp"

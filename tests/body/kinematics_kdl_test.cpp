@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
 #include "support/kdl_reference.hpp"
 #include "support/test_models.hpp"

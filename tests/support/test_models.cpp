@@ -1,3 +1,4 @@
+#include "body/urdf_loader.hpp"
 #include "support/test_models.hpp"
 
 #include <fstream>

@@ -2,6 +2,7 @@
 // origin: prints the right palm's position.
 #include <cstdio>
 
+#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
 
 int main(int argc, char** argv) {

@@ -1,0 +1,134 @@
+#include "body/urdf_loader.hpp"
+#include "body/body_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include "common/input_error.hpp"
+#include "support/test_models.hpp"
+
+namespace crux {
+namespace {
+
+using testing::human_model;
+using testing::human_urdf_text;
+using testing::replaced;
+using testing::write_temporary;
+
+TEST(BodyModel, HumanHasTranslatingRootAnd32RevoluteJoints) {
+  const BodyModel& model = human_model();
+  ASSERT_EQ(model.joints.size(), static_cast<std::size_t>(kConfigurationDof));
+  for (int i = 0; i < kRootDof; ++i) EXPECT_TRUE(model.joints[i].prismatic) << model.joints[i].name;
+  for (int i = kRootDof; i < kConfigurationDof; ++i) {
+    EXPECT_FALSE(model.joints[i].prismatic) << model.joints[i].name;
+    EXPECT_LT(model.joints[i].lower, model.joints[i].upper);
+    EXPECT_LE(model.joints[i].lower, 0.0) << "the standing posture must be within limits";
+    EXPECT_GE(model.joints[i].upper, 0.0);
+  }
+  EXPECT_NEAR(model.stature, 1.70, 0.005);
+  EXPECT_NEAR(model.total_mass, 68.0, 1e-9);
+  EXPECT_GT(model.root_height_above_soles, 0.9);
+  EXPECT_LT(model.root_height_above_soles, 1.1);
+}
+
+TEST(BodyModel, ParentsComeBeforeChildren) {
+  const BodyModel& model = human_model();
+  for (std::size_t i = 0; i < model.joints.size(); ++i) EXPECT_LT(model.joints[i].parent, static_cast<int>(i));
+}
+
+TEST(BodyModel, ChainsEndAtTheirOperationalPoints) {
+  const BodyModel& model = human_model();
+  EXPECT_EQ(model.chains[0], (std::vector<int>{0, 1, 2}));
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    EXPECT_EQ(model.chains[1 + limb].back(), model.grasp_points[limb].joint);
+    EXPECT_EQ(model.chains[1 + limb].front(), 0);
+  }
+}
+
+// Each bad model must give one InputError that names the file and the problem.
+struct BadModelCase {
+  const char* name;
+  std::string (*edit)(const std::string& urdf);
+  const char* expected_problem;
+};
+
+std::string turn_neck_rotation_fixed(const std::string& u) {
+  return replaced(u, "<joint name=\"neck_rotation\" type=\"revolute\">", "<joint name=\"neck_rotation\" type=\"fixed\">");
+}
+std::string add_toe_joint(const std::string& u) {
+  return replaced(u, "</robot>",
+                  "<link name=\"toe\"/><joint name=\"toe_flexion\" type=\"revolute\"><parent link=\"right_foot\"/>"
+                  "<child link=\"toe\"/><axis xyz=\"0 1 0\"/>"
+                  "<limit lower=\"-0.5\" upper=\"0.5\" effort=\"1\" velocity=\"1\"/></joint></robot>");
+}
+std::string drop_neck_limits(const std::string& u) {
+  return replaced(u, "<limit lower=\"-1.047198\" upper=\"1.047198\" effort=\"50\" velocity=\"3\"/>", "");
+}
+std::string make_neck_continuous(const std::string& u) {
+  return replaced(u, "<joint name=\"neck_rotation\" type=\"revolute\">",
+                  "<joint name=\"neck_rotation\" type=\"continuous\">");
+}
+std::string make_neck_prismatic(const std::string& u) {
+  return replaced(u, "<joint name=\"neck_rotation\" type=\"revolute\">",
+                  "<joint name=\"neck_rotation\" type=\"prismatic\">");
+}
+std::string rename_right_palm(const std::string& u) {
+  return replaced(replaced(u, "<link name=\"right_palm\"", "<link name=\"right_paw\""), "<child link=\"right_palm\"",
+                  "<child link=\"right_paw\"");
+}
+std::string break_xml(const std::string& u) { return u.substr(0, u.size() / 2); }
+std::string not_urdf(const std::string&) { return "<html><body>hello</body></html>"; }
+std::string empty(const std::string&) { return ""; }
+std::string rotate_root(const std::string& u) {
+  return replaced(u, "<axis xyz=\"0 1 0\"/>", "<axis xyz=\"0 0 1\"/>");
+}
+std::string inverted_limits(const std::string& u) {
+  return replaced(u, "lower=\"-1.047198\" upper=\"1.047198\"", "lower=\"1.047198\" upper=\"-1.047198\"");
+}
+
+class BadModel : public ::testing::TestWithParam<BadModelCase> {};
+
+TEST_P(BadModel, IsOneClearInputError) {
+  const BadModelCase& c = GetParam();
+  const auto path = write_temporary(std::string("bad_") + c.name + ".urdf", c.edit(human_urdf_text()));
+  try {
+    load_body_model(path.string());
+    FAIL() << "loaded a bad model: " << c.name;
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.source(), path.string());
+    EXPECT_NE(message.find(path.string()), std::string::npos) << message;
+    EXPECT_NE(message.find(c.expected_problem), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadModel,
+    ::testing::Values(BadModelCase{"missing_joint", turn_neck_rotation_fixed, "exactly 32 revolute joints, found 31"},
+                      BadModelCase{"extra_joint", add_toe_joint, "exactly 32 revolute joints, found 33"},
+                      BadModelCase{"no_limits", drop_neck_limits, "limits"},
+                      BadModelCase{"continuous", make_neck_continuous, "type continuous"},
+                      BadModelCase{"stray_prismatic", make_neck_prismatic, "type prismatic"},
+                      BadModelCase{"missing_grasp_frame", rename_right_palm, "grasp frame 'right_palm'"},
+                      BadModelCase{"broken_xml", break_xml, "invalid URDF"},
+                      BadModelCase{"not_urdf", not_urdf, "invalid URDF"},
+                      BadModelCase{"empty", empty, "empty"},
+                      BadModelCase{"rotated_root", rotate_root, "must translate along y"},
+                      BadModelCase{"inverted_limits", inverted_limits, "neck_rotation"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(BadModelFile, MissingFileAndDirectoryAreInputErrors) {
+  EXPECT_THROW(load_body_model("/nonexistent/crux/body.urdf"), InputError);
+  EXPECT_THROW(load_body_model(std::filesystem::temp_directory_path().string()), InputError);
+}
+
+TEST(BodyModel, GraspFramesCanBeRenamedToMapAnotherHumanoid) {
+  const auto path = write_temporary("renamed_palm.urdf", rename_right_palm(human_urdf_text()));
+  GraspFrameNames names;
+  names.frames[0] = "right_paw";
+  const BodyModel model = load_body_model(path.string(), names);
+  EXPECT_EQ(model.grasp_frame_names[0], "right_paw");
+}
+
+}  // namespace
+}  // namespace crux
