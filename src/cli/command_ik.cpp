@@ -36,7 +36,7 @@ void add_ik_options(CLI::App* command, IkOptions& o) {
   command->add_option("--urdf", o.urdf, "URDF file of the body")->capture_default_str();
   command->add_option("--alpha", o.settings.paper.step_size, "Step size of the paper's gradient descent")
       ->capture_default_str();
-  command->add_option("--time-step", o.settings.paper.time_step_s, "Simulated seconds per IK iteration")
+  command->add_option("--time-step", o.settings.time_step_s, "Simulated seconds per IK iteration")
       ->capture_default_str();
   command->add_option("--timeout", o.settings.paper.timeout_s, "Delta_t: simulated seconds before giving up")
       ->capture_default_str();
@@ -61,9 +61,8 @@ void add_ik_options(CLI::App* command, IkOptions& o) {
 }
 
 void finish_settings(IkOptions& o, bool solver_used) {
-  o.settings.fast.time_step_s = o.settings.paper.time_step_s;
   if (solver_used) o.settings.solver = require_ik_solver(o.solver, "--solver");
-  if (!(o.settings.paper.step_size > 0) || !(o.settings.paper.time_step_s > 0) || !(o.settings.paper.timeout_s > 0)) {
+  if (!(o.settings.paper.step_size > 0) || !(o.settings.time_step_s > 0) || !(o.settings.paper.timeout_s > 0)) {
     throw InputError("options", "--alpha, --time-step and --timeout must be positive");
   }
 }

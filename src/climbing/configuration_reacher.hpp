@@ -9,12 +9,6 @@
 
 namespace crux {
 
-struct ReachabilityParameters {
-  IkSettings ik;
-  RootTargetParameters root;
-  bool cache_unreachable = true;
-};
-
 class ConfigurationReacher {
  public:
   ConfigurationReacher(const BodyModel& model, const Wall& wall, const ReachabilityParameters& parameters);

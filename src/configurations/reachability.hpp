@@ -9,6 +9,14 @@
 
 namespace crux {
 
+// How C-reachability is decided: the IK solver and its settings, the root heuristic,
+// and whether unreachable verdicts are cached (spec item 11).
+struct ReachabilityParameters {
+  IkSettings ik;
+  RootTargetParameters root;
+  bool cache_unreachable = true;
+};
+
 // The four holds of a complete configuration and the root target H(C4).
 ReachTarget reach_target(const BodyModel& model, const Wall& wall, const HoldConfiguration& complete,
                          const RootTargetParameters& root);

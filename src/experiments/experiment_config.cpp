@@ -53,7 +53,7 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        &m.rewards.finish},
       {"ik.solver", "--solver", "IK solver: fast or paper (Algorithm 1)", &c.solver},
       {"ik.alpha", "--ik-alpha", "Step size of the paper's gradient descent", &ik.paper.step_size},
-      {"ik.time_step", "--ik-time-step", "Simulated seconds per IK iteration", &ik.paper.time_step_s},
+      {"ik.time_step", "--ik-time-step", "Simulated seconds per IK iteration", &ik.time_step_s},
       {"ik.timeout", "--ik-timeout", "Delta_t: simulated seconds before IK gives up", &ik.paper.timeout_s},
       {"ik.fast_max_iterations", "--fast-max-iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations},
       {"ik.grasp_radius", "--grasp-radius", "Radius of the grasp spheres (m)", &ik.tolerances.grasp_radius},
@@ -195,7 +195,6 @@ void finalize_config(ExperimentConfig& config) {
   const auto solver = parse_ik_solver(config.solver);
   if (!solver) throw InputError("ik.solver", fmt::format("unknown solver '{}' (expected fast or paper)", config.solver));
   s.learning.climbing.reachability.ik.solver = *solver;
-  s.learning.climbing.reachability.ik.fast.time_step_s = s.learning.climbing.reachability.ik.paper.time_step_s;
   const auto planner = parse_planner(config.planner);
   if (!planner) {
     throw InputError("learning.planner", fmt::format("unknown planner '{}' (expected uniform or prioritized)", config.planner));
@@ -247,7 +246,7 @@ void finalize_config(ExperimentConfig& config) {
   require(state_codes < 4294967296.0, "the grid has too many tiles for 32-bit agent-state codes");
   require(s.walls.hold_radius > 0, "walls.hold_radius must be positive");
   const IkSettings& ik = s.learning.climbing.reachability.ik;
-  require(ik.paper.step_size > 0 && ik.paper.time_step_s > 0 && ik.paper.timeout_s > 0,
+  require(ik.paper.step_size > 0 && ik.time_step_s > 0 && ik.paper.timeout_s > 0,
           "ik.alpha, ik.time_step and ik.timeout must be positive");
 }
 

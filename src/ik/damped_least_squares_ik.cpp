@@ -34,7 +34,8 @@ void task_error(const BodyData& data, const ReachTarget& target, const ReachTole
 
 IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, const Posture& g_init,
                                        const ReachTarget& target, const ReachTolerances& tolerances,
-                                       const DampedLeastSquaresSettings& settings, const PathRecorder& recorder) {
+                                       double time_step_s, const DampedLeastSquaresSettings& settings,
+                                       const PathRecorder& recorder) {
   TaskJacobian jacobian;
   TaskVector error;
   TaskMatrix normal;
@@ -96,7 +97,7 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
   IkResult result;
   result.reached = reached;
   result.iterations = iteration;
-  result.simulated_time_s = iteration * settings.time_step_s;
+  result.simulated_time_s = iteration * time_step_s;
   result.residual_m = grasp_residual(data.points, target);
   result.posture = reached ? g : g_init;
   if (!reached) forward_kinematics(model, data, g_init);

@@ -14,7 +14,6 @@
 namespace crux {
 
 struct DampedLeastSquaresSettings {
-  double time_step_s = 0.002;  // simulated time charged per linearisation, as for Algorithm 1
   int max_iterations = 100;
   // Radius aimed at, as a share of each tolerance radius (grasp contact, root sphere).
   double aim_fraction = 0.0;
@@ -26,9 +25,10 @@ struct DampedLeastSquaresSettings {
   int stall_iterations = 3;
 };
 
+// `time_step_s`: simulated time charged per linearisation, as per iteration of Algorithm 1.
 IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, const Posture& g_init,
                                        const ReachTarget& target, const ReachTolerances& tolerances,
-                                       const DampedLeastSquaresSettings& settings,
+                                       double time_step_s, const DampedLeastSquaresSettings& settings,
                                        const PathRecorder& recorder = {});
 
 }  // namespace crux

@@ -6,7 +6,7 @@
 
 namespace crux {
 
-int GradientDescentSettings::max_iterations() const {
+int GradientDescentSettings::max_iterations(double time_step_s) const {
   return static_cast<int>(std::floor(timeout_s / time_step_s + 1e-9));
 }
 
@@ -25,9 +25,9 @@ void cost_gradient(const BodyModel& model, const BodyData& data, const ReachTarg
 }  // namespace
 
 IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const Posture& g_init,
-                                   const ReachTarget& target, const ReachTolerances& tolerances,
+                                   const ReachTarget& target, const ReachTolerances& tolerances, double time_step_s,
                                    const GradientDescentSettings& settings, const PathRecorder& recorder) {
-  const int max_iterations = settings.max_iterations();
+  const int max_iterations = settings.max_iterations(time_step_s);
   Posture g = g_init;
   Posture gradient;
   forward_kinematics(model, data, g);
@@ -51,7 +51,7 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
   IkResult result;
   result.reached = reached;
   result.iterations = iteration;
-  result.simulated_time_s = iteration * settings.time_step_s;
+  result.simulated_time_s = iteration * time_step_s;
   result.residual_m = grasp_residual(data.points, target);
   result.posture = reached ? g : g_init;
   if (!reached) forward_kinematics(model, data, g_init);  // data describes the returned posture

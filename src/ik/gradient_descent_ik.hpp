@@ -10,14 +10,15 @@
 namespace crux {
 
 struct GradientDescentSettings {
-  double step_size = 0.25;     // alpha (calibration: docs/DESIGN.md)
-  double time_step_s = 0.002;  // simulated time per iteration (spec item 9: see docs/DESIGN.md)
-  double timeout_s = 5.5;     // Delta_t
-  int max_iterations() const;
+  double step_size = 0.25;  // alpha (calibration: docs/DESIGN.md)
+  double timeout_s = 5.5;   // Delta_t
+  // Iterations that fit in Delta_t at `time_step_s` simulated seconds each.
+  int max_iterations(double time_step_s) const;
 };
 
+// `time_step_s`: simulated time per iteration (spec item 9: see docs/DESIGN.md).
 IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const Posture& g_init,
-                                   const ReachTarget& target, const ReachTolerances& tolerances,
+                                   const ReachTarget& target, const ReachTolerances& tolerances, double time_step_s,
                                    const GradientDescentSettings& settings, const PathRecorder& recorder = {});
 
 }  // namespace crux

@@ -13,9 +13,11 @@ std::optional<IkSolverKind> parse_ik_solver(std::string_view name) {
 IkResult solve_ik(const BodyModel& model, BodyData& data, const Posture& g_init, const ReachTarget& target,
                   const IkSettings& settings, const PathRecorder& recorder) {
   if (settings.solver == IkSolverKind::Paper) {
-    return solve_ik_gradient_descent(model, data, g_init, target, settings.tolerances, settings.paper, recorder);
+    return solve_ik_gradient_descent(model, data, g_init, target, settings.tolerances, settings.time_step_s,
+                                     settings.paper, recorder);
   }
-  return solve_ik_damped_least_squares(model, data, g_init, target, settings.tolerances, settings.fast, recorder);
+  return solve_ik_damped_least_squares(model, data, g_init, target, settings.tolerances, settings.time_step_s,
+                                       settings.fast, recorder);
 }
 
 }  // namespace crux

@@ -74,7 +74,7 @@ TEST_P(EachSolver, GivesUpWithinItsTimeOutWhenHoldsAreThreeMetresApart) {
   EXPECT_FALSE(result.reached);
   EXPECT_EQ(result.posture, start) << "Algorithm 1 returns G_init when it gives up";
   if (GetParam() == IkSolverKind::Paper) {
-    EXPECT_EQ(result.iterations, settings.paper.max_iterations());
+    EXPECT_EQ(result.iterations, settings.paper.max_iterations(settings.time_step_s));
     EXPECT_NEAR(result.simulated_time_s, settings.paper.timeout_s, 1e-9);
   } else {
     EXPECT_LE(result.iterations, settings.fast.max_iterations);
