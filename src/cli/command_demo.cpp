@@ -8,8 +8,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "body/urdf_loader.hpp"
 #include "cli/commands.hpp"
+#include "cli/parameter_binding.hpp"
+#include "experiments/run_inputs.hpp"
 #include "ik/ik_solver.hpp"
 #include "ik/reach_queries.hpp"
 
@@ -23,8 +24,8 @@ struct DemoQuery {
   Eigen::Vector3d move;  // of the limb's hold, from the start layout
 };
 
-void run_demo(const std::string& urdf, bool json) {
-  const BodyModel model = load_body_model(urdf);
+void run_demo(const ExperimentConfig& config, bool json) {
+  const BodyModel model = load_configured_body(config);
   const DemoQuery queries[] = {
       {"start layout, from standing", Limb::RightHand, Eigen::Vector3d::Zero()},
       {"right hand 0.5 m up", Limb::RightHand, {0, 0, 0.5}},
@@ -71,11 +72,11 @@ void run_demo(const std::string& urdf, bool json) {
 
 void add_demo_command(CLI::App& app) {
   auto* command = app.add_subcommand("demo", "Load the body and solve a few reaching queries with both IK solvers");
-  auto urdf = std::make_shared<std::string>(default_body_model_path());
+  auto binding = std::make_shared<ParameterBinding>("demo", ParameterSet{{"experiment.urdf"}, {}});
   auto json = std::make_shared<bool>(false);
-  command->add_option("--urdf", *urdf, "URDF file of the body")->capture_default_str();
+  binding->bind(command);
   command->add_flag("--json", *json, "Print JSON instead of text");
-  command->callback([urdf, json] { run_demo(*urdf, *json); });
+  command->callback([binding, json] { run_demo(binding->resolve(), *json); });
 }
 
 }  // namespace crux::cli

@@ -8,10 +8,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
 #include "cli/cli_parsing.hpp"
 #include "cli/commands.hpp"
+#include "cli/parameter_binding.hpp"
 #include "cli/progress_bar.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
@@ -19,78 +19,45 @@
 #include "ik/reach_queries.hpp"
 #include "ik/solver_agreement.hpp"
 #include "ik/root_target.hpp"
+#include "experiments/run_inputs.hpp"
+#include "reports/posture_csv.hpp"
 
 namespace crux::cli {
 
 namespace {
 
-struct IkOptions {
-  std::string urdf = default_body_model_path();
-  std::string solver = "fast";
-  IkSettings settings;
-  RootTargetParameters root;
-  bool json = false;
-};
-
-void add_ik_options(CLI::App* command, IkOptions& o) {
-  command->add_option("--urdf", o.urdf, "URDF file of the body")->capture_default_str();
-  command->add_option("--alpha", o.settings.paper.step_size, "Step size of the paper's gradient descent")
-      ->capture_default_str();
-  command->add_option("--time-step", o.settings.time_step_s, "Simulated seconds per IK iteration")
-      ->capture_default_str();
-  command->add_option("--timeout", o.settings.paper.timeout_s, "Delta_t: simulated seconds before giving up")
-      ->capture_default_str();
-  command->add_option("--fast-max-iterations", o.settings.fast.max_iterations, "Iteration cap of the fast solver")
-      ->capture_default_str();
-  command->add_option("--fast-stall-decrease", o.settings.fast.stall_relative_decrease,
-                      "Fast solver gives up when f drops by less than this share per step...")
-      ->capture_default_str();
-  command->add_option("--fast-stall-iterations", o.settings.fast.stall_iterations,
-                      "...this many steps in a row")
-      ->capture_default_str();
-  command->add_option("--fast-aim", o.settings.fast.aim_fraction,
-                      "Fast solver aims at this share of each tolerance radius")
-      ->capture_default_str();
-  command->add_option("--grasp-radius", o.settings.tolerances.grasp_radius, "Radius of the grasp spheres (m)")
-      ->capture_default_str();
-  command->add_option("--root-tolerance", o.settings.tolerances.root_radius, "Radius of the root tolerance sphere (m)")
-      ->capture_default_str();
-  command->add_option("--wall-distance", o.root.distance_from_wall, "x of the root target H(C4) (m)")
-      ->capture_default_str();
-  command->add_flag("--json", o.json, "Print JSON instead of text");
-}
-
-void finish_settings(IkOptions& o, bool solver_used) {
-  if (solver_used) o.settings.solver = require_ik_solver(o.solver, "--solver");
-  if (!(o.settings.paper.step_size > 0) || !(o.settings.time_step_s > 0) || !(o.settings.paper.timeout_s > 0)) {
-    throw InputError("options", "--alpha, --time-step and --timeout must be positive");
-  }
-}
+// The IK parameters; ik-compare runs both solvers, so it takes no ik.solver.
+const ParameterSet kIkParameters{{"experiment.urdf", "ik"}, {"ik.cache_unreachable"}};
+const ParameterSet kIkCompareParameters{{"experiment.urdf", "experiment.seed", "ik"},
+                                        {"ik.solver", "ik.cache_unreachable"}};
 
 nlohmann::ordered_json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 struct IkCommand {
-  IkOptions options;
+  ParameterBinding binding{"ik", kIkParameters};
   std::array<std::string, kLimbCount> holds;
   int path_every = 10;
   std::string path_out;
+  bool json = false;
 
   void run() {
-    finish_settings(options, true);
-    const BodyModel model = load_body_model(options.urdf);
+    const ExperimentConfig config = binding.resolve();
+    const IkSettings& settings = config.settings.learning.climbing.reachability.ik;
+    if (path_every <= 0) throw InputError("--path-every", "must be positive");
+    const BodyModel model = load_configured_body(config);
     static const char* const flags[kLimbCount] = {"--rh", "--lh", "--rf", "--lf"};
     ReachTarget target;
     for (int limb = 0; limb < kLimbCount; ++limb) target.hold_centres[limb] = parse_wall_point(holds[limb], flags[limb]);
-    target.root = root_target(model, target.hold_centres, options.root);
+    target.root = root_target(model, target.hold_centres, config.settings.learning.climbing.reachability.root);
     BodyData data(model);
     std::vector<Posture> path;
     const PathRecorder recorder{path_out.empty() ? nullptr : &path, path_every};
-    const IkResult result = solve_ik(model, data, standing_posture(target.root), target, options.settings, recorder);
-    if (!path_out.empty()) write_path(model, path);
+    const IkResult result = solve_ik(model, data, standing_posture(target.root), target, settings, recorder);
+    if (!path_out.empty()) write_file_atomically(path_out, posture_csv(model, path, "sample"));
     forward_kinematics(model, data, result.posture);
-    if (options.json) {
+    if (json) {
       nlohmann::ordered_json out;
-      out["solver"] = ik_solver_name(options.settings.solver);
+      out["solver"] = ik_solver_name(settings.solver);
       out["reached"] = result.reached;
       out["iterations"] = result.iterations;
       out["simulated_time_s"] = result.simulated_time_s;
@@ -105,47 +72,36 @@ struct IkCommand {
       return;
     }
     std::cout << fmt::format("solver {}: {} after {} iterations ({:.2f} s simulated), residual {:.4f} m\n",
-                             ik_solver_name(options.settings.solver), result.reached ? "reached" : "NOT reached",
+                             ik_solver_name(settings.solver), result.reached ? "reached" : "NOT reached",
                              result.iterations, result.simulated_time_s, result.residual_m)
               << fmt::format("root target H(C4) = ({:.3f}, {:.3f}, {:.3f}); root at ({:.3f}, {:.3f}, {:.3f})\n",
                              target.root.x(), target.root.y(), target.root.z(), data.points[0].x(),
                              data.points[0].y(), data.points[0].z());
     if (!result.reached) std::cout << "returned the initial posture G_init, as Algorithm 1 does on time-out\n";
   }
-
-  void write_path(const BodyModel& model, const std::vector<Posture>& path) const {
-    std::ostringstream csv;
-    csv << "sample";
-    for (const BodyJoint& j : model.joints) csv << ',' << j.name;
-    csv << '\n';
-    for (std::size_t n = 0; n < path.size(); ++n) {
-      csv << n;
-      for (int i = 0; i < kConfigurationDof; ++i) csv << ',' << fmt::format("{:.17g}", path[n][i]);
-      csv << '\n';
-    }
-    write_file_atomically(path_out, csv.str());
-  }
 };
 
 struct IkCompareCommand {
-  IkOptions options;
+  ParameterBinding binding{"ik-compare", kIkCompareParameters};
   int queries = 2000;
-  std::uint64_t seed = 1;
   std::string walk_solver = "paper";
+  bool json = false;
 
   void run() {
-    finish_settings(options, false);
+    const ExperimentConfig config = binding.resolve();
+    const IkSettings& settings = config.settings.learning.climbing.reachability.ik;
+    const std::uint64_t seed = config.settings.seed;
     if (queries <= 0) throw InputError("--queries", "must be positive");
-    const BodyModel model = load_body_model(options.urdf);
-    IkSettings walk = options.settings;
+    const BodyModel model = load_configured_body(config);
+    IkSettings walk = settings;
     walk.solver = require_ik_solver(walk_solver, "--walk-solver");
     ReachQuerySettings query_settings;
-    query_settings.root = options.root;
+    query_settings.root = config.settings.learning.climbing.reachability.root;
     const auto batch = climbing_reach_queries(model, walk, queries, seed, query_settings);
     ProgressBar progress("ik-compare", queries);
-    const SolverAgreement a = compare_solvers(model, batch, options.settings, [&](int done) { progress.update(done); });
+    const SolverAgreement a = compare_solvers(model, batch, settings, [&](int done) { progress.update(done); });
     progress.finish();
-    if (options.json) {
+    if (json) {
       nlohmann::ordered_json out;
       out["queries"] = a.queries;
       out["seed"] = seed;
@@ -184,9 +140,8 @@ void add_ik_commands(CLI::App& app) {
                                                     "Right foot hold centre Y,Z (m)", "Left foot hold centre Y,Z (m)"};
   static const char* const flags[kLimbCount] = {"--rh", "--lh", "--rf", "--lf"};
   for (int limb = 0; limb < kLimbCount; ++limb) command->add_option(flags[limb], ik->holds[limb], limb_help[limb])->required();
-  command->add_option("--solver", ik->options.solver, "IK solver: paper (Algorithm 1) or fast")
-      ->capture_default_str();
-  add_ik_options(command, ik->options);
+  ik->binding.bind(command);
+  command->add_flag("--json", ik->json, "Print JSON instead of text");
   command->add_option("--path-out", ik->path_out, "Write the posture path (CSV, one sample per row) to this file");
   command->add_option("--path-every", ik->path_every, "Sample the path every k iterations")->capture_default_str();
   command->callback([ik] { ik->run(); });
@@ -195,11 +150,11 @@ void add_ik_commands(CLI::App& app) {
   auto* compare_command = app.add_subcommand(
       "ik-compare", "Run both solvers on climbing-like queries and measure how often their verdicts agree");
   compare_command->add_option("--queries", compare->queries, "Number of queries")->capture_default_str();
-  compare_command->add_option("--seed", compare->seed, "Seed of the query generator")->capture_default_str();
   compare_command->add_option("--walk-solver", compare->walk_solver,
                               "Solver whose reached postures start the next queries of the climbing walk")
       ->capture_default_str();
-  add_ik_options(compare_command, compare->options);
+  compare->binding.bind(compare_command);
+  compare_command->add_flag("--json", compare->json, "Print JSON instead of text");
   compare_command->callback([compare] { compare->run(); });
 }
 

@@ -7,10 +7,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "body/urdf_loader.hpp"
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
 #include "cli/commands.hpp"
+#include "cli/parameter_binding.hpp"
+#include "experiments/run_inputs.hpp"
 
 namespace crux::cli {
 
@@ -40,8 +41,8 @@ std::vector<SegmentLength> segment_lengths(const BodyModel& model) {
   return out;
 }
 
-void run_model(const std::string& urdf, bool json) {
-  const BodyModel model = load_body_model(urdf);
+void run_model(const ExperimentConfig& config, bool json) {
+  const BodyModel model = load_configured_body(config);
   const auto segments = segment_lengths(model);
   if (json) {
     nlohmann::ordered_json out;
@@ -84,11 +85,11 @@ void run_model(const std::string& urdf, bool json) {
 
 void add_model_command(CLI::App& app) {
   auto* command = app.add_subcommand("model", "Describe the virtual human: degrees of freedom, size, mass, joints");
-  auto urdf = std::make_shared<std::string>(default_body_model_path());
+  auto binding = std::make_shared<ParameterBinding>("model", ParameterSet{{"experiment.urdf"}, {}});
   auto json = std::make_shared<bool>(false);
-  command->add_option("--urdf", *urdf, "URDF file of the body")->capture_default_str();
+  binding->bind(command);
   command->add_flag("--json", *json, "Print JSON instead of text");
-  command->callback([urdf, json] { run_model(*urdf, *json); });
+  command->callback([binding, json] { run_model(binding->resolve(), *json); });
 }
 
 }  // namespace crux::cli

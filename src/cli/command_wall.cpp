@@ -7,10 +7,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "body/urdf_loader.hpp"
 #include "agent_space/moving_grid.hpp"
 #include "cli/cli_parsing.hpp"
 #include "cli/commands.hpp"
+#include "cli/parameter_binding.hpp"
+#include "experiments/run_inputs.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "configurations/reachability.hpp"
@@ -22,24 +23,27 @@ namespace crux::cli {
 
 namespace {
 
-struct StartCheckOptions {
-  std::string urdf = default_body_model_path();
-  std::string solver = "fast";
-  RootTargetParameters root;
+// The wall keys of each command, and the IK that checks the start as the learning does.
+const ParameterSet kGenerateParameters{{"experiment.urdf", "wall", "ik"}, {"wall.file", "wall.count"}};
+const ParameterSet kShowParameters{{"experiment.urdf", "wall.file", "grid", "ik"}, {}};
 
-  void add(CLI::App* command) {
-    command->add_option("--urdf", urdf, "URDF file of the body")->capture_default_str();
-    command->add_option("--solver", solver, "IK solver for the start check: paper or fast")->capture_default_str();
-  }
+ExperimentConfig generate_defaults() {
+  ExperimentConfig defaults;
+  defaults.wall_seed = 1;
+  return defaults;
+}
 
-  IkResult check(const Wall& wall) const {
-    IkSettings settings;
-    settings.solver = require_ik_solver(solver, "--solver");
-    const BodyModel model = load_body_model(urdf);
-    BodyData data(model);
-    return solve_start(model, data, wall, settings, root);
-  }
-};
+IkResult check_start(const ExperimentConfig& config, const Wall& wall) {
+  const BodyModel model = load_configured_body(config);
+  BodyData data(model);
+  return solve_start(model, data, wall, config.settings.learning.climbing.reachability);
+}
+
+nlohmann::ordered_json start_json(const Wall& wall) {
+  nlohmann::ordered_json ids;
+  for (int l = 0; l < kLimbCount; ++l) ids[limb_name(static_cast<Limb>(l))] = wall.holds[wall.start[l]].id;
+  return ids;
+}
 
 std::string start_summary(const Wall& wall) {
   return fmt::format("right hand {}, left hand {}, right foot {}, left foot {}", wall.holds[wall.start[0]].id,
@@ -47,27 +51,39 @@ std::string start_summary(const Wall& wall) {
 }
 
 struct GenerateCommand {
-  std::uint64_t seed = 1;
+  ParameterBinding binding{"wall generate", kGenerateParameters, generate_defaults()};
   std::string output;
-  std::string name;
-  RandomWallParameters parameters;
-  StartCheckOptions start;
+  bool json = false;
 
   // Exit status 3 when the start configuration is not reachable: the file is written
   // so that it can be inspected, but the problem is reported, never silently passed on.
   void run() {
-    Wall wall = generate_random_wall(seed, parameters);
-    if (!name.empty()) wall.name = name;
-    const IkResult reach = start.check(wall);
+    const ExperimentConfig config = binding.resolve();
+    Wall wall = load_configured_wall(config);
+    if (!config.wall_name.empty()) wall.name = config.wall_name;
+    const IkResult reach = check_start(config, wall);
     save_wall(output, wall);
-    std::cout << fmt::format("wrote {}: '{}', {} holds, finish height {} m\n", output, wall.name, wall.hold_count(),
+    const std::string solver = ik_solver_name(config.settings.learning.climbing.reachability.ik.solver);
+    if (json) {
+      nlohmann::ordered_json out;
+      out["file"] = output;
+      out["name"] = wall.name;
+      out["seed"] = *config.wall_seed;
+      out["holds"] = wall.hold_count();
+      out["finish_height"] = wall.finish_height;
+      out["start"] = start_json(wall);
+      out["start_reachable"] = reach.reached;
+      out["start_iterations"] = reach.iterations;
+      out["start_solver"] = solver;
+      std::cout << out.dump(2) << '\n';
+    } else {
+      std::cout << fmt::format("wrote {}: '{}', {} holds, finish height {} m\n", output, wall.name, wall.hold_count(),
                              wall.finish_height)
               << fmt::format("start configuration ({}): ", start_summary(wall));
-    if (reach.reached) {
-      std::cout << fmt::format("reachable ({} solver, {} iterations)\n", start.solver, reach.iterations);
-      return;
+      std::cout << (reach.reached ? fmt::format("reachable ({} solver, {} iterations)\n", solver, reach.iterations)
+                                  : std::string("NOT reachable\n"));
     }
-    std::cout << "NOT reachable\n";
+    if (reach.reached) return;
     std::cerr << fmt::format("crux: {}: the start configuration is not reachable (residual {:.3f} m)\n", output,
                              reach.residual_m);
     throw CLI::RuntimeError(3);
@@ -75,22 +91,26 @@ struct GenerateCommand {
 };
 
 struct ShowCommand {
-  std::string file;
+  ParameterBinding binding{"wall show", kShowParameters};
   bool json = false;
   std::string svg;
   std::string grid_limb;
   std::string grid_at;
   GridParameters grid;
-  StartCheckOptions start;
+  std::string file;
 
   void run() {
+    const ExperimentConfig config = binding.resolve();
+    if (config.wall_file.empty()) throw InputError("--wall-file", "give the wall file to show");
+    file = config.wall_file;
+    grid = config.settings.learning.climbing.grid;
     const Wall wall = load_wall(file);
-    const IkResult reach = start.check(wall);
+    const IkResult reach = check_start(config, wall);
     std::optional<GridPlacement> placement;
     std::optional<Limb> limb;
     if (!grid_limb.empty()) {
       limb = parse_limb(grid_limb);
-      if (!limb) throw InputError("--grid", fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", grid_limb));
+      if (!limb) throw InputError("--limb", fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", grid_limb));
       Eigen::Vector3d at = wall.holds[wall.start[static_cast<int>(*limb)]].position;
       if (!grid_at.empty()) at = parse_wall_point(grid_at, "--at");
       placement = place_grid(grid, *limb, at);
@@ -132,9 +152,7 @@ struct ShowCommand {
     out["name"] = wall.name;
     out["holds"] = wall.hold_count();
     out["finish_height"] = wall.finish_height;
-    nlohmann::ordered_json start_ids;
-    for (int l = 0; l < kLimbCount; ++l) start_ids[limb_name(static_cast<Limb>(l))] = wall.holds[wall.start[l]].id;
-    out["start"] = start_ids;
+    out["start"] = start_json(wall);
     out["start_reachable"] = reach.reached;
     out["start_iterations"] = reach.iterations;
     if (placement) {
@@ -162,29 +180,18 @@ void add_wall_command(CLI::App& app) {
 
   auto generate = std::make_shared<GenerateCommand>();
   auto* g = wall->add_subcommand("generate", "Generate a random wall (paper III-A) and check its start with IK");
-  g->add_option("--seed", generate->seed, "Seed of the wall")->capture_default_str();
   g->add_option("-o,--output", generate->output, "Wall file to write (JSON)")->required();
-  g->add_option("--name", generate->name, "Name stored in the file");
-  g->add_option("--columns", generate->parameters.columns, "Tiles across")->capture_default_str();
-  g->add_option("--rows", generate->parameters.rows, "Tiles up")->capture_default_str();
-  g->add_option("--tile-width", generate->parameters.tile_width, "Tile width (m)")->capture_default_str();
-  g->add_option("--tile-height", generate->parameters.tile_height, "Tile height (m)")->capture_default_str();
-  g->add_option("--sigma", generate->parameters.sigma, "Standard deviation of hold displacement (m)")
-      ->capture_default_str();
-  g->add_option("--hold-radius", generate->parameters.hold_radius, "Hold radius (m)")->capture_default_str();
-  g->add_option("--finish-height", generate->parameters.finish_height, "Finishing height of the centre of mass (m)")
-      ->capture_default_str();
-  generate->start.add(g);
+  g->add_flag("--json", generate->json, "Print JSON instead of text");
+  generate->binding.bind(g);
   g->callback([generate] { generate->run(); });
 
   auto show = std::make_shared<ShowCommand>();
   auto* s = wall->add_subcommand("show", "Summarise a wall file; draw it (--svg), with the moving grid (--grid)");
-  s->add_option("file", show->file, "Wall file (JSON)")->required();
   s->add_flag("--json", show->json, "Print JSON instead of text");
   s->add_option("--svg", show->svg, "Write an SVG front view to this file");
-  s->add_option("--grid", show->grid_limb, "Place the moving grid on this free limb (right_hand, left_hand, ...)");
+  s->add_option("--limb", show->grid_limb, "Place the moving grid on this free limb (right_hand, left_hand, ...)");
   s->add_option("--at", show->grid_at, "Y,Z of the free limb (default: its start hold)");
-  show->start.add(s);
+  show->binding.bind(s);
   s->callback([show] { show->run(); });
 }
 

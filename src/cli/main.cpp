@@ -2,24 +2,97 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/suggestion.hpp"
+#include "common/build_info.hpp"
 #include "common/input_error.hpp"
+
+namespace {
+
+// "crux" or "crux wall show": the command path of `command`.
+std::string command_path(const CLI::App* command) {
+  std::string path = command->get_name();
+  for (const CLI::App* parent = command->get_parent(); parent != nullptr; parent = parent->get_parent()) {
+    path = parent->get_name() + " " + path;
+  }
+  return path;
+}
+
+int refuse(const std::string& message) {
+  std::fprintf(stderr, "crux: %s\n", message.c_str());
+  return 2;
+}
+
+std::string hint(const std::string& nearest) {
+  return nearest.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", nearest);
+}
+
+// Unknown commands and options get a one-line answer with the nearest name, before
+// CLI11, whose messages name neither the command nor what was meant.
+int check_names(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* command = &app;
+  bool after_command = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--") break;
+    if (arg.rfind("--", 0) == 0) {
+      const std::string name = arg.substr(0, arg.find('='));
+      if (name == "--help" || name == "--version") return 0;
+      if (command->get_option_no_throw(name) != nullptr) continue;
+      std::vector<std::string> flags;
+      for (const CLI::Option* option : command->get_options()) {
+        if (!option->get_lnames().empty()) flags.push_back("--" + option->get_lnames().front());
+      }
+      return refuse(fmt::format("{}: unknown option {}{} (see '{} --help')", command_path(command), name,
+                                hint(crux::cli::nearest_name(name, flags)), command_path(command)));
+    }
+    if (arg.rfind('-', 0) == 0) continue;  // a short option or a negative number
+    if (after_command) continue;           // a value
+    std::vector<std::string> names;
+    for (const CLI::App* sub : command->get_subcommands([](const CLI::App*) { return true; })) {
+      names.push_back(sub->get_name());
+    }
+    if (names.empty()) {
+      after_command = true;
+      continue;
+    }
+    const auto sub = std::find(names.begin(), names.end(), arg);
+    if (sub == names.end()) {
+      const std::string parent = command == &app ? std::string() : command_path(command).substr(5) + " ";
+      const std::string nearest = crux::cli::nearest_name(arg, names);
+      return refuse(fmt::format("unknown command '{}{}'{} (see '{} --help')", parent, arg,
+                                hint(nearest.empty() ? nearest : parent + nearest), command_path(command)));
+    }
+    command = command->get_subcommand(arg);
+  }
+  return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
       "crux: a 32-DOF virtual human that learns to climb walls of holds by reinforcement learning and\n"
-      "transfers what it learnt to new walls (after Libeau, Micaelli & Sigaud). Run 'crux <command> --help'."};
+      "transfers what it learnt to new walls (after Libeau, Micaelli & Sigaud). Run 'crux <command> --help'.\n"
+      "Every parameter is a flag and a config key: --section-name is the key section.name of --config FILE\n"
+      "(--name for the section experiment)."};
+  app.name("crux");
   app.require_subcommand(1);
-  app.set_version_flag("--version", "crux 0.1.0");
+  app.set_version_flag("--version", fmt::format("crux {}{}", crux::crux_version(),
+                                                crux::git_commit().empty() ? "" : " (" + crux::git_commit() + ")"));
   crux::cli::add_model_command(app);
   crux::cli::add_ik_commands(app);
   crux::cli::add_demo_command(app);
   crux::cli::add_wall_command(app);
   crux::cli::add_filter_stats_command(app);
   crux::cli::add_learning_commands(app);
+  if (const int refused = check_names(app, argc, argv); refused != 0) return refused;
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -31,11 +104,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::RuntimeError& e) {
     return e.get_exit_code();  // the command has already reported why
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "crux: %s (see 'crux --help')\n", e.what());
-    return 2;
+    return refuse(fmt::format("{} (see 'crux --help')", e.what()));
   } catch (const crux::InputError& e) {
-    std::fprintf(stderr, "crux: %s\n", e.what());
-    return 2;
+    return refuse(e.what());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "crux: internal error: %s\n", e.what());
     return 1;

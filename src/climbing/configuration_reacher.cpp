@@ -24,9 +24,8 @@ const Posture* ConfigurationReacher::reach(const Posture& from, const HoldConfig
 }
 
 const Posture* ConfigurationReacher::reach_start() {
-  const HoldConfiguration start = start_configuration(wall_);
-  const ReachTarget target = reach_target(model_, wall_, start, parameters_.root);
-  return reach(standing_posture(target.root), start);
+  // solve_start's problem, answered through the cache.
+  return reach(start_guess(model_, wall_, parameters_.root), start_configuration(wall_));
 }
 
 const BodyData& ConfigurationReacher::place(const Posture& posture) {

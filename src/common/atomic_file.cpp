@@ -40,4 +40,12 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   }
 }
 
+void make_output_directory(const std::filesystem::path& directory) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error || !std::filesystem::is_directory(directory)) {
+    throw InputError(directory.string(), "cannot create the output folder");
+  }
+}
+
 }  // namespace crux

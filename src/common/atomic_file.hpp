@@ -11,4 +11,7 @@ namespace crux {
 // Throws InputError naming `path` when the directory is missing or not writable.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
+// Creates `directory` and its parents; InputError naming it when that fails.
+void make_output_directory(const std::filesystem::path& directory);
+
 }  // namespace crux

@@ -9,14 +9,17 @@ namespace crux {
 
 class InputError : public std::runtime_error {
  public:
-  InputError(std::string source, const std::string& problem)
+  InputError(std::string source, std::string problem)
       : std::runtime_error(source.empty() ? problem : source + ": " + problem),
-        source_(std::move(source)) {}
+        source_(std::move(source)),
+        problem_(std::move(problem)) {}
 
   const std::string& source() const noexcept { return source_; }
+  const std::string& problem() const noexcept { return problem_; }
 
  private:
   std::string source_;
+  std::string problem_;
 };
 
 }  // namespace crux

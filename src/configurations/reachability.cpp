@@ -20,10 +20,13 @@ HoldConfiguration start_configuration(const Wall& wall) {
   return start;
 }
 
-IkResult solve_start(const BodyModel& model, BodyData& data, const Wall& wall, const IkSettings& settings,
-                     const RootTargetParameters& root) {
-  const ReachTarget target = reach_target(model, wall, start_configuration(wall), root);
-  return solve_ik(model, data, standing_posture(target.root), target, settings);
+Posture start_guess(const BodyModel& model, const Wall& wall, const RootTargetParameters& root) {
+  return standing_posture(reach_target(model, wall, start_configuration(wall), root).root);
+}
+
+IkResult solve_start(const BodyModel& model, BodyData& data, const Wall& wall, const ReachabilityParameters& parameters) {
+  const ReachTarget target = reach_target(model, wall, start_configuration(wall), parameters.root);
+  return solve_ik(model, data, start_guess(model, wall, parameters.root), target, parameters.ik);
 }
 
 }  // namespace crux

@@ -23,9 +23,11 @@ ReachTarget reach_target(const BodyModel& model, const Wall& wall, const HoldCon
 
 HoldConfiguration start_configuration(const Wall& wall);
 
-// Solves the wall's start configuration from the standing posture placed at H(C4), as
-// every episode begins.
-IkResult solve_start(const BodyModel& model, BodyData& data, const Wall& wall, const IkSettings& settings,
-                     const RootTargetParameters& root);
+// The posture every episode's start configuration is solved from: standing, root at H(C4).
+Posture start_guess(const BodyModel& model, const Wall& wall, const RootTargetParameters& root);
+
+// Whether the wall's start configuration is C-reachable from start_guess: the one start
+// check of crux (wall generate, wall show, the learning and the experiment's wall draws).
+IkResult solve_start(const BodyModel& model, BodyData& data, const Wall& wall, const ReachabilityParameters& parameters);
 
 }  // namespace crux

@@ -1,9 +1,9 @@
 #include "experiments/experiment_config.hpp"
 
-#include <cmath>
-#include <limits>
 #include <algorithm>
-#include <map>
+#include <cmath>
+#include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -19,73 +19,103 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
   ClimbingParameters& m = l.climbing;
   IkSettings& ik = m.reachability.ik;
   return {
-      {"experiment.runs", "--runs",
-       "N walls with one seed each (sets walls = N, seeds_per_wall = 1); 0: use walls and seeds_per_wall", &c.runs},
-      {"experiment.walls", "--walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs},
-      {"experiment.seeds_per_wall", "--seeds-per-wall", "Learning seeds per wall pair", &s.seeds_per_wall},
-      {"experiment.seed", "--seed", "Experiment seed; walls and runs derive from it", &s.seed},
-      {"experiment.threads", "--threads", "Worker threads (0: all cores)", &s.threads},
-      {"experiment.iterations", "--iterations", "Learning iterations (real actions) per run", &l.iterations},
-      {"experiment.beginning_iterations", "--beginning",
-       "Iterations of Table I's beginning window, and of the early and late windows of the metrics",
-       &s.analysis.beginning},
-      {"experiment.threshold_length", "--threshold-length",
+      {"experiment.urdf", "URDF file of the body (default: the installed crux_human.urdf)", &c.urdf},
+      {"experiment.seed", "Seed: the experiment's walls and runs, a run's learning or the queries derive from it",
+       &s.seed},
+      {"experiment.runs", "N walls with one seed each: sets walls = N and seeds_per_wall = 1",
+       &c.runs},
+      {"experiment.walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs},
+      {"experiment.seeds_per_wall", "Learning seeds per wall pair", &s.seeds_per_wall},
+      {"experiment.threads", "Worker threads (0: all cores); results do not depend on it", &s.threads},
+      {"experiment.iterations", "Learning iterations (real actions) per run", &l.iterations},
+      {"experiment.beginning",
+       "Iterations of Table I's beginning window and of the early and late windows of the metrics (0: 2000, or all "
+       "iterations if fewer)",
+       &c.beginning},
+      {"experiment.threshold_length",
        "Episode length (iterations) that counts as climbing well: time to threshold and take-off",
        &s.analysis.threshold_length},
-      {"experiment.bootstrap_resamples", "--bootstrap-resamples", "Resamples of the cluster bootstrap over walls",
+      {"experiment.bootstrap_resamples", "Resamples of the cluster bootstrap over walls",
        &s.analysis.bootstrap_resamples},
-      {"experiment.plan", "--plan", "Compute each wall's exact shortest climb", &s.plan},
-      {"experiment.greedy_cap", "--greedy-cap", "Actions allowed to the greedy policy's evaluation climb",
-       &l.greedy_cap},
-      {"learning.alpha", "--learning-rate", "Q-learning step size alpha", &l.dyna.rates.alpha},
-      {"learning.gamma", "--gamma", "Discount factor gamma", &l.dyna.rates.gamma},
-      {"learning.planning_steps", "--planning-steps", "Dyna planning updates per real step", &l.dyna.planning_steps},
-      {"learning.epsilon", "--epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon},
-      {"learning.planner", "--planner",
+      {"experiment.plan", "Compute each wall's exact shortest climb", &s.plan},
+      {"experiment.greedy_cap", "Actions allowed to the greedy policy's evaluation climb", &l.greedy_cap},
+      {"experiment.q_grid", "Q_grid file (q_grid.bin of a training run) that transfer starts from", &c.q_grid},
+      {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha},
+      {"learning.gamma", "Discount factor gamma", &l.dyna.rates.gamma},
+      {"learning.epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon},
+      {"learning.planning_steps", "Dyna planning updates per real step", &l.dyna.planning_steps},
+      {"learning.planner",
        "Dyna planning: uniform (Algorithm 2) or prioritized (prioritized sweeping, same number of updates)",
        &c.planner},
-      {"learning.priority_threshold", "--priority-threshold",
-       "Prioritized sweeping queues pairs whose |TD error| exceeds this", &l.dyna.priority_threshold},
-      {"rewards.unreachable", "--reward-unreachable", "Reward of an unreachable 4-configuration",
-       &m.rewards.unreachable},
-      {"rewards.step", "--reward-step", "Reward of a reachable 4-configuration", &m.rewards.step},
-      {"rewards.finish", "--reward-finish", "Reward when the centre of mass passes the finishing height",
-       &m.rewards.finish},
-      {"ik.solver", "--solver", "IK solver: fast or paper (Algorithm 1)", &c.solver},
-      {"ik.alpha", "--ik-alpha", "Step size of the paper's gradient descent", &ik.paper.step_size},
-      {"ik.time_step", "--ik-time-step", "Simulated seconds per IK iteration", &ik.time_step_s},
-      {"ik.timeout", "--ik-timeout", "Delta_t: simulated seconds before IK gives up", &ik.paper.timeout_s},
-      {"ik.fast_max_iterations", "--fast-max-iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations},
-      {"ik.grasp_radius", "--grasp-radius", "Radius of the grasp spheres (m)", &ik.tolerances.grasp_radius},
-      {"ik.root_tolerance", "--root-tolerance", "Radius of the root tolerance sphere (m)", &ik.tolerances.root_radius},
-      {"ik.wall_distance", "--wall-distance", "x of the root target H(C4) (m)", &m.reachability.root.distance_from_wall},
-      {"ik.cache_unreachable", "--cache-unreachable", "Cache unreachable verdicts", &m.reachability.cache_unreachable},
-      {"filter.max_span", "--max-span", "Largest distance between two holds of a configuration (m)",
-       &m.filter.max_span_m},
-      {"filter.reading", "--reading", "Reading of 'both feet above the hands'", &c.reading},
-      {"grid.columns", "--grid-columns", "Columns of the moving grid", &m.grid.columns},
-      {"grid.rows", "--grid-rows", "Rows of the moving grid", &m.grid.rows},
-      {"grid.tile_width", "--grid-tile-width", "Tile width of the moving grid (m)", &m.grid.tile_width},
-      {"grid.tile_height", "--grid-tile-height", "Tile height of the moving grid (m)", &m.grid.tile_height},
-      {"grid.right_hand_anchor_column", "--rh-anchor-column", "Right hand's anchor tile P_1: column", &m.grid.anchors[0][0]},
-      {"grid.right_hand_anchor_row", "--rh-anchor-row", "Right hand's anchor tile P_1: row", &m.grid.anchors[0][1]},
-      {"grid.left_hand_anchor_column", "--lh-anchor-column", "Left hand's anchor tile P_2: column", &m.grid.anchors[1][0]},
-      {"grid.left_hand_anchor_row", "--lh-anchor-row", "Left hand's anchor tile P_2: row", &m.grid.anchors[1][1]},
-      {"grid.right_foot_anchor_column", "--rf-anchor-column", "Right foot's anchor tile P_3: column", &m.grid.anchors[2][0]},
-      {"grid.right_foot_anchor_row", "--rf-anchor-row", "Right foot's anchor tile P_3: row", &m.grid.anchors[2][1]},
-      {"grid.left_foot_anchor_column", "--lf-anchor-column", "Left foot's anchor tile P_4: column", &m.grid.anchors[3][0]},
-      {"grid.left_foot_anchor_row", "--lf-anchor-row", "Left foot's anchor tile P_4: row", &m.grid.anchors[3][1]},
-      {"walls.columns", "--wall-columns", "Tiles across a random wall", &s.walls.columns},
-      {"walls.rows", "--wall-rows", "Tiles up a random wall", &s.walls.rows},
-      {"walls.tile_width", "--wall-tile-width", "Tile width of a random wall (m)", &s.walls.tile_width},
-      {"walls.tile_height", "--wall-tile-height", "Tile height of a random wall (m)", &s.walls.tile_height},
-      {"walls.sigma", "--wall-sigma", "Standard deviation of hold displacement (m)", &s.walls.sigma},
-      {"walls.hold_radius", "--hold-radius", "Hold radius (m)", &s.walls.hold_radius},
-      {"walls.finish_height", "--finish-height", "Finishing height of the centre of mass (m)", &s.walls.finish_height},
+      {"learning.priority_threshold", "Prioritized sweeping queues pairs whose |TD error| exceeds this",
+       &l.dyna.priority_threshold},
+      {"reward.unreachable", "Reward of an unreachable 4-configuration", &m.rewards.unreachable},
+      {"reward.step", "Reward of a reachable 4-configuration", &m.rewards.step},
+      {"reward.finish", "Reward when the centre of mass passes the finishing height", &m.rewards.finish},
+      {"ik.solver", "IK solver: fast or paper (Algorithm 1)", &c.solver},
+      {"ik.alpha", "Step size of the paper's gradient descent", &ik.paper.step_size},
+      {"ik.time_step", "Simulated seconds per IK iteration (both solvers)", &ik.time_step_s},
+      {"ik.timeout", "Delta_t: simulated seconds before the paper's solver gives up", &ik.paper.timeout_s},
+      {"ik.fast_max_iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations},
+      {"ik.fast_stall_decrease", "The fast solver gives up when f drops by less than this share per step...",
+       &ik.fast.stall_relative_decrease},
+      {"ik.fast_stall_iterations", "...this many steps in a row", &ik.fast.stall_iterations},
+      {"ik.fast_aim", "The fast solver aims at this share of each tolerance radius", &ik.fast.aim_fraction},
+      {"ik.grasp_radius", "Radius of the grasp spheres (m)", &ik.tolerances.grasp_radius},
+      {"ik.root_tolerance", "Radius of the root tolerance sphere (m)", &ik.tolerances.root_radius},
+      {"ik.wall_distance", "x of the root target H(C4) (m)", &m.reachability.root.distance_from_wall},
+      {"ik.cache_unreachable", "Cache unreachable verdicts", &m.reachability.cache_unreachable},
+      {"filter.max_span", "Largest distance between two holds of a configuration (m)", &m.filter.max_span_m},
+      {"filter.reading", "Reading of 'both feet above the hands'", &c.reading},
+      {"grid.columns", "Columns of the moving grid", &m.grid.columns},
+      {"grid.rows", "Rows of the moving grid", &m.grid.rows},
+      {"grid.tile_width", "Tile width of the moving grid (m)", &m.grid.tile_width},
+      {"grid.tile_height", "Tile height of the moving grid (m)", &m.grid.tile_height},
+      {"grid.right_hand_anchor_column", "Right hand's anchor tile P_1: column", &m.grid.anchors[0][0]},
+      {"grid.right_hand_anchor_row", "Right hand's anchor tile P_1: row", &m.grid.anchors[0][1]},
+      {"grid.left_hand_anchor_column", "Left hand's anchor tile P_2: column", &m.grid.anchors[1][0]},
+      {"grid.left_hand_anchor_row", "Left hand's anchor tile P_2: row", &m.grid.anchors[1][1]},
+      {"grid.right_foot_anchor_column", "Right foot's anchor tile P_3: column", &m.grid.anchors[2][0]},
+      {"grid.right_foot_anchor_row", "Right foot's anchor tile P_3: row", &m.grid.anchors[2][1]},
+      {"grid.left_foot_anchor_column", "Left foot's anchor tile P_4: column", &m.grid.anchors[3][0]},
+      {"grid.left_foot_anchor_row", "Left foot's anchor tile P_4: row", &m.grid.anchors[3][1]},
+      {"wall.file", "Wall file (JSON)", &c.wall_file},
+      {"wall.seed", "Seed of a random wall", &c.wall_seed},
+      {"wall.name", "Name stored in a generated wall file", &c.wall_name},
+      {"wall.count", "Random walls to count over", &c.wall_count},
+      {"wall.columns", "Tiles across a random wall", &s.walls.columns},
+      {"wall.rows", "Tiles up a random wall", &s.walls.rows},
+      {"wall.tile_width", "Tile width of a random wall (m)", &s.walls.tile_width},
+      {"wall.tile_height", "Tile height of a random wall (m)", &s.walls.tile_height},
+      {"wall.sigma", "Standard deviation of hold displacement (m)", &s.walls.sigma},
+      {"wall.hold_radius", "Hold radius (m)", &s.walls.hold_radius},
+      {"wall.finish_height", "Finishing height of the centre of mass (m)", &s.walls.finish_height},
   };
 }
 
+std::string flag_for_key(const std::string& key) {
+  const std::size_t dot = key.find('.');
+  const std::string section = key.substr(0, dot);
+  std::string flag = "--" + (section == "experiment" ? std::string() : section + "-") + key.substr(dot + 1);
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flag;
+}
+
+bool ParameterSet::accepts(const std::string& key) const {
+  const std::string section = key.substr(0, key.find('.'));
+  const auto listed = [&](const std::vector<std::string>& list) {
+    return std::find(list.begin(), list.end(), key) != list.end() ||
+           std::find(list.begin(), list.end(), section) != list.end();
+  };
+  return listed(include) && std::find(exclude.begin(), exclude.end(), key) == exclude.end();
+}
+
 namespace {
+
+// Paths written absolute, so that the config replays from any working directory.
+bool is_file_key(const std::string& key) {
+  return key == "experiment.urdf" || key == "experiment.q_grid" || key == "wall.file";
+}
 
 std::string toml_double(double value) {
   std::string text = fmt::format("{}", value);
@@ -93,64 +123,51 @@ std::string toml_double(double value) {
   return text;
 }
 
-std::string toml_string(const std::string& value) {
-  std::string out = "\"";
-  for (const char ch : value) {
-    if (ch == '"' || ch == '\\') out += '\\';
-    out += ch;
+// TOML integers are signed 64-bit: larger seeds are written, and read, as strings.
+std::optional<std::uint64_t> read_seed(const toml::node& node) {
+  if (const auto v = node.as_integer(); v && v->get() >= 0) return static_cast<std::uint64_t>(v->get());
+  if (const auto v = node.as_string()) {
+    const std::string& text = v->get();
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+    try {
+      std::size_t used = 0;
+      const std::uint64_t value = std::stoull(text, &used);
+      if (used == text.size()) return value;
+    } catch (const std::exception&) {
+    }
   }
-  return out + "\"";
+  return std::nullopt;
 }
 
 void assign(const std::string& path, const ConfigField& field, const toml::node& node) {
-  const auto where = [&] {
-    return fmt::format("line {}: {}", node.source().begin.line, field.key);
+  const auto fail = [&](const char* expected) {
+    throw InputError(path, fmt::format("line {}: {} must be {}", node.source().begin.line, field.key, expected));
   };
   std::visit(
       [&](auto* target) {
         using T = std::remove_pointer_t<decltype(target)>;
         if constexpr (std::is_same_v<T, double>) {
-          if (const auto v = node.value<double>(); v && std::isfinite(*v)) {
-            *target = *v;
-            return;
+          const auto v = node.value<double>();
+          if (!v || !std::isfinite(*v)) fail("a finite number");
+          *target = *v;
+        } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::optional<int>>) {
+          const auto v = node.as_integer();
+          if (!v || v->get() < std::numeric_limits<int>::min() || v->get() > std::numeric_limits<int>::max()) {
+            fail("an integer");
           }
-          throw InputError(path, where() + " must be a finite number");
-        } else if constexpr (std::is_same_v<T, int>) {
-          if (const auto v = node.as_integer(); v && v->get() >= std::numeric_limits<int>::min() &&
-                                                v->get() <= std::numeric_limits<int>::max()) {
-            *target = static_cast<int>(v->get());
-            return;
-          }
-          throw InputError(path, where() + " must be an integer");
-        } else if constexpr (std::is_same_v<T, std::uint64_t>) {
-          if (const auto v = node.as_integer(); v && v->get() >= 0) {
-            *target = static_cast<std::uint64_t>(v->get());
-            return;
-          }
-          // TOML integers are signed 64-bit: larger seeds are written as strings.
-          if (const auto v = node.as_string()) {
-            const std::string& text = v->get();
-            std::size_t used = 0;
-            try {
-              if (!text.empty() && text[0] != '-') *target = std::stoull(text, &used);
-            } catch (const std::exception&) {
-              used = 0;
-            }
-            if (used > 0 && used == text.size()) return;
-          }
-          throw InputError(path, where() + " must be a non-negative integer");
+          *target = static_cast<int>(v->get());
+        } else if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, std::optional<std::uint64_t>>) {
+          const auto v = read_seed(node);
+          if (!v) fail("an integer from 0 to 18446744073709551615");
+          *target = *v;
         } else if constexpr (std::is_same_v<T, bool>) {
-          if (const auto v = node.as_boolean()) {
-            *target = v->get();
-            return;
-          }
-          throw InputError(path, where() + " must be true or false");
+          const auto v = node.as_boolean();
+          if (!v) fail("true or false");
+          *target = v->get();
         } else {
-          if (const auto v = node.as_string()) {
-            *target = v->get();
-            return;
-          }
-          throw InputError(path, where() + " must be a string");
+          const auto v = node.as_string();
+          if (!v) fail("a string");
+          *target = v->get();
         }
       },
       field.target);
@@ -158,7 +175,8 @@ void assign(const std::string& path, const ConfigField& field, const toml::node&
 
 }  // namespace
 
-void apply_config_file(const std::string& path, ExperimentConfig& config) {
+ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config, const ParameterSet& accepted,
+                              const std::string& command) {
   toml::table table;
   try {
     table = toml::parse_file(path);
@@ -168,9 +186,8 @@ void apply_config_file(const std::string& path, ExperimentConfig& config) {
     throw InputError(path, fmt::format("TOML syntax error at line {}, column {}: {}", e.source().begin.line,
                                        e.source().begin.column, description));
   }
-  std::map<std::string, const ConfigField*> known;
   const std::vector<ConfigField> fields = config_fields(config);
-  for (const ConfigField& field : fields) known[field.key] = &field;
+  ConfigLines lines;
   for (const auto& [section, section_node] : table) {
     const toml::table* entries = section_node.as_table();
     if (entries == nullptr) {
@@ -179,15 +196,33 @@ void apply_config_file(const std::string& path, ExperimentConfig& config) {
     }
     for (const auto& [name, node] : *entries) {
       const std::string key = std::string(section.str()) + "." + std::string(name.str());
-      const auto it = known.find(key);
-      if (it == known.end()) throw InputError(path, fmt::format("line {}: unknown key {}", node.source().begin.line, key));
-      assign(path, *it->second, node);
+      const int line = static_cast<int>(node.source().begin.line);
+      if (section.str() == "provenance") {
+        const auto text = node.as_string();
+        if (!text) throw InputError(path, fmt::format("line {}: {} must be a string", line, key));
+        config.recorded_provenance[std::string(name.str())] = text->get();
+        continue;
+      }
+      const auto field = std::find_if(fields.begin(), fields.end(), [&](const ConfigField& f) { return f.key == key; });
+      if (field == fields.end()) throw InputError(path, fmt::format("line {}: unknown key {}", line, key));
+      if (!accepted.accepts(key)) {
+        throw InputError(path, fmt::format("line {}: crux {} does not take {}", line, command, key));
+      }
+      assign(path, *field, node);
+      lines[key] = line;
     }
   }
+  return lines;
 }
 
 namespace {
+
 constexpr long long kMaxRunsPerCondition = 1000000;
+
+void require(bool ok, const char* key, const char* problem) {
+  if (!ok) throw InputError(key, problem);
+}
+
 }  // namespace
 
 void finalize_config(ExperimentConfig& config) {
@@ -197,91 +232,137 @@ void finalize_config(ExperimentConfig& config) {
   s.learning.climbing.reachability.ik.solver = *solver;
   const auto planner = parse_planner(config.planner);
   if (!planner) {
-    throw InputError("learning.planner", fmt::format("unknown planner '{}' (expected uniform or prioritized)", config.planner));
+    throw InputError("learning.planner",
+                     fmt::format("unknown planner '{}' (expected uniform or prioritized)", config.planner));
   }
   s.learning.dyna.planner = *planner;
   const auto reading = parse_reading(config.reading);
   if (!reading) throw InputError("filter.reading", fmt::format("unknown reading '{}'", config.reading));
   s.learning.climbing.filter.feet_above_hands = *reading;
-  const auto require = [](bool ok, const char* what) {
-    if (!ok) throw InputError("config", what);
-  };
-  require(config.runs >= 0, "experiment.runs must be 0 or positive");
-  if (config.runs > 0) {
-    s.wall_pairs = config.runs;
+  if (config.runs) {
+    require(*config.runs > 0, "experiment.runs", "must be positive");
+    s.wall_pairs = *config.runs;
     s.seeds_per_wall = 1;
-    config.runs = 0;
+    config.runs.reset();
   }
-  require(s.wall_pairs > 0, "experiment.walls must be positive");
-  require(s.seeds_per_wall > 0, "experiment.seeds_per_wall must be positive");
-  require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition,
-          "experiment.walls x experiment.seeds_per_wall must be at most 1000000 runs per condition");
-  require(s.threads >= 0, "experiment.threads must be 0 (all cores) or positive");
-  require(s.learning.iterations > 0, "experiment.iterations must be positive");
-  require(s.analysis.beginning > 0, "experiment.beginning_iterations must be positive");
-  require(s.analysis.threshold_length > 0, "experiment.threshold_length must be positive");
+  require(s.wall_pairs > 0, "experiment.walls", "must be positive");
+  require(s.seeds_per_wall > 0, "experiment.seeds_per_wall", "must be positive");
+  require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition, "experiment.walls",
+          "walls x seeds_per_wall must be at most 1000000 runs per condition");
+  require(s.threads >= 0, "experiment.threads", "must be 0 (all cores) or positive");
+  require(s.learning.iterations > 0, "experiment.iterations", "must be positive");
+  require(config.beginning >= 0, "experiment.beginning", "must be 0 (the default) or positive");
+  require(config.beginning <= s.learning.iterations, "experiment.beginning",
+          "must not exceed experiment.iterations (the window lies inside the run)");
+  s.analysis.beginning =
+      config.beginning > 0 ? config.beginning : std::min(AnalysisSettings{}.beginning, s.learning.iterations);
+  config.beginning = s.analysis.beginning;
+  require(s.analysis.threshold_length > 0, "experiment.threshold_length", "must be positive");
   require(s.analysis.bootstrap_resamples >= 100 && s.analysis.bootstrap_resamples <= 10000000,
-          "experiment.bootstrap_resamples must be in [100, 10000000]");
-  require(s.learning.dyna.rates.alpha > 0 && s.learning.dyna.rates.alpha <= 1, "learning.alpha must be in (0, 1]");
-  require(s.learning.dyna.rates.gamma >= 0 && s.learning.dyna.rates.gamma < 1, "learning.gamma must be in [0, 1)");
-  require(s.learning.dyna.planning_steps >= 0, "learning.planning_steps must be >= 0");
-  require(s.learning.dyna.epsilon >= 0 && s.learning.dyna.epsilon <= 1, "learning.epsilon must be in [0, 1]");
-  require(s.learning.dyna.priority_threshold >= 0, "learning.priority_threshold must be >= 0");
+          "experiment.bootstrap_resamples", "must be in [100, 10000000]");
+  require(s.learning.greedy_cap > 0, "experiment.greedy_cap", "must be positive");
+  require(config.wall_count > 0, "wall.count", "must be positive");
+  const DynaSettings& dyna = s.learning.dyna;
+  require(dyna.rates.alpha > 0 && dyna.rates.alpha <= 1, "learning.alpha", "must be in (0, 1]");
+  require(dyna.rates.gamma >= 0 && dyna.rates.gamma < 1, "learning.gamma", "must be in [0, 1)");
+  require(dyna.planning_steps >= 0, "learning.planning_steps", "must be 0 or positive");
+  require(dyna.epsilon >= 0 && dyna.epsilon <= 1, "learning.epsilon", "must be in [0, 1]");
+  require(dyna.priority_threshold >= 0, "learning.priority_threshold", "must be 0 or positive");
   const GridParameters& grid = s.learning.climbing.grid;
-  require(grid.columns > 0 && grid.rows > 0, "grid columns and rows must be positive");
-  for (const auto& anchor : grid.anchors) {
-    require(anchor[0] >= 0 && anchor[0] < grid.columns && anchor[1] >= 0 && anchor[1] < grid.rows,
+  require(grid.columns > 0, "grid.columns", "must be positive");
+  require(grid.rows > 0, "grid.rows", "must be positive");
+  static const char* const anchor_keys[kLimbCount] = {"grid.right_hand_anchor_column", "grid.left_hand_anchor_column",
+                                                      "grid.right_foot_anchor_column", "grid.left_foot_anchor_column"};
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const auto& anchor = grid.anchors[limb];
+    require(anchor[0] >= 0 && anchor[0] < grid.columns && anchor[1] >= 0 && anchor[1] < grid.rows, anchor_keys[limb],
             "every grid anchor must be a tile of the grid");
   }
+  require(grid.tile_width > 0, "grid.tile_width", "must be positive");
+  require(grid.tile_height > 0, "grid.tile_height", "must be positive");
+  const double state_codes = 4.0 * std::pow(grid.tile_count() + 1.0, 3.0);
+  require(state_codes < 4294967296.0, "grid.columns", "the grid has too many tiles for 32-bit agent-state codes");
   int start_columns = 0, start_rows = 0;
   for (const auto& vertex : s.walls.start_vertices) {
     start_columns = std::max(start_columns, vertex[0]);
     start_rows = std::max(start_rows, vertex[1]);
   }
-  require(s.walls.columns >= start_columns && s.walls.rows >= start_rows,
-          "walls.columns and walls.rows must reach the start holds (at least 3 tiles each)");
-  require(s.walls.tile_width > 0 && s.walls.tile_height > 0, "walls tile sizes must be positive");
-  require(grid.tile_width > 0 && grid.tile_height > 0, "grid tile sizes must be positive");
-  const double state_codes = 4.0 * std::pow(grid.tile_count() + 1.0, 3.0);
-  require(state_codes < 4294967296.0, "the grid has too many tiles for 32-bit agent-state codes");
-  require(s.walls.hold_radius > 0, "walls.hold_radius must be positive");
+  require(s.walls.columns >= start_columns, "wall.columns", "must reach the start holds (at least 3 tiles)");
+  require(s.walls.rows >= start_rows, "wall.rows", "must reach the start holds (at least 3 tiles)");
+  require(s.walls.tile_width > 0, "wall.tile_width", "must be positive");
+  require(s.walls.tile_height > 0, "wall.tile_height", "must be positive");
+  require(s.walls.sigma >= 0, "wall.sigma", "must be 0 or positive");
+  require(s.walls.hold_radius > 0, "wall.hold_radius", "must be positive");
   const IkSettings& ik = s.learning.climbing.reachability.ik;
-  require(ik.paper.step_size > 0 && ik.time_step_s > 0 && ik.paper.timeout_s > 0,
-          "ik.alpha, ik.time_step and ik.timeout must be positive");
+  require(ik.paper.step_size > 0, "ik.alpha", "must be positive");
+  require(ik.time_step_s > 0, "ik.time_step", "must be positive");
+  require(ik.paper.timeout_s > 0, "ik.timeout", "must be positive");
+  require(ik.fast.max_iterations > 0, "ik.fast_max_iterations", "must be positive");
+  require(ik.fast.stall_relative_decrease >= 0, "ik.fast_stall_decrease", "must be 0 or positive");
+  require(ik.fast.stall_iterations > 0, "ik.fast_stall_iterations", "must be positive");
+  require(ik.fast.aim_fraction >= 0 && ik.fast.aim_fraction < 1, "ik.fast_aim", "must be in [0, 1)");
+  require(ik.tolerances.grasp_radius > 0, "ik.grasp_radius", "must be positive");
+  require(ik.tolerances.root_radius > 0, "ik.root_tolerance", "must be positive");
+  require(s.learning.climbing.filter.max_span_m > 0, "filter.max_span", "must be positive");
 }
 
-std::string config_to_toml(ExperimentConfig& config) {
+std::string toml_quoted(const std::string& value) {
+  std::string out = "\"";
+  for (const char ch : value) {
+    if (ch == '"' || ch == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned char>(ch));
+    } else {
+      out += ch;
+    }
+  }
+  return out + "\"";
+}
+
+std::string config_to_toml(ExperimentConfig& config, const ParameterSet& accepted) {
   std::ostringstream out;
   out << "# crux effective configuration: every parameter of this run (docs/OUTPUTS.md)\n";
   std::string section;
   for (const ConfigField& field : config_fields(config)) {
+    if (!accepted.accepts(field.key)) continue;
+    std::string value;
+    std::visit(
+        [&](auto* target) {
+          using T = std::remove_pointer_t<decltype(target)>;
+          const auto seed_text = [](std::uint64_t seed) {
+            return seed > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())
+                       ? fmt::format("\"{}\"", seed)
+                       : fmt::format("{}", seed);
+          };
+          if constexpr (std::is_same_v<T, double>) {
+            value = toml_double(*target);
+          } else if constexpr (std::is_same_v<T, bool>) {
+            value = *target ? "true" : "false";
+          } else if constexpr (std::is_same_v<T, std::string>) {
+            if (target->empty()) return;
+            value = toml_quoted(is_file_key(field.key)
+                                    ? std::filesystem::absolute(*target).lexically_normal().string()
+                                    : *target);
+          } else if constexpr (std::is_same_v<T, std::uint64_t>) {
+            value = seed_text(*target);
+          } else if constexpr (std::is_same_v<T, std::optional<std::uint64_t>>) {
+            if (*target) value = seed_text(**target);
+          } else if constexpr (std::is_same_v<T, std::optional<int>>) {
+            if (*target) value = fmt::format("{}", **target);
+          } else {
+            value = fmt::format("{}", *target);
+          }
+        },
+        field.target);
+    if (value.empty()) continue;
     const std::string field_section = field.key.substr(0, field.key.find('.'));
     if (field_section != section) {
       out << (section.empty() ? "" : "\n") << '[' << field_section << "]\n";
       section = field_section;
     }
-    out << field.key.substr(field.key.find('.') + 1) << " = ";
-    std::visit(
-        [&](auto* target) {
-          using T = std::remove_pointer_t<decltype(target)>;
-          if constexpr (std::is_same_v<T, double>) {
-            out << toml_double(*target);
-          } else if constexpr (std::is_same_v<T, bool>) {
-            out << (*target ? "true" : "false");
-          } else if constexpr (std::is_same_v<T, std::string>) {
-            out << toml_string(*target);
-          } else if constexpr (std::is_same_v<T, std::uint64_t>) {
-            if (*target > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
-              out << '"' << *target << '"';
-            } else {
-              out << *target;
-            }
-          } else {
-            out << *target;
-          }
-        },
-        field.target);
-    out << "  # " << field.help << '\n';
+    out << field.key.substr(field.key.find('.') + 1) << " = " << value << "  # " << field.help << '\n';
   }
   return out.str();
 }

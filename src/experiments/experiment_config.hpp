@@ -1,9 +1,13 @@
 #pragma once
-// Every parameter of a learning experiment, settable by command-line flag or by TOML
-// config file (flags win), and written back as the effective config.toml. One table of
-// fields serves the flags, the reader and the writer.
+// Every parameter of a crux command, settable by command-line flag or by TOML config
+// file (flags win), and written back as the effective config.toml. One table of fields
+// serves the flags, the reader and the writer: the key "section.name" is the flag
+// "--section-name" ("--name" for the section experiment), underscores becoming dashes.
+// A command takes a subset of the keys (ParameterSet); any other is refused.
 
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -14,19 +18,31 @@ namespace crux {
 
 struct ExperimentConfig {
   ExperimentSettings settings;
-  // N walls with one seed each, the paper's design; 0: walls and seeds_per_wall apply.
-  // finalize_config turns it into walls = N, seeds_per_wall = 1 and clears it.
-  int runs = 0;
+  std::string urdf;    // empty: the default body model
+  std::string q_grid;  // transfer: the Q_grid learnt by a training run
+  std::string wall_file;
+  std::optional<std::uint64_t> wall_seed;
+  std::string wall_name;  // wall generate: the name stored in the file
+  int wall_count = 20;    // filter-stats: random walls counted
+  // N walls with one seed each, the paper's design, when given: finalize_config turns it
+  // into walls = N, seeds_per_wall = 1 and clears it.
+  std::optional<int> runs;
+  // Table I's beginning window; 0: the paper's 2000 iterations, or all of them when a
+  // run is shorter. finalize_config writes the value used back here.
+  int beginning = 0;
   std::string solver = "fast";
   std::string planner = planner_name(Planner::Uniform);
   std::string reading = reading_name(FilterParameters{}.feet_above_hands);
+  // The [provenance] table of a config file read back (key -> value), to be checked
+  // against the inputs of the replay.
+  std::map<std::string, std::string> recorded_provenance;
 };
 
-using ConfigTarget = std::variant<double*, int*, std::uint64_t*, bool*, std::string*>;
+using ConfigTarget =
+    std::variant<double*, int*, std::optional<int>*, std::uint64_t*, std::optional<std::uint64_t>*, bool*, std::string*>;
 
 struct ConfigField {
-  std::string key;   // TOML "section.name"
-  std::string flag;  // command-line "--name"
+  std::string key;  // TOML "section.name"
   std::string help;
   ConfigTarget target;
 };
@@ -34,13 +50,35 @@ struct ConfigField {
 // The fields of `config`, in a fixed order (the same for every config object).
 std::vector<ConfigField> config_fields(ExperimentConfig& config);
 
-// Applies a TOML file over `config`. Throws InputError(path, problem) for syntax errors
-// (with the line), unknown keys, and values of the wrong type or range.
-void apply_config_file(const std::string& path, ExperimentConfig& config);
+// "--section-name" for "section.name", "--name" for "experiment.name".
+std::string flag_for_key(const std::string& key);
 
-// Parses the textual choices into the settings and checks ranges; InputError on errors.
+// The keys a command takes: those equal to, or in a section named by, an entry of
+// `include` ("ik" takes every ik.* key, "experiment.seed" that key), minus `exclude`.
+struct ParameterSet {
+  std::vector<std::string> include;
+  std::vector<std::string> exclude;
+  bool accepts(const std::string& key) const;
+};
+
+// Where each key of a config file was set: key -> line.
+using ConfigLines = std::map<std::string, int>;
+
+// Applies a TOML file over `config`. Throws InputError(path, problem) for syntax errors
+// (with the line), keys this command does not take (`command` names it), and values of
+// the wrong type. The [provenance] table goes to config.recorded_provenance.
+ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config, const ParameterSet& accepted,
+                              const std::string& command);
+
+// Parses the textual choices into the settings and checks ranges. Throws
+// InputError(key, problem), `key` being the config key at fault ("experiment.runs").
 void finalize_config(ExperimentConfig& config);
 
-std::string config_to_toml(ExperimentConfig& config);
+// The accepted keys of `config` as TOML, sections in table order; unset optional values
+// and empty file names are left out.
+std::string config_to_toml(ExperimentConfig& config, const ParameterSet& accepted);
+
+// `value` as a TOML basic string (quotes, backslashes and control characters escaped).
+std::string toml_quoted(const std::string& value);
 
 }  // namespace crux

@@ -44,17 +44,22 @@ TEST(CliLearning, TrainThenTransferFromItsQGrid) {
   const fs::path train = scratch("train"), transfer = scratch("transfer");
   const auto trained = run_crux("train --wall-seed 3 --iterations 300 -o " + train.string());
   ASSERT_EQ(trained.exit_code, 0) << trained.err;
-  const auto transferred = run_crux("transfer --qgrid " + (train / "q_grid.bin").string() +
+  const auto transferred = run_crux("transfer --q-grid " + (train / "q_grid.bin").string() +
                                     " --wall-seed 4 --iterations 300 -o " + transfer.string());
   ASSERT_EQ(transferred.exit_code, 0) << transferred.err;
   std::ifstream in(transfer / "summary.json");
-  EXPECT_FALSE(nlohmann::json::parse(in)["transferred_q_grid"].is_null());
+  const auto summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["kind"], "run");
+  EXPECT_EQ(summary["provenance"]["q_grid"], fs::absolute(train / "q_grid.bin").lexically_normal().string());
+  EXPECT_EQ(summary["provenance"]["q_grid_sha256"].get<std::string>().size(), 64u);
+  EXPECT_EQ(summary["provenance"]["wall_seed"], 4);
+  EXPECT_EQ(summary["episode_lengths"]["transfer"].size(), 1u);
 }
 
 TEST(CliLearning, BadQGridIsOneLineExit2AndWritesNothing) {
   const auto bad = testing::write_temporary("cli_bad_qgrid.bin", "CRUXQTAB\x01");
   const fs::path out = scratch("never");
-  const auto outcome = run_crux("transfer --qgrid " + bad.string() + " --wall-seed 4 -o " + out.string());
+  const auto outcome = run_crux("transfer --q-grid " + bad.string() + " --wall-seed 4 -o " + out.string());
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
   EXPECT_FALSE(fs::exists(out));
@@ -82,7 +87,131 @@ TEST(CliLearning, PlanReportsItsLength) {
 TEST(CliLearning, MissingWallIsExplained) {
   const auto outcome = run_crux("plan");
   EXPECT_EQ(outcome.exit_code, 2);
-  EXPECT_NE(outcome.err.find("--wall"), std::string::npos);
+  EXPECT_NE(outcome.err.find("--wall-file"), std::string::npos);
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Every file of `first` has a twin in `second` with the same bytes; summary.json apart
+// from its timing.
+void expect_same_folder(const fs::path& first, const fs::path& second) {
+  int compared = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(first)) {
+    if (!entry.is_regular_file()) continue;
+    const fs::path twin = second / fs::relative(entry.path(), first);
+    ASSERT_TRUE(fs::exists(twin)) << twin;
+    if (entry.path().filename() == "summary.json") {
+      auto a = nlohmann::json::parse(read_text(entry.path())), b = nlohmann::json::parse(read_text(twin));
+      a.erase("seconds");
+      b.erase("seconds");
+      EXPECT_EQ(a, b) << twin;
+    } else {
+      EXPECT_EQ(read_text(entry.path()), read_text(twin)) << twin;
+    }
+    ++compared;
+  }
+  EXPECT_GE(compared, 7);
+}
+
+TEST(CliLearning, TrainAndTransferReplayFromTheirOwnConfig) {
+  const fs::path wall = scratch("replay_wall.json");
+  ASSERT_EQ(run_crux("wall generate --wall-seed 6 -o " + wall.string()).exit_code, 0);
+  const fs::path train = scratch("replay_train"), train_again = scratch("replay_train_again");
+  ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 200 --seed 4 --learning-epsilon 0.2 -o " + train.string()).exit_code, 0);
+  const auto replayed = run_crux("train --config " + (train / "config.toml").string() + " -o " + train_again.string());
+  ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
+  expect_same_folder(train, train_again);
+  const fs::path transfer = scratch("replay_transfer"), transfer_again = scratch("replay_transfer_again");
+  ASSERT_EQ(run_crux("transfer --q-grid " + (train / "q_grid.bin").string() + " --wall-file " + wall.string() +
+                     " --iterations 200 -o " + transfer.string())
+                .exit_code,
+            0);
+  const std::string config = read_text(transfer / "config.toml");
+  EXPECT_NE(config.find("wall_sha256 = "), std::string::npos);
+  EXPECT_NE(config.find("q_grid_sha256 = "), std::string::npos);
+  EXPECT_NE(config.find("urdf_sha256 = "), std::string::npos);
+  EXPECT_NE(config.find("crux_version = "), std::string::npos);
+  const auto again = run_crux("transfer --config " + (transfer / "config.toml").string() + " -o " + transfer_again.string());
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  expect_same_folder(transfer, transfer_again);
+  // A replay whose input changed since is refused, naming the config and the digest.
+  std::ofstream(wall, std::ios::app) << "\n";
+  const auto changed = run_crux("transfer --config " + (transfer / "config.toml").string() + " -o " +
+                                scratch("replay_changed").string());
+  EXPECT_EQ(changed.exit_code, 2);
+  EXPECT_NE(changed.err.find("provenance.wall_sha256"), std::string::npos) << changed.err;
+  EXPECT_EQ(testing::count_lines(changed.err), 1) << changed.err;
+}
+
+TEST(CliLearning, PaperReplaysFromItsOwnConfig) {
+  const fs::path first = scratch("replay_paper"), second = scratch("replay_paper_again");
+  ASSERT_EQ(run_crux("paper --walls 1 --seeds-per-wall 2 --iterations 150 --plan false --seed 8 -o " + first.string())
+                .exit_code,
+            0);
+  const auto replayed = run_crux("paper --config " + (first / "config.toml").string() + " -o " + second.string());
+  ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
+  expect_same_folder(first, second);
+}
+
+TEST(CliLearning, EachCommandRefusesTheFlagsItDoesNotUse) {
+  for (const std::string& command : {"plan --wall-seed 3 --iterations 5", "plan --wall-seed 3 --runs 100",
+                                     "train --wall-seed 3 --plan 0", "train --wall-seed 3 --runs 3",
+                                     "train --wall-seed 3 --threads 2", "paper --wall-seed 3", "ik-compare --ik-solver fast",
+                                     "model --iterations 3"}) {
+    const auto outcome = run_crux(command);
+    EXPECT_EQ(outcome.exit_code, 2) << command;
+    EXPECT_NE(outcome.err.find("unknown option --"), std::string::npos) << command << ": " << outcome.err;
+    EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
+  }
+  const auto typo = run_crux("train --wall-seed 3 --iteration 5");
+  EXPECT_NE(typo.err.find("did you mean '--iterations'?"), std::string::npos) << typo.err;
+  const auto config = testing::write_temporary("cli_plan_config.toml", "[experiment]\niterations = 5\n");
+  const auto from_file = run_crux("plan --wall-seed 3 --config " + config.string());
+  EXPECT_EQ(from_file.exit_code, 2);
+  EXPECT_NE(from_file.err.find(config.string() + ": line 2: crux plan does not take experiment.iterations"),
+            std::string::npos)
+      << from_file.err;
+}
+
+TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
+  const auto runs = run_crux("paper --runs 0");
+  EXPECT_EQ(runs.exit_code, 2);
+  EXPECT_EQ(runs.err, "crux: --runs: must be positive\n");
+  const auto beginning = run_crux("train --wall-seed 3 --iterations 100 --beginning 200");
+  EXPECT_EQ(beginning.exit_code, 2);
+  EXPECT_EQ(beginning.err.rfind("crux: --beginning: must not exceed", 0), 0u) << beginning.err;
+  const auto config = testing::write_temporary("cli_bad_gamma.toml", "[learning]\n\ngamma = 1.5\n");
+  const auto from_file = run_crux("train --wall-seed 3 --config " + config.string());
+  EXPECT_EQ(from_file.exit_code, 2);
+  EXPECT_EQ(from_file.err, "crux: " + config.string() + ": line 3: learning.gamma: must be in [0, 1)\n");
+  const auto seed = run_crux("train --wall-seed -1");
+  EXPECT_EQ(seed.exit_code, 2);
+  EXPECT_NE(seed.err.find("--wall-seed"), std::string::npos) << seed.err;
+  const auto unknown = run_crux("trian");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("unknown command 'trian' (did you mean 'train'?)"), std::string::npos) << unknown.err;
+  const auto nested = run_crux("wall gen");
+  EXPECT_NE(nested.err.find("(did you mean 'wall generate'?)"), std::string::npos) << nested.err;
+}
+
+TEST(CliLearning, EveryCommandPrintsOneJsonDocument) {
+  const fs::path wall = scratch("json_wall.json"), train = scratch("json_train");
+  const std::vector<std::string> commands{
+      "model", "demo", "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0", "ik-compare --queries 5",
+      "wall generate --wall-seed 5 -o " + wall.string(), "wall show --wall-file " + wall.string(),
+      "filter-stats --wall-count 1", "plan --wall-file " + wall.string(),
+      "train --wall-file " + wall.string() + " --iterations 100 -o " + train.string(),
+      "transfer --q-grid " + (train / "q_grid.bin").string() + " --wall-seed 2 --iterations 100 -o " +
+          scratch("json_transfer").string(),
+      "paper --walls 1 --iterations 100 --plan false -o " + scratch("json_paper").string()};
+  for (const std::string& command : commands) {
+    const auto outcome = run_crux(command + " --json");
+    ASSERT_EQ(outcome.exit_code, 0) << command << ": " << outcome.err;
+    EXPECT_NO_THROW(static_cast<void>(nlohmann::json::parse(outcome.out))) << command << ": " << outcome.out;
+  }
 }
 
 }  // namespace

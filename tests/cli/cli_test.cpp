@@ -42,7 +42,7 @@ TEST(Cli, BadModelIsOneLineAndExitCode2) {
 
 TEST(Cli, BadArgumentsExitWithCode2) {
   for (const std::string command : {"ik --rh 0.3 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0", "ik --rh 0.3,1.5",
-                                    "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --solver kdl", "frobnicate"}) {
+                                    "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --ik-solver kdl", "frobnicate"}) {
     const testing::Outcome run = testing::run_crux(command);
     EXPECT_EQ(run.exit_code, 2) << command;
     EXPECT_EQ(testing::count_lines(run.err), 1) << run.err;
@@ -51,7 +51,7 @@ TEST(Cli, BadArgumentsExitWithCode2) {
 
 TEST(Cli, IkReportsTheIssuesKeysForBothSolvers) {
   for (const std::string solver : {"paper", "fast"}) {
-    const testing::Outcome run = testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --json --solver " + solver);
+    const testing::Outcome run = testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --json --ik-solver " + solver);
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto json = nlohmann::json::parse(run.out);
     EXPECT_EQ(json["solver"], solver);
@@ -63,7 +63,7 @@ TEST(Cli, IkReportsTheIssuesKeysForBothSolvers) {
 }
 
 TEST(Cli, IkOnUnreachableHoldsSaysSo) {
-  const testing::Outcome run = testing::run_crux("ik --rh 0.3,4.5 --lh 0.9,4.5 --rf 0.3,0 --lf 0.9,0 --json --solver fast");
+  const testing::Outcome run = testing::run_crux("ik --rh 0.3,4.5 --lh 0.9,4.5 --rf 0.3,0 --lf 0.9,0 --json --ik-solver fast");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_FALSE(nlohmann::json::parse(run.out)["reached"].get<bool>());
 }
@@ -84,7 +84,7 @@ TEST(Cli, IkPathIsWrittenAsCsv) {
   const auto out = std::filesystem::temp_directory_path() / "crux-tests" / "path.csv";
   std::filesystem::remove(out);
   const testing::Outcome run =
-      testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --solver paper --path-every 5 --path-out " + out.string());
+      testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --ik-solver paper --path-every 5 --path-out " + out.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   ASSERT_TRUE(std::filesystem::exists(out));
   EXPECT_GT(std::filesystem::file_size(out), 100u);

@@ -23,10 +23,10 @@ std::filesystem::path scratch(const std::string& name) {
 
 TEST(CliWall, GenerateChecksTheStartAndShowReadsItBack) {
   const auto file = scratch("wall.json");
-  const auto generated = run_crux("wall generate --seed 4 -o " + file.string());
+  const auto generated = run_crux("wall generate --wall-seed 4 -o " + file.string());
   ASSERT_EQ(generated.exit_code, 0) << generated.err;
   EXPECT_NE(generated.out.find("reachable"), std::string::npos);
-  const auto shown = run_crux("wall show " + file.string() + " --json");
+  const auto shown = run_crux("wall show --wall-file " + file.string() + " --json");
   ASSERT_EQ(shown.exit_code, 0) << shown.err;
   const auto json = nlohmann::json::parse(shown.out);
   EXPECT_EQ(json["holds"], 45);
@@ -38,7 +38,7 @@ TEST(CliWall, GenerateChecksTheStartAndShowReadsItBack) {
 TEST(CliWall, UnreachableStartIsReportedWithExitCode3) {
   const auto file = scratch("far.json");
   // Rows of 1.5 m: the hands' start row is 4.5 m above the feet.
-  const auto outcome = run_crux("wall generate --seed 4 --tile-height 1.5 -o " + file.string());
+  const auto outcome = run_crux("wall generate --wall-seed 4 --wall-tile-height 1.5 -o " + file.string());
   EXPECT_EQ(outcome.exit_code, 3);
   EXPECT_NE(outcome.err.find("not reachable"), std::string::npos);
   EXPECT_EQ(testing::count_lines(outcome.err), 1);
@@ -46,9 +46,9 @@ TEST(CliWall, UnreachableStartIsReportedWithExitCode3) {
 
 TEST(CliWall, ShowDrawsTheGridAsSvg) {
   const auto file = scratch("grid.json");
-  ASSERT_EQ(run_crux("wall generate --seed 2 -o " + file.string()).exit_code, 0);
+  ASSERT_EQ(run_crux("wall generate --wall-seed 2 -o " + file.string()).exit_code, 0);
   const auto svg = scratch("grid.svg");
-  const auto outcome = run_crux("wall show " + file.string() + " --grid right_hand --at 0.3,1.5 --json --svg " + svg.string());
+  const auto outcome = run_crux("wall show --wall-file " + file.string() + " --limb right_hand --at 0.3,1.5 --json --svg " + svg.string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const auto json = nlohmann::json::parse(outcome.out);
   EXPECT_EQ(json["grid"]["limb"], "right_hand");
@@ -60,8 +60,8 @@ TEST(CliWall, ShowDrawsTheGridAsSvg) {
 
 TEST(CliWall, BadWallFileIsOneLineAndExitCode2) {
   const auto file = testing::write_temporary("cli_bad_wall.json", "{\"format\": \"crux-wall\", \"version\": 1,\n  \"holds\": [}");
-  for (const std::string& command : {"wall show " + file.string(), std::string("wall show /nonexistent/wall.json"),
-                                     "wall show " + file.string() + " --grid elbow"}) {
+  for (const std::string& command : {"wall show --wall-file " + file.string(), std::string("wall show --wall-file /nonexistent/wall.json"),
+                                     "wall show --wall-file " + file.string() + " --limb elbow"}) {
     const auto outcome = run_crux(command);
     EXPECT_EQ(outcome.exit_code, 2) << command;
     EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
@@ -69,7 +69,7 @@ TEST(CliWall, BadWallFileIsOneLineAndExitCode2) {
 }
 
 TEST(CliFilterStats, ReportsPassSharesBesideThePapers) {
-  const auto outcome = run_crux("filter-stats --walls 2 --seed 3 --json");
+  const auto outcome = run_crux("filter-stats --wall-count 2 --wall-seed 3 --json");
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const auto json = nlohmann::json::parse(outcome.out);
   EXPECT_EQ(json["configurations4"], 2u * 45 * 44 * 43 * 42);
@@ -77,6 +77,19 @@ TEST(CliFilterStats, ReportsPassSharesBesideThePapers) {
   EXPECT_GT(json["pass3"].get<double>(), json["pass4"].get<double>());
   EXPECT_EQ(json["readings"].size(), 4u);
   EXPECT_DOUBLE_EQ(json["paper_pass3"].get<double>(), 0.073);
+}
+
+TEST(CliWall, GenerateAndShowCheckTheStartWithTheLearningsIkSettings) {
+  const auto file = scratch("strict.json");
+  // A grasp sphere of 1 mm: the fast solver stops on its stall rule before reaching it.
+  const auto strict = run_crux("wall generate --wall-seed 4 --ik-grasp-radius 0.001 --ik-fast-max-iterations 3 --json -o " +
+                               file.string());
+  EXPECT_EQ(strict.exit_code, 3) << strict.err;
+  const auto json = nlohmann::json::parse(strict.out);
+  EXPECT_FALSE(json["start_reachable"].get<bool>());
+  const auto shown = run_crux("wall show --wall-file " + file.string() + " --json");
+  ASSERT_EQ(shown.exit_code, 0) << shown.err;
+  EXPECT_TRUE(nlohmann::json::parse(shown.out)["start_reachable"].get<bool>()) << "the default settings reach it";
 }
 
 }  // namespace

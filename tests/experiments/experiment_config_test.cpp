@@ -2,18 +2,24 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "common/input_error.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
 namespace {
 
+const ParameterSet kEverything{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"}, {}};
+
 TEST(ExperimentConfig, FileSetsValuesAndTheWrittenConfigReadsBackTheSame) {
-  const auto path = testing::write_temporary("config.toml",
-                                             "[experiment]\nwalls = 3\nseeds_per_wall = 2\nseed = 12\n[learning]\nepsilon = 0.2\n"
-                                             "[ik]\nsolver = \"paper\"\n[walls]\nfinish_height = 2\n");
+  const auto path = testing::write_temporary(
+      "config.toml",
+      "[experiment]\nwalls = 3\nseeds_per_wall = 2\nseed = 12\n[learning]\nepsilon = 0.2\n"
+      "[ik]\nsolver = \"paper\"\n[wall]\nfinish_height = 2\nseed = 7\n");
   ExperimentConfig config;
-  apply_config_file(path.string(), config);
+  const ConfigLines lines = apply_config_file(path.string(), config, kEverything, "test");
+  EXPECT_EQ(lines.at("learning.epsilon"), 6);
   finalize_config(config);
   EXPECT_EQ(config.settings.wall_pairs, 3);
   EXPECT_EQ(config.settings.runs(), 6);
@@ -21,11 +27,107 @@ TEST(ExperimentConfig, FileSetsValuesAndTheWrittenConfigReadsBackTheSame) {
   EXPECT_DOUBLE_EQ(config.settings.learning.dyna.epsilon, 0.2);
   EXPECT_EQ(config.settings.learning.climbing.reachability.ik.solver, IkSolverKind::Paper);
   EXPECT_DOUBLE_EQ(config.settings.walls.finish_height, 2.0);
-  const std::string written = config_to_toml(config);
+  EXPECT_EQ(config.wall_seed, 7u);
+  const std::string written = config_to_toml(config, kEverything);
   const auto again = testing::write_temporary("config_again.toml", written);
   ExperimentConfig reread;
-  apply_config_file(again.string(), reread);
-  EXPECT_EQ(config_to_toml(reread), written);
+  apply_config_file(again.string(), reread, kEverything, "test");
+  finalize_config(reread);
+  EXPECT_EQ(config_to_toml(reread, kEverything), written);
+}
+
+TEST(ExperimentConfig, EveryKeyHasItsOwnFlagMirroringIt) {
+  ExperimentConfig config;
+  std::set<std::string> flags;
+  for (const ConfigField& field : config_fields(config)) {
+    const std::string flag = flag_for_key(field.key);
+    EXPECT_TRUE(flags.insert(flag).second) << "two keys share " << flag;
+    const std::string section = field.key.substr(0, field.key.find('.'));
+    std::string name = field.key.substr(field.key.find('.') + 1);
+    std::replace(name.begin(), name.end(), '_', '-');
+    EXPECT_EQ(flag, section == "experiment" ? "--" + name : "--" + section + "-" + name) << field.key;
+  }
+  EXPECT_EQ(flag_for_key("ik.time_step"), "--ik-time-step");
+  EXPECT_EQ(flag_for_key("experiment.seeds_per_wall"), "--seeds-per-wall");
+  EXPECT_EQ(flag_for_key("wall.seed"), "--wall-seed");
+}
+
+TEST(ExperimentConfig, AParameterSetTakesSectionsAndKeysMinusExclusions) {
+  const ParameterSet set{{"ik", "experiment.seed"}, {"ik.solver"}};
+  EXPECT_TRUE(set.accepts("ik.alpha"));
+  EXPECT_TRUE(set.accepts("experiment.seed"));
+  EXPECT_FALSE(set.accepts("ik.solver"));
+  EXPECT_FALSE(set.accepts("experiment.walls"));
+  EXPECT_FALSE(set.accepts("grid.rows"));
+}
+
+TEST(ExperimentConfig, AKeyTheCommandDoesNotTakeIsRefusedWithItsLine) {
+  const auto path = testing::write_temporary("config_foreign_key.toml", "[ik]\nalpha = 0.3\n[experiment]\nwalls = 2\n");
+  ExperimentConfig config;
+  try {
+    apply_config_file(path.string(), config, ParameterSet{{"ik"}, {}}, "ik");
+    FAIL() << "accepted experiment.walls for crux ik";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path.string() + ": line 4: crux ik does not take experiment.walls");
+  }
+}
+
+TEST(ExperimentConfig, TheWrittenConfigHoldsOnlyTheCommandsKeysAndSetValues) {
+  ExperimentConfig config;
+  const std::string text = config_to_toml(config, ParameterSet{{"wall"}, {}});
+  EXPECT_EQ(text.find("seed ="), std::string::npos) << "an unset wall seed is left out";
+  EXPECT_EQ(text.find("file ="), std::string::npos) << "an empty file name is left out";
+  EXPECT_EQ(text.find("[ik]"), std::string::npos);
+  config.wall_file = "walls/w.json";
+  const std::string with_file = config_to_toml(config, ParameterSet{{"wall"}, {}});
+  EXPECT_NE(with_file.find("file = \"" + std::filesystem::absolute("walls/w.json").string() + "\""), std::string::npos)
+      << "file names are written absolute, to replay from anywhere";
+}
+
+TEST(ExperimentConfig, TheProvenanceTableIsKeptForTheReplaysCheck) {
+  const auto path = testing::write_temporary("config_provenance.toml",
+                                             "[ik]\nalpha = 0.3\n[provenance]\nurdf_sha256 = \"abc\"\n");
+  ExperimentConfig config;
+  apply_config_file(path.string(), config, ParameterSet{{"ik"}, {}}, "ik");
+  EXPECT_EQ(config.recorded_provenance.at("urdf_sha256"), "abc");
+}
+
+TEST(ExperimentConfig, RunsSetsWallsWithOneSeedAndMustBePositive) {
+  ExperimentConfig config;
+  config.runs = 4;
+  config.settings.seeds_per_wall = 3;
+  finalize_config(config);
+  EXPECT_EQ(config.settings.wall_pairs, 4);
+  EXPECT_EQ(config.settings.seeds_per_wall, 1);
+  EXPECT_FALSE(config.runs) << "cleared: the written config says walls and seeds_per_wall";
+  ExperimentConfig zero;
+  zero.runs = 0;
+  try {
+    finalize_config(zero);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "experiment.runs");
+  }
+}
+
+TEST(ExperimentConfig, TheBeginningDefaultsTo2000OrTheRunAndMayNotExceedIt) {
+  ExperimentConfig paper;
+  finalize_config(paper);
+  EXPECT_EQ(paper.settings.analysis.beginning, 2000);
+  EXPECT_EQ(paper.beginning, 2000) << "written back explicitly";
+  ExperimentConfig short_run;
+  short_run.settings.learning.iterations = 500;
+  finalize_config(short_run);
+  EXPECT_EQ(short_run.settings.analysis.beginning, 500);
+  ExperimentConfig too_long;
+  too_long.settings.learning.iterations = 500;
+  too_long.beginning = 501;
+  try {
+    finalize_config(too_long);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "experiment.beginning");
+  }
 }
 
 struct BadConfig {
@@ -40,7 +142,7 @@ TEST_P(BadConfigFile, IsOneClearInputError) {
   const auto path = testing::write_temporary(std::string("bad_") + GetParam().name + ".toml", GetParam().text);
   try {
     ExperimentConfig config;
-    apply_config_file(path.string(), config);
+    apply_config_file(path.string(), config, kEverything, "test");
     finalize_config(config);
     FAIL() << "accepted a bad config";
   } catch (const InputError& e) {
@@ -54,46 +156,54 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, BadConfigFile,
     ::testing::Values(BadConfig{"syntax", "[experiment]\nwalls = = 3\n", "line 2"},
                       BadConfig{"unknown_key", "[learning]\nalpah = 0.2\n", "unknown key learning.alpah"},
+                      BadConfig{"old_section", "[walls]\nsigma = 0.1\n", "unknown key walls.sigma"},
                       BadConfig{"wrong_type", "[experiment]\nwalls = \"six\"\n", "experiment.walls must be an integer"},
                       BadConfig{"too_many_runs", "[experiment]\nwalls = 2000000\nseeds_per_wall = 2000000\n",
                                 "at most 1000000 runs"},
                       BadConfig{"not_a_section", "walls = 3\n", "must be a [section]"},
                       BadConfig{"bad_solver", "[ik]\nsolver = \"kdl\"\n", "unknown solver 'kdl'"},
                       BadConfig{"bad_range", "[learning]\ngamma = 1.5\n", "learning.gamma"},
-                      BadConfig{"negative_seed", "[experiment]\nseed = -4\n", "non-negative"}),
+                      BadConfig{"negative_sigma", "[wall]\nsigma = -1.0\n", "wall.sigma"},
+                      BadConfig{"negative_grasp", "[ik]\ngrasp_radius = -0.04\n", "ik.grasp_radius"},
+                      BadConfig{"negative_seed", "[experiment]\nseed = -4\n", "an integer from 0"},
+                      BadConfig{"signed_seed_text", "[wall]\nseed = \"-4\"\n", "an integer from 0"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(ExperimentConfig, MissingFileIsAnInputError) {
   ExperimentConfig config;
-  EXPECT_THROW(apply_config_file("/nonexistent/crux.toml", config), InputError);
+  EXPECT_THROW(apply_config_file("/nonexistent/crux.toml", config, kEverything, "test"), InputError);
 }
-
-}  // namespace
-}  // namespace crux
-
-namespace crux {
-namespace {
 
 TEST(ExperimentConfig, SeedsBeyondTomlIntegersRoundTripAsStrings) {
   ExperimentConfig config;
   config.settings.seed = 18000000000000000000ULL;  // above 2^63
-  const auto path = testing::write_temporary("big_seed.toml", config_to_toml(config));
+  config.wall_seed = 18000000000000000001ULL;
+  const auto path = testing::write_temporary("big_seed.toml", config_to_toml(config, kEverything));
   ExperimentConfig reread;
-  apply_config_file(path.string(), reread);
+  apply_config_file(path.string(), reread, kEverything, "test");
   EXPECT_EQ(reread.settings.seed, 18000000000000000000ULL);
+  EXPECT_EQ(reread.wall_seed, 18000000000000000001ULL);
 }
 
-TEST(ExperimentConfig, RangesThatWouldBreakWallsOrCodesAreRefused) {
+TEST(ExperimentConfig, RangesThatWouldBreakWallsOrCodesAreRefusedNamingTheKey) {
+  const auto refused_key = [](ExperimentConfig config) {
+    try {
+      finalize_config(config);
+    } catch (const InputError& e) {
+      return e.source();
+    }
+    return std::string("accepted");
+  };
   ExperimentConfig small_wall;
   small_wall.settings.walls.rows = 2;  // the hands start on row 3
-  EXPECT_THROW(finalize_config(small_wall), InputError);
+  EXPECT_EQ(refused_key(small_wall), "wall.rows");
   ExperimentConfig huge_grid;
   huge_grid.settings.learning.climbing.grid.columns = 40;
   huge_grid.settings.learning.climbing.grid.rows = 40;  // 4 x 1601^3 codes overflow 32 bits
-  EXPECT_THROW(finalize_config(huge_grid), InputError);
+  EXPECT_EQ(refused_key(huge_grid), "grid.columns");
   ExperimentConfig bad_anchor;
   bad_anchor.settings.learning.climbing.grid.anchors[0] = {5, 4};
-  EXPECT_THROW(finalize_config(bad_anchor), InputError);
+  EXPECT_EQ(refused_key(bad_anchor), "grid.right_hand_anchor_column");
 }
 
 }  // namespace

@@ -85,4 +85,11 @@ std::filesystem::path write_temporary(const std::string& name, const std::string
   return path;
 }
 
+std::filesystem::path temporary_path(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "crux-tests";
+  std::filesystem::create_directories(dir);
+  std::filesystem::remove_all(dir / name);
+  return dir / name;
+}
+
 }  // namespace crux::testing

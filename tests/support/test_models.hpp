@@ -27,4 +27,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 // A fresh file under the test temporary directory holding `contents`.
 std::filesystem::path write_temporary(const std::string& name, const std::string& contents);
 
+// A path under the test temporary directory where nothing exists yet.
+std::filesystem::path temporary_path(const std::string& name);
+
 }  // namespace crux::testing

@@ -1,0 +1,97 @@
+#include "cli/parameter_binding.hpp"
+
+#include <fmt/format.h>
+
+#include "common/input_error.hpp"
+
+namespace crux::cli {
+
+namespace {
+
+// CLI11 reads "-1" as 2^64 - 1 and wraps overflows; a seed is written in digits only.
+const CLI::Validator kSeedDigits(
+    [](std::string& text) -> std::string {
+      const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+      if (digits && (text.size() < 20 || (text.size() == 20 && text <= "18446744073709551615"))) return {};
+      return fmt::format("'{}' is not an integer from 0 to 18446744073709551615", text);
+    },
+    "SEED");
+
+}  // namespace
+
+ParameterBinding::ParameterBinding(std::string command, ParameterSet accepted, ExperimentConfig defaults)
+    : command_(std::move(command)), accepted_(std::move(accepted)), defaults_(defaults), from_flags_(std::move(defaults)) {}
+
+void ParameterBinding::bind(CLI::App* command) {
+  command->add_option("--config", config_path_, "TOML config file, keys as in the config.toml crux writes (flags override it)");
+  for (const ConfigField& field : config_fields(from_flags_)) {
+    if (!accepted_.accepts(field.key)) continue;
+    std::visit(
+        [&](auto* target) {
+          using T = std::remove_pointer_t<decltype(target)>;
+          CLI::Option* option = command->add_option(flag_for_key(field.key), *target, field.help);
+          if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, std::optional<std::uint64_t>>) {
+            option->check(kSeedDigits);
+          }
+          if constexpr (!std::is_same_v<T, std::optional<std::uint64_t>> && !std::is_same_v<T, std::optional<int>>) {
+            if constexpr (std::is_same_v<T, std::string>) {
+              if (!target->empty()) option->capture_default_str();
+            } else {
+              option->capture_default_str();
+            }
+          }
+          options_.emplace_back(field.key, option);
+        },
+        field.target);
+  }
+  // A wall is a file or a seed.
+  if (CLI::Option* file = option("wall.file"); file != nullptr) {
+    if (CLI::Option* seed = option("wall.seed"); seed != nullptr) file->excludes(seed);
+  }
+}
+
+CLI::Option* ParameterBinding::option(const std::string& key) const {
+  for (const auto& [k, option] : options_) {
+    if (k == key) return option;
+  }
+  return nullptr;
+}
+
+std::string ParameterBinding::where(const std::string& key) const {
+  const CLI::Option* given = option(key);
+  if (given != nullptr && given->count() > 0) return flag_for_key(key);
+  if (const auto line = lines_.find(key); line != lines_.end()) {
+    return fmt::format("{}: line {}: {}", config_path_, line->second, key);
+  }
+  return given != nullptr ? flag_for_key(key) : key;
+}
+
+ExperimentConfig ParameterBinding::resolve() {
+  ExperimentConfig config = defaults_;
+  if (!config_path_.empty()) lines_ = apply_config_file(config_path_, config, accepted_, command_);
+  const auto flags = config_fields(from_flags_);
+  const auto fields = config_fields(config);
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const CLI::Option* given = option(fields[i].key);
+    if (given == nullptr || given->count() == 0) continue;
+    std::visit(
+        [&](auto* destination) {
+          *destination = *std::get<std::remove_cvref_t<decltype(destination)>>(flags[i].target);
+        },
+        fields[i].target);
+  }
+  // A wall flag replaces the config file's wall of the other kind.
+  if (const CLI::Option* seed = option("wall.seed"); seed != nullptr && seed->count() > 0) config.wall_file.clear();
+  if (const CLI::Option* file = option("wall.file"); file != nullptr && file->count() > 0) config.wall_seed.reset();
+  if (!config.wall_file.empty() && config.wall_seed) {
+    throw InputError(where("wall.seed"), "give a wall file or a wall seed, not both");
+  }
+  try {
+    finalize_config(config);
+  } catch (const InputError& e) {
+    throw InputError(where(e.source()), e.problem());
+  }
+  return config;
+}
+
+}  // namespace crux::cli

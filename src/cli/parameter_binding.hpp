@@ -1,0 +1,42 @@
+#pragma once
+// Binds a command's parameters (a ParameterSet of the config table) to flags and to
+// --config FILE. Flags given on the command line override the file, which overrides the
+// command's defaults. Every error names what the user typed: the flag, or the file, its
+// line and the key.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "experiments/experiment_config.hpp"
+
+namespace crux::cli {
+
+class ParameterBinding {
+ public:
+  ParameterBinding(std::string command, ParameterSet accepted, ExperimentConfig defaults = {});
+
+  void bind(CLI::App* command);
+  CLI::Option* option(const std::string& key) const;
+
+  // The effective parameters, finalized (finalize_config).
+  ExperimentConfig resolve();
+
+  const ParameterSet& accepted() const { return accepted_; }
+  const std::string& config_path() const { return config_path_; }
+  // How the user named `key`: its flag when given (or never set), else file:line:key.
+  std::string where(const std::string& key) const;
+
+ private:
+  std::string command_;
+  ParameterSet accepted_;
+  ExperimentConfig defaults_;
+  ExperimentConfig from_flags_;
+  std::string config_path_;
+  std::vector<std::pair<std::string, CLI::Option*>> options_;  // key, its flag
+  ConfigLines lines_;
+};
+
+}  // namespace crux::cli

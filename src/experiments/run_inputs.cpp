@@ -1,0 +1,35 @@
+#include "experiments/run_inputs.hpp"
+
+#include <fmt/format.h>
+
+#include "agent_space/agent_descriptor.hpp"
+#include "body/urdf_loader.hpp"
+#include "common/input_error.hpp"
+#include "learning/q_table_file.hpp"
+#include "wall/wall_file.hpp"
+
+namespace crux {
+
+BodyModel load_configured_body(const ExperimentConfig& config) {
+  return load_body_model(config.urdf.empty() ? default_body_model_path() : config.urdf);
+}
+
+Wall load_configured_wall(const ExperimentConfig& config) {
+  if (!config.wall_file.empty()) return load_wall(config.wall_file);
+  if (!config.wall_seed) throw InputError("wall.file", "give a wall: a file or a seed");
+  return generate_random_wall(*config.wall_seed, config.settings.walls);
+}
+
+QTable load_q_grid(const std::string& path, const GridParameters& grid) {
+  QTable q_grid = load_q_table(path, grid.tile_count());
+  // Codes beyond this grid's would be read as states of another shape.
+  q_grid.for_each_row([&](StateCode state, auto, auto) {
+    if (state >= agent_state_count(grid)) {
+      throw InputError(path, fmt::format("state code {} does not exist on a {} x {} grid", state, grid.columns,
+                                         grid.rows));
+    }
+  });
+  return q_grid;
+}
+
+}  // namespace crux

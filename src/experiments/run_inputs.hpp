@@ -1,0 +1,21 @@
+#pragma once
+// The inputs a configured command reads, checked the same way for every caller: the
+// body model, the wall (a file or a seed) and a transferred Q_grid.
+
+#include "experiments/experiment_config.hpp"
+#include "learning/q_table.hpp"
+
+namespace crux {
+
+// The configured URDF, or the default body model.
+BodyModel load_configured_body(const ExperimentConfig& config);
+
+// The wall of config.wall_file, or the random wall of config.wall_seed drawn with the
+// configured wall parameters. InputError("wall.file", ...) when neither is given.
+Wall load_configured_wall(const ExperimentConfig& config);
+
+// A Q_grid file for `grid`: InputError(path, ...) when its tile count or one of its
+// state codes does not belong to that grid.
+QTable load_q_grid(const std::string& path, const GridParameters& grid);
+
+}  // namespace crux

@@ -1,0 +1,30 @@
+#pragma once
+// Output folders (docs/OUTPUTS.md): every file written to a temporary name and renamed,
+// so that an interrupted run leaves no half-written file.
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "experiments/experiment_analysis.hpp"
+#include "experiments/experiment_config.hpp"
+#include "reports/provenance.hpp"
+
+namespace crux {
+
+// config.toml's text: the command's parameters, then the [provenance] table.
+std::string config_file_text(ExperimentConfig& config, const ParameterSet& accepted, const Provenance& provenance);
+
+// A `crux paper` folder: config.toml, walls/, runs/<condition>_<r>/, figures/ (the CSVs
+// of Figs. 2b, 3 and 4) and summary.json.
+void write_experiment_folder(const std::filesystem::path& directory, const ExperimentResult& result,
+                             const ExperimentSettings& settings, const BodyModel& model, const std::string& config_toml,
+                             const nlohmann::ordered_json& summary);
+
+// A `crux train` or `crux transfer` folder: the run's files, wall.json, config.toml and
+// summary.json. `result` holds the one run (single_run_result).
+void write_run_folder(const std::filesystem::path& directory, const ExperimentResult& result, const BodyModel& model,
+                      const std::string& config_toml, const nlohmann::ordered_json& summary);
+
+}  // namespace crux

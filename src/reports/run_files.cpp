@@ -1,0 +1,29 @@
+#include "reports/run_files.hpp"
+
+#include <fmt/format.h>
+
+#include "common/atomic_file.hpp"
+#include "learning/q_table_file.hpp"
+#include "reports/posture_csv.hpp"
+
+namespace crux {
+
+void write_run_files(const std::filesystem::path& directory, const RunResult& run, const BodyModel& model) {
+  make_output_directory(directory);
+  std::string iterations = "iteration,episode,regime,hold,success,root_rise_cm,reward\n";
+  for (std::size_t i = 0; i < run.iterations.size(); ++i) {
+    const IterationRecord& r = run.iterations[i];
+    iterations += fmt::format("{},{},{},{},{},{:.17g},{:.17g}\n", i + 1, r.episode, regime_name(r.regime), r.hold_id,
+                              r.success ? 1 : 0, 100.0 * r.root_rise_m, r.reward);
+  }
+  write_file_atomically(directory / "iterations.csv", iterations);
+  std::string episodes = "episode,length\n";
+  for (std::size_t e = 0; e < run.episode_lengths.size(); ++e) {
+    episodes += fmt::format("{},{}\n", e, run.episode_lengths[e]);
+  }
+  write_file_atomically(directory / "episodes.csv", episodes);
+  save_q_table((directory / "q_grid.bin").string(), run.q_grid);
+  write_file_atomically(directory / "climb.csv", posture_csv(model, run.last_climb, "step"));
+}
+
+}  // namespace crux

@@ -1,0 +1,109 @@
+#include "reports/text_report.hpp"
+
+#include <fmt/format.h>
+
+#include "reports/paper_reference.hpp"
+#include "reports/table_one_text.hpp"
+
+namespace crux {
+
+namespace {
+
+std::string episode_text(const ExperimentResult& result, const ExperimentSettings& settings) {
+  const int total = settings.runs();
+  std::string text = "\nEpisode lengths (mean over runs):\n";
+  for (const Condition c : kConditions) {
+    const auto& cr = result.conditions[static_cast<int>(c)];
+    double episodes = 0, greedy = 0;
+    int greedy_ok = 0;
+    for (const RunResult& r : cr.runs) {
+      episodes += static_cast<double>(r.episode_lengths.size()) / total;
+      if (r.greedy_length > 0) greedy += r.greedy_length, ++greedy_ok;
+    }
+    text += fmt::format("  {:<9} {:6.1f} episodes per run; greedy climb {} ({} of {} runs finish)\n",
+                        condition_name(c), episodes,
+                        greedy_ok ? fmt::format("{:.1f}", greedy / greedy_ok) : std::string("-"), greedy_ok, total);
+  }
+  if (settings.plan) {
+    double plan = 0;
+    int found = 0;
+    for (const ExperimentWall& w : result.walls) {
+      if (w.plan.found) plan += w.plan.length, ++found;
+    }
+    text += fmt::format("  exact shortest climb: {:.1f} actions on average ({} of {} walls; the paper: about {})\n",
+                        found ? plan / found : 0.0, found, result.walls.size(), kPaperOptimalClimbLength);
+  }
+  return text;
+}
+
+std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentSettings& settings) {
+  std::string text = fmt::format(
+      "\nTransfer against control, paired by wall and seed ({} walls x {} seeds); means over walls with 95 % "
+      "intervals:\n",
+      settings.wall_pairs, settings.seeds_per_wall);
+  for (const MetricComparison& m : analysis.metrics) {
+    const auto& tr = m.per_condition[static_cast<int>(Condition::Transfer)];
+    const auto& co = m.per_condition[static_cast<int>(Condition::Control)];
+    const ClusteredDifference& d = m.transfer_minus_control;
+    text += fmt::format("  {} ({} is better)\n", m.metric.description, m.metric.higher_is_better ? "higher" : "lower");
+    text += fmt::format(
+        "    transfer {:.4g} +- {:.3g}, control {:.4g} +- {:.3g}; difference {:+.4g} ({:+.0f} %), t-interval over walls "
+        "[{:.4g}, {:.4g}], cluster bootstrap [{:.4g}, {:.4g}], p = {:.3g}; paired r = {:.2f}; walls for 80 % power: "
+        "{}\n",
+        tr.mean, tr.half_width, co.mean, co.half_width, d.mean, 100 * m.relative_difference, d.t_low, d.t_high,
+        d.bootstrap_low, d.bootstrap_high, d.p_value, m.paired_correlation,
+        m.walls_for_power > 0 ? std::to_string(m.walls_for_power) : "-");
+  }
+  text += fmt::format("\nTake-off (first episode of at most {} iterations, at least half w-greedy):\n",
+                      settings.analysis.threshold_length);
+  for (const Condition c : kConditions) {
+    const ExperimentAnalysis::TakeOff& t = analysis.take_off[static_cast<int>(c)];
+    text += fmt::format("  {:<9} {} of {} runs take off; median iteration {}\n", condition_name(c), t.taken_off, t.runs,
+                        t.taken_off > 0 ? fmt::format("{:.0f}", t.median_iteration) : "-");
+  }
+  text += fmt::format("Transfer and control runs first differ at iteration {:.1f} (median over pairs)\n",
+                      analysis.median_first_divergence);
+  text += fmt::format("\nTransfer's choices in its first {} iterations (evidence: earlier tries of the same "
+                      "agent-space pair; far: more than {:.0f} cm from them in the tile):\n",
+                      settings.analysis.beginning, 100 * kFarFromEvidence);
+  const auto share = [](int part, int whole) {
+    return whole > 0 ? fmt::format("{:.0f} %", 100.0 * part / whole) : std::string("-");
+  };
+  for (int r = 0; r < kRegimeCount; ++r) {
+    const ChoiceProfile& p = analysis.transfer_choices[r];
+    text += fmt::format(
+        "  {:<9} {:6d} actions, {} reachable; back to the hold just left {} (reachable {}); the hold that failed "
+        "just before {} (reachable {}); of the others, with evidence {} "
+        "(which succeeded {}); far {} (reachable {}), near {} (reachable {}); median distance {:.1f} cm\n",
+        regime_name(static_cast<Regime>(r)), p.actions, share(p.successes, p.actions),
+        share(p.back_to_left_hold, p.actions), share(p.back_to_left_hold_successes, p.back_to_left_hold),
+        share(p.repeats_of_failure, p.actions), share(p.repeats_of_failure_successes, p.repeats_of_failure),
+        share(p.with_evidence, p.actions - p.repeats_of_failure), fmt::format("{:.0f} %", 100 * p.evidence_success_rate),
+        share(p.far, p.with_evidence), share(p.far_successes, p.far), share(p.near, p.with_evidence),
+        share(p.near_successes, p.near), p.median_distance_cm);
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string experiment_text(const ExperimentResult& result, const ExperimentAnalysis& analysis,
+                            const ExperimentSettings& settings) {
+  return table_one_text(result, settings) + episode_text(result, settings) + transfer_text(analysis, settings);
+}
+
+std::string run_text(const ExperimentResult& result, int iterations, const std::string& output) {
+  for (const Condition condition : kConditions) {
+    const ConditionResult& c = result.conditions[static_cast<int>(condition)];
+    if (c.runs.empty()) continue;
+    const RunResult& run = c.runs.front();
+    return fmt::format("{} on '{}': {} episodes in {} iterations; greedy climb: {}; wrote {}\n",
+                       condition == Condition::Transfer ? "transfer" : "training", result.walls.front().wall.name,
+                       run.episode_lengths.size(), iterations,
+                       run.greedy_length > 0 ? fmt::format("{} actions", run.greedy_length) : "does not finish",
+                       output);
+  }
+  return {};
+}
+
+}  // namespace crux
