@@ -67,8 +67,8 @@ void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const AttachedPoint& grasp = model.grasp_points[limb];
     const JointPlacement& carrier = data.placements[grasp.joint];
-    data.points[1 + limb] = carrier.origin;
-    data.points[1 + limb].noalias() += carrier.rotation * grasp.offset;
+    data.points[operational_point(limb)] = carrier.origin;
+    data.points[operational_point(limb)].noalias() += carrier.rotation * grasp.offset;
   }
 }
 

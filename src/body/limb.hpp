@@ -19,5 +19,6 @@ std::optional<Limb> parse_limb(std::string_view name);
 
 // The index of a limb's grasp point among the operational points (e0 is index 0).
 constexpr int operational_point(Limb limb) { return 1 + static_cast<int>(limb); }
+constexpr int operational_point(int limb) { return 1 + limb; }
 
 }  // namespace crux

@@ -20,7 +20,8 @@ namespace crux::cli {
 namespace {
 
 // Random walls from wall.seed (wall i from a seed derived from it and i) and the filter.
-const ParameterSet kFilterStatsParameters{{"wall", "filter"}, {"wall.file", "wall.name"}};
+const ParameterSet kFilterStatsParameters{{"wall", "filter"},
+                                          {"wall.file", "wall.name", "wall.hold_radius", "wall.finish_height"}};
 
 ExperimentConfig filter_stats_defaults() {
   ExperimentConfig defaults;

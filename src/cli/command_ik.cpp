@@ -65,7 +65,7 @@ struct IkCommand {
       out["root_target"] = vector_json(target.root);
       out["root"] = vector_json(data.points[0]);
       out["grasp_points"] = nlohmann::json::array();
-      for (int limb = 0; limb < kLimbCount; ++limb) out["grasp_points"].push_back(vector_json(data.points[1 + limb]));
+      for (int limb = 0; limb < kLimbCount; ++limb) out["grasp_points"].push_back(vector_json(data.points[operational_point(limb)]));
       out["centre_of_mass"] = vector_json(centre_of_mass(model, data));
       out["posture"] = std::vector<double>(result.posture.data(), result.posture.data() + kConfigurationDof);
       std::cout << out.dump(2) << '\n';

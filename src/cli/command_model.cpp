@@ -36,7 +36,7 @@ std::vector<SegmentLength> segment_lengths(const BodyModel& model) {
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const int carrier = model.grasp_points[limb].joint;
     out.push_back({model.joints[carrier].name + " -> " + model.grasp_frame_names[limb],
-                   (data.points[1 + limb] - data.placements[carrier].origin).norm()});
+                   (data.points[operational_point(limb)] - data.placements[carrier].origin).norm()});
   }
   return out;
 }

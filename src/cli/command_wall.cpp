@@ -24,8 +24,9 @@ namespace crux::cli {
 namespace {
 
 // The wall keys of each command, and the IK that checks the start as the learning does.
-const ParameterSet kGenerateParameters{{"experiment.urdf", "wall", "ik"}, {"wall.file", "wall.count"}};
-const ParameterSet kShowParameters{{"experiment.urdf", "wall.file", "grid", "ik"}, {}};
+const ParameterSet kGenerateParameters{{"experiment.urdf", "wall", "ik"},
+                                       {"wall.file", "wall.count", "ik.cache_unreachable"}};
+const ParameterSet kShowParameters{{"experiment.urdf", "wall.file", "grid", "ik"}, {"ik.cache_unreachable"}};
 
 ExperimentConfig generate_defaults() {
   ExperimentConfig defaults;
@@ -186,7 +187,7 @@ void add_wall_command(CLI::App& app) {
   g->callback([generate] { generate->run(); });
 
   auto show = std::make_shared<ShowCommand>();
-  auto* s = wall->add_subcommand("show", "Summarise a wall file; draw it (--svg), with the moving grid (--grid)");
+  auto* s = wall->add_subcommand("show", "Summarise a wall file; draw it (--svg), with the moving grid on a limb (--limb)");
   s->add_flag("--json", show->json, "Print JSON instead of text");
   s->add_option("--svg", show->svg, "Write an SVG front view to this file");
   s->add_option("--limb", show->grid_limb, "Place the moving grid on this free limb (right_hand, left_hand, ...)");

@@ -33,12 +33,12 @@ void ParameterBinding::bind(CLI::App* command) {
           if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, std::optional<std::uint64_t>>) {
             option->check(kSeedDigits);
           }
-          if constexpr (!std::is_same_v<T, std::optional<std::uint64_t>> && !std::is_same_v<T, std::optional<int>>) {
-            if constexpr (std::is_same_v<T, std::string>) {
-              if (!target->empty()) option->capture_default_str();
-            } else {
-              option->capture_default_str();
-            }
+          if constexpr (std::is_same_v<T, std::optional<std::uint64_t>> || std::is_same_v<T, std::optional<int>>) {
+            if (target->has_value()) option->default_str(std::to_string(**target));
+          } else if constexpr (std::is_same_v<T, std::string>) {
+            if (!target->empty()) option->capture_default_str();
+          } else {
+            option->capture_default_str();
           }
           options_.emplace_back(field.key, option);
         },

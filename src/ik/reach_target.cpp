@@ -8,7 +8,7 @@ double grasp_residual(const std::array<Eigen::Vector3d, kOperationalPointCount>&
                       const ReachTarget& target) {
   double worst = 0.0;
   for (int limb = 0; limb < kLimbCount; ++limb) {
-    worst = std::max(worst, (points[1 + limb] - target.hold_centres[limb]).norm());
+    worst = std::max(worst, (points[operational_point(limb)] - target.hold_centres[limb]).norm());
   }
   return worst;
 }
@@ -19,7 +19,7 @@ bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& p
   if (!((points[0] - target.root).squaredNorm() <= tolerances.root_radius * tolerances.root_radius)) return false;
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const double contact = tolerances.grasp_radius + target.hold_radii[limb];
-    if (!((points[1 + limb] - target.hold_centres[limb]).squaredNorm() <= contact * contact)) return false;
+    if (!((points[operational_point(limb)] - target.hold_centres[limb]).squaredNorm() <= contact * contact)) return false;
   }
   return true;
 }
@@ -28,7 +28,7 @@ double reach_cost(const std::array<Eigen::Vector3d, kOperationalPointCount>& poi
                   const ReachTarget& target) {
   double cost = 0.5 * (points[0] - target.root).squaredNorm();
   for (int limb = 0; limb < kLimbCount; ++limb) {
-    cost += 0.5 * (points[1 + limb] - target.hold_centres[limb]).squaredNorm();
+    cost += 0.5 * (points[operational_point(limb)] - target.hold_centres[limb]).squaredNorm();
   }
   return cost;
 }

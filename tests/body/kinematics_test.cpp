@@ -44,10 +44,10 @@ TEST(Kinematics, StandingPostureIsUprightWithFeetBelowRoot) {
   const Eigen::Vector3d root(0.3, 0.6, 1.0);
   forward_kinematics(model, data, standing_posture(root));
   EXPECT_EQ(data.points[0], root);
-  const auto& rh = data.points[1 + static_cast<int>(Limb::RightHand)];
-  const auto& lh = data.points[1 + static_cast<int>(Limb::LeftHand)];
-  const auto& rf = data.points[1 + static_cast<int>(Limb::RightFoot)];
-  const auto& lf = data.points[1 + static_cast<int>(Limb::LeftFoot)];
+  const auto& rh = data.points[operational_point(Limb::RightHand)];
+  const auto& lh = data.points[operational_point(Limb::LeftHand)];
+  const auto& rf = data.points[operational_point(Limb::RightFoot)];
+  const auto& lf = data.points[operational_point(Limb::LeftFoot)];
   EXPECT_LT(rh.y(), lh.y()) << "y grows to the climber's left";
   EXPECT_LT(rf.y(), lf.y());
   EXPECT_NEAR(rf.z(), root.z() - model.root_height_above_soles, 1e-12);

@@ -39,8 +39,8 @@ TEST(BodyModel, ChainsEndAtTheirOperationalPoints) {
   const BodyModel& model = human_model();
   EXPECT_EQ(model.chains[0], (std::vector<int>{0, 1, 2}));
   for (int limb = 0; limb < kLimbCount; ++limb) {
-    EXPECT_EQ(model.chains[1 + limb].back(), model.grasp_points[limb].joint);
-    EXPECT_EQ(model.chains[1 + limb].front(), 0);
+    EXPECT_EQ(model.chains[operational_point(limb)].back(), model.grasp_points[limb].joint);
+    EXPECT_EQ(model.chains[operational_point(limb)].front(), 0);
   }
 }
 

@@ -52,7 +52,7 @@ TEST_P(EachSolver, ReachesTargetsBuiltByForwardKinematicsNearTheStart) {
     forward_kinematics(model, data, goal);
     ReachTarget target;
     target.root = data.points[0];
-    for (int limb = 0; limb < kLimbCount; ++limb) target.hold_centres[limb] = data.points[1 + limb];
+    for (int limb = 0; limb < kLimbCount; ++limb) target.hold_centres[limb] = data.points[operational_point(limb)];
     const IkResult result = solve_ik(model, data, start, target, settings);
     ASSERT_TRUE(result.reached) << "seed " << seed << " sample " << sample;
     EXPECT_LE(result.residual_m, settings.tolerances.grasp_radius + target.hold_radii[0]);
@@ -135,7 +135,7 @@ TEST(ReachTarget, NanPostureIsNeverReached) {
   target.hold_centres = start_layout_holds();
   std::array<Eigen::Vector3d, kOperationalPointCount> points;
   points[0] = target.root;
-  for (int limb = 0; limb < kLimbCount; ++limb) points[1 + limb] = target.hold_centres[limb];
+  for (int limb = 0; limb < kLimbCount; ++limb) points[operational_point(limb)] = target.hold_centres[limb];
   EXPECT_TRUE(target_reached(points, target, {}));
   points[2].x() = std::nan("");
   EXPECT_FALSE(target_reached(points, target, {}));
