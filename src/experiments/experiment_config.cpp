@@ -227,6 +227,12 @@ void require(bool ok, const char* key, const char* problem) {
 
 void finalize_config(ExperimentConfig& config) {
   ExperimentSettings& s = config.settings;
+  // Flags may spell nan or inf; no parameter means anything then.
+  for (const ConfigField& field : config_fields(config)) {
+    if (const auto* value = std::get_if<double*>(&field.target); value != nullptr && !std::isfinite(**value)) {
+      throw InputError(field.key, "must be a finite number");
+    }
+  }
   const auto solver = parse_ik_solver(config.solver);
   if (!solver) throw InputError("ik.solver", fmt::format("unknown solver '{}' (expected fast or paper)", config.solver));
   s.learning.climbing.reachability.ik.solver = *solver;

@@ -187,6 +187,10 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   const auto from_file = run_crux("train --wall-seed 3 --config " + config.string());
   EXPECT_EQ(from_file.exit_code, 2);
   EXPECT_EQ(from_file.err, "crux: " + config.string() + ": line 3: learning.gamma: must be in [0, 1)\n");
+  const fs::path never = scratch("never_written");
+  const auto not_finite = run_crux("train --wall-seed 3 --wall-finish-height nan -o " + never.string());
+  EXPECT_EQ(not_finite.err, "crux: --wall-finish-height: must be a finite number\n");
+  EXPECT_FALSE(fs::exists(never)) << "nothing written before the input is checked";
   const auto seed = run_crux("train --wall-seed -1");
   EXPECT_EQ(seed.exit_code, 2);
   EXPECT_NE(seed.err.find("--wall-seed"), std::string::npos) << seed.err;
