@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/suggestion.hpp"
+#include "common/atomic_file.hpp"
 #include "common/build_info.hpp"
 #include "common/input_error.hpp"
 
@@ -93,6 +94,7 @@ int main(int argc, char** argv) {
   crux::cli::add_filter_stats_command(app);
   crux::cli::add_learning_commands(app);
   if (const int refused = check_names(app, argc, argv); refused != 0) return refused;
+  crux::remove_temporaries_on_signals();
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,9 +1,13 @@
 #include "common/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <string>
 
@@ -11,33 +15,78 @@
 
 namespace crux {
 
+namespace {
+
+// Temporaries being written, so that SIGINT and SIGTERM can remove them: fixed storage,
+// since a signal handler may neither allocate nor lock.
+constexpr std::size_t kTemporarySlots = 64;
+constexpr std::size_t kTemporaryPathBytes = 4096;
+struct TemporarySlot {
+  std::atomic<bool> used{false};
+  char path[kTemporaryPathBytes]{};
+};
+std::array<TemporarySlot, kTemporarySlots> temporaries;
+
+// The slot now holding `path`, or -1 when all are taken or the path is too long (the
+// temporary is then only not removed on a signal).
+int remember_temporary(const std::string& path) {
+  if (path.size() >= kTemporaryPathBytes) return -1;
+  for (std::size_t i = 0; i < kTemporarySlots; ++i) {
+    bool expected = false;
+    if (temporaries[i].used.load() || !temporaries[i].used.compare_exchange_strong(expected, true)) continue;
+    std::memcpy(temporaries[i].path, path.c_str(), path.size() + 1);
+    return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void forget_temporary(int slot) {
+  if (slot >= 0) temporaries[slot].used.store(false);
+}
+
+extern "C" void remove_temporaries_and_reraise(int signal) {
+  for (TemporarySlot& slot : temporaries) {
+    if (slot.used.load()) ::unlink(slot.path);
+  }
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+[[noreturn]] void fail(const std::filesystem::path& path, int fd, const char* temporary, int slot) {
+  const std::string reason = std::strerror(errno);
+  if (fd >= 0) ::close(fd);
+  ::unlink(temporary);
+  forget_temporary(slot);
+  throw InputError(path.string(), "cannot write: " + reason);
+}
+
+}  // namespace
+
+void remove_temporaries_on_signals() {
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, remove_temporaries_and_reraise);
+}
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
-  const std::filesystem::path temporary =
-      path.parent_path() / (path.filename().string() + ".tmp." + std::to_string(::getpid()));
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  // mkstemp: an unpredictable name created exclusively (O_EXCL), so a planted file or
+  // symbolic link is never written through.
+  std::string temporary = path.string() + ".tmp.XXXXXX";
+  const int fd = ::mkostemp(temporary.data(), O_CLOEXEC);
   if (fd < 0) throw InputError(path.string(), std::string("cannot write: ") + std::strerror(errno));
+  const int slot = remember_temporary(temporary);
+  if (::fchmod(fd, 0644) != 0) fail(path, fd, temporary.c_str(), slot);
   std::size_t written = 0;
   while (written < contents.size()) {
     const ssize_t n = ::write(fd, contents.data() + written, contents.size() - written);
     if (n < 0) {
       if (errno == EINTR) continue;
-      const std::string reason = std::strerror(errno);
-      ::close(fd);
-      ::unlink(temporary.c_str());
-      throw InputError(path.string(), "cannot write: " + reason);
+      fail(path, fd, temporary.c_str(), slot);
     }
     written += static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const std::string reason = std::strerror(errno);
-    ::unlink(temporary.c_str());
-    throw InputError(path.string(), "cannot write: " + reason);
-  }
-  if (::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    ::unlink(temporary.c_str());
-    throw InputError(path.string(), "cannot write: " + reason);
-  }
+  if (::fsync(fd) != 0) fail(path, fd, temporary.c_str(), slot);
+  if (::close(fd) != 0) fail(path, -1, temporary.c_str(), slot);
+  if (::rename(temporary.c_str(), path.c_str()) != 0) fail(path, -1, temporary.c_str(), slot);
+  forget_temporary(slot);
 }
 
 void make_output_directory(const std::filesystem::path& directory) {

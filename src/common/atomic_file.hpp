@@ -7,9 +7,14 @@
 
 namespace crux {
 
-// Writes `contents` to `path` atomically (same-directory temporary, fsync, rename).
+// Writes `contents` to `path` atomically: a same-directory temporary with an
+// unpredictable name created exclusively, fsync, rename.
 // Throws InputError naming `path` when the directory is missing or not writable.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
+
+// From then on SIGINT, SIGTERM and SIGHUP remove the temporaries being written before
+// the process ends as the signal asks.
+void remove_temporaries_on_signals();
 
 // Creates `directory` and its parents; InputError naming it when that fails.
 void make_output_directory(const std::filesystem::path& directory);

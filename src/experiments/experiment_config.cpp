@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "common/input_error.hpp"
+#include "common/input_file.hpp"
 
 namespace crux {
 
@@ -179,7 +180,7 @@ ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config,
                               const std::string& command) {
   toml::table table;
   try {
-    table = toml::parse_file(path);
+    table = toml::parse(read_input_file(path, "config file"), path);
   } catch (const toml::parse_error& e) {
     const std::string description(e.description());
     if (e.source().begin.line == 0) throw InputError(path, "cannot read the config file: " + description);

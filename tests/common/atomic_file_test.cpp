@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -33,6 +35,24 @@ TEST(AtomicFile, MissingDirectoryIsAnInputErrorNamingTheFile) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent-crux-dir/out.csv"), std::string::npos);
   }
+}
+
+// The temporary is created exclusively under an unpredictable name: files or links
+// planted at the names of earlier versions (<name>.tmp.<pid>) are never written through.
+TEST(AtomicFile, APlantedLinkAtAPredictableTemporaryNameIsNotFollowed) {
+  const auto dir = std::filesystem::temp_directory_path() / "crux-tests" / "atomic-link";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto victim = dir / "victim.txt";
+  std::ofstream(victim) << "untouched";
+  const auto path = dir / "w.json";
+  std::filesystem::create_symlink(victim, dir / ("w.json.tmp." + std::to_string(::getpid())));
+  write_file_atomically(path, "{}");
+  std::ifstream in(victim);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "untouched");
+  EXPECT_TRUE(std::filesystem::is_regular_file(std::filesystem::symlink_status(path)));
 }
 
 }  // namespace
