@@ -47,10 +47,16 @@ void require_wall(const ExperimentConfig& config) {
   }
 }
 
+// The files a command reads: none may lie in its output folder.
+std::vector<std::string> inputs_of(const ExperimentConfig& config, const ParameterBinding& binding) {
+  return {config.urdf, config.wall_file, config.q_grid, binding.config_path()};
+}
+
 struct PaperCommand {
   ParameterBinding binding{"paper", kPaperParameters};
   std::string output = "out/paper";
   bool json = false;
+  bool overwrite = false;
 
   void run() {
     ExperimentConfig config = binding.resolve();
@@ -58,6 +64,7 @@ struct PaperCommand {
     const BodyModel model = load_configured_body(config);
     const ExperimentSettings& settings = config.settings;
     const std::string config_toml = config_file_text(config, binding.accepted(), provenance);
+    prepare_output_folder(output, inputs_of(config, binding), overwrite);
     ProgressBar progress(fmt::format("paper: {} walls x {} seeds x 3 conditions", settings.wall_pairs,
                                      settings.seeds_per_wall),
                          3L * settings.runs());
@@ -80,6 +87,7 @@ struct SingleRunCommand {
   Condition condition;
   std::string output;
   bool json = false;
+  bool overwrite = false;
 
   void run() {
     ExperimentConfig config = binding.resolve();
@@ -93,6 +101,7 @@ struct SingleRunCommand {
     std::optional<QTable> initial;
     if (condition == Condition::Transfer) initial = load_q_grid(config.q_grid, config.settings.learning.climbing.grid);
     const std::string config_toml = config_file_text(config, binding.accepted(), provenance);
+    prepare_output_folder(output, inputs_of(config, binding), overwrite);
     ProgressBar progress(condition_name(condition), config.settings.learning.iterations);
     const auto start = std::chrono::steady_clock::now();
     RunResult run = run_learning(model, wall, config.settings.learning, config.settings.seed,
@@ -150,6 +159,7 @@ void add_single_run_command(CLI::App& app, const char* name, const char* descrip
   auto* c = app.add_subcommand(name, description);
   c->add_option("-o,--output", command->output, "Output folder")->capture_default_str();
   c->add_flag("--json", command->json, "Print summary.json's contents instead of text");
+  c->add_flag("--overwrite", command->overwrite, "Replace crux's outputs in an output folder that holds some");
   command->binding.bind(c);
   c->callback([command] { command->run(); });
 }
@@ -161,6 +171,7 @@ void add_learning_commands(CLI::App& app) {
   auto* p = app.add_subcommand("paper", "Run the paper's experiment (training, transfer, control) and print Table I");
   p->add_option("-o,--output", paper->output, "Output folder")->capture_default_str();
   p->add_flag("--json", paper->json, "Print summary.json's contents instead of text");
+  p->add_flag("--overwrite", paper->overwrite, "Replace crux's outputs in an output folder that holds some");
   paper->binding.bind(p);
   paper->binding.option("experiment.runs")
       ->excludes(paper->binding.option("experiment.walls"))

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
 #include "reports/figure_tables.hpp"
 #include "reports/run_files.hpp"
 #include "wall/wall_file.hpp"
@@ -10,6 +13,54 @@
 namespace crux {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// Everything a crux command writes into an output folder.
+constexpr const char* kOutputNames[] = {"config.toml", "summary.json", "runs",      "walls",    "figures",
+                                        "iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "wall.json",
+                                        kIncompleteMarker};
+
+void mark_complete(const fs::path& directory) {
+  std::error_code error;
+  fs::remove(directory / kIncompleteMarker, error);
+}
+
+}  // namespace
+
+void prepare_output_folder(const fs::path& directory, const std::vector<std::string>& inputs, bool overwrite) {
+  if (directory.empty()) throw InputError("--output", "the output folder name is empty");
+  std::error_code error;
+  fs::path folder = fs::weakly_canonical(fs::absolute(directory), error).lexically_normal();
+  if (folder.filename().empty()) folder = folder.parent_path();
+  for (const std::string& input : inputs) {
+    if (input.empty()) continue;
+    const fs::path file = fs::weakly_canonical(fs::absolute(input), error);
+    const auto [end, _] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
+    if (end == folder.end()) {
+      throw InputError(directory.string(),
+                       fmt::format("holds {}, an input of this command; write the outputs to another folder", input));
+    }
+  }
+  if (fs::exists(directory, error)) {
+    if (!fs::is_directory(directory, error)) throw InputError(directory.string(), "exists and is not a folder");
+    if (!fs::is_empty(directory, error)) {
+      if (!overwrite) {
+        throw InputError(directory.string(),
+                         "already holds files; choose another output folder, or pass --overwrite to replace crux's "
+                         "outputs there");
+      }
+      for (const char* name : kOutputNames) {
+        fs::remove_all(directory / name, error);
+        if (error) throw InputError((directory / name).string(), "cannot remove the earlier output: " + error.message());
+      }
+    }
+  }
+  make_output_directory(directory);
+  write_file_atomically(directory / kIncompleteMarker,
+                        "crux is writing this folder; if this file remains, the command was interrupted and the "
+                        "folder's outputs are incomplete.\n");
+}
 
 std::string config_file_text(ExperimentConfig& config, const ParameterSet& accepted, const Provenance& provenance) {
   return config_to_toml(config, accepted) + provenance_toml(provenance);
@@ -39,6 +90,7 @@ void write_experiment_folder(const fs::path& directory, const ExperimentResult& 
   write_file_atomically(directory / "figures" / "fig2b_qgrid_maps.csv",
                         fig2b_csv(result, settings.learning.climbing.grid));
   write_file_atomically(directory / "summary.json", summary.dump(2) + "\n");
+  mark_complete(directory);
 }
 
 void write_run_folder(const fs::path& directory, const ExperimentResult& result, const BodyModel& model,
@@ -49,6 +101,7 @@ void write_run_folder(const fs::path& directory, const ExperimentResult& result,
   write_file_atomically(directory / "config.toml", config_toml);
   save_wall((directory / "wall.json").string(), result.walls.front().wall);
   write_file_atomically(directory / "summary.json", summary.dump(2) + "\n");
+  mark_complete(directory);
 }
 
 }  // namespace crux

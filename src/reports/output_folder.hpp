@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -12,6 +13,15 @@
 #include "reports/provenance.hpp"
 
 namespace crux {
+
+// Readies `directory` for a command's outputs, before the long work: refuses a folder
+// that holds one of the command's `inputs` (it would be overwritten) and a folder that
+// already holds files unless `overwrite` (then crux's earlier outputs are removed, and
+// nothing else); then marks it incomplete (kIncompleteMarker) until the outputs are
+// complete. InputError naming the folder otherwise.
+inline constexpr const char* kIncompleteMarker = "INCOMPLETE";
+void prepare_output_folder(const std::filesystem::path& directory, const std::vector<std::string>& inputs,
+                           bool overwrite);
 
 // config.toml's text: the command's parameters, then the [provenance] table.
 std::string config_file_text(ExperimentConfig& config, const ParameterSet& accepted, const Provenance& provenance);

@@ -156,6 +156,29 @@ TEST(CliLearning, PaperReplaysFromItsOwnConfig) {
   expect_same_folder(first, second);
 }
 
+TEST(CliLearning, AnOutputFolderIsNeitherMixedWithEarlierOutputsNorAnInputsHome) {
+  const fs::path folder = scratch("guarded");
+  ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 100 -o " + folder.string()).exit_code, 0);
+  EXPECT_FALSE(fs::exists(folder / "INCOMPLETE")) << "a complete folder loses its marker";
+  const std::string first = read_text(folder / "iterations.csv");
+  const auto again = run_crux("train --wall-seed 3 --iterations 100 --seed 2 -o " + folder.string());
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("already holds files"), std::string::npos) << again.err;
+  EXPECT_EQ(read_text(folder / "iterations.csv"), first) << "nothing touched";
+  // Its own input: refused even when asked to overwrite.
+  const auto own_input = run_crux("transfer --q-grid " + (folder / "q_grid.bin").string() +
+                                  " --wall-seed 4 --iterations 100 --overwrite -o " + folder.string());
+  EXPECT_EQ(own_input.exit_code, 2);
+  EXPECT_NE(own_input.err.find("an input of this command"), std::string::npos) << own_input.err;
+  EXPECT_TRUE(fs::exists(folder / "q_grid.bin"));
+  const fs::path other = folder / "notes.txt";
+  std::ofstream(other) << "mine";
+  const auto replaced = run_crux("train --wall-seed 3 --iterations 100 --seed 2 --overwrite -o " + folder.string());
+  ASSERT_EQ(replaced.exit_code, 0) << replaced.err;
+  EXPECT_NE(read_text(folder / "iterations.csv"), first);
+  EXPECT_EQ(read_text(other), "mine") << "only crux's outputs are replaced";
+}
+
 TEST(CliLearning, EachCommandRefusesTheFlagsItDoesNotUse) {
   for (const std::string& command : {"plan --wall-seed 3 --iterations 5", "plan --wall-seed 3 --runs 100",
                                      "train --wall-seed 3 --plan 0", "train --wall-seed 3 --runs 3",
