@@ -1,11 +1,13 @@
 #include "body/urdf_loader.hpp"
 
+#include <set>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <set>
 
 #include <console_bridge/console.h>
 #include <Eigen/Geometry>
@@ -22,7 +24,8 @@ namespace crux {
 namespace {
 
 // urdfdom reports parse errors through console_bridge; keep the first one so that it
-// becomes part of our single error line instead of going to stderr.
+// becomes part of our single error line instead of going to stderr. Some of them (an
+// unreadable mass) it survives by dropping the element: crux refuses the file then too.
 class FirstErrorCapture : public console_bridge::OutputHandler {
  public:
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
@@ -44,7 +47,7 @@ urdf::ModelInterfaceSharedPtr parse_urdf(const std::string& xml, const std::stri
     capture.first_error = e.what();
   }
   console_bridge::restorePreviousOutputHandler();
-  if (!parsed) {
+  if (!parsed || !capture.first_error.empty()) {
     std::string why = capture.first_error.empty() ? "not a valid URDF document" : capture.first_error;
     while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
     throw InputError(source, "invalid URDF: " + why);
@@ -137,7 +140,11 @@ class ModelBuilder {
   }
 
   void add_mass(const urdf::Link& link, int carrier, const RigidTransform& in_carrier) {
-    if (!link.inertial || link.inertial->mass <= 0.0) return;
+    if (!link.inertial) return;
+    if (!std::isfinite(link.inertial->mass) || link.inertial->mass < 0.0) {
+      fail(fmt::format("link '{}' has mass {}; a mass is a finite number, 0 or more", link.name, link.inertial->mass));
+    }
+    if (link.inertial->mass == 0.0) return;
     BodyJoint& joint = model_.joints[carrier];
     const Eigen::Vector3d com = in_carrier.then(link.inertial->origin).translation;
     const double mass = joint.mass + link.inertial->mass;
@@ -145,16 +152,24 @@ class ModelBuilder {
     joint.mass = mass;
   }
 
-  // Depth-first from `link`, which moves with joint `carrier` at `in_carrier`.
-  void visit(const urdf::Link& link, int carrier, const RigidTransform& in_carrier) {
+  // Depth-first from `link`, which moves with joint `carrier` at `in_carrier`; `depth`
+  // links below the root. Bounded, and each link once: a cycle or a very long chain would
+  // otherwise recurse without end or overflow the stack.
+  void visit(const urdf::Link& link, int carrier, const RigidTransform& in_carrier, int depth = 0) {
+    if (!visited_.insert(link.name).second) {
+      fail(fmt::format("link '{}' is reached twice: its joints form a cycle", link.name));
+    }
+    if (depth > kMaxTreeDepth) fail(fmt::format("the kinematic tree is deeper than {} links", kMaxTreeDepth));
     add_mass(link, carrier, in_carrier);
     frames_.push_back({link.name, {carrier, in_carrier.translation}});
     for (const urdf::JointSharedPtr& joint : link.child_joints) {
       const urdf::LinkConstSharedPtr child = urdf_.getLink(joint->child_link_name);
+      if (!child) fail(fmt::format("joint '{}' names a child link '{}' that does not exist", joint->name,
+                                   joint->child_link_name));
       const RigidTransform origin = in_carrier.then(joint->parent_to_joint_origin_transform);
       switch (joint->type) {
         case urdf::Joint::FIXED:
-          visit(*child, carrier, origin);
+          visit(*child, carrier, origin, depth + 1);
           break;
         case urdf::Joint::REVOLUTE: {
           if (!joint->limits) fail(fmt::format("joint '{}' has no limits", joint->name));
@@ -180,7 +195,7 @@ class ModelBuilder {
           out.lower = lower;
           out.upper = upper;
           model_.joints.push_back(out);
-          visit(*child, static_cast<int>(model_.joints.size()) - 1, RigidTransform{});
+          visit(*child, static_cast<int>(model_.joints.size()) - 1, RigidTransform{}, depth + 1);
           break;
         }
         default:
@@ -240,6 +255,8 @@ class ModelBuilder {
   const GraspFrameNames& names_;
   BodyModel model_;
   std::vector<std::pair<std::string, AttachedPoint>> frames_;
+  std::set<std::string> visited_;
+  static constexpr int kMaxTreeDepth = 1000;
 };
 
 }  // namespace

@@ -85,6 +85,26 @@ std::string inverted_limits(const std::string& u) {
   return replaced(u, "lower=\"-1.047198\" upper=\"1.047198\"", "lower=\"1.047198\" upper=\"-1.047198\"");
 }
 
+std::string cycle_back_to_torso(const std::string& u) {
+  return replaced(u, "</robot>",
+                  "<joint name=\"palm_to_torso\" type=\"fixed\"><parent link=\"right_palm\"/>"
+                  "<child link=\"torso\"/></joint></robot>");
+}
+// 2000 fixed joints in a row below the right palm.
+std::string very_long_chain(const std::string& u) {
+  std::string chain;
+  std::string parent = "right_palm";
+  for (int i = 0; i < 2000; ++i) {
+    const std::string link = "chain_" + std::to_string(i);
+    chain += "<link name=\"" + link + "\"/><joint name=\"" + link + "_fixed\" type=\"fixed\"><parent link=\"" + parent +
+             "\"/><child link=\"" + link + "\"/></joint>";
+    parent = link;
+  }
+  return replaced(u, "</robot>", chain + "</robot>");
+}
+std::string negative_mass(const std::string& u) { return replaced(u, "<mass value=\"24.14\"/>", "<mass value=\"-24.14\"/>"); }
+std::string nan_mass(const std::string& u) { return replaced(u, "<mass value=\"24.14\"/>", "<mass value=\"nan\"/>"); }
+
 class BadModel : public ::testing::TestWithParam<BadModelCase> {};
 
 TEST_P(BadModel, IsOneClearInputError) {
@@ -114,7 +134,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadModelCase{"not_urdf", not_urdf, "invalid URDF"},
                       BadModelCase{"empty", empty, "empty"},
                       BadModelCase{"rotated_root", rotate_root, "must translate along y"},
-                      BadModelCase{"inverted_limits", inverted_limits, "neck_rotation"}),
+                      BadModelCase{"inverted_limits", inverted_limits, "neck_rotation"},
+                      BadModelCase{"cycle", cycle_back_to_torso, "torso"},
+                      BadModelCase{"very_long_chain", very_long_chain, "deeper than 1000 links"},
+                      BadModelCase{"negative_mass", negative_mass, "has mass -24.14"},
+                      BadModelCase{"nan_mass", nan_mass, "mass"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(BadModelFile, MissingFileAndDirectoryAreInputErrors) {
