@@ -11,6 +11,7 @@
 #include "cli/parameter_binding.hpp"
 #include "cli/progress_bar.hpp"
 #include "common/input_error.hpp"
+#include "common/printable.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/output_folder.hpp"
 #include "reports/summary.hpp"
@@ -64,7 +65,7 @@ struct PaperCommand {
     const BodyModel model = load_configured_body(config);
     const ExperimentSettings& settings = config.settings;
     const std::string config_toml = config_file_text(config, binding.accepted(), provenance);
-    prepare_output_folder(output, inputs_of(config, binding), overwrite);
+    check_output_folder(output, inputs_of(config, binding), overwrite);
     ProgressBar progress(fmt::format("paper: {} walls x {} seeds x 3 conditions", settings.wall_pairs,
                                      settings.seeds_per_wall),
                          3L * settings.runs());
@@ -101,7 +102,7 @@ struct SingleRunCommand {
     std::optional<QTable> initial;
     if (condition == Condition::Transfer) initial = load_q_grid(config.q_grid, config.settings.learning.climbing.grid);
     const std::string config_toml = config_file_text(config, binding.accepted(), provenance);
-    prepare_output_folder(output, inputs_of(config, binding), overwrite);
+    check_output_folder(output, inputs_of(config, binding), overwrite);
     ProgressBar progress(condition_name(condition), config.settings.learning.iterations);
     const auto start = std::chrono::steady_clock::now();
     RunResult run = run_learning(model, wall, config.settings.learning, config.settings.seed,
@@ -141,10 +142,10 @@ struct PlanCommand {
       return;
     }
     if (!plan.found) {
-      std::cout << fmt::format("no climb found on '{}' ({} states explored)\n", wall.name, plan.expanded_states);
+      std::cout << fmt::format("no climb found on '{}' ({} states explored)\n", printable(wall.name), plan.expanded_states);
       return;
     }
-    std::cout << fmt::format("shortest climb on '{}': {} actions ({} states explored, {} IK solves)\n", wall.name,
+    std::cout << fmt::format("shortest climb on '{}': {} actions ({} states explored, {} IK solves)\n", printable(wall.name),
                              plan.length, plan.expanded_states, plan.ik_solves);
     for (int i = 0; i < plan.length; ++i) {
       std::cout << fmt::format("  {:2d}. {:<10} -> hold {}\n", i + 1, limb_name(plan.limbs[i]), plan.hold_ids[i]);

@@ -14,6 +14,7 @@
 #include "experiments/run_inputs.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
+#include "common/printable.hpp"
 #include "configurations/reachability.hpp"
 #include "views/wall_svg.hpp"
 #include "wall/random_wall.hpp"
@@ -78,7 +79,7 @@ struct GenerateCommand {
       out["start_solver"] = solver;
       std::cout << out.dump(2) << '\n';
     } else {
-      std::cout << fmt::format("wrote {}: '{}', {} holds, finish height {} m\n", output, wall.name, wall.hold_count(),
+      std::cout << fmt::format("wrote {}: '{}', {} holds, finish height {} m\n", output, printable(wall.name), wall.hold_count(),
                              wall.finish_height)
               << fmt::format("start configuration ({}): ", start_summary(wall));
       std::cout << (reach.reached ? fmt::format("reachable ({} solver, {} iterations)\n", solver, reach.iterations)
@@ -131,7 +132,7 @@ struct ShowCommand {
       low = low.cwiseMin(h.position);
       high = high.cwiseMax(h.position);
     }
-    std::cout << fmt::format("'{}' ({}): {} holds, y from {:.2f} to {:.2f} m, z from {:.2f} to {:.2f} m\n", wall.name,
+    std::cout << fmt::format("'{}' ({}): {} holds, y from {:.2f} to {:.2f} m, z from {:.2f} to {:.2f} m\n", printable(wall.name),
                              file, wall.hold_count(), low.y(), high.y(), low.z(), high.z())
               << fmt::format("finish height {} m; start configuration: {} ({})\n", wall.finish_height,
                              start_summary(wall), reach.reached ? "reachable" : "NOT reachable");

@@ -1,5 +1,7 @@
 #include "experiments/paper_experiment.hpp"
 
+#include "common/input_error.hpp"
+
 #include <mutex>
 #include <chrono>
 #include <stdexcept>
@@ -64,7 +66,9 @@ ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& setti
     out.seed = seed;
     return out;
   }
-  throw std::runtime_error(fmt::format("no reachable start in {} random walls", kWallAttempts));
+  // Only the parameters can make every random wall's start unreachable.
+  throw InputError("--wall-* and --ik-* parameters",
+                   fmt::format("no random wall drawn with them has a reachable start ({} tried)", kWallAttempts));
 }
 
 ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSettings& settings,

@@ -21,6 +21,18 @@ constexpr const char* kOutputNames[] = {"config.toml", "summary.json", "runs",  
                                         "iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "wall.json",
                                         kIncompleteMarker};
 
+void begin_output_folder(const fs::path& directory) {
+  std::error_code error;
+  for (const char* name : kOutputNames) {
+    fs::remove_all(directory / name, error);
+    if (error) throw InputError((directory / name).string(), "cannot remove the earlier output: " + error.message());
+  }
+  make_output_directory(directory);
+  write_file_atomically(directory / kIncompleteMarker,
+                        "crux is writing this folder; if this file remains, the command was interrupted and the "
+                        "folder's outputs are incomplete.\n");
+}
+
 void mark_complete(const fs::path& directory) {
   std::error_code error;
   fs::remove(directory / kIncompleteMarker, error);
@@ -28,7 +40,7 @@ void mark_complete(const fs::path& directory) {
 
 }  // namespace
 
-void prepare_output_folder(const fs::path& directory, const std::vector<std::string>& inputs, bool overwrite) {
+void check_output_folder(const fs::path& directory, const std::vector<std::string>& inputs, bool overwrite) {
   if (directory.empty()) throw InputError("--output", "the output folder name is empty");
   std::error_code error;
   fs::path folder = fs::weakly_canonical(fs::absolute(directory), error).lexically_normal();
@@ -42,24 +54,13 @@ void prepare_output_folder(const fs::path& directory, const std::vector<std::str
                        fmt::format("holds {}, an input of this command; write the outputs to another folder", input));
     }
   }
-  if (fs::exists(directory, error)) {
-    if (!fs::is_directory(directory, error)) throw InputError(directory.string(), "exists and is not a folder");
-    if (!fs::is_empty(directory, error)) {
-      if (!overwrite) {
-        throw InputError(directory.string(),
-                         "already holds files; choose another output folder, or pass --overwrite to replace crux's "
-                         "outputs there");
-      }
-      for (const char* name : kOutputNames) {
-        fs::remove_all(directory / name, error);
-        if (error) throw InputError((directory / name).string(), "cannot remove the earlier output: " + error.message());
-      }
-    }
+  if (!fs::exists(directory, error)) return;
+  if (!fs::is_directory(directory, error)) throw InputError(directory.string(), "exists and is not a folder");
+  if (!overwrite && !fs::is_empty(directory, error)) {
+    throw InputError(directory.string(),
+                     "already holds files; choose another output folder, or pass --overwrite to replace crux's "
+                     "outputs there");
   }
-  make_output_directory(directory);
-  write_file_atomically(directory / kIncompleteMarker,
-                        "crux is writing this folder; if this file remains, the command was interrupted and the "
-                        "folder's outputs are incomplete.\n");
 }
 
 std::string config_file_text(ExperimentConfig& config, const ParameterSet& accepted, const Provenance& provenance) {
@@ -69,7 +70,7 @@ std::string config_file_text(ExperimentConfig& config, const ParameterSet& accep
 void write_experiment_folder(const fs::path& directory, const ExperimentResult& result,
                              const ExperimentSettings& settings, const BodyModel& model, const std::string& config_toml,
                              const nlohmann::ordered_json& summary) {
-  make_output_directory(directory);
+  begin_output_folder(directory);
   write_file_atomically(directory / "config.toml", config_toml);
   make_output_directory(directory / "walls");
   for (std::size_t w = 0; w < result.walls.size(); ++w) {
@@ -95,6 +96,7 @@ void write_experiment_folder(const fs::path& directory, const ExperimentResult& 
 
 void write_run_folder(const fs::path& directory, const ExperimentResult& result, const BodyModel& model,
                       const std::string& config_toml, const nlohmann::ordered_json& summary) {
+  begin_output_folder(directory);
   for (const ConditionResult& c : result.conditions) {
     if (!c.runs.empty()) write_run_files(directory, c.runs.front(), model);
   }

@@ -14,14 +14,16 @@
 
 namespace crux {
 
-// Readies `directory` for a command's outputs, before the long work: refuses a folder
-// that holds one of the command's `inputs` (it would be overwritten) and a folder that
-// already holds files unless `overwrite` (then crux's earlier outputs are removed, and
-// nothing else); then marks it incomplete (kIncompleteMarker) until the outputs are
-// complete. InputError naming the folder otherwise.
+// Checks `directory` before the long work, writing nothing: InputError naming it when it
+// holds one of the command's `inputs` (it would be overwritten), or already holds files
+// and `overwrite` is false.
+void check_output_folder(const std::filesystem::path& directory, const std::vector<std::string>& inputs,
+                         bool overwrite);
+
+// The writers below first remove crux's earlier outputs from the folder (and nothing
+// else) and mark it incomplete with this file, which they remove once every output is
+// written: a folder that keeps it was interrupted.
 inline constexpr const char* kIncompleteMarker = "INCOMPLETE";
-void prepare_output_folder(const std::filesystem::path& directory, const std::vector<std::string>& inputs,
-                           bool overwrite);
 
 // config.toml's text: the command's parameters, then the [provenance] table.
 std::string config_file_text(ExperimentConfig& config, const ParameterSet& accepted, const Provenance& provenance);

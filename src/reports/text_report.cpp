@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "common/printable.hpp"
 #include "reports/paper_reference.hpp"
 #include "reports/table_one_text.hpp"
 
@@ -98,7 +99,7 @@ std::string run_text(const ExperimentResult& result, int iterations, const std::
     if (c.runs.empty()) continue;
     const RunResult& run = c.runs.front();
     return fmt::format("{} on '{}': {} episodes in {} iterations; greedy climb: {}; wrote {}\n",
-                       condition == Condition::Transfer ? "transfer" : "training", result.walls.front().wall.name,
+                       condition == Condition::Transfer ? "transfer" : "training", printable(result.walls.front().wall.name),
                        run.episode_lengths.size(), iterations,
                        run.greedy_length > 0 ? fmt::format("{} actions", run.greedy_length) : "does not finish",
                        output);

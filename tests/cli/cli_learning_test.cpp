@@ -214,6 +214,10 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   const auto not_finite = run_crux("train --wall-seed 3 --wall-finish-height nan -o " + never.string());
   EXPECT_EQ(not_finite.err, "crux: --wall-finish-height: must be a finite number\n");
   EXPECT_FALSE(fs::exists(never)) << "nothing written before the input is checked";
+  const auto no_start = run_crux("paper --walls 1 --iterations 10 --wall-sigma 3 -o " + never.string());
+  EXPECT_EQ(no_start.exit_code, 2);
+  EXPECT_NE(no_start.err.find("no random wall drawn with them has a reachable start"), std::string::npos);
+  EXPECT_FALSE(fs::exists(never)) << "nothing written when the run fails";
   const auto seed = run_crux("train --wall-seed -1");
   EXPECT_EQ(seed.exit_code, 2);
   EXPECT_NE(seed.err.find("--wall-seed"), std::string::npos) << seed.err;
