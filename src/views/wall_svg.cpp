@@ -53,6 +53,7 @@ constexpr double kLegendSwatchWidth = 26;
 constexpr double kMinimumHoldRadius = 2;  // small holds stay visible
 constexpr double kMinimumTickGap = 30;    // between metre lines
 constexpr double kTickSpacing = 0.5;      // metres, doubled while lines would crowd
+constexpr double kMaxPlotPixels = 20000;  // the larger side of the plot, at most
 
 // Rings around a hold, in pixels outside its circle: one per limb starting on it, then
 // the grid -> wall ring outside them. Its id goes above the rings, its tile below.
@@ -186,7 +187,6 @@ class WallFigure {
   double hold_y(const Hold& hold) const { return view_.screen_y(hold.position.z()); }
 
   void lay_out() {
-    const double scale = options_.pixels_per_metre;
     Extent extent;
     for (const Hold& hold : wall_.holds) {
       extent.include(hold.position.y() - hold.radius, hold.position.z() - hold.radius);
@@ -202,6 +202,10 @@ class WallFigure {
       extent.include(1.0, 0.0);
     }
     extent.include(extent.y_min, wall_.finish_height);  // the finish line is always in view
+    // A wall larger than kMaxPlotPixels at the asked scale is drawn smaller, so that the
+    // page, and the number of its metre lines, stay bounded.
+    const double span = std::max(extent.y_max - extent.y_min, extent.z_max - extent.z_min);
+    const double scale = std::min(options_.pixels_per_metre, kMaxPlotPixels / span);
     const double padding = kPlotPadding / scale;
     extent_ = {extent.y_min - padding, extent.y_max + padding, extent.z_min - padding, extent.z_max + padding};
     plot_width_ = (extent_.y_max - extent_.y_min) * scale;

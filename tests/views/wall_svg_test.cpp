@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "support/test_walls.hpp"
+
 #include "wall/random_wall.hpp"
 
 namespace crux {
@@ -354,6 +356,17 @@ TEST(WallSvgTest, RejectsANonPositiveScale) {
   WallSvgOptions options;
   options.pixels_per_metre = 0;
   EXPECT_THROW(render_wall_svg(lattice_wall(3, 4, 0.3, 0.5), options), std::invalid_argument);
+}
+
+// One hold ten thousand kilometres up: the drawing shrinks instead of drawing a metre
+// line per half metre of that height.
+TEST(WallSvg, AFarHoldGivesABoundedDrawing) {
+  for (const double far : {1e7, 1e16}) {
+    Wall wall = testing::wall_with_holds({{0.3, 1.5}, {0.9, 1.5}, {0.3, 0.0}, {0.9, far}});
+    const std::string svg = render_wall_svg(wall, {});
+    EXPECT_LT(svg.size(), 200000u) << far;
+    EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  }
 }
 
 }  // namespace
