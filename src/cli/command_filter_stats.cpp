@@ -52,7 +52,7 @@ struct FilterStatsCommand {
     const FilterCounts& c = counts[chosen];
     if (json) {
       nlohmann::ordered_json out;
-      out["walls"] = walls;
+      out["wall_count"] = walls;
       out["wall_seed"] = seed;
       out["reading"] = reading;
       out["max_span_m"] = parameters.max_span_m;

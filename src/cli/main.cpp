@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <exception>
+#include <map>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -34,10 +36,30 @@ std::string hint(const std::string& nearest) {
   return nearest.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", nearest);
 }
 
+// Flags of crux 0.1 before every parameter took its config key's name.
+const std::map<std::string, std::string>& renamed_flags() {
+  static const std::map<std::string, std::string> renamed{
+      {"--solver", "--ik-solver"}, {"--alpha", "--ik-alpha"}, {"--time-step", "--ik-time-step"},
+      {"--timeout", "--ik-timeout"}, {"--fast-max-iterations", "--ik-fast-max-iterations"},
+      {"--fast-stall-decrease", "--ik-fast-stall-decrease"}, {"--fast-stall-iterations", "--ik-fast-stall-iterations"},
+      {"--fast-aim", "--ik-fast-aim"}, {"--grasp-radius", "--ik-grasp-radius"},
+      {"--root-tolerance", "--ik-root-tolerance"}, {"--wall-distance", "--ik-wall-distance"},
+      {"--cache-unreachable", "--ik-cache-unreachable"}, {"--learning-rate", "--learning-alpha"},
+      {"--gamma", "--learning-gamma"}, {"--epsilon", "--learning-epsilon"},
+      {"--planning-steps", "--learning-planning-steps"}, {"--planner", "--learning-planner"},
+      {"--priority-threshold", "--learning-priority-threshold"}, {"--max-span", "--filter-max-span"},
+      {"--reading", "--filter-reading"}, {"--hold-radius", "--wall-hold-radius"},
+      {"--finish-height", "--wall-finish-height"}, {"--wall", "--wall-file"}, {"--qgrid", "--q-grid"},
+      {"--columns", "--wall-columns"}, {"--rows", "--wall-rows"}, {"--tile-width", "--wall-tile-width"},
+      {"--tile-height", "--wall-tile-height"}, {"--sigma", "--wall-sigma"}, {"--name", "--wall-name"},
+      {"--grid", "--limb"}, {"--walls", "--wall-count"}, {"--seed", "--wall-seed"}};
+  return renamed;
+}
+
 // Unknown commands and options get a one-line answer with the nearest name, before
 // CLI11, whose messages name neither the command nor what was meant.
-int check_names(const CLI::App& app, int argc, char** argv) {
-  const CLI::App* command = &app;
+int check_names(const CLI::App& app, int argc, char** argv, const CLI::App*& command) {
+  command = &app;
   bool after_command = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -50,8 +72,12 @@ int check_names(const CLI::App& app, int argc, char** argv) {
       for (const CLI::Option* option : command->get_options()) {
         if (!option->get_lnames().empty()) flags.push_back("--" + option->get_lnames().front());
       }
-      return refuse(fmt::format("{}: unknown option {}{} (see '{} --help')", command_path(command), name,
-                                hint(crux::cli::nearest_name(name, flags)), command_path(command)));
+      const auto renamed = renamed_flags().find(name);
+      const bool known_rename = renamed != renamed_flags().end() && command->get_option_no_throw(renamed->second);
+      return refuse(fmt::format("unknown option {} of '{}'{} (see '{} --help')", name, command_path(command),
+                                known_rename ? fmt::format(" (it is now {})", renamed->second)
+                                             : hint(crux::cli::nearest_name(name, flags)),
+                                command_path(command)));
     }
     if (arg.rfind('-', 0) == 0) continue;  // a short option or a negative number
     if (after_command) continue;           // a value
@@ -93,7 +119,8 @@ int main(int argc, char** argv) {
   crux::cli::add_wall_command(app);
   crux::cli::add_filter_stats_command(app);
   crux::cli::add_learning_commands(app);
-  if (const int refused = check_names(app, argc, argv); refused != 0) return refused;
+  const CLI::App* command = &app;
+  if (const int refused = check_names(app, argc, argv, command); refused != 0) return refused;
   crux::remove_temporaries_on_signals();
   try {
     app.parse(argc, argv);
@@ -105,8 +132,13 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::RuntimeError& e) {
     return e.get_exit_code();  // the command has already reported why
+  } catch (const CLI::ExtrasError& e) {
+    const std::string wall_hint =
+        command->get_option_no_throw("--wall-file") != nullptr ? "; a wall file is given with --wall-file FILE" : "";
+    return refuse(fmt::format("'{}' does not take {}{} (see '{} --help')", command_path(command),
+                              e.what() + std::string_view(e.what()).find(':') + 2, wall_hint, command_path(command)));
   } catch (const CLI::ParseError& e) {
-    return refuse(fmt::format("{} (see 'crux --help')", e.what()));
+    return refuse(fmt::format("{} (see '{} --help')", e.what(), command_path(command)));
   } catch (const crux::InputError& e) {
     return refuse(e.what());
   } catch (const std::exception& e) {

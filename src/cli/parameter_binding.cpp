@@ -83,6 +83,15 @@ ExperimentConfig ParameterBinding::resolve() {
   // A wall flag replaces the config file's wall of the other kind.
   if (const CLI::Option* seed = option("wall.seed"); seed != nullptr && seed->count() > 0) config.wall_file.clear();
   if (const CLI::Option* file = option("wall.file"); file != nullptr && file->count() > 0) config.wall_seed.reset();
+  // An input named on the command line replaces the config's: its recorded digest no
+  // longer applies.
+  const auto given = [&](const char* key) {
+    const CLI::Option* o = option(key);
+    return o != nullptr && o->count() > 0;
+  };
+  if (given("experiment.urdf")) config.recorded_provenance.erase("urdf_sha256");
+  if (given("wall.file") || given("wall.seed")) config.recorded_provenance.erase("wall_sha256");
+  if (given("experiment.q_grid")) config.recorded_provenance.erase("q_grid_sha256");
   if (!config.wall_file.empty() && config.wall_seed) {
     throw InputError(where("wall.seed"), "give a wall file or a wall seed, not both");
   }

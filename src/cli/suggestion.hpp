@@ -24,7 +24,7 @@ inline std::size_t edit_distance(const std::string& a, const std::string& b) {
 }
 
 // The candidate nearest to `typed` when it is close enough to be a typo (at most a
-// third of its length, and at least 2, edits away) or the only one it begins; empty
+// fifth of its length, and at least 2, edits away) or the only one it begins; empty
 // otherwise.
 inline std::string nearest_name(const std::string& typed, const std::vector<std::string>& candidates) {
   std::string best;
@@ -34,7 +34,7 @@ inline std::string nearest_name(const std::string& typed, const std::vector<std:
   }
   if (prefixed == 1) return best;
   best.clear();
-  std::size_t best_distance = std::max<std::size_t>(2, typed.size() / 3) + 1;
+  std::size_t best_distance = std::max<std::size_t>(2, typed.size() / 5) + 1;
   for (const std::string& candidate : candidates) {
     const std::size_t d = edit_distance(typed, candidate);
     if (d < best_distance) best = candidate, best_distance = d;

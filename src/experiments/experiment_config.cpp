@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -205,7 +206,18 @@ ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config,
         continue;
       }
       const auto field = std::find_if(fields.begin(), fields.end(), [&](const ConfigField& f) { return f.key == key; });
-      if (field == fields.end()) throw InputError(path, fmt::format("line {}: unknown key {}", line, key));
+      if (field == fields.end()) {
+        // Keys of crux 0.1's config files.
+        static const std::map<std::string, std::string> renamed_sections{{"walls", "wall"}, {"rewards", "reward"}};
+        std::string now;
+        if (const auto r = renamed_sections.find(std::string(section.str())); r != renamed_sections.end()) {
+          now = r->second + "." + std::string(name.str());
+        } else if (key == "experiment.beginning_iterations") {
+          now = "experiment.beginning";
+        }
+        throw InputError(path, fmt::format("line {}: unknown key {}{}", line, key,
+                                           now.empty() ? std::string() : " (it is now " + now + ")"));
+      }
       if (!accepted.accepts(key)) {
         throw InputError(path, fmt::format("line {}: crux {} does not take {}", line, command, key));
       }
@@ -260,10 +272,9 @@ void finalize_config(ExperimentConfig& config) {
   require(s.learning.iterations > 0, "experiment.iterations", "must be positive");
   require(config.beginning >= 0, "experiment.beginning", "must be 0 (the default) or positive");
   require(config.beginning <= s.learning.iterations, "experiment.beginning",
-          "must not exceed experiment.iterations (the window lies inside the run)");
+          "must not exceed the run's iterations (the window lies inside the run)");
   s.analysis.beginning =
       config.beginning > 0 ? config.beginning : std::min(AnalysisSettings{}.beginning, s.learning.iterations);
-  config.beginning = s.analysis.beginning;
   require(s.analysis.threshold_length > 0, "experiment.threshold_length", "must be positive");
   require(s.analysis.bootstrap_resamples >= 100 && s.analysis.bootstrap_resamples <= 10000000,
           "experiment.bootstrap_resamples", "must be in [100, 10000000]");

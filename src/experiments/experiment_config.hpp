@@ -28,7 +28,7 @@ struct ExperimentConfig {
   // into walls = N, seeds_per_wall = 1 and clears it.
   std::optional<int> runs;
   // Table I's beginning window; 0: the paper's 2000 iterations, or all of them when a
-  // run is shorter. finalize_config writes the value used back here.
+  // run is shorter (kept as 0, so that a replay with fewer iterations still works).
   int beginning = 0;
   std::string solver = "fast";
   std::string planner = planner_name(Planner::Uniform);

@@ -13,7 +13,6 @@ std::string table_one_text(const ExperimentResult& result, const ExperimentSetti
   for (const Condition c : kConditions) {
     ours[static_cast<int>(c)] = table_one(result.conditions[static_cast<int>(c)].runs, settings.analysis.beginning);
   }
-  const auto cell = [](double value, double paper_value) { return fmt::format("{:6.1f} ({:4.1f})", value, paper_value); };
   std::string text = fmt::format(
       "\nTable I: ours (paper's in brackets), over {} runs per condition; beginning = first {} iterations\n",
       settings.runs(), settings.analysis.beginning);
@@ -26,15 +25,18 @@ std::string table_one_text(const ExperimentResult& result, const ExperimentSetti
         text += fmt::format("    {:<22}", regime_name(static_cast<Regime>(r)));
         for (int c = 0; c < 3; ++c) {
           const RegimeStats& s = ours[c][static_cast<int>(w)][r];
-          const double value = metric == 0 ? s.vertical_cm : 100 * s.success_rate;
+          // No rate without actions, no displacement without successes.
+          const bool defined = metric == 0 ? s.successes > 0 : s.actions > 0;
+          const std::string value =
+              defined ? fmt::format("{:6.1f}", metric == 0 ? s.vertical_cm : 100 * s.success_rate) : "     -";
           if (metric == 2) {
             text += fmt::format("{:>16.0f}", s.actions_per_run);
           } else if (c < 2) {
             const double paper_value = metric == 0 ? paper.vertical_cm[c][static_cast<int>(w)][r]
                                                    : 100 * paper.success_rate[c][static_cast<int>(w)][r];
-            text += fmt::format("{:>16}", cell(value, paper_value));
+            text += fmt::format("{:>16}", fmt::format("{} ({:4.1f})", value, paper_value));
           } else {
-            text += fmt::format("{:>10.1f}", value);
+            text += fmt::format("{:>10}", value);
           }
         }
         text += '\n';

@@ -1,5 +1,7 @@
 #include "reports/text_report.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "common/printable.hpp"
@@ -49,10 +51,11 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentSe
     text += fmt::format("  {} ({} is better)\n", m.metric.description, m.metric.higher_is_better ? "higher" : "lower");
     text += fmt::format(
         "    transfer {:.4g} +- {:.3g}, control {:.4g} +- {:.3g}; difference {:+.4g} ({:+.0f} %), t-interval over walls "
-        "[{:.4g}, {:.4g}], cluster bootstrap [{:.4g}, {:.4g}], p = {:.3g}; paired r = {:.2f}; walls for 80 % power: "
+        "[{:.4g}, {:.4g}], cluster bootstrap [{:.4g}, {:.4g}], p = {:.3g}; paired r = {}; walls for 80 % power: "
         "{}\n",
         tr.mean, tr.half_width, co.mean, co.half_width, d.mean, 100 * m.relative_difference, d.t_low, d.t_high,
-        d.bootstrap_low, d.bootstrap_high, d.p_value, m.paired_correlation,
+        d.bootstrap_low, d.bootstrap_high, d.p_value,
+        std::isfinite(m.paired_correlation) ? fmt::format("{:.2f}", m.paired_correlation) : "-",
         m.walls_for_power > 0 ? std::to_string(m.walls_for_power) : "-");
   }
   text += fmt::format("\nTake-off (first episode of at most {} iterations, at least half w-greedy):\n",
@@ -75,13 +78,14 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentSe
     text += fmt::format(
         "  {:<9} {:6d} actions, {} reachable; back to the hold just left {} (reachable {}); the hold that failed "
         "just before {} (reachable {}); of the others, with evidence {} "
-        "(which succeeded {}); far {} (reachable {}), near {} (reachable {}); median distance {:.1f} cm\n",
+        "(which succeeded {}); far {} (reachable {}), near {} (reachable {}); median distance {}\n",
         regime_name(static_cast<Regime>(r)), p.actions, share(p.successes, p.actions),
         share(p.back_to_left_hold, p.actions), share(p.back_to_left_hold_successes, p.back_to_left_hold),
         share(p.repeats_of_failure, p.actions), share(p.repeats_of_failure_successes, p.repeats_of_failure),
         share(p.with_evidence, p.actions - p.repeats_of_failure), fmt::format("{:.0f} %", 100 * p.evidence_success_rate),
         share(p.far, p.with_evidence), share(p.far_successes, p.far), share(p.near, p.with_evidence),
-        share(p.near_successes, p.near), p.median_distance_cm);
+        share(p.near_successes, p.near),
+        p.median_distance_cm >= 0 ? fmt::format("{:.1f} cm", p.median_distance_cm) : std::string("-"));
   }
   return text;
 }

@@ -114,7 +114,7 @@ TEST(ExperimentConfig, TheBeginningDefaultsTo2000OrTheRunAndMayNotExceedIt) {
   ExperimentConfig paper;
   finalize_config(paper);
   EXPECT_EQ(paper.settings.analysis.beginning, 2000);
-  EXPECT_EQ(paper.beginning, 2000) << "written back explicitly";
+  EXPECT_EQ(paper.beginning, 0) << "kept as the default, which follows the iterations";
   ExperimentConfig short_run;
   short_run.settings.learning.iterations = 500;
   finalize_config(short_run);
@@ -156,7 +156,7 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, BadConfigFile,
     ::testing::Values(BadConfig{"syntax", "[experiment]\nwalls = = 3\n", "line 2"},
                       BadConfig{"unknown_key", "[learning]\nalpah = 0.2\n", "unknown key learning.alpah"},
-                      BadConfig{"old_section", "[walls]\nsigma = 0.1\n", "unknown key walls.sigma"},
+                      BadConfig{"old_section", "[walls]\nsigma = 0.1\n", "unknown key walls.sigma (it is now wall.sigma)"},
                       BadConfig{"wrong_type", "[experiment]\nwalls = \"six\"\n", "experiment.walls must be an integer"},
                       BadConfig{"too_many_runs", "[experiment]\nwalls = 2000000\nseeds_per_wall = 2000000\n",
                                 "at most 1000000 runs"},
