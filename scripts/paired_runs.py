@@ -9,9 +9,10 @@ those from before summary.json reported divergence and correlations.
       pair first tries a different hold or gets a different verdict, and the correlation
       of early-episode counts between the pairs.
   paired_runs.py solvers CRUX OUT_DIR [--walls 1-6] [--seeds 1-4] [--jobs 2]
-      `crux train` on every wall seed x learning seed with the fast and the paper
-      solver, then the same comparison between the two solvers, with the paired
-      difference in episodes per run analysed over walls.
+      `crux train --wall-seed W --seed S --ik-solver fast|paper` on every wall seed W x
+      learning seed S (--walls and --seeds are ranges of seeds), then the same
+      comparison between the two solvers, with the paired difference in episodes per
+      run analysed over walls. A build that predates --ik-solver gets --solver.
 
 Only the standard library of Debian's /usr/bin/python3 is used.
 """
@@ -100,10 +101,17 @@ def folder_report(args):
           f"{correlation(early_t, early_c):.2f}")
 
 
-def run_train(crux, out, wall, seed, solver):
+def solver_flag(crux):
+    """`--ik-solver` (ik.solver); builds from before the command line was redesigned
+    named it `--solver`."""
+    usage = subprocess.run([crux, "train", "--help"], check=True, capture_output=True, text=True).stdout
+    return "--ik-solver" if "--ik-solver" in usage else "--solver"
+
+
+def run_train(crux, flag, out, wall, seed, solver):
     folder = os.path.join(out, f"w{wall}_s{seed}_{solver}")
     if not os.path.exists(os.path.join(folder, "episodes.csv")):
-        subprocess.run([crux, "train", "--wall-seed", str(wall), "--seed", str(seed), "--solver", solver,
+        subprocess.run([crux, "train", "--wall-seed", str(wall), "--seed", str(seed), flag, solver,
                         "-o", folder], check=True, stdout=subprocess.DEVNULL)
     return folder
 
@@ -116,8 +124,9 @@ def parse_range(text):
 def solvers_report(args):
     walls, seeds = parse_range(args.walls), parse_range(args.seeds)
     jobs = [(w, s, solver) for w in walls for s in seeds for solver in ("paper", "fast")]
+    flag = solver_flag(args.crux)
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        folders = dict(zip(jobs, pool.map(lambda j: run_train(args.crux, args.out, *j), jobs)))
+        folders = dict(zip(jobs, pool.map(lambda j: run_train(args.crux, flag, args.out, *j), jobs)))
     by_wall, divergence, fast_episodes, paper_episodes = {}, [], [], []
     iterations = 0
     for w in walls:

@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include "configurations/filter_statistics.hpp"
 #include "support/test_walls.hpp"
 #include "wall/random_wall.hpp"
 
@@ -59,27 +58,6 @@ TEST(GeometricFilter, EachReadingOfFeetAboveHands) {
 TEST(GeometricFilter, ReadingsParseByName) {
   for (const auto reading : kFeetAboveHandsReadings) EXPECT_EQ(parse_reading(reading_name(reading)), reading);
   EXPECT_FALSE(parse_reading("feet-anywhere").has_value());
-}
-
-TEST(FilterStatistics, CountsEveryOrderedConfigurationOnce) {
-  const Wall wall = six_holds();
-  const auto counts = filter_statistics({wall}, FilterParameters{});
-  for (const FilterCounts& c : counts) {
-    EXPECT_EQ(c.configurations4, 6u * 5 * 4 * 3);
-    EXPECT_EQ(c.configurations3, 4u * 6 * 5 * 4);
-  }
-  // Hand count of passing 4-configurations under the default reading, by brute force.
-  std::uint64_t passing = 0;
-  for (int a = 0; a < 6; ++a)
-    for (int b = 0; b < 6; ++b)
-      for (int c = 0; c < 6; ++c)
-        for (int d = 0; d < 6; ++d)
-          if (a != b && a != c && a != d && b != c && b != d && c != d)
-            passing += passes_filter(wall, config(a, b, c, d), FilterParameters{});
-  const auto& selected = counts[2];
-  ASSERT_EQ(kFeetAboveHandsReadings[2], FilterParameters{}.feet_above_hands);
-  EXPECT_EQ(selected.pass4, passing);
-  EXPECT_GT(passing, 0u);
 }
 
 }  // namespace

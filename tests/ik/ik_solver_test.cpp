@@ -126,20 +126,3 @@ TEST(IkSolver, ParsesSolverNames) {
 
 }  // namespace
 }  // namespace crux
-
-namespace crux {
-namespace {
-
-TEST(ReachTarget, NanPostureIsNeverReached) {
-  ReachTarget target;
-  target.hold_centres = start_layout_holds();
-  std::array<Eigen::Vector3d, kOperationalPointCount> points;
-  points[0] = target.root;
-  for (int limb = 0; limb < kLimbCount; ++limb) points[operational_point(limb)] = target.hold_centres[limb];
-  EXPECT_TRUE(target_reached(points, target, {}));
-  points[2].x() = std::nan("");
-  EXPECT_FALSE(target_reached(points, target, {}));
-}
-
-}  // namespace
-}  // namespace crux

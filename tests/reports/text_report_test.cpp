@@ -2,26 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include "reports/paper_reference.hpp"
 #include "reports/summary.hpp"
-#include "reports/table_one_text.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
 namespace {
-
-TEST(TextReport, TableOnePrintsThePapersValuesInBrackets) {
-  ExperimentSettings settings;
-  settings.wall_pairs = 1;
-  const ExperimentResult empty;
-  const std::string text = table_one_text(empty, settings);
-  const PaperTableOne& paper = paper_table_one();
-  // Training, beginning, w-greedy: the paper's 7.3 cm and 100 % success.
-  EXPECT_EQ(paper.vertical_cm[0][0][0], 7.3);
-  EXPECT_NE(text.find("( 7.3)"), std::string::npos) << text;
-  EXPECT_NE(text.find("(100.0)"), std::string::npos) << text;
-  EXPECT_NE(text.find("beginning = first 2000 iterations"), std::string::npos);
-}
 
 TEST(TextReport, ARunIsOneLineNamingItsWallAndFolder) {
   const BodyModel& model = testing::human_model();

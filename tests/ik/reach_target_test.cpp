@@ -1,0 +1,117 @@
+#include "ik/reach_target.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace crux {
+namespace {
+
+using Points = std::array<Eigen::Vector3d, kOperationalPointCount>;
+
+// Hands at 2 m, feet at 0.5 m, root target 1 m up and 0.3 m from the wall.
+ReachTarget sample_target() {
+  ReachTarget target;
+  target.hold_centres = {Eigen::Vector3d(0, 0.2, 2.0), Eigen::Vector3d(0, 0.8, 2.0), Eigen::Vector3d(0, 0.3, 0.5),
+                         Eigen::Vector3d(0, 0.7, 0.5)};
+  target.root = Eigen::Vector3d(0.3, 0.5, 1.0);
+  return target;
+}
+
+// Each operational point off its target by a known distance:
+//   root 9 cm (z), right hand 5 cm (x), left hand 5 cm (3-4-5 in y, z), right foot 0,
+//   left foot 7 cm (z).
+Points sample_points(const ReachTarget& t) {
+  return {t.root + Eigen::Vector3d(0, 0, 0.09), t.hold_centres[0] + Eigen::Vector3d(0.05, 0, 0),
+          t.hold_centres[1] + Eigen::Vector3d(0, 0.03, -0.04), t.hold_centres[2],
+          t.hold_centres[3] + Eigen::Vector3d(0, 0, -0.07)};
+}
+
+TEST(ReachTarget, ResidualIsTheWorstGraspPointAndIgnoresTheRoot) {
+  const ReachTarget target = sample_target();
+  Points points = sample_points(target);
+  EXPECT_NEAR(grasp_residual(points, target), 0.07, 1e-12) << "the left foot; the root's 9 cm do not count";
+  points[0] += Eigen::Vector3d(1.0, 1.0, 1.0);
+  EXPECT_NEAR(grasp_residual(points, target), 0.07, 1e-12);
+  points[operational_point(Limb::RightHand)] = target.hold_centres[0] + Eigen::Vector3d(0, -0.3, 0.4);
+  EXPECT_NEAR(grasp_residual(points, target), 0.5, 1e-12);
+}
+
+TEST(ReachTarget, ResidualPairsEachLimbWithItsOwnHold) {
+  // Every grasp point on a hold, but hands swapped: 0.6 m off each.
+  const ReachTarget target = sample_target();
+  Points points = sample_points(target);
+  points[operational_point(Limb::RightHand)] = target.hold_centres[static_cast<int>(Limb::LeftHand)];
+  points[operational_point(Limb::LeftHand)] = target.hold_centres[static_cast<int>(Limb::RightHand)];
+  EXPECT_NEAR(grasp_residual(points, target), 0.6, 1e-12);
+  EXPECT_FALSE(target_reached(points, target, ReachTolerances{}));
+}
+
+TEST(ReachTarget, CostIsHalfTheSumOfSquaredDistancesOfAllFivePoints) {
+  const ReachTarget target = sample_target();
+  // 1/2 (0.09^2 + 0.05^2 + 0.05^2 + 0 + 0.07^2) = 1/2 (0.0081 + 0.0025 + 0.0025 + 0.0049) = 0.009
+  EXPECT_NEAR(reach_cost(sample_points(target), target), 0.009, 1e-15);
+  Points exact{target.root, target.hold_centres[0], target.hold_centres[1], target.hold_centres[2],
+               target.hold_centres[3]};
+  EXPECT_EQ(reach_cost(exact, target), 0.0);
+  exact[0].x() += 2.0;  // the root counts in the cost
+  EXPECT_DOUBLE_EQ(reach_cost(exact, target), 2.0);
+}
+
+TEST(ReachTarget, ReachedWhenEveryGraspSphereMeetsItsHoldAndTheRootIsWithinTolerance) {
+  const ReachTarget target = sample_target();
+  const ReachTolerances tolerances;  // grasp 4 cm + hold 4 cm: contact within 8 cm; root within 10 cm
+  Points points = sample_points(target);
+  EXPECT_TRUE(target_reached(points, target, tolerances));
+
+  Points foot_off = points;
+  foot_off[operational_point(Limb::LeftFoot)] = target.hold_centres[3] + Eigen::Vector3d(0, 0, -0.09);
+  EXPECT_FALSE(target_reached(foot_off, target, tolerances)) << "9 cm: the spheres do not meet";
+
+  Points root_off = points;
+  root_off[0] = target.root + Eigen::Vector3d(0, 0, 0.11);
+  EXPECT_FALSE(target_reached(root_off, target, tolerances)) << "root 11 cm off";
+
+  ReachTolerances wide_root = tolerances;
+  wide_root.root_radius = 0.12;
+  EXPECT_TRUE(target_reached(root_off, target, wide_root));
+}
+
+TEST(ReachTarget, ContactUsesEachHoldsOwnRadius) {
+  ReachTarget target = sample_target();
+  Points points = sample_points(target);
+  points[operational_point(Limb::LeftFoot)] = target.hold_centres[3] + Eigen::Vector3d(0, 0, -0.09);
+  EXPECT_FALSE(target_reached(points, target, ReachTolerances{}));
+  target.hold_radii[static_cast<int>(Limb::LeftFoot)] = 0.06;  // 4 + 6 = 10 cm of contact
+  EXPECT_TRUE(target_reached(points, target, ReachTolerances{}));
+  target.hold_radii[static_cast<int>(Limb::RightFoot)] = 0.0;  // the right foot sits on its centre
+  EXPECT_TRUE(target_reached(points, target, ReachTolerances{}));
+}
+
+TEST(ReachTarget, SpheresThatJustTouchCount) {
+  // Radii and offsets exact in binary: 0.25 + 0.25 of contact, 0.5 away.
+  ReachTarget target = sample_target();
+  target.hold_radii = {0.25, 0.25, 0.25, 0.25};
+  target.root.x() = 0.25;  // 0.25 + 0.5 - 0.25 is exact
+  const ReachTolerances tolerances{0.25, 0.5};
+  Points points{target.root + Eigen::Vector3d(0.5, 0, 0), target.hold_centres[0] + Eigen::Vector3d(0.5, 0, 0),
+                target.hold_centres[1], target.hold_centres[2], target.hold_centres[3]};
+  EXPECT_TRUE(target_reached(points, target, tolerances));
+  points[1].x() = std::nextafter(0.5, 1.0);
+  EXPECT_FALSE(target_reached(points, target, tolerances));
+}
+
+TEST(ReachTarget, ANanPostureIsNeverReached) {
+  const ReachTarget target = sample_target();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  ASSERT_TRUE(target_reached(sample_points(target), target, ReachTolerances{})) << "reached but for the NaN";
+  for (int point = 0; point < kOperationalPointCount; ++point) {
+    Points points = sample_points(target);
+    points[point].y() = nan;
+    EXPECT_FALSE(target_reached(points, target, ReachTolerances{})) << "point " << point;
+  }
+}
+
+}  // namespace
+}  // namespace crux
