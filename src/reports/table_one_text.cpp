@@ -30,7 +30,7 @@ std::string table_one_text(const ExperimentResult& result, const ExperimentSetti
           const std::string value =
               defined ? fmt::format("{:6.1f}", metric == 0 ? s.vertical_cm : 100 * s.success_rate) : "     -";
           if (metric == 2) {
-            text += fmt::format("{:>16.0f}", s.actions_per_run);
+            text += fmt::format("{:>{}.0f}", s.actions_per_run, c < 2 ? 16 : 10);
           } else if (c < 2) {
             const double paper_value = metric == 0 ? paper.vertical_cm[c][static_cast<int>(w)][r]
                                                    : 100 * paper.success_rate[c][static_cast<int>(w)][r];
