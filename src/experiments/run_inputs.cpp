@@ -10,9 +10,11 @@
 
 namespace crux {
 
-BodyModel load_configured_body(const ExperimentConfig& config) {
-  return load_body_model(config.urdf.empty() ? default_body_model_path() : config.urdf);
+std::string configured_urdf_path(const ExperimentConfig& config) {
+  return config.urdf.empty() ? default_body_model_path() : config.urdf;
 }
+
+BodyModel load_configured_body(const ExperimentConfig& config) { return load_body_model(configured_urdf_path(config)); }
 
 Wall load_configured_wall(const ExperimentConfig& config) {
   if (!config.wall_file.empty()) return load_wall(config.wall_file);

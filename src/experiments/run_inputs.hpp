@@ -7,7 +7,10 @@
 
 namespace crux {
 
-// The configured URDF, or the default body model.
+// The configured URDF's path, or the default body model's.
+std::string configured_urdf_path(const ExperimentConfig& config);
+
+// The body model of configured_urdf_path.
 BodyModel load_configured_body(const ExperimentConfig& config);
 
 // The wall of config.wall_file, or the random wall of config.wall_seed drawn with the

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "body/urdf_loader.hpp"
+#include "experiments/run_inputs.hpp"
 #include "common/build_info.hpp"
 #include "common/input_error.hpp"
 #include "common/sha256.hpp"
@@ -19,9 +19,7 @@ std::string absolute_path(const std::string& path) {
 
 }  // namespace
 
-std::string configured_urdf(const ExperimentConfig& config) {
-  return absolute_path(config.urdf.empty() ? default_body_model_path() : config.urdf);
-}
+std::string configured_urdf(const ExperimentConfig& config) { return absolute_path(configured_urdf_path(config)); }
 
 Provenance record_provenance(const ExperimentConfig& config) {
   Provenance p;
