@@ -265,6 +265,14 @@ BodyModel load_body_model_from_string(const std::string& urdf_xml, const std::st
                                       const GraspFrameNames& frames) {
   if (urdf_xml.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(source, "the file is empty");
   const urdf::ModelInterfaceSharedPtr parsed = parse_urdf(urdf_xml, source);
+  // urdfdom links own their children through shared pointers, so joints that form a cycle
+  // would keep the whole graph alive; cutting those edges lets the parsed model be freed.
+  struct ChildLinkRelease {
+    urdf::ModelInterface& urdf;
+    ~ChildLinkRelease() {
+      for (auto& entry : urdf.links_) entry.second->child_links.clear();
+    }
+  } release{*parsed};
   return ModelBuilder(*parsed, source, frames).build();
 }
 
