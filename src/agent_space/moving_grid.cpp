@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
 namespace crux {
 
 GridPlacement place_grid(const GridParameters& grid, Limb free_limb, const Eigen::Vector3d& limb_position) {
@@ -49,6 +51,13 @@ int hold_in_tile(const Wall& wall, const GridPlacement& placement, int tile) {
     }
   }
   return best;
+}
+
+std::string describe_grid(const GridParameters& grid) {
+  std::string anchors;
+  for (const auto& anchor : grid.anchors) anchors += fmt::format(" ({}, {})", anchor[0], anchor[1]);
+  return fmt::format("a {} x {} moving grid of {} x {} m tiles, anchors{}", grid.columns, grid.rows, grid.tile_width,
+                     grid.tile_height, anchors);
 }
 
 }  // namespace crux

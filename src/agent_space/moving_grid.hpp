@@ -6,6 +6,7 @@
 
 #include <array>
 #include <span>
+#include <string>
 
 #include <Eigen/Core>
 
@@ -46,6 +47,10 @@ struct GridPlacement {
 };
 
 GridPlacement place_grid(const GridParameters& grid, Limb free_limb, const Eigen::Vector3d& limb_position);
+
+// The grid in words, shape, tile size and anchors: what a tile code means. Q_grid files
+// record it, so that a table is only read back on the grid it was learnt on.
+std::string describe_grid(const GridParameters& grid);
 
 // Grid -> wall: the hold nearest the tile's centre among those lying in the tile, or -1
 // when the tile holds none (spec item 16). Distances are measured in the wall plane;

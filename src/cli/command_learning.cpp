@@ -33,7 +33,7 @@ const ParameterSet kTransferParameters{{"experiment.urdf", "experiment.seed", "e
                                        {"wall.name", "wall.count"}};
 const ParameterSet kPaperParameters{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"},
                                     {"experiment.q_grid", "wall.file", "wall.seed", "wall.name", "wall.count"}};
-const ParameterSet kPlanParameters{{"experiment.urdf", "ik", "filter", "wall"}, {"wall.name", "wall.count"}};
+const ParameterSet kPlanParameters{{"experiment.urdf", "experiment.plan_max_solves", "ik", "filter", "wall"}, {"wall.name", "wall.count"}};
 
 // The replayed config's recorded digests must match the inputs used now.
 Provenance checked_provenance(const ExperimentConfig& config, const ParameterBinding& binding) {
@@ -112,7 +112,7 @@ struct SingleRunCommand {
     const ExperimentResult result =
         single_run_result(std::move(run), wall, config.wall_seed, config.settings.seed, condition, seconds);
     const nlohmann::ordered_json summary = summary_json(result, nullptr, config.settings, provenance);
-    write_run_folder(output, result, model, config_toml, summary);
+    write_run_folder(output, result, model, config.settings.learning.climbing.grid, config_toml, summary);
     std::cout << (json ? summary.dump(2) + "\n" : run_text(result, config.settings.learning.iterations, output));
   }
 };
@@ -126,11 +126,12 @@ struct PlanCommand {
     require_wall(config);
     const BodyModel model = load_configured_body(config);
     const Wall wall = load_configured_wall(config);
-    const Plan plan = shortest_plan(model, wall, config.settings.learning.climbing);
+    const Plan plan = shortest_plan(model, wall, config.settings.learning.climbing, config.settings.plan_search);
     if (json) {
       nlohmann::ordered_json out;
       out["wall"] = wall.name;
       out["found"] = plan.found;
+      out["stopped_at_limit"] = plan.stopped_at_limit;
       out["length"] = plan.found ? plan.length : -1;
       out["holds"] = plan.hold_ids;
       std::vector<std::string> limbs;
@@ -141,8 +142,16 @@ struct PlanCommand {
       std::cout << out.dump(2) << '\n';
       return;
     }
+    if (plan.stopped_at_limit) {
+      std::cout << fmt::format(
+          "no climb found on '{}' within {} IK solves ({} states explored); the search stopped at its limit, "
+          "--plan-max-solves raises it\n",
+          printable(wall.name), plan.ik_solves, plan.expanded_states);
+      return;
+    }
     if (!plan.found) {
-      std::cout << fmt::format("no climb found on '{}' ({} states explored)\n", printable(wall.name), plan.expanded_states);
+      std::cout << fmt::format("no climb exists on '{}' ({} states explored, {} IK solves)\n", printable(wall.name),
+                               plan.expanded_states, plan.ik_solves);
       return;
     }
     std::cout << fmt::format("shortest climb on '{}': {} actions ({} states explored, {} IK solves)\n", printable(wall.name),

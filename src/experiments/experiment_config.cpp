@@ -40,6 +40,9 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"experiment.bootstrap_resamples", "Resamples of the cluster bootstrap over walls",
        &s.analysis.bootstrap_resamples},
       {"experiment.plan", "Compute each wall's exact shortest climb", &s.plan},
+      {"experiment.plan_max_solves",
+       "IK solves the exact planner may spend on a wall; it stops there without a plan (65-230 us each)",
+       &s.plan_search.max_ik_solves},
       {"experiment.greedy_cap", "Actions allowed to the greedy policy's evaluation climb", &l.greedy_cap},
       {"experiment.q_grid", "Q_grid file (q_grid.bin of a training run) that transfer starts from", &c.q_grid},
       {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha},
@@ -232,7 +235,7 @@ namespace {
 
 constexpr long long kMaxRunsPerCondition = 1000000;
 
-void require(bool ok, const char* key, const char* problem) {
+void require(bool ok, const char* key, const std::string& problem) {
   if (!ok) throw InputError(key, problem);
 }
 
@@ -278,6 +281,7 @@ void finalize_config(ExperimentConfig& config) {
   require(s.analysis.threshold_length > 0, "experiment.threshold_length", "must be positive");
   require(s.analysis.bootstrap_resamples >= 100 && s.analysis.bootstrap_resamples <= 10000000,
           "experiment.bootstrap_resamples", "must be in [100, 10000000]");
+  require(s.plan_search.max_ik_solves > 0, "experiment.plan_max_solves", "must be positive");
   require(s.learning.greedy_cap > 0, "experiment.greedy_cap", "must be positive");
   require(config.wall_count > 0, "wall.count", "must be positive");
   const DynaSettings& dyna = s.learning.dyna;
@@ -307,6 +311,8 @@ void finalize_config(ExperimentConfig& config) {
   }
   require(s.walls.columns >= start_columns, "wall.columns", "must reach the start holds (at least 3 tiles)");
   require(s.walls.rows >= start_rows, "wall.rows", "must reach the start holds (at least 3 tiles)");
+  require((s.walls.columns + 1LL) * (s.walls.rows + 1LL) <= kMaxHoldCount, "wall.columns",
+          fmt::format("(columns + 1) x (rows + 1) holds must be at most {}", kMaxHoldCount));
   require(s.walls.tile_width > 0, "wall.tile_width", "must be positive");
   require(s.walls.tile_height > 0, "wall.tile_height", "must be positive");
   require(s.walls.sigma >= 0, "wall.sigma", "must be 0 or positive");

@@ -84,7 +84,7 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSe
     ExperimentWall& wall = result.walls[w];
     wall = draw_wall(model, settings, w < walls ? kTrainingRole : kTransferRole, w % walls);
     wall.filtered_pairs = filtered_pairs(wall.wall, settings.learning.climbing.filter);
-    if (settings.plan) wall.plan = shortest_plan(model, wall.wall, settings.learning.climbing);
+    if (settings.plan) wall.plan = shortest_plan(model, wall.wall, settings.learning.climbing, settings.plan_search);
   });
 
   for (ConditionResult& c : result.conditions) {

@@ -43,6 +43,7 @@ struct ExperimentSettings {
   std::uint64_t seed = 1;
   int threads = 0;  // 0: all cores
   bool plan = true;  // compute each wall's exact shortest climb
+  PlanSettings plan_search;
 
   int runs() const { return wall_pairs * seeds_per_wall; }  // per condition
 };

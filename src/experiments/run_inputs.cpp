@@ -23,7 +23,7 @@ Wall load_configured_wall(const ExperimentConfig& config) {
 }
 
 QTable load_q_grid(const std::string& path, const GridParameters& grid) {
-  QTable q_grid = load_q_table(path, grid.tile_count());
+  QTable q_grid = load_q_table(path, grid.tile_count(), describe_grid(grid));
   // Codes beyond this grid's would be read as states of another shape.
   q_grid.for_each_row([&](StateCode state, auto, auto) {
     if (state >= agent_state_count(grid)) {

@@ -12,7 +12,6 @@ namespace {
 struct Node {
   HoldConfiguration configuration;  // a 3-configuration
   const Posture* posture;
-  int depth;
   long parent;
   int hold;  // the hold taken to get here (index), -1 at the start
 };
@@ -24,7 +23,7 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
   ConfigurationReacher reacher(model, wall, parameters.reachability);
   const Posture* start = reacher.reach_start();
   if (start == nullptr) throw InputError(wall.name, "the start configuration is not reachable");
-  std::vector<Node> nodes{{start_configuration(wall).with(Limb::RightHand, kFree), start, 0, -1, -1}};
+  std::vector<Node> nodes{{start_configuration(wall).with(Limb::RightHand, kFree), start, -1, -1}};
   std::unordered_map<std::uint64_t, bool> seen{{encode(nodes[0].configuration, wall.hold_count()), true}};
   std::deque<std::size_t> frontier{0};
   std::vector<int> possible(wall.hold_count());
@@ -41,15 +40,22 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
     }
     plan.length = static_cast<int>(plan.hold_ids.size());
   };
-  while (!frontier.empty() && !plan.found && plan.expanded_states < settings.max_states) {
+  while (!frontier.empty() && !plan.found) {
+    if (reacher.solves() >= static_cast<std::size_t>(settings.max_ik_solves)) {
+      plan.stopped_at_limit = true;
+      break;
+    }
     const std::size_t current = frontier.front();
     frontier.pop_front();
     const Node node = nodes[current];
-    if (node.depth >= settings.max_length) break;
     ++plan.expanded_states;
     const Limb free = node.configuration.free_limb();
     const int count = possible_actions(wall, node.configuration, parameters.filter, possible);
-    for (int i = 0; i < count && !plan.found; ++i) {
+    for (int i = 0; i < count && !plan.found && !plan.stopped_at_limit; ++i) {
+      if (reacher.solves() >= static_cast<std::size_t>(settings.max_ik_solves)) {
+        plan.stopped_at_limit = true;
+        break;
+      }
       const HoldConfiguration complete = node.configuration.with(free, possible[i]);
       const Posture* reached = reacher.reach(*node.posture, complete);
       if (reached == nullptr) continue;
@@ -59,7 +65,7 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
       }
       const HoldConfiguration next = complete.with(next_free_limb(free), kFree);
       if (!seen.emplace(encode(next, wall.hold_count()), true).second) continue;
-      nodes.push_back({next, reached, node.depth + 1, static_cast<long>(current), possible[i]});
+      nodes.push_back({next, reached, static_cast<long>(current), possible[i]});
       frontier.push_back(nodes.size() - 1);
     }
   }

@@ -2,19 +2,21 @@
 
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
+#include "common/printable.hpp"
 
 namespace crux {
 
 namespace {
 
 constexpr char kMagic[8] = {'C', 'R', 'U', 'X', 'Q', 'T', 'A', 'B'};
-constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 8;
+constexpr std::size_t kFixedHeaderSize = 8 + 4 + 4 + 4 + 8;  // the space's bytes come on top
 
 std::uint64_t fnv1a(const std::string& bytes, std::size_t length) {
   std::uint64_t hash = 0xcbf29ce484222325ULL;
@@ -44,10 +46,13 @@ T get(const std::string& in, std::size_t& at) {
 
 }  // namespace
 
-void save_q_table(const std::string& path, const QTable& table) {
+void save_q_table(const std::string& path, const QTable& table, const std::string& state_space) {
+  if (state_space.size() > kMaxStateSpaceNameBytes) throw std::invalid_argument("save_q_table: state space name too long");
   std::string out(kMagic, sizeof(kMagic));
   put<std::uint32_t>(out, kQTableFileVersion);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(table.action_count()));
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(state_space.size()));
+  out += state_space;
   put<std::uint64_t>(out, table.state_count());
   table.for_each_row([&](StateCode state, std::span<const double> values, std::span<const std::uint32_t> visits) {
     put<std::uint64_t>(out, state);
@@ -58,27 +63,40 @@ void save_q_table(const std::string& path, const QTable& table) {
   write_file_atomically(path, out);
 }
 
-QTable load_q_table(const std::string& path, int expected_action_count) {
+QTable load_q_table(const std::string& path, int expected_action_count, const std::string& expected_state_space) {
   const std::string bytes = read_input_file(path, "Q-table file");
   if (bytes.empty()) throw InputError(path, "the file is empty");
   if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
     throw InputError(path, "not a crux Q-table file (no CRUXQTAB header)");
   }
-  if (bytes.size() < kHeaderSize) throw InputError(path, "truncated: the header is incomplete");
+  if (bytes.size() < sizeof(kMagic) + 4) throw InputError(path, "truncated: the header is incomplete");
   std::size_t at = sizeof(kMagic);
   const auto version = get<std::uint32_t>(bytes, at);
+  if (version == 1) {
+    throw InputError(path, fmt::format("Q-table file version 1 does not record the state space it was learnt on; "
+                                       "this crux reads version {} (train again to write one)",
+                                       kQTableFileVersion));
+  }
   if (version != kQTableFileVersion) {
     throw InputError(path, fmt::format("unsupported Q-table file version {} (this crux reads version {})", version,
                                        kQTableFileVersion));
   }
+  if (bytes.size() < kFixedHeaderSize) throw InputError(path, "truncated: the header is incomplete");
   const auto actions = get<std::uint32_t>(bytes, at);
+  const auto space_size = get<std::uint32_t>(bytes, at);
+  if (space_size > kMaxStateSpaceNameBytes || space_size > bytes.size() - kFixedHeaderSize) {
+    throw InputError(path, fmt::format("truncated or corrupted: a state space name of {} bytes", space_size));
+  }
+  const std::string state_space = bytes.substr(at, space_size);
+  at += space_size;
   const auto rows = get<std::uint64_t>(bytes, at);
+  const std::size_t header_size = kFixedHeaderSize + space_size;
   const std::uint64_t row_size = 8 + 12 * static_cast<std::uint64_t>(actions);
-  if (actions == 0 || rows > (bytes.size() - kHeaderSize) / row_size) {
+  if (actions == 0 || rows > (bytes.size() - header_size) / row_size) {
     throw InputError(path, fmt::format("truncated or corrupted: {} rows of {} actions do not fit in {} bytes", rows,
                                        actions, bytes.size()));
   }
-  const std::uint64_t expected_size = kHeaderSize + rows * row_size + 8;
+  const std::uint64_t expected_size = header_size + rows * row_size + 8;
   if (bytes.size() != expected_size) {
     throw InputError(path, fmt::format("{}: expected {} bytes for {} rows, found {}",
                                        bytes.size() < expected_size ? "truncated" : "trailing data", expected_size,
@@ -91,6 +109,10 @@ QTable load_q_table(const std::string& path, int expected_action_count) {
   if (static_cast<int>(actions) != expected_action_count) {
     throw InputError(path, fmt::format("the table has {} actions where {} are expected (a different grid?)", actions,
                                        expected_action_count));
+  }
+  if (state_space != expected_state_space) {
+    throw InputError(path, fmt::format("the table was learnt on {}, this run uses {}", printable(state_space),
+                                       printable(expected_state_space)));
   }
   QTable table(static_cast<int>(actions));
   for (std::uint64_t r = 0; r < rows; ++r) {

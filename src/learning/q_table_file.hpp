@@ -3,8 +3,10 @@
 // format, little-endian whatever the machine.
 //
 //   magic      8 bytes  "CRUXQTAB"
-//   version    u32      1
+//   version    u32      2
 //   actions    u32      action count A
+//   space      u32      byte count S, then S bytes of UTF-8: the state space the codes
+//                       belong to, so a table is never read with another space's codes
 //   rows       u64      row count R
 //   R times:   state u64, A x value f64, A x visits u32
 //   checksum   u64      FNV-1a 64 of every byte before it
@@ -17,14 +19,16 @@
 
 namespace crux {
 
-inline constexpr std::uint32_t kQTableFileVersion = 1;
+inline constexpr std::uint32_t kQTableFileVersion = 2;
+inline constexpr std::size_t kMaxStateSpaceNameBytes = 4096;
 
-// Written to a temporary name and renamed into place.
-void save_q_table(const std::string& path, const QTable& table);
+// Written to a temporary name and renamed into place. `state_space` names the space of
+// the state and action codes (for example the moving grid's shape).
+void save_q_table(const std::string& path, const QTable& table, const std::string& state_space);
 
 // Throws InputError(path, problem) for a missing, empty, foreign, wrong-version,
-// truncated or corrupted file, or one whose action count differs from
-// `expected_action_count`.
-QTable load_q_table(const std::string& path, int expected_action_count);
+// truncated or corrupted file, or one whose action count or state space differs from
+// those expected.
+QTable load_q_table(const std::string& path, int expected_action_count, const std::string& expected_state_space);
 
 }  // namespace crux

@@ -82,7 +82,8 @@ void write_experiment_folder(const fs::path& directory, const ExperimentResult& 
   for (const Condition condition : kConditions) {
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];
     for (std::size_t i = 0; i < c.runs.size(); ++i) {
-      write_run_files(directory / "runs" / fmt::format("{}_{}", condition_name(condition), i), c.runs[i], model);
+      write_run_files(directory / "runs" / fmt::format("{}_{}", condition_name(condition), i), c.runs[i], model,
+                      settings.learning.climbing.grid);
     }
   }
   make_output_directory(directory / "figures");
@@ -95,10 +96,11 @@ void write_experiment_folder(const fs::path& directory, const ExperimentResult& 
 }
 
 void write_run_folder(const fs::path& directory, const ExperimentResult& result, const BodyModel& model,
-                      const std::string& config_toml, const nlohmann::ordered_json& summary) {
+                      const GridParameters& grid, const std::string& config_toml,
+                      const nlohmann::ordered_json& summary) {
   begin_output_folder(directory);
   for (const ConditionResult& c : result.conditions) {
-    if (!c.runs.empty()) write_run_files(directory, c.runs.front(), model);
+    if (!c.runs.empty()) write_run_files(directory, c.runs.front(), model, grid);
   }
   write_file_atomically(directory / "config.toml", config_toml);
   save_wall((directory / "wall.json").string(), result.walls.front().wall);

@@ -37,6 +37,7 @@ void write_experiment_folder(const std::filesystem::path& directory, const Exper
 // A `crux train` or `crux transfer` folder: the run's files, wall.json, config.toml and
 // summary.json. `result` holds the one run (single_run_result).
 void write_run_folder(const std::filesystem::path& directory, const ExperimentResult& result, const BodyModel& model,
-                      const std::string& config_toml, const nlohmann::ordered_json& summary);
+                      const GridParameters& grid, const std::string& config_toml,
+                      const nlohmann::ordered_json& summary);
 
 }  // namespace crux

@@ -8,7 +8,8 @@
 
 namespace crux {
 
-void write_run_files(const std::filesystem::path& directory, const RunResult& run, const BodyModel& model) {
+void write_run_files(const std::filesystem::path& directory, const RunResult& run, const BodyModel& model,
+                     const GridParameters& grid) {
   make_output_directory(directory);
   std::string iterations = "iteration,episode,regime,hold,success,root_rise_cm,reward\n";
   for (std::size_t i = 0; i < run.iterations.size(); ++i) {
@@ -22,7 +23,7 @@ void write_run_files(const std::filesystem::path& directory, const RunResult& ru
     episodes += fmt::format("{},{}\n", e, run.episode_lengths[e]);
   }
   write_file_atomically(directory / "episodes.csv", episodes);
-  save_q_table((directory / "q_grid.bin").string(), run.q_grid);
+  save_q_table((directory / "q_grid.bin").string(), run.q_grid, describe_grid(grid));
   write_file_atomically(directory / "climb.csv", posture_csv(model, run.last_climb, "step"));
 }
 

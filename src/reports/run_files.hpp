@@ -8,6 +8,7 @@
 
 namespace crux {
 
-void write_run_files(const std::filesystem::path& directory, const RunResult& run, const BodyModel& model);
+void write_run_files(const std::filesystem::path& directory, const RunResult& run, const BodyModel& model,
+                     const GridParameters& grid);
 
 }  // namespace crux

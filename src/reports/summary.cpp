@@ -232,7 +232,8 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
                      {"seed", wall_seed_json(w)},
                      {"rejected_seeds", w.rejected_seeds},
                      {"plan_length", w.plan.found ? w.plan.length : -1},
-                     {"plan_holds", w.plan.hold_ids}});
+                     {"plan_holds", w.plan.hold_ids},
+                     {"plan_stopped_at_limit", w.plan.stopped_at_limit}});
   }
   out["walls"] = walls;
   return out;

@@ -30,11 +30,17 @@ std::string episode_text(const ExperimentResult& result, const ExperimentSetting
   if (settings.plan) {
     double plan = 0;
     int found = 0;
+    int stopped = 0;
     for (const ExperimentWall& w : result.walls) {
       if (w.plan.found) plan += w.plan.length, ++found;
+      if (w.plan.stopped_at_limit) ++stopped;
     }
     text += fmt::format("  exact shortest climb: {:.1f} actions on average ({} of {} walls; the paper: about {})\n",
                         found ? plan / found : 0.0, found, result.walls.size(), kPaperOptimalClimbLength);
+    if (stopped > 0) {
+      text += fmt::format("  the exact planner stopped at its limit of {} IK solves on {} walls (--plan-max-solves)\n",
+                          settings.plan_search.max_ik_solves, stopped);
+    }
   }
   return text;
 }

@@ -19,6 +19,10 @@ struct Hold {
   double radius = 0.04;
 };
 
+// A configuration code holds four hold indices in base (holds + 1) within 64 bits, and
+// the filter and planner scan holds per state: 10000 keeps both far inside their limits.
+constexpr int kMaxHoldCount = 10000;
+
 struct Wall {
   std::string name;
   std::vector<Hold> holds;

@@ -235,6 +235,9 @@ class WallReader {
       fail(fmt::format("holds has {} entries; a wall needs at least {} holds (one per limb)", value.size(),
                        kMinimumHoldCount));
     }
+    if (value.size() > static_cast<std::size_t>(kMaxHoldCount)) {
+      fail(fmt::format("holds has {} entries; crux supports at most {} holds on a wall", value.size(), kMaxHoldCount));
+    }
     std::vector<Hold> result;
     std::unordered_map<int, std::size_t> index_of_id;
     for (std::size_t i = 0; i < value.size(); ++i) {

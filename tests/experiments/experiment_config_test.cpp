@@ -201,6 +201,13 @@ TEST(ExperimentConfig, RangesThatWouldBreakWallsOrCodesAreRefusedNamingTheKey) {
   huge_grid.settings.learning.climbing.grid.columns = 40;
   huge_grid.settings.learning.climbing.grid.rows = 40;  // 4 x 1601^3 codes overflow 32 bits
   EXPECT_EQ(refused_key(huge_grid), "grid.columns");
+  ExperimentConfig huge_wall;
+  huge_wall.settings.walls.columns = 100000;
+  huge_wall.settings.walls.rows = 100000;  // 10^10 holds, and an int overflow if multiplied as ints
+  EXPECT_EQ(refused_key(huge_wall), "wall.columns");
+  ExperimentConfig no_plan_budget;
+  no_plan_budget.settings.plan_search.max_ik_solves = 0;
+  EXPECT_EQ(refused_key(no_plan_budget), "experiment.plan_max_solves");
   ExperimentConfig bad_anchor;
   bad_anchor.settings.learning.climbing.grid.anchors[0] = {5, 4};
   EXPECT_EQ(refused_key(bad_anchor), "grid.right_hand_anchor_column");

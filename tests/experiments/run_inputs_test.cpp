@@ -31,11 +31,11 @@ TEST(RunInputs, AQGridOfAnotherGridIsRefusedNamingTheFile) {
   QTable q(grid.tile_count());
   q.set_value(agent_state_count(grid) - 1, 0, 1.0);
   const auto fits = testing::temporary_path("q_fits.bin");
-  save_q_table(fits.string(), q);
+  save_q_table(fits.string(), q, describe_grid(grid));
   EXPECT_NO_THROW(load_q_grid(fits.string(), grid));
   q.set_value(agent_state_count(grid), 0, 1.0);  // the first code beyond the grid
   const auto beyond = testing::temporary_path("q_beyond.bin");
-  save_q_table(beyond.string(), q);
+  save_q_table(beyond.string(), q, describe_grid(grid));
   try {
     load_q_grid(beyond.string(), grid);
     FAIL() << "accepted a state code beyond the grid";
@@ -46,6 +46,25 @@ TEST(RunInputs, AQGridOfAnotherGridIsRefusedNamingTheFile) {
   GridParameters other = grid;
   other.rows = 3;  // another tile count: another action count
   EXPECT_THROW(load_q_grid(fits.string(), other), InputError);
+}
+
+// Same tile count, so the same action count; the recorded grid tells them apart.
+TEST(RunInputs, AQGridLearntOnA7By5GridIsRefusedOnA5By7Run) {
+  GridParameters wide;
+  wide.columns = 7;
+  wide.rows = 5;
+  wide.anchors = {{{1, 3}, {3, 3}, {1, 1}, {3, 1}}};
+  const auto path = testing::temporary_path("q_wide.bin");
+  save_q_table(path.string(), QTable(wide.tile_count()), describe_grid(wide));
+  EXPECT_NO_THROW(load_q_grid(path.string(), wide));
+  try {
+    load_q_grid(path.string(), GridParameters{});
+    FAIL() << "a 7 x 5 table loaded into a 5 x 7 run";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), path.string());
+    EXPECT_NE(std::string(e.what()).find("learnt on a 7 x 5 moving grid"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("this run uses a 5 x 7 moving grid"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

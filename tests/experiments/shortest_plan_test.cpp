@@ -40,5 +40,31 @@ TEST(ShortestPlan, IsShortest) {
   EXPECT_GE(low.length, 1);
 }
 
+TEST(ShortestPlan, StopsAtItsBudgetOfSolves) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = generate_random_wall(3);  // its climb takes about 34000 solves to find
+  PlanSettings settings;
+  settings.max_ik_solves = 1000;
+  const Plan plan = shortest_plan(model, wall, ClimbingParameters{}, settings);
+  EXPECT_FALSE(plan.found);
+  EXPECT_TRUE(plan.stopped_at_limit);
+  EXPECT_EQ(plan.ik_solves, 1000u);
+  EXPECT_TRUE(plan.hold_ids.empty());
+}
+
+TEST(ShortestPlan, AnExhaustedSearchIsNotALimit) {
+  // Sixteen holds and a finish out of reach: every state is explored, within the budget.
+  const BodyModel& model = testing::human_model();
+  RandomWallParameters small;
+  small.columns = 3;
+  small.rows = 3;
+  small.finish_height = 100.0;
+  const Plan plan = shortest_plan(model, generate_random_wall(5, small), ClimbingParameters{});
+  EXPECT_FALSE(plan.found);
+  EXPECT_FALSE(plan.stopped_at_limit);
+  EXPECT_GT(plan.expanded_states, 1u);
+  EXPECT_LT(plan.ik_solves, static_cast<std::size_t>(PlanSettings{}.max_ik_solves));
+}
+
 }  // namespace
 }  // namespace crux

@@ -40,7 +40,7 @@ TEST(OutputFolder, ARunFolderHoldsTheRunsFilesItsWallConfigAndSummary) {
   const ExperimentResult result =
       single_run_result(run_learning(model, wall, learning, 8), wall, 3, 8, Condition::Training, 0.0);
   const fs::path folder = testing::temporary_path("run_folder");
-  write_run_folder(folder, result, model, "# config\n", summary_json(result, nullptr, ExperimentSettings{}, {}));
+  write_run_folder(folder, result, model, GridParameters{}, "# config\n", summary_json(result, nullptr, ExperimentSettings{}, {}));
   for (const char* file : {"iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "wall.json", "config.toml",
                            "summary.json"}) {
     EXPECT_TRUE(fs::exists(folder / file)) << file;

@@ -47,7 +47,7 @@ RunResult hand_made_run() {
 
 TEST(RunFiles, IterationsCsvByHand) {
   const auto dir = testing::temporary_path("run_files_iterations");
-  write_run_files(dir, hand_made_run(), testing::human_model());
+  write_run_files(dir, hand_made_run(), testing::human_model(), GridParameters{});
   // Iterations count from 1; the rise is in cm; success is 0 or 1.
   EXPECT_EQ(read_text(dir / "iterations.csv"),
             "iteration,episode,regime,hold,success,root_rise_cm,reward\n"
@@ -61,7 +61,7 @@ TEST(RunFiles, RisesAndRewardsReadBackExactly) {
   RunResult run;
   run.iterations = {{0, Regime::Random, 1, true, 0.07, -0.1}};
   const auto dir = testing::temporary_path("run_files_exact");
-  write_run_files(dir, run, testing::human_model());
+  write_run_files(dir, run, testing::human_model(), GridParameters{});
   const std::vector<std::string> lines = lines_of(read_text(dir / "iterations.csv"));
   ASSERT_EQ(lines.size(), 2u);
   std::istringstream row(lines[1]);
@@ -74,14 +74,14 @@ TEST(RunFiles, RisesAndRewardsReadBackExactly) {
 
 TEST(RunFiles, EpisodesCsvByHand) {
   const auto dir = testing::temporary_path("run_files_episodes");
-  write_run_files(dir, hand_made_run(), testing::human_model());
+  write_run_files(dir, hand_made_run(), testing::human_model(), GridParameters{});
   EXPECT_EQ(read_text(dir / "episodes.csv"), "episode,length\n0,3\n1,1\n") << "episodes count from 0";
 }
 
 TEST(RunFiles, QGridLoadsBackWithItsValuesAndVisits) {
   const auto dir = testing::temporary_path("run_files_q_grid");
-  write_run_files(dir, hand_made_run(), testing::human_model());
-  const QTable q = load_q_table((dir / "q_grid.bin").string(), 35);
+  write_run_files(dir, hand_made_run(), testing::human_model(), GridParameters{});
+  const QTable q = load_q_table((dir / "q_grid.bin").string(), 35, describe_grid(GridParameters{}));
   EXPECT_EQ(q.state_count(), 2u);
   EXPECT_EQ(q.value(4, 34), -99.5);
   EXPECT_EQ(q.value(9, 0), 180000.25);
@@ -93,7 +93,7 @@ TEST(RunFiles, ClimbCsvHasARowPerPosture) {
   const BodyModel& model = testing::human_model();
   const RunResult run = hand_made_run();
   const auto dir = testing::temporary_path("run_files_climb");
-  write_run_files(dir, run, model);
+  write_run_files(dir, run, model, GridParameters{});
   const std::vector<std::string> lines = lines_of(read_text(dir / "climb.csv"));
   ASSERT_EQ(lines.size(), 1 + run.last_climb.size());
   EXPECT_EQ(lines[0].rfind("step," + model.joints[0].name + ",", 0), 0u) << lines[0];
@@ -109,7 +109,7 @@ TEST(RunFiles, ClimbCsvHasARowPerPosture) {
 
 TEST(RunFiles, CreatesTheFolderAndWritesOnlyItsFourFiles) {
   const auto dir = testing::temporary_path("run_files_nested") / "runs" / "transfer_0";
-  write_run_files(dir, hand_made_run(), testing::human_model());
+  write_run_files(dir, hand_made_run(), testing::human_model(), GridParameters{});
   std::set<std::string> names;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) names.insert(entry.path().filename().string());
   EXPECT_EQ(names, (std::set<std::string>{"climb.csv", "episodes.csv", "iterations.csv", "q_grid.bin"}));
@@ -118,11 +118,11 @@ TEST(RunFiles, CreatesTheFolderAndWritesOnlyItsFourFiles) {
 TEST(RunFiles, AnEmptyRunWritesHeadersAndAnEmptyTable) {
   const auto dir = testing::temporary_path("run_files_empty");
   const RunResult empty;
-  write_run_files(dir, empty, testing::human_model());
+  write_run_files(dir, empty, testing::human_model(), GridParameters{});
   EXPECT_EQ(read_text(dir / "iterations.csv"), "iteration,episode,regime,hold,success,root_rise_cm,reward\n");
   EXPECT_EQ(read_text(dir / "episodes.csv"), "episode,length\n");
   EXPECT_EQ(lines_of(read_text(dir / "climb.csv")).size(), 1u) << "the header only";
-  EXPECT_EQ(load_q_table((dir / "q_grid.bin").string(), empty.q_grid.action_count()).state_count(), 0u);
+  EXPECT_EQ(load_q_table((dir / "q_grid.bin").string(), empty.q_grid.action_count(), describe_grid(GridParameters{})).state_count(), 0u);
 }
 
 }  // namespace

@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include "common/input_error.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
@@ -213,6 +215,17 @@ BadWallCase edit(const char* name, const std::string& from, const std::string& t
 }
 BadWallCase whole(const char* name, const std::string& text, const char* expected) { return {name, text, expected}; }
 
+// One hold more than crux supports, each on its own spot.
+std::string too_many_holds() {
+  std::string holds;
+  for (int id = 1; id <= kMaxHoldCount + 1; ++id) {
+    holds += fmt::format(R"({}{{"id": {}, "position": [0, {}, {}], "radius": 0.04}})", id > 1 ? ", " : "", id,
+                         id % 100, id / 100);
+  }
+  return R"({"format": "crux-wall", "version": 1, "name": "n", "finish_height": 1, "start": {}, "holds": [)" + holds +
+         "]}";
+}
+
 const std::string kHold3 = R"({"id": 3, "position": [0.0, 0.3, 1.5], "radius": 0.04})";
 
 std::vector<BadWallCase> bad_wall_cases() {
@@ -254,6 +267,7 @@ std::vector<BadWallCase> bad_wall_cases() {
               "holds": [{"id": 1, "position": [0, 0, 0], "radius": 0.04}, {"id": 2, "position": [0, 1, 0], "radius": 0.04},
                         {"id": 3, "position": [0, 0, 1], "radius": 0.04}]})",
             "holds has 3 entries; a wall needs at least 4 holds (one per limb)"),
+      whole("too_many_holds", too_many_holds(), "holds has 10001 entries; crux supports at most 10000 holds on a wall"),
       edit("radius_missing", kHold3, R"({"id": 3, "position": [0.0, 0.3, 1.5]})", "holds[2].radius is missing"),
       edit("position_missing", kHold3, R"({"id": 3, "radius": 0.04})", "holds[2].position is missing"),
       edit("id_missing", kHold3, R"({"position": [0.0, 0.3, 1.5], "radius": 0.04})", "holds[2].id is missing"),
