@@ -1,6 +1,7 @@
 #include "common/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -67,12 +68,30 @@ void remove_temporaries_on_signals() {
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
-  // mkstemp: an unpredictable name created exclusively (O_EXCL), so a planted file or
-  // symbolic link is never written through.
-  std::string temporary = path.string() + ".tmp.XXXXXX";
-  const int fd = ::mkostemp(temporary.data(), O_CLOEXEC);
+  // An unpredictable name created exclusively (O_EXCL, O_NOFOLLOW), so a planted file or
+  // symbolic link is never written through. The name is remembered before the file
+  // exists, so that a signal at any moment finds every temporary to remove.
+  std::string temporary;
+  int slot = -1;
+  int fd = -1;
+  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+    std::array<unsigned char, 8> random{};
+    if (::getrandom(random.data(), random.size(), 0) != static_cast<ssize_t>(random.size())) break;
+    temporary = path.string() + ".tmp.";
+    for (const unsigned char byte : random) {
+      temporary += "0123456789abcdef"[byte >> 4];
+      temporary += "0123456789abcdef"[byte & 15];
+    }
+    slot = remember_temporary(temporary);
+    fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    if (fd < 0) {
+      const int reason = errno;
+      forget_temporary(slot);
+      errno = reason;
+      if (reason != EEXIST) break;
+    }
+  }
   if (fd < 0) throw InputError(path.string(), std::string("cannot write: ") + std::strerror(errno));
-  const int slot = remember_temporary(temporary);
   if (::fchmod(fd, 0644) != 0) fail(path, fd, temporary.c_str(), slot);
   std::size_t written = 0;
   while (written < contents.size()) {

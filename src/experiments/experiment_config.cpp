@@ -182,9 +182,14 @@ void assign(const std::string& path, const ConfigField& field, const toml::node&
 
 ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config, const ParameterSet& accepted,
                               const std::string& command) {
+  return apply_config_text(read_input_file(path, "config file"), path, config, accepted, command);
+}
+
+ConfigLines apply_config_text(const std::string& text, const std::string& path, ExperimentConfig& config,
+                              const ParameterSet& accepted, const std::string& command) {
   toml::table table;
   try {
-    table = toml::parse(read_input_file(path, "config file"), path);
+    table = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     const std::string description(e.description());
     if (e.source().begin.line == 0) throw InputError(path, "cannot read the config file: " + description);

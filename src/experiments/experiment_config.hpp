@@ -69,6 +69,9 @@ using ConfigLines = std::map<std::string, int>;
 // the wrong type. The [provenance] table goes to config.recorded_provenance.
 ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config, const ParameterSet& accepted,
                               const std::string& command);
+// The same for TOML text already read; `source` names it in errors.
+ConfigLines apply_config_text(const std::string& text, const std::string& source, ExperimentConfig& config,
+                              const ParameterSet& accepted, const std::string& command);
 
 // Parses the textual choices into the settings and checks ranges. Throws
 // InputError(key, problem), `key` being the config key at fault ("experiment.runs").

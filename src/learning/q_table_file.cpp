@@ -64,7 +64,11 @@ void save_q_table(const std::string& path, const QTable& table, const std::strin
 }
 
 QTable load_q_table(const std::string& path, int expected_action_count, const std::string& expected_state_space) {
-  const std::string bytes = read_input_file(path, "Q-table file");
+  return parse_q_table(read_input_file(path, "Q-table file"), path, expected_action_count, expected_state_space);
+}
+
+QTable parse_q_table(const std::string& bytes, const std::string& path, int expected_action_count,
+                     const std::string& expected_state_space) {
   if (bytes.empty()) throw InputError(path, "the file is empty");
   if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
     throw InputError(path, "not a crux Q-table file (no CRUXQTAB header)");

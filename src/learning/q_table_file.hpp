@@ -30,5 +30,8 @@ void save_q_table(const std::string& path, const QTable& table, const std::strin
 // truncated or corrupted file, or one whose action count or state space differs from
 // those expected.
 QTable load_q_table(const std::string& path, int expected_action_count, const std::string& expected_state_space);
+// The same for a file's bytes already read; `source` names them in errors.
+QTable parse_q_table(const std::string& bytes, const std::string& source, int expected_action_count,
+                     const std::string& expected_state_space);
 
 }  // namespace crux

@@ -27,6 +27,16 @@ void begin_output_folder(const fs::path& directory) {
     fs::remove_all(directory / name, error);
     if (error) throw InputError((directory / name).string(), "cannot remove the earlier output: " + error.message());
   }
+  // Temporaries of a run killed by SIGKILL (other signals remove their own).
+  if (fs::is_directory(directory, error)) {
+    for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
+      const std::string name = entry.path().filename().string();
+      const bool temporary = std::any_of(std::begin(kOutputNames), std::end(kOutputNames), [&](const char* output) {
+        return name.rfind(std::string(output) + ".tmp.", 0) == 0;
+      });
+      if (temporary) fs::remove(entry.path(), error);
+    }
+  }
   make_output_directory(directory);
   write_file_atomically(directory / kIncompleteMarker,
                         "crux is writing this folder; if this file remains, the command was interrupted and the "

@@ -1,0 +1,114 @@
+// What a writer leaves behind when it is interrupted or the disk fills: no temporaries,
+// no summary, and the INCOMPLETE marker (docs/RELIABILITY.md).
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/run_crux.hpp"
+
+namespace crux {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "crux-tests" / ("interruption-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  fs::remove_all(dir / name);
+  return dir / name;
+}
+
+std::vector<fs::path> temporaries_under(const fs::path& folder) {
+  std::vector<fs::path> found;
+  if (!fs::exists(folder)) return found;
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    if (entry.path().filename().string().find(".tmp.") != std::string::npos) found.push_back(entry.path());
+  }
+  return found;
+}
+
+// Runs crux with `arguments` (no shell) and returns its pid.
+pid_t start_crux(const std::vector<std::string>& arguments) {
+  std::vector<char*> argv{const_cast<char*>(CRUX_BINARY)};
+  for (const auto& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::freopen("/dev/null", "w", stdout);
+    ::freopen("/dev/null", "w", stderr);
+    ::execv(CRUX_BINARY, argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// SIGINT and SIGTERM while an experiment folder is being written, at staggered moments
+// after its marker appears: every temporary is removed, and a folder that did not
+// complete keeps its marker and has no summary.
+TEST(Interruption, ASignalWhileWritingLeavesNoTemporaryAndAMarkedFolder) {
+  int interrupted_while_writing = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    const fs::path folder = scratch("signal_" + std::to_string(trial));
+    const pid_t pid = start_crux({"paper", "--walls", "4", "--iterations", "600", "--plan", "false", "--threads", "1",
+                                  "--bootstrap-resamples", "100", "-o", folder.string()});
+    ASSERT_GT(pid, 0);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (!fs::exists(folder / "INCOMPLETE") && std::chrono::steady_clock::now() < deadline) {
+      int status = 0;
+      if (::waitpid(pid, &status, WNOHANG) == pid) FAIL() << "crux ended before writing, status " << status;
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(3 * trial));
+    const int signal = trial % 2 == 0 ? SIGINT : SIGTERM;
+    ::kill(pid, signal);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(temporaries_under(folder).empty()) << "trial " << trial << ": " << temporaries_under(folder).front();
+    if (WIFSIGNALED(status)) {
+      EXPECT_EQ(WTERMSIG(status), signal) << "trial " << trial;
+      ++interrupted_while_writing;
+      EXPECT_TRUE(fs::exists(folder / "INCOMPLETE")) << "trial " << trial;
+      EXPECT_FALSE(fs::exists(folder / "summary.json")) << "trial " << trial;
+    } else {
+      EXPECT_EQ(WEXITSTATUS(status), 0) << "trial " << trial;  // it finished before the signal
+      EXPECT_FALSE(fs::exists(folder / "INCOMPLETE")) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(interrupted_while_writing, 0) << "no trial hit the writing phase";
+  std::cout << interrupted_while_writing << " of 8 signals arrived while the folder was being written\n";
+}
+
+// A full disk, as a file-size limit: the write fails with one line naming the file, the
+// folder keeps its marker, has no summary and no temporary.
+TEST(Interruption, AFullDiskIsOneErrorLineAndAMarkedFolderWithoutSummary) {
+  const fs::path folder = scratch("full_disk");
+  const std::string command = "ulimit -f 40; trap '' XFSZ; exec " + std::string(CRUX_BINARY) +
+                              " train --wall-seed 3 --iterations 2000 -o " + folder.string();
+  const fs::path err = scratch("full_disk.err");
+  const int status = std::system(("bash -c \"" + command + "\" > /dev/null 2> " + err.string()).c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::ifstream in(err);
+  const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(testing::count_lines(message), 1) << message;
+  EXPECT_NE(message.find("cannot write: File too large"), std::string::npos) << message;
+  EXPECT_NE(message.find(folder.string()), std::string::npos) << message;
+  EXPECT_TRUE(fs::exists(folder / "INCOMPLETE"));
+  EXPECT_FALSE(fs::exists(folder / "summary.json"));
+  EXPECT_TRUE(temporaries_under(folder).empty());
+}
+
+}  // namespace
+}  // namespace crux
