@@ -11,6 +11,8 @@ packages=(
   libssl-dev
   # Independent kinematics reference for tests and the benchmark peer.
   liborocos-kdl-dev libkdl-parser-dev
+  # Fuzzing the readers: clang's libFuzzer (the fuzz preset).
+  clang libfuzzer-14-dev
 )
 
 missing=()

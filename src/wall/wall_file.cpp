@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdint>
 #include <limits>
-#include <regex>
 #include <set>
 #include <string_view>
 #include <unordered_map>
@@ -17,6 +17,7 @@
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
+#include "common/printable.hpp"
 
 namespace crux {
 namespace {
@@ -47,11 +48,35 @@ std::string child_path(const std::string& parent, std::string_view key) {
 
 // "parse error at line 3, column 7: syntax error while parsing value - invalid
 // literal; ..." -> "JSON syntax error at line 3, column 7: invalid literal; ...".
+// Plain string search, not std::regex, whose matcher recurses once per character and
+// overflows the stack on a long message; the parser quotes the text it last read, so
+// the problem is cut short and its control characters escaped to stay one line.
 std::string syntax_problem(const std::string& parser_message) {
-  static const std::regex kPosition(R"(at line (\d+), column (\d+): (?:syntax error while parsing [a-z ]+ - )?(.*))");
-  std::smatch match;
-  if (!std::regex_search(parser_message, match, kPosition)) return "JSON syntax error: " + parser_message;
-  return fmt::format("JSON syntax error at line {}, column {}: {}", match[1].str(), match[2].str(), match[3].str());
+  constexpr std::size_t kMaxProblemBytes = 200;
+  const auto number_at = [&](std::size_t& at) {
+    const std::size_t begin = at;
+    while (at < parser_message.size() && std::isdigit(static_cast<unsigned char>(parser_message[at]))) ++at;
+    return parser_message.substr(begin, at - begin);
+  };
+  const auto shortened = [&](std::string text) {
+    if (text.size() > kMaxProblemBytes) text = text.substr(0, kMaxProblemBytes) + "...";
+    return printable(text);
+  };
+  std::size_t at = parser_message.find("at line ");
+  if (at == std::string::npos) return "JSON syntax error: " + shortened(parser_message);
+  at += 8;
+  const std::string line = number_at(at);
+  if (line.empty() || parser_message.compare(at, 9, ", column ") != 0) return "JSON syntax error: " + shortened(parser_message);
+  at += 9;
+  const std::string column = number_at(at);
+  if (column.empty() || parser_message.compare(at, 2, ": ") != 0) return "JSON syntax error: " + shortened(parser_message);
+  at += 2;
+  std::string problem = parser_message.substr(at);
+  constexpr std::string_view kWhileParsing = "syntax error while parsing ";
+  if (problem.rfind(kWhileParsing, 0) == 0) {
+    if (const std::size_t dash = problem.find(" - "); dash != std::string::npos) problem = problem.substr(dash + 3);
+  }
+  return fmt::format("JSON syntax error at line {}, column {}: {}", line, column, shortened(problem));
 }
 
 // First pass over the text, before building the document: the DOM parser keeps the

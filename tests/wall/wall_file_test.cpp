@@ -154,6 +154,21 @@ TEST(WallFile, SyntaxErrorReportsItsLineAndColumn) {
   }
 }
 
+// Found by the wall fuzzer: a long unquoted token once overflowed the stack in the
+// regular expression that reworded the parser's message.
+TEST(WallFile, ALongInvalidTokenIsOneShortLine) {
+  const std::string text = "{\"format\": \"crux-wall\", \"name\": " + std::string(50000, 'D') + "\u0001}";
+  try {
+    parse_wall(text, "long_token.json");
+    FAIL() << "parsed an invalid token";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("JSON syntax error at line 1, column "), std::string::npos) << message.substr(0, 300);
+    EXPECT_LT(message.size(), 400u);
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
+}
+
 TEST(WallFile, SavingAWallThatCouldNotLoadBackWritesNothing) {
   Wall wall = generate_random_wall(1);
   wall.holds[4].position.z() = std::numeric_limits<double>::quiet_NaN();
