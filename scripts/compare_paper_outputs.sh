@@ -18,11 +18,28 @@ trap 'rm -rf "$work"' EXIT
 # shellcheck disable=SC2086
 "$3" paper $4 -o "$work/new" > "$work/new.txt" 2> /dev/null
 status=0
-if diff -rq "$work/old" "$work/new" --exclude=summary.json --exclude=config.toml; then
-  echo "identical: $(find "$work/old" -type f ! -name summary.json ! -name config.toml | wc -l) run files, walls and figure CSVs"
+if diff -rq "$work/old" "$work/new" --exclude=summary.json --exclude=config.toml --exclude=q_grid.bin; then
+  echo "identical: $(find "$work/old" -type f ! -name summary.json ! -name config.toml ! -name q_grid.bin | wc -l) run files, walls and figure CSVs"
 else
   status=1
 fi
+# Q-table files by content: version 2 added the state space to the header, so a
+# version 1 and a version 2 file of the same table differ in header and checksum only.
+/usr/bin/python3 - "$work/old" "$work/new" <<'PY' || status=1
+import pathlib, struct, sys
+def table(path):
+    data = path.read_bytes()
+    version, actions = struct.unpack("<II", data[8:16])
+    rows_at = 16 if version == 1 else 20 + struct.unpack("<I", data[16:20])[0]
+    return actions, data[rows_at:-8]
+old_root, new_root = (pathlib.Path(p) for p in sys.argv[1:3])
+files = sorted(old_root.rglob("q_grid.bin"))
+differing = [str(f.relative_to(old_root)) for f in files if table(f) != table(new_root / f.relative_to(old_root))]
+if differing:
+    print("q_grid.bin tables differ:", ", ".join(differing))
+    sys.exit(1)
+print(f"identical: the tables of {len(files)} q_grid.bin files")
+PY
 # Fields that name the build or time it; wall_pairs was added beside walls (summary version 3).
 /usr/bin/python3 - "$work/old/summary.json" "$work/new/summary.json" <<'PY' || status=1
 import json, sys
