@@ -11,6 +11,8 @@ packages=(
   libssl-dev
   # Independent kinematics reference for tests and the benchmark peer.
   liborocos-kdl-dev libkdl-parser-dev
+  # check_urdf validates the body model in tests
+  liburdfdom-tools
   # Fuzzing the readers: clang's libFuzzer (the fuzz preset).
   clang libfuzzer-14-dev
 )

@@ -2,6 +2,7 @@
 #include "body/body_model.hpp"
 
 #include <gtest/gtest.h>
+#include <urdf_parser/urdf_parser.h>
 
 #include "common/input_error.hpp"
 #include "support/test_models.hpp"
@@ -144,6 +145,27 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(BadModelFile, MissingFileAndDirectoryAreInputErrors) {
   EXPECT_THROW(load_body_model("/nonexistent/crux/body.urdf"), InputError);
   EXPECT_THROW(load_body_model(std::filesystem::temp_directory_path().string()), InputError);
+}
+
+// Any URDF viewer can draw the body: every segment (a link with mass) has visual
+// geometry, made of primitives only, and the frames without mass have none.
+TEST(BodyModel, EverySegmentHasPrimitiveVisualsAndNoFrameHasAny) {
+  const urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(human_urdf_text());
+  ASSERT_TRUE(urdf);
+  int segments = 0;
+  for (const auto& [name, link] : urdf->links_) {
+    const bool segment = link->inertial != nullptr && link->inertial->mass > 0;
+    segments += segment ? 1 : 0;
+    EXPECT_EQ(!link->visual_array.empty(), segment) << name;
+    for (const auto& visual : link->visual_array) {
+      ASSERT_TRUE(visual->geometry) << name;
+      const auto type = visual->geometry->type;
+      EXPECT_TRUE(type == urdf::Geometry::SPHERE || type == urdf::Geometry::BOX || type == urdf::Geometry::CYLINDER)
+          << name;
+    }
+  }
+  EXPECT_EQ(segments, 15);  // torso, pelvis, head, and six segments on each side
+  for (const auto& entry : urdf->links_) entry.second->child_links.clear();
 }
 
 TEST(BodyModel, GraspFramesCanBeRenamedToMapAnotherHumanoid) {
