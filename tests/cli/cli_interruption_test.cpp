@@ -90,6 +90,33 @@ TEST(Interruption, ASignalWhileWritingLeavesNoTemporaryAndAMarkedFolder) {
   std::cout << interrupted_while_writing << " of 8 signals arrived while the folder was being written\n";
 }
 
+// SIGKILL cannot be caught: the folder keeps its marker, and the next command into it
+// (with --overwrite) clears crux's outputs and their stale temporaries, and nothing else.
+TEST(Interruption, AfterSigkillTheMarkerStaysAndOverwriteClearsStaleTemporaries) {
+  const fs::path folder = scratch("sigkill");
+  const pid_t pid = start_crux({"train", "--wall-seed", "3", "--iterations", "4000", "-o", folder.string()});
+  ASSERT_GT(pid, 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(folder / "INCOMPLETE") && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  if (!WIFSIGNALED(status)) GTEST_SKIP() << "the run finished before SIGKILL";
+  EXPECT_TRUE(fs::exists(folder / "INCOMPLETE"));
+  // What a kill in the middle of a write leaves, plus a file that is not crux's.
+  for (const char* name : {"iterations.csv.tmp.0123456789abcdef", "summary.json.tmp.fedcba9876543210", "notes.txt"}) {
+    std::ofstream(folder / name) << "x";
+  }
+  const auto again = testing::run_crux("train --wall-seed 3 --iterations 200 --overwrite -o " + folder.string());
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_TRUE(temporaries_under(folder).empty());
+  EXPECT_FALSE(fs::exists(folder / "INCOMPLETE"));
+  EXPECT_TRUE(fs::exists(folder / "summary.json"));
+  EXPECT_TRUE(fs::exists(folder / "notes.txt")) << "a file that is not crux's stays";
+}
+
 // A full disk, as a file-size limit: the write fails with one line naming the file, the
 // folder keeps its marker, has no summary and no temporary.
 TEST(Interruption, AFullDiskIsOneErrorLineAndAMarkedFolderWithoutSummary) {
