@@ -137,6 +137,16 @@ int main(int argc, char** argv) {
         command->get_option_no_throw("--wall-file") != nullptr ? "; a wall file is given with --wall-file FILE" : "";
     return refuse(fmt::format("'{}' does not take {}{} (see '{} --help')", command_path(command),
                               e.what() + std::string_view(e.what()).find(':') + 2, wall_hint, command_path(command)));
+  } catch (const CLI::ConversionError& e) {
+    // CLI11 says "Could not convert: --flag = value"; name the flag first, as elsewhere.
+    const std::string_view what = e.what();
+    const std::size_t colon = what.find(": "), equals = what.find(" = ");
+    if (colon != std::string_view::npos && equals != std::string_view::npos && equals > colon) {
+      return refuse(fmt::format("{}: '{}' is out of range or not of the option's type (see '{} --help')",
+                                what.substr(colon + 2, equals - colon - 2), what.substr(equals + 3),
+                                command_path(command)));
+    }
+    return refuse(fmt::format("{} (see '{} --help')", what, command_path(command)));
   } catch (const CLI::ParseError& e) {
     return refuse(fmt::format("{} (see '{} --help')", e.what(), command_path(command)));
   } catch (const crux::InputError& e) {

@@ -22,8 +22,11 @@ namespace {
 // since a signal handler may neither allocate nor lock.
 constexpr std::size_t kTemporarySlots = 64;
 constexpr std::size_t kTemporaryPathBytes = 4096;
+// A slot is claimed, then filled, then published: the handler only reads published
+// slots, so it never unlinks a half-copied path.
+enum SlotState : int { kFree, kClaimed, kPublished };
 struct TemporarySlot {
-  std::atomic<bool> used{false};
+  std::atomic<int> state{kFree};
   char path[kTemporaryPathBytes]{};
 };
 std::array<TemporarySlot, kTemporarySlots> temporaries;
@@ -33,21 +36,22 @@ std::array<TemporarySlot, kTemporarySlots> temporaries;
 int remember_temporary(const std::string& path) {
   if (path.size() >= kTemporaryPathBytes) return -1;
   for (std::size_t i = 0; i < kTemporarySlots; ++i) {
-    bool expected = false;
-    if (temporaries[i].used.load() || !temporaries[i].used.compare_exchange_strong(expected, true)) continue;
+    int expected = kFree;
+    if (!temporaries[i].state.compare_exchange_strong(expected, kClaimed)) continue;
     std::memcpy(temporaries[i].path, path.c_str(), path.size() + 1);
+    temporaries[i].state.store(kPublished, std::memory_order_release);
     return static_cast<int>(i);
   }
   return -1;
 }
 
 void forget_temporary(int slot) {
-  if (slot >= 0) temporaries[slot].used.store(false);
+  if (slot >= 0) temporaries[slot].state.store(kFree);
 }
 
 extern "C" void remove_temporaries_and_reraise(int signal) {
   for (TemporarySlot& slot : temporaries) {
-    if (slot.used.load()) ::unlink(slot.path);
+    if (slot.state.load(std::memory_order_acquire) == kPublished) ::unlink(slot.path);
   }
   std::signal(signal, SIG_DFL);
   std::raise(signal);
@@ -75,7 +79,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   int slot = -1;
   int fd = -1;
   for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
-    std::array<unsigned char, 8> random{};
+    std::array<unsigned char, kTemporarySuffixDigits / 2> random{};
     if (::getrandom(random.data(), random.size(), 0) != static_cast<ssize_t>(random.size())) break;
     temporary = path.string() + ".tmp.";
     for (const unsigned char byte : random) {

@@ -2,10 +2,14 @@
 // Result files are written to a temporary sibling and renamed into place, so an
 // interrupted run never leaves a half-written file under the final name.
 
+#include <cstddef>
 #include <filesystem>
 #include <string_view>
 
 namespace crux {
+
+// A temporary is named "<target>.tmp." followed by this many lowercase hex digits.
+inline constexpr std::size_t kTemporarySuffixDigits = 16;
 
 // Writes `contents` to `path` atomically: a same-directory temporary with an
 // unpredictable name created exclusively, fsync, rename.

@@ -157,8 +157,9 @@ void assign(const std::string& path, const ConfigField& field, const toml::node&
           *target = *v;
         } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::optional<int>>) {
           const auto v = node.as_integer();
-          if (!v || v->get() < std::numeric_limits<int>::min() || v->get() > std::numeric_limits<int>::max()) {
-            fail("an integer");
+          if (!v) fail("an integer");
+          if (v->get() < std::numeric_limits<int>::min() || v->get() > std::numeric_limits<int>::max()) {
+            fail("an integer from -2147483648 to 2147483647");
           }
           *target = static_cast<int>(v->get());
         } else if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, std::optional<std::uint64_t>>) {
@@ -307,7 +308,7 @@ void finalize_config(ExperimentConfig& config) {
   }
   require(grid.tile_width > 0, "grid.tile_width", "must be positive");
   require(grid.tile_height > 0, "grid.tile_height", "must be positive");
-  const double state_codes = 4.0 * std::pow(grid.tile_count() + 1.0, 3.0);
+  const double state_codes = 4.0 * std::pow(static_cast<double>(grid.columns) * grid.rows + 1.0, 3.0);  // no int overflow
   require(state_codes < 4294967296.0, "grid.columns", "the grid has too many tiles for 32-bit agent-state codes");
   int start_columns = 0, start_rows = 0;
   for (const auto& vertex : s.walls.start_vertices) {

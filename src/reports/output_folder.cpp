@@ -32,7 +32,9 @@ void begin_output_folder(const fs::path& directory) {
     for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
       const std::string name = entry.path().filename().string();
       const bool temporary = std::any_of(std::begin(kOutputNames), std::end(kOutputNames), [&](const char* output) {
-        return name.rfind(std::string(output) + ".tmp.", 0) == 0;
+        const std::string prefix = std::string(output) + ".tmp.";
+        return name.size() == prefix.size() + kTemporarySuffixDigits && name.rfind(prefix, 0) == 0 &&
+               name.find_first_not_of("0123456789abcdef", prefix.size()) == std::string::npos;
       });
       if (temporary) fs::remove(entry.path(), error);
     }

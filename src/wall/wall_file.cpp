@@ -46,21 +46,24 @@ std::string child_path(const std::string& parent, std::string_view key) {
   return parent.empty() ? std::string(key) : fmt::format("{}.{}", parent, key);
 }
 
+// Text quoted from the input, as it may go into a one-line message: at most 200 bytes,
+// control characters escaped.
+std::string shortened(std::string text) {
+  constexpr std::size_t kMaxQuotedBytes = 200;
+  if (text.size() > kMaxQuotedBytes) text = text.substr(0, kMaxQuotedBytes) + "...";
+  return printable(text);
+}
+
 // "parse error at line 3, column 7: syntax error while parsing value - invalid
 // literal; ..." -> "JSON syntax error at line 3, column 7: invalid literal; ...".
 // Plain string search, not std::regex, whose matcher recurses once per character and
 // overflows the stack on a long message; the parser quotes the text it last read, so
 // the problem is cut short and its control characters escaped to stay one line.
 std::string syntax_problem(const std::string& parser_message) {
-  constexpr std::size_t kMaxProblemBytes = 200;
   const auto number_at = [&](std::size_t& at) {
     const std::size_t begin = at;
     while (at < parser_message.size() && std::isdigit(static_cast<unsigned char>(parser_message[at]))) ++at;
     return parser_message.substr(begin, at - begin);
-  };
-  const auto shortened = [&](std::string text) {
-    if (text.size() > kMaxProblemBytes) text = text.substr(0, kMaxProblemBytes) + "...";
-    return printable(text);
   };
   std::size_t at = parser_message.find("at line ");
   if (at == std::string::npos) return "JSON syntax error: " + shortened(parser_message);
@@ -111,7 +114,8 @@ class JsonStructureCheck final : public Json::json_sax_t {
   bool parse_error(std::size_t, const std::string& last_token, const Json::exception& error) override {
     if (error.id == kNumberOverflowError) {
       const std::string where = path(frames_.size());
-      problem_ = fmt::format("{} is not finite ({} overflows a double)", where.empty() ? "the value" : where, last_token);
+      problem_ = fmt::format("{} is not finite ({} overflows a double)", where.empty() ? "the value" : where,
+                             shortened(last_token));
     } else {
       problem_ = syntax_problem(error.what());
     }

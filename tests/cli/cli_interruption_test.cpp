@@ -34,7 +34,9 @@ std::vector<fs::path> temporaries_under(const fs::path& folder) {
   std::vector<fs::path> found;
   if (!fs::exists(folder)) return found;
   for (const auto& entry : fs::recursive_directory_iterator(folder)) {
-    if (entry.path().filename().string().find(".tmp.") != std::string::npos) found.push_back(entry.path());
+    const std::string name = entry.path().filename().string();
+    const std::size_t at = name.rfind(".tmp.");
+    if (at != std::string::npos && name.size() == at + 5 + 16) found.push_back(entry.path());
   }
   return found;
 }
@@ -106,7 +108,8 @@ TEST(Interruption, AfterSigkillTheMarkerStaysAndOverwriteClearsStaleTemporaries)
   if (!WIFSIGNALED(status)) GTEST_SKIP() << "the run finished before SIGKILL";
   EXPECT_TRUE(fs::exists(folder / "INCOMPLETE"));
   // What a kill in the middle of a write leaves, plus a file that is not crux's.
-  for (const char* name : {"iterations.csv.tmp.0123456789abcdef", "summary.json.tmp.fedcba9876543210", "notes.txt"}) {
+  for (const char* name : {"iterations.csv.tmp.0123456789abcdef", "summary.json.tmp.fedcba9876543210", "notes.txt",
+                           "config.toml.tmp.backup"}) {
     std::ofstream(folder / name) << "x";
   }
   const auto again = testing::run_crux("train --wall-seed 3 --iterations 200 --overwrite -o " + folder.string());
@@ -115,6 +118,7 @@ TEST(Interruption, AfterSigkillTheMarkerStaysAndOverwriteClearsStaleTemporaries)
   EXPECT_FALSE(fs::exists(folder / "INCOMPLETE"));
   EXPECT_TRUE(fs::exists(folder / "summary.json"));
   EXPECT_TRUE(fs::exists(folder / "notes.txt")) << "a file that is not crux's stays";
+  EXPECT_TRUE(fs::exists(folder / "config.toml.tmp.backup")) << "nor one that only looks like a temporary";
 }
 
 // A full disk, as a file-size limit: the write fails with one line naming the file, the

@@ -47,6 +47,13 @@ TEST(Cli, BadArgumentsExitWithCode2) {
     EXPECT_EQ(run.exit_code, 2) << command;
     EXPECT_EQ(testing::count_lines(run.err), 1) << run.err;
   }
+  const testing::Outcome too_large = testing::run_crux("plan --wall-seed 3 --plan-max-solves 99999999999");
+  EXPECT_EQ(too_large.exit_code, 2);
+  EXPECT_EQ(too_large.err.rfind("crux: --plan-max-solves: '99999999999' is out of range", 0), 0u) << too_large.err;
+  const testing::Outcome huge_grid =
+      testing::run_crux("train --wall-seed 3 --grid-columns 65536 --grid-rows 65536 --iterations 5 -o /tmp/crux-never");
+  EXPECT_EQ(huge_grid.exit_code, 2) << huge_grid.err;
+  EXPECT_EQ(huge_grid.err.rfind("crux: --grid-columns: ", 0), 0u) << huge_grid.err;
 }
 
 TEST(Cli, IkReportsTheIssuesKeysForBothSolvers) {

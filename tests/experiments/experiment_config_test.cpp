@@ -166,7 +166,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadConfig{"negative_sigma", "[wall]\nsigma = -1.0\n", "wall.sigma"},
                       BadConfig{"negative_grasp", "[ik]\ngrasp_radius = -0.04\n", "ik.grasp_radius"},
                       BadConfig{"negative_seed", "[experiment]\nseed = -4\n", "an integer from 0"},
-                      BadConfig{"signed_seed_text", "[wall]\nseed = \"-4\"\n", "an integer from 0"}),
+                      BadConfig{"signed_seed_text", "[wall]\nseed = \"-4\"\n", "an integer from 0"},
+                      BadConfig{"int_out_of_range", "[experiment]\nplan_max_solves = 9999999999\n",
+                                "an integer from -2147483648 to 2147483647"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(ExperimentConfig, MissingFileIsAnInputError) {
@@ -208,6 +210,10 @@ TEST(ExperimentConfig, RangesThatWouldBreakWallsOrCodesAreRefusedNamingTheKey) {
   ExperimentConfig no_plan_budget;
   no_plan_budget.settings.plan_search.max_ik_solves = 0;
   EXPECT_EQ(refused_key(no_plan_budget), "experiment.plan_max_solves");
+  ExperimentConfig overflowing_grid;
+  overflowing_grid.settings.learning.climbing.grid.columns = 65536;
+  overflowing_grid.settings.learning.climbing.grid.rows = 65536;  // the tile count wraps to 0 as an int
+  EXPECT_EQ(refused_key(overflowing_grid), "grid.columns");
   ExperimentConfig bad_anchor;
   bad_anchor.settings.learning.climbing.grid.anchors[0] = {5, 4};
   EXPECT_EQ(refused_key(bad_anchor), "grid.right_hand_anchor_column");

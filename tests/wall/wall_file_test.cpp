@@ -157,7 +157,8 @@ TEST(WallFile, SyntaxErrorReportsItsLineAndColumn) {
 // Found by the wall fuzzer: a long unquoted token once overflowed the stack in the
 // regular expression that reworded the parser's message.
 TEST(WallFile, ALongInvalidTokenIsOneShortLine) {
-  const std::string text = "{\"format\": \"crux-wall\", \"name\": " + std::string(50000, 'D') + "\u0001}";
+  // An unterminated string: the parser quotes all 50000 characters it read.
+  const std::string text = "{\"format\": \"crux-wall\", \"name\": \"" + std::string(50000, 'D') + "\x01\"}";
   try {
     parse_wall(text, "long_token.json");
     FAIL() << "parsed an invalid token";
@@ -166,6 +167,14 @@ TEST(WallFile, ALongInvalidTokenIsOneShortLine) {
     EXPECT_NE(message.find("JSON syntax error at line 1, column "), std::string::npos) << message.substr(0, 300);
     EXPECT_LT(message.size(), 400u);
     EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
+  // A number too large for a double, 50000 digits long, is quoted short too.
+  try {
+    parse_wall("{\"finish_height\": 1" + std::string(50000, '2') + "}", "long_number.json");
+    FAIL() << "parsed an overflowing number";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is not finite"), std::string::npos);
+    EXPECT_LT(std::string(e.what()).size(), 400u);
   }
 }
 
