@@ -22,13 +22,10 @@ void read_as_q_grid(const std::string& bytes) {
   }
 }
 
-// The file format's checksum (FNV-1a 64, little-endian, over every byte before it).
+// The last 8 bytes replaced by the checksum of those before them, little-endian.
 std::string with_checksum_made_right(std::string bytes) {
   if (bytes.size() < 8) return bytes;
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (std::size_t i = 0; i < bytes.size() - 8; ++i) {
-    hash = (hash ^ static_cast<unsigned char>(bytes[i])) * 0x100000001b3ULL;
-  }
+  const std::uint64_t hash = crux::q_table_checksum(bytes, bytes.size() - 8);
   for (std::size_t i = 0; i < 8; ++i) bytes[bytes.size() - 8 + i] = static_cast<char>((hash >> (8 * i)) & 0xFF);
   return bytes;
 }

@@ -18,15 +18,6 @@ namespace {
 constexpr char kMagic[8] = {'C', 'R', 'U', 'X', 'Q', 'T', 'A', 'B'};
 constexpr std::size_t kFixedHeaderSize = 8 + 4 + 4 + 4 + 8;  // the space's bytes come on top
 
-std::uint64_t fnv1a(const std::string& bytes, std::size_t length) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (std::size_t i = 0; i < length; ++i) {
-    hash ^= static_cast<unsigned char>(bytes[i]);
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
-}
-
 template <typename T>
 void put(std::string& out, T value) {
   std::uint64_t bits = 0;
@@ -46,6 +37,15 @@ T get(const std::string& in, std::size_t& at) {
 
 }  // namespace
 
+std::uint64_t q_table_checksum(const std::string& bytes, std::size_t length) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (std::size_t i = 0; i < length; ++i) {
+    hash ^= static_cast<unsigned char>(bytes[i]);
+    hash *= 0x100000001b3ULL;
+  }
+  return hash;
+}
+
 void save_q_table(const std::string& path, const QTable& table, const std::string& state_space) {
   if (state_space.size() > kMaxStateSpaceNameBytes) throw std::invalid_argument("save_q_table: state space name too long");
   std::string out(kMagic, sizeof(kMagic));
@@ -59,7 +59,7 @@ void save_q_table(const std::string& path, const QTable& table, const std::strin
     for (const double v : values) put<double>(out, v);
     for (const std::uint32_t v : visits) put<std::uint32_t>(out, v);
   });
-  put<std::uint64_t>(out, fnv1a(out, out.size()));
+  put<std::uint64_t>(out, q_table_checksum(out, out.size()));
   write_file_atomically(path, out);
 }
 
@@ -107,7 +107,7 @@ QTable parse_q_table(const std::string& bytes, const std::string& path, int expe
                                        rows, bytes.size()));
   }
   std::size_t checksum_at = bytes.size() - 8;
-  if (get<std::uint64_t>(bytes, checksum_at) != fnv1a(bytes, bytes.size() - 8)) {
+  if (get<std::uint64_t>(bytes, checksum_at) != q_table_checksum(bytes, bytes.size() - 8)) {
     throw InputError(path, "corrupted: the checksum does not match the contents");
   }
   if (static_cast<int>(actions) != expected_action_count) {

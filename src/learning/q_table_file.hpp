@@ -13,6 +13,8 @@
 //
 // Rows are in increasing state order, so the same table gives the same bytes.
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "learning/q_table.hpp"
@@ -21,6 +23,9 @@ namespace crux {
 
 inline constexpr std::uint32_t kQTableFileVersion = 2;
 inline constexpr std::size_t kMaxStateSpaceNameBytes = 4096;
+
+// The checksum field: FNV-1a 64 of the first `length` bytes.
+std::uint64_t q_table_checksum(const std::string& bytes, std::size_t length);
 
 // Written to a temporary name and renamed into place. `state_space` names the space of
 // the state and action codes (for example the moving grid's shape).

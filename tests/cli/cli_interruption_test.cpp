@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/atomic_file.hpp"
 #include "support/run_crux.hpp"
 
 namespace crux {
@@ -36,7 +37,7 @@ std::vector<fs::path> temporaries_under(const fs::path& folder) {
   for (const auto& entry : fs::recursive_directory_iterator(folder)) {
     const std::string name = entry.path().filename().string();
     const std::size_t at = name.rfind(".tmp.");
-    if (at != std::string::npos && name.size() == at + 5 + 16) found.push_back(entry.path());
+    if (at != std::string::npos && name.size() == at + 5 + kTemporarySuffixDigits) found.push_back(entry.path());
   }
   return found;
 }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace crux {
@@ -31,30 +32,28 @@ std::vector<RunResult> two_runs() {
           run_of({action(R, true, 0.02), action(R, false), action(G, false), action(W, true, 0.12)})};
 }
 
+struct ExpectedStats {
+  std::uint64_t actions, successes;
+  double actions_per_run, success_rate, vertical_cm;
+};
+
+void expect_stats(const RegimeStats& got, const ExpectedStats& want, const char* regime) {
+  EXPECT_EQ(got.actions, want.actions) << regime;
+  EXPECT_EQ(got.successes, want.successes) << regime;
+  EXPECT_DOUBLE_EQ(got.actions_per_run, want.actions_per_run) << regime;
+  EXPECT_DOUBLE_EQ(got.success_rate, want.success_rate) << regime;
+  EXPECT_NEAR(got.vertical_cm, want.vertical_cm, 1e-12) << regime;
+}
+
 TEST(TableOne, WholeRunsByHand) {
   const std::vector<RunResult> runs = two_runs();
   // w-greedy: A 2, B 1 actions, all successful, rises 10 + 6 + 12 cm.
-  const RegimeStats w = regime_stats(runs, W, -1);
-  EXPECT_EQ(w.actions, 3u);
-  EXPECT_EQ(w.successes, 3u);
-  EXPECT_DOUBLE_EQ(w.actions_per_run, 1.5);
-  EXPECT_DOUBLE_EQ(w.success_rate, 1.0);
-  EXPECT_NEAR(w.vertical_cm, 28.0 / 3.0, 1e-12);
+  expect_stats(regime_stats(runs, W, -1), {3, 3, 1.5, 1.0, 28.0 / 3.0}, "w-greedy");
   // g-greedy: one each, A's successful (2 cm).
-  const RegimeStats g = regime_stats(runs, G, -1);
-  EXPECT_EQ(g.actions, 2u);
-  EXPECT_EQ(g.successes, 1u);
-  EXPECT_DOUBLE_EQ(g.actions_per_run, 1.0);
-  EXPECT_DOUBLE_EQ(g.success_rate, 0.5);
-  EXPECT_NEAR(g.vertical_cm, 2.0, 1e-12);
+  expect_stats(regime_stats(runs, G, -1), {2, 1, 1.0, 0.5, 2.0}, "g-greedy");
   // random: A 1 of 3, B 1 of 2 successful. Pooled 2 / 5 = 0.4, not the mean of the
   // runs' rates (1/3 + 1/2) / 2 = 5/12; the rises 4 and 2 cm average to 3 cm.
-  const RegimeStats r = regime_stats(runs, R, -1);
-  EXPECT_EQ(r.actions, 5u);
-  EXPECT_EQ(r.successes, 2u);
-  EXPECT_DOUBLE_EQ(r.actions_per_run, 2.5);
-  EXPECT_DOUBLE_EQ(r.success_rate, 0.4);
-  EXPECT_NEAR(r.vertical_cm, 3.0, 1e-12);
+  expect_stats(regime_stats(runs, R, -1), {5, 2, 2.5, 0.4, 3.0}, "random");
 }
 
 TEST(TableOne, TheBeginningWindowCountsTheFirstIterationsOfEachRun) {
