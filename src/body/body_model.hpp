@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include "body/body_visual.hpp"
 #include "body/limb.hpp"
 
 namespace crux {
@@ -65,6 +66,8 @@ struct BodyModel {
   double root_height_above_soles = 0.0;  // used by the root heuristic H(C4)
   double stature = 0.0;                  // top of the head above the soles, if framed
   std::string head_top_frame = "head_top";
+  // The box, cylinder and sphere <visual> elements, for drawing; mesh visuals are skipped.
+  std::vector<BodyVisual> visuals;
 };
 
 // The natural standing posture (all joint angles 0) with the root at `root`.

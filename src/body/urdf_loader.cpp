@@ -152,6 +152,48 @@ class ModelBuilder {
     joint.mass = mass;
   }
 
+  void add_visuals(const urdf::Link& link, int carrier, const RigidTransform& in_carrier) {
+    for (const urdf::VisualSharedPtr& visual : link.visual_array) {
+      if (!visual || !visual->geometry) continue;
+      BodyVisual out;
+      out.link = link.name;
+      out.joint = carrier;
+      const RigidTransform pose = in_carrier.then(visual->origin);
+      out.rotation = pose.rotation;
+      out.translation = pose.translation;
+      switch (visual->geometry->type) {
+        case urdf::Geometry::BOX: {
+          const auto& box = static_cast<const urdf::Box&>(*visual->geometry);
+          out.shape = VisualShape::Box;
+          out.size = to_vector(box.dim);
+          break;
+        }
+        case urdf::Geometry::CYLINDER: {
+          const auto& cylinder = static_cast<const urdf::Cylinder&>(*visual->geometry);
+          out.shape = VisualShape::Cylinder;
+          out.size = {cylinder.radius, cylinder.length, 0.0};
+          break;
+        }
+        case urdf::Geometry::SPHERE:
+          out.shape = VisualShape::Sphere;
+          out.size = {static_cast<const urdf::Sphere&>(*visual->geometry).radius, 0.0, 0.0};
+          break;
+        default:
+          continue;  // meshes need files and a mesh reader; crux draws primitives only
+      }
+      if (!out.size.allFinite() || (out.size.array() < 0.0).any()) {
+        fail(fmt::format("link '{}' has a visual of invalid size", link.name));
+      }
+      urdf::MaterialSharedPtr material = visual->material;
+      if (!material && !visual->material_name.empty()) material = urdf_.getMaterial(visual->material_name);
+      if (material) {
+        const urdf::Color& c = material->color;
+        out.rgba = {c.r, c.g, c.b, c.a};
+      }
+      model_.visuals.push_back(std::move(out));
+    }
+  }
+
   // Depth-first from `link`, which moves with joint `carrier` at `in_carrier`; `depth`
   // links below the root. Bounded, and each link once: a cycle or a very long chain would
   // otherwise recurse without end or overflow the stack.
@@ -161,6 +203,7 @@ class ModelBuilder {
     }
     if (depth > kMaxTreeDepth) fail(fmt::format("the kinematic tree is deeper than {} links", kMaxTreeDepth));
     add_mass(link, carrier, in_carrier);
+    add_visuals(link, carrier, in_carrier);
     frames_.push_back({link.name, {carrier, in_carrier.translation}});
     for (const urdf::JointSharedPtr& joint : link.child_joints) {
       const urdf::LinkConstSharedPtr child = urdf_.getLink(joint->child_link_name);

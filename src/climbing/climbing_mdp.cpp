@@ -71,6 +71,7 @@ StepOutcome ClimbingMdp::step(ActionCode hold) {
     return outcome;
   }
   outcome.reached = true;
+  outcome.posture = reached;
   outcome.root_rise_m = (*reached)[2] - posture_[2];  // G[2] is e0's height
   const BodyData& body = reacher_.place(*reached);
   if (body.centre_of_mass.z() >= wall_.finish_height) {

@@ -54,7 +54,7 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
     record.root_rise_m = outcome.root_rise_m;
     record.reward = outcome.reward;
     result.iterations.push_back(record);
-    if (outcome.reached && !outcome.finished) climb.push_back(mdp.posture());
+    if (outcome.reached) climb.push_back(*outcome.posture);
     if (outcome.finished) {
       result.episode_lengths.push_back(iteration + 1 - episode_start);
       episode_start = iteration + 1;

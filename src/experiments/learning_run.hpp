@@ -40,7 +40,9 @@ struct RunResult {
   std::vector<IterationRecord> iterations;
   std::vector<int> episode_lengths;  // completed episodes, in iterations (failed ones included)
   QTable q_grid{1};
-  std::vector<Posture> last_climb;   // postures of the last completed climb, start first
+  // Postures of the last completed climb: the start, then one per reached move, the
+  // finishing move's included.
+  std::vector<Posture> last_climb;
   std::size_t reached_configurations = 0, unreachable_configurations = 0, ik_solves = 0;
   std::size_t explored_pairs = 0;    // distinct problem-space (state, action) pairs taken
   std::uint64_t planning_updates = 0;  // Dyna's model updates, over the run

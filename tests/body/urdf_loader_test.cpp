@@ -1,9 +1,13 @@
 #include "body/urdf_loader.hpp"
 #include "body/body_model.hpp"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include "body/body_data.hpp"
+#include "body/kinematics.hpp"
 #include "common/input_error.hpp"
 #include "support/test_models.hpp"
 
@@ -166,6 +170,51 @@ TEST(BodyModel, EverySegmentHasPrimitiveVisualsAndNoFrameHasAny) {
   }
   EXPECT_EQ(segments, 15);  // torso, pelvis, head, and six segments on each side
   for (const auto& entry : urdf->links_) entry.second->child_links.clear();
+}
+
+TEST(BodyModel, LoaderKeepsEachPrimitiveVisualOnTheJointThatCarriesIt) {
+  const BodyModel& model = human_model();
+  ASSERT_EQ(model.visuals.size(), 16u);  // 15 segments; the head has a neck cylinder and a sphere
+  BodyData data(model);
+  forward_kinematics(model, data, standing_posture({0.3, 0.6, 1.0}));
+  const auto world_centre = [&](const BodyVisual& visual) {
+    const JointPlacement& carrier = data.placements[visual.joint];
+    return Eigen::Vector3d(carrier.origin + carrier.rotation * visual.translation);
+  };
+  for (const BodyVisual& visual : model.visuals) {
+    if (visual.link == "right_hand") {
+      // docs/MODEL.md: the hand box is centred on the palm frame, the right-hand grasp point.
+      EXPECT_EQ(visual.shape, VisualShape::Box);
+      EXPECT_LT((world_centre(visual) - data.points[operational_point(Limb::RightHand)]).norm(), 1e-12);
+      EXPECT_EQ(model.joints[visual.joint].name, "right_wrist_deviation");
+    }
+    if (visual.link == "head" && visual.shape == VisualShape::Sphere) {
+      EXPECT_DOUBLE_EQ(visual.size.x(), 0.1105);
+      EXPECT_NEAR(world_centre(visual).z() + 0.1105 - (1.0 - model.root_height_above_soles), model.stature, 1e-9);
+    }
+    if (visual.link == "torso") {
+      // crux_skin, defined once at the top of the file and named by the visual.
+      EXPECT_NEAR(visual.rgba[0], 0.85, 1e-7);  // urdfdom keeps colours as floats
+      EXPECT_EQ(visual.rgba[3], 1.0);
+    }
+  }
+}
+
+TEST(BodyModel, VisualsOfFixedFramesAreCarriedThroughTheFixedJointAndMeshesAreSkipped) {
+  const std::string text =
+      replaced(human_urdf_text(), "<link name=\"right_palm\"/>",
+                        "<link name=\"right_palm\"><visual><origin xyz=\"0 0 0.01\"/><geometry><sphere radius=\"0.02\"/>"
+                        "</geometry></visual><visual><geometry><mesh filename=\"hand.stl\"/></geometry></visual></link>");
+  const BodyModel model = load_body_model(write_temporary("palm_visual.urdf", text).string());
+  ASSERT_EQ(model.visuals.size(), 17u);
+  const auto found = std::find_if(model.visuals.begin(), model.visuals.end(),
+                                  [](const BodyVisual& v) { return v.link == "right_palm"; });
+  ASSERT_NE(found, model.visuals.end());
+  const BodyVisual& palm = *found;
+  const AttachedPoint& grasp = model.grasp_points[static_cast<int>(Limb::RightHand)];
+  EXPECT_EQ(palm.joint, grasp.joint);
+  EXPECT_LT((palm.translation - (grasp.offset + Eigen::Vector3d(0, 0, 0.01))).norm(), 1e-12);
+  EXPECT_EQ(palm.rgba, (std::array<double, 4>{0.7, 0.7, 0.7, 1.0}));
 }
 
 TEST(BodyModel, GraspFramesCanBeRenamedToMapAnotherHumanoid) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "body/kinematics.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
@@ -34,6 +35,28 @@ TEST(LearningRun, TransferAndControlAgreeUntilTheFirstGGreedyChoice) {
   }
   EXPECT_GT(compared, 0) << "some iterations came before a g-greedy choice";
   RecordProperty("iterations_compared", compared);
+}
+
+// The recorded climb is the last completed episode's: the start posture, then one
+// posture per reached move, ending with the one that passes the finishing height.
+TEST(LearningRun, LastClimbHoldsAPosturePerReachedMoveOfTheLastEpisodeUpToTheFinish) {
+  const BodyModel& model = testing::human_model();
+  LearningParameters parameters;
+  parameters.iterations = 1500;
+  const Wall wall = generate_random_wall(3);
+  const RunResult run = run_learning(model, wall, parameters, 5);
+  ASSERT_GE(run.episode_lengths.size(), 2u) << "seed 5 on wall 3 completes episodes within 1500 iterations";
+  const int last = static_cast<int>(run.episode_lengths.size()) - 1;
+  std::size_t reached = 0;
+  for (const IterationRecord& r : run.iterations) reached += r.episode == last && r.success ? 1 : 0;
+  ASSERT_EQ(run.last_climb.size(), 1 + reached);
+  ClimbingMdp mdp(model, wall, parameters.climbing);
+  EXPECT_EQ(run.last_climb.front(), mdp.start_posture());
+  BodyData data(model);
+  forward_kinematics(model, data, run.last_climb.back());
+  EXPECT_GE(centre_of_mass(model, data).z(), wall.finish_height);
+  forward_kinematics(model, data, run.last_climb[run.last_climb.size() - 2]);
+  EXPECT_LT(centre_of_mass(model, data).z(), wall.finish_height);
 }
 
 TEST(LearningRun, PrioritizedSweepingSpendsAtMostTheBudget) {

@@ -1,0 +1,357 @@
+#include "views/body_svg.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "body/body_data.hpp"
+#include "body/kinematics.hpp"
+#include "views/svg_text.hpp"
+
+namespace crux {
+namespace {
+
+constexpr double kMargin = 12;
+constexpr double kHeaderHeight = 52;
+constexpr double kAxisRoom = 44;    // left of each panel: z tick labels and title
+constexpr double kBelowPanel = 40;  // horizontal tick labels and axis title
+constexpr double kPanelGap = 30;
+constexpr double kPadding = 0.15;   // metres of wall around what is drawn
+constexpr double kLegendHeight = 24;
+constexpr double kTickSpacing = 0.5;
+constexpr int kCylinderSides = 24;
+constexpr const char* kHoldColour = "#555555";
+constexpr const char* kWallColour = "#9a8f80";
+
+using Point = std::array<double, 2>;  // on the page, in pixels
+
+// Andrew's monotone chain: the outline of a projected box or cylinder.
+std::vector<Point> convex_hull(std::vector<Point> points) {
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3) return points;
+  const auto cross = [](const Point& o, const Point& a, const Point& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  };
+  std::vector<Point> hull(2 * points.size());
+  std::size_t k = 0;
+  for (const Point& p : points) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
+    hull[k++] = p;
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+std::string colour(const std::array<double, 4>& rgba, double shade) {
+  const auto channel = [&](double c) { return static_cast<int>(std::lround(std::clamp(c * shade, 0.0, 1.0) * 255)); };
+  return fmt::format("#{:02x}{:02x}{:02x}", channel(rgba[0]), channel(rgba[1]), channel(rgba[2]));
+}
+
+// A visual placed in the world: its centre, axes (columns) and the points of its outline.
+struct PlacedVisual {
+  const BodyVisual* visual;
+  Eigen::Vector3d centre;
+  Eigen::Matrix3d axes;
+  std::vector<Eigen::Vector3d> outline;  // empty for a sphere
+};
+
+std::vector<PlacedVisual> place_visuals(const BodyModel& model, const BodyData& data) {
+  std::vector<PlacedVisual> placed;
+  for (const BodyVisual& visual : model.visuals) {
+    const JointPlacement& carrier = data.placements[visual.joint];
+    PlacedVisual p{&visual, carrier.origin + carrier.rotation * visual.translation, carrier.rotation * visual.rotation,
+                   {}};
+    const Eigen::Vector3d& s = visual.size;
+    if (visual.shape == VisualShape::Box) {
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d local((corner & 1 ? 0.5 : -0.5) * s.x(), (corner & 2 ? 0.5 : -0.5) * s.y(),
+                                    (corner & 4 ? 0.5 : -0.5) * s.z());
+        p.outline.push_back(p.centre + p.axes * local);
+      }
+    } else if (visual.shape == VisualShape::Cylinder) {
+      for (int k = 0; k < kCylinderSides; ++k) {
+        const double angle = 2 * std::numbers::pi * k / kCylinderSides;
+        for (const double end : {-0.5, 0.5}) {
+          const Eigen::Vector3d local(s.x() * std::cos(angle), s.x() * std::sin(angle), end * s.y());
+          p.outline.push_back(p.centre + p.axes * local);
+        }
+      }
+    }
+    placed.push_back(std::move(p));
+  }
+  return placed;
+}
+
+// One orthographic view: `horizontal` picks the world coordinate drawn left to right
+// (with its sign), z is drawn up; `depth` grows towards the viewer.
+struct View {
+  const char* title;
+  const char* axis_title;
+  int horizontal_axis;
+  double horizontal_sign;
+  int depth_axis;
+  double depth_sign;
+  double low = 0, high = 0;  // the horizontal extent, in world metres along the axis
+  double left = 0, top = 0, scale = 1, z_top = 0;
+
+  double u(const Eigen::Vector3d& p) const { return horizontal_sign * p[horizontal_axis]; }
+  double x_of(double world_u) const { return left + (world_u - low) * scale; }
+  Point project(const Eigen::Vector3d& p) const { return {x_of(u(p)), top + (z_top - p.z()) * scale}; }
+  double depth(const Eigen::Vector3d& p) const { return depth_sign * p[depth_axis]; }
+  double width() const { return (high - low) * scale; }
+};
+
+class BodyFigure {
+ public:
+  BodyFigure(const BodyModel& model, const Posture& posture, const Wall& wall, const BodySvgOptions& options)
+      : model_(model), wall_(wall), options_(options), data_(model) {
+    forward_kinematics(model, data_, posture);
+    visuals_ = place_visuals(model, data_);
+    lay_out();
+  }
+
+  std::string render() {
+    emit(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{0:.0f}\" height=\"{1:.0f}\" "
+        "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
+        width_, height_);
+    emit("<title>{}</title>\n", xml_escaped(options_.title));
+    emit("<rect width=\"{:.0f}\" height=\"{:.0f}\" fill=\"white\"/>\n", width_, height_);
+    emit("<text x=\"{}\" y=\"{}\" font-size=\"15\" font-weight=\"bold\" fill=\"#111111\">{}</text>\n", kMargin,
+         kMargin + 14, xml_escaped(options_.title));
+    emit("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#555555\">{}</text>\n", kMargin, kMargin + 32,
+         xml_escaped(options_.subtitle));
+    for (const View& view : views_) write_panel(view);
+    write_legend();
+    out_ += "</svg>\n";
+    return std::move(out_);
+  }
+
+ private:
+  template <typename... Args>
+  void emit(fmt::format_string<Args...> format, Args&&... args) {
+    fmt::format_to(std::back_inserter(out_), format, std::forward<Args>(args)...);
+  }
+
+  Eigen::Vector3d grasp_point(int limb) const { return data_.points[operational_point(static_cast<Limb>(limb))]; }
+
+  void lay_out() {
+    // Front: from behind the climber (at +x, looking at the wall), so the climber's
+    // left (+y) is on the left. Side: from the climber's right (-y), the wall on the left.
+    views_ = {View{"front, from behind the climber", "y (m), to the climber's left", 1, -1.0, 0, 1.0},
+              View{"side, from the climber's right", "x (m), out of the wall", 0, 1.0, 1, -1.0}};
+    double z_low = std::min(0.0, wall_.finish_height), z_high = wall_.finish_height;
+    const auto include = [&](View& view, const Eigen::Vector3d& p, double radius) {
+      view.low = std::min(view.low, view.u(p) - radius);
+      view.high = std::max(view.high, view.u(p) + radius);
+    };
+    for (View& view : views_) {
+      view.low = std::numeric_limits<double>::infinity();
+      view.high = -view.low;
+      for (const Hold& hold : wall_.holds) include(view, hold.position, hold.radius);
+      for (const PlacedVisual& v : visuals_) {
+        if (v.outline.empty()) include(view, v.centre, v.visual->size.x());
+        for (const Eigen::Vector3d& p : v.outline) include(view, p, 0.0);
+      }
+      include(view, Eigen::Vector3d::Zero(), 0.0);  // the wall plane is always in the side view
+      view.low -= kPadding;
+      view.high += kPadding;
+    }
+    for (const Hold& hold : wall_.holds) {
+      z_low = std::min(z_low, hold.position.z() - hold.radius);
+      z_high = std::max(z_high, hold.position.z() + hold.radius);
+    }
+    for (const PlacedVisual& v : visuals_) {
+      const double r = v.outline.empty() ? v.visual->size.x() : 0.0;
+      z_low = std::min(z_low, v.centre.z() - r);
+      z_high = std::max(z_high, v.centre.z() + r);
+      for (const Eigen::Vector3d& p : v.outline) {
+        z_low = std::min(z_low, p.z());
+        z_high = std::max(z_high, p.z());
+      }
+    }
+    z_low_ = z_low - kPadding;
+    z_top_ = z_high + kPadding;
+    const double scale = options_.pixels_per_metre;
+    double left = kMargin;
+    for (View& view : views_) {
+      view.left = left + kAxisRoom;
+      view.top = kMargin + kHeaderHeight;
+      view.scale = scale;
+      view.z_top = z_top_;
+      left = view.left + view.width() + kPanelGap;
+    }
+    panel_height_ = (z_top_ - z_low_) * scale;
+    width_ = std::ceil(std::max(left - kPanelGap + kMargin,
+                                kMargin + 2 * std::max(estimated_text_width(options_.title, 15),
+                                                       estimated_text_width(options_.subtitle, 11))));
+    width_ = std::max(width_, 2 * kMargin + legend_width());
+    height_ = std::ceil(kMargin + kHeaderHeight + panel_height_ + kBelowPanel + kLegendHeight + kMargin);
+  }
+
+  void write_panel(const View& view) {
+    const double bottom = view.top + panel_height_;
+    emit("<g class=\"panel\">\n<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"12\" fill=\"#333333\">{}</text>\n",
+         view.left, view.top - 6, view.title);
+    // Metre lines and their labels.
+    out_ += "<g stroke=\"#ececec\" stroke-width=\"1\">\n";
+    for (double z = std::ceil(z_low_ / kTickSpacing) * kTickSpacing; z <= z_top_; z += kTickSpacing) {
+      const double y = view.top + (z_top_ - z) * view.scale;
+      emit("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\"/>\n", view.left, y, view.left + view.width(), y);
+    }
+    for (double u = std::ceil(view.low / kTickSpacing) * kTickSpacing; u <= view.high; u += kTickSpacing) {
+      emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", view.x_of(u), view.top, bottom);
+    }
+    out_ += "</g>\n<g font-size=\"10\" fill=\"#555555\">\n";
+    for (double z = std::ceil(z_low_ / kTickSpacing) * kTickSpacing; z <= z_top_; z += kTickSpacing) {
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">{:.1f}</text>\n", view.left - 4,
+           view.top + (z_top_ - z) * view.scale + 3.5, z + 0.0);
+    }
+    for (double u = std::ceil(view.low / kTickSpacing) * kTickSpacing; u <= view.high; u += kTickSpacing) {
+      // The label is the world coordinate, whose sign the front view flips.
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{:.1f}</text>\n", view.x_of(u), bottom + 14,
+           view.horizontal_sign * u + 0.0);
+    }
+    out_ += "</g>\n";
+    emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"11\" fill=\"#333333\" text-anchor=\"middle\">{}</text>\n",
+         view.left + view.width() / 2, bottom + 32, view.axis_title);
+    emit(
+        "<text x=\"{0:.2f}\" y=\"{1:.2f}\" font-size=\"11\" fill=\"#333333\" text-anchor=\"middle\" "
+        "transform=\"rotate(-90 {0:.2f} {1:.2f})\">z (m), up</text>\n",
+        view.left - 32, view.top + panel_height_ / 2);
+    emit(
+        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\"/>\n",
+        view.left, view.top, view.width(), panel_height_);
+    if (view.horizontal_axis == 0) {  // the wall plane, seen edge on
+      const double x = view.x_of(0.0);
+      emit("<line class=\"wall\" x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\" stroke=\"{3}\" "
+           "stroke-width=\"3\"/>\n",
+           x, view.top, bottom, kWallColour);
+    }
+    const double finish = view.top + (z_top_ - wall_.finish_height) * view.scale;
+    emit(
+        "<line class=\"finish\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" "
+        "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
+        view.left, finish, view.left + view.width(), finish);
+    write_holds(view);
+    write_body(view);
+    write_grasp_spheres(view);
+    out_ += "</g>\n";
+  }
+
+  void write_holds(const View& view) {
+    emit("<g class=\"holds\" fill=\"{}\">\n", kHoldColour);
+    for (const Hold& hold : wall_.holds) {
+      const Point c = view.project(hold.position);
+      emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", c[0], c[1],
+           std::max(1.5, hold.radius * view.scale));
+    }
+    out_ += "</g>\n";
+  }
+
+  // Painter's algorithm: the primitives furthest from the viewer first.
+  void write_body(const View& view) {
+    std::vector<const PlacedVisual*> order;
+    for (const PlacedVisual& v : visuals_) order.push_back(&v);
+    std::stable_sort(order.begin(), order.end(), [&](const PlacedVisual* a, const PlacedVisual* b) {
+      return view.depth(a->centre) < view.depth(b->centre);
+    });
+    out_ += "<g class=\"body\" stroke-width=\"0.8\" stroke-linejoin=\"round\">\n";
+    for (const PlacedVisual* v : order) {
+      const std::string fill = colour(v->visual->rgba, 1.0), stroke = colour(v->visual->rgba, 0.55);
+      if (v->outline.empty()) {
+        const Point c = view.project(v->centre);
+        emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\" stroke=\"{}\"/>\n", c[0], c[1],
+             v->visual->size.x() * view.scale, fill, stroke);
+        continue;
+      }
+      std::vector<Point> points;
+      for (const Eigen::Vector3d& p : v->outline) points.push_back(view.project(p));
+      emit("<polygon fill=\"{}\" stroke=\"{}\" points=\"", fill, stroke);
+      const std::vector<Point> hull = convex_hull(std::move(points));
+      for (std::size_t i = 0; i < hull.size(); ++i) emit("{}{:.2f},{:.2f}", i == 0 ? "" : " ", hull[i][0], hull[i][1]);
+      out_ += "\"/>\n";
+    }
+    out_ += "</g>\n";
+  }
+
+  void write_grasp_spheres(const View& view) {
+    out_ += "<g class=\"grasp-spheres\" fill-opacity=\"0.35\" stroke-width=\"1.5\">\n";
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      const Point c = view.project(grasp_point(limb));
+      emit("<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"{2:.2f}\" fill=\"{3}\" stroke=\"{3}\"/>\n", c[0], c[1],
+           options_.grasp_radius * view.scale, kLimbStyles[limb].colour);
+    }
+    out_ += "</g>\n";
+  }
+
+  std::vector<std::string> legend_texts() const {
+    std::vector<std::string> texts{"hold"};
+    for (const LimbStyle& style : kLimbStyles) texts.push_back(fmt::format("{} grasp sphere", style.name));
+    texts.push_back(fmt::format("finish height, {:.2f} m", wall_.finish_height));
+    return texts;
+  }
+  double legend_width() const {
+    double width = 0;
+    for (const std::string& text : legend_texts()) width += 30 + estimated_text_width(text, 11) + 14;
+    return width;
+  }
+
+  void write_legend() {
+    double x = kMargin;
+    const double y = kMargin + kHeaderHeight + panel_height_ + kBelowPanel + kLegendHeight / 2;
+    const std::vector<std::string> texts = legend_texts();
+    out_ += "<g class=\"legend\" font-size=\"11\" fill=\"#333333\">\n";
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+      if (i == 0) {
+        emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\"/>\n", x + 12, y, kHoldColour);
+      } else if (i <= kLimbCount) {
+        emit("<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"6\" fill=\"{2}\" fill-opacity=\"0.35\" stroke=\"{2}\" "
+             "stroke-width=\"1.5\"/>\n",
+             x + 12, y, kLimbStyles[i - 1].colour);
+      } else {
+        emit("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" stroke-width=\"1.2\" "
+             "stroke-dasharray=\"6 4\"/>\n",
+             x, y, x + 24, y);
+      }
+      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", x + 30, y + 4, xml_escaped(texts[i]));
+      x += 30 + estimated_text_width(texts[i], 11) + 14;
+    }
+    out_ += "</g>\n";
+  }
+
+  const BodyModel& model_;
+  const Wall& wall_;
+  const BodySvgOptions& options_;
+  BodyData data_;
+  std::vector<PlacedVisual> visuals_;
+  std::array<View, 2> views_{};
+  double z_low_ = 0, z_top_ = 0, panel_height_ = 0, width_ = 0, height_ = 0;
+  std::string out_;
+};
+
+}  // namespace
+
+std::string render_body_svg(const BodyModel& model, const Posture& posture, const Wall& wall,
+                            const BodySvgOptions& options) {
+  if (!(options.pixels_per_metre > 0) || !std::isfinite(options.pixels_per_metre)) {
+    throw std::invalid_argument(
+        fmt::format("render_body_svg: pixels_per_metre must be positive, not {}", options.pixels_per_metre));
+  }
+  return BodyFigure(model, posture, wall, options).render();
+}
+
+}  // namespace crux

@@ -1,0 +1,33 @@
+#pragma once
+// What every SVG view of crux shares: text made safe for XML, a width estimate for
+// laying out text (SVG cannot measure it), and the limbs' colours.
+
+#include <array>
+#include <string>
+#include <string_view>
+
+#include "body/limb.hpp"
+
+namespace crux {
+
+// `text` with XML's special characters escaped, and the control characters XML 1.0
+// forbids replaced by U+FFFD.
+std::string xml_escaped(std::string_view text);
+
+// Width of `text` in a sans-serif font of `font_size` pixels, from a generous average.
+double estimated_text_width(std::string_view text, double font_size);
+
+struct LimbStyle {
+  const char* code;
+  const char* name;
+  const char* colour;
+};
+// In limb order. Okabe-Ito colours, told apart by colour-blind readers.
+inline constexpr std::array<LimbStyle, kLimbCount> kLimbStyles{{
+    {"RH", "right hand", "#d55e00"},
+    {"LH", "left hand", "#0072b2"},
+    {"RF", "right foot", "#e69f00"},
+    {"LF", "left foot", "#cc79a7"},
+}};
+
+}  // namespace crux

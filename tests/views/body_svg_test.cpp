@@ -1,0 +1,94 @@
+#include "views/body_svg.hpp"
+
+#include <regex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/svg_check.hpp"
+#include "support/test_models.hpp"
+#include "support/test_walls.hpp"
+
+namespace crux {
+namespace {
+
+using testing::check_well_formed;
+using testing::count_of;
+
+// The text of the group of this class in the n-th panel.
+std::string panel_group(const std::string& svg, int panel, const std::string& group_class) {
+  std::size_t at = 0;
+  for (int k = 0; k <= panel; ++k) at = svg.find("<g class=\"panel\">", at + 1);
+  const std::size_t group = svg.find("<g class=\"" + group_class + "\"", at);
+  return svg.substr(group, svg.find("</g>", group) - group);
+}
+
+std::vector<double> circle_centres(const std::string& group, const char* coordinate) {
+  std::vector<double> values;
+  const std::regex pattern(std::string(" ") + coordinate + "=\"([-0-9.]+)\"");
+  for (auto it = std::sregex_iterator(group.begin(), group.end(), pattern); it != std::sregex_iterator(); ++it) {
+    values.push_back(std::stod((*it)[1]));
+  }
+  return values;
+}
+
+const Wall& four_hold_wall() {
+  static const Wall wall = testing::wall_with_holds({{0.3, 0.2}, {0.9, 0.2}, {0.35, 1.7}, {0.85, 1.7}});
+  return wall;
+}
+
+TEST(BodySvg, IsAWellFormedDocumentWithBothViewsAndEveryPrimitive) {
+  const BodyModel& model = testing::human_model();
+  const std::string svg = render_body_svg(model, standing_posture({0.35, 0.6, 1.0}), four_hold_wall(),
+                                          {.title = "standing & waiting", .subtitle = "step 0"});
+  EXPECT_EQ(check_well_formed(svg), "");
+  EXPECT_NE(svg.find("standing &amp; waiting"), std::string::npos);
+  EXPECT_EQ(count_of(svg, "<g class=\"panel\">"), 2);
+  int polygons = 0, spheres = 0;
+  for (const BodyVisual& v : model.visuals) (v.shape == VisualShape::Sphere ? spheres : polygons) += 1;
+  for (int panel = 0; panel < 2; ++panel) {
+    const std::string body = panel_group(svg, panel, "body");
+    EXPECT_EQ(count_of(body, "<polygon"), polygons) << "panel " << panel;
+    EXPECT_EQ(count_of(body, "<circle"), spheres) << "panel " << panel;
+    EXPECT_EQ(count_of(panel_group(svg, panel, "grasp-spheres"), "<circle"), kLimbCount);
+    EXPECT_EQ(count_of(panel_group(svg, panel, "holds"), "<circle"), 4);
+  }
+}
+
+// Front view from behind the climber: the left hand (+y) is drawn left of the right hand,
+// the hands above the feet. Side view: the wall on the left, the body out of the wall.
+TEST(BodySvg, ViewsAreOrientedAsSeenFromBehindAndFromTheRight) {
+  const BodyModel& model = testing::human_model();
+  const std::string svg = render_body_svg(model, standing_posture({0.35, 0.6, 1.0}), four_hold_wall());
+  const std::string front = panel_group(svg, 0, "grasp-spheres");
+  const std::vector<double> x = circle_centres(front, "cx"), y = circle_centres(front, "cy");
+  ASSERT_EQ(x.size(), 4u);
+  EXPECT_LT(x[1], x[0]) << "left hand left of the right hand";
+  EXPECT_LT(x[3], x[2]) << "left foot left of the right foot";
+  EXPECT_LT(y[0], y[2]) << "hands above the feet";
+  const std::string side = panel_group(svg, 1, "grasp-spheres");
+  const std::regex wall_line("class=\"wall\" x1=\"([-0-9.]+)\"");
+  std::smatch wall;
+  ASSERT_TRUE(std::regex_search(svg, wall, wall_line));
+  for (const double cx : circle_centres(side, "cx")) EXPECT_GT(cx, std::stod(wall[1])) << "the body is at x > 0";
+}
+
+TEST(BodySvg, SamePostureGivesIdenticalBytesAndAnotherPostureOtherBytes) {
+  const BodyModel& model = testing::human_model();
+  Posture bent = standing_posture({0.35, 0.6, 1.0});
+  const std::string first = render_body_svg(model, bent, four_hold_wall());
+  EXPECT_EQ(first, render_body_svg(model, bent, four_hold_wall()));
+  bent[kRootDof + 10] = 0.8;
+  EXPECT_NE(first, render_body_svg(model, bent, four_hold_wall()));
+}
+
+TEST(BodySvg, RejectsANonPositiveScale) {
+  EXPECT_THROW(render_body_svg(testing::human_model(), standing_posture({0.35, 0.6, 1.0}), four_hold_wall(),
+                               {.pixels_per_metre = 0}),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace crux
