@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 
+#include "views/svg_text.hpp"
+
 namespace crux {
 namespace {
 
@@ -63,36 +65,6 @@ constexpr double kChosenRingGap = 5.5;
 constexpr double kLabelGap = 3;
 
 double start_ring_gap(std::size_t limb_rank) { return kStartRingGap + kStartRingStep * static_cast<double>(limb_rank); }
-
-std::string xml_escaped(std::string_view text) {
-  std::string escaped;
-  escaped.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&': escaped += "&amp;"; break;
-      case '<': escaped += "&lt;"; break;
-      case '>': escaped += "&gt;"; break;
-      case '"': escaped += "&quot;"; break;
-      case '\'': escaped += "&apos;"; break;
-      default:
-        // XML 1.0 forbids the other control characters even as references.
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
-          escaped += "\xEF\xBF\xBD";  // U+FFFD REPLACEMENT CHARACTER
-        } else {
-          escaped += c;
-        }
-    }
-  }
-  return escaped;
-}
-
-// SVG cannot measure text, so the page is sized from a generous sans-serif average.
-double estimated_text_width(std::string_view text, double font_size) {
-  const auto code_points = std::count_if(text.begin(), text.end(), [](char c) {
-    return (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // not a UTF-8 continuation byte
-  });
-  return 0.6 * font_size * static_cast<double>(code_points);
-}
 
 // A rectangle of the wall plane, in metres.
 struct Extent {
