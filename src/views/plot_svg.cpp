@@ -1,12 +1,12 @@
 #include "views/plot_svg.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "views/svg_text.hpp"
 
@@ -171,7 +171,8 @@ double Panel::y_pixel(double value) const { return top + height - axis_fraction(
 
 double y_axis_room(const Axis& y) {
   double widest = 0;
-  for (const std::string& label : y.tick_labels) widest = std::max(widest, estimated_text_width(label, kPlotTickFontSize));
+  for (const std::string& label : y.tick_labels)
+    widest = std::max(widest, estimated_text_width(label, kPlotTickFontSize));
   return widest + kTickLength + 6 + (y.title.empty() ? 0 : 24);
 }
 
@@ -270,9 +271,8 @@ void draw_reference_line(std::string& svg, const Panel& panel, Direction directi
   } else {
     x1 = x2 = panel.x_pixel(value);
   }
-  emit(svg,
-       "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{:.2f}\"{}/>\n", x1,
-       y1, x2, y2, stroke.colour, stroke.width, dash_attribute(stroke.dash));
+  emit(svg, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{:.2f}\"{}/>\n",
+       x1, y1, x2, y2, stroke.colour, stroke.width, dash_attribute(stroke.dash));
 }
 
 void draw_point_with_error_bar(std::string& svg, const Panel& panel, double x, double x_low, double x_high, double y,
@@ -319,16 +319,18 @@ void draw_legend(std::string& svg, double left, double top, const std::vector<Le
     switch (entry.mark) {
       case LegendMark::LineWithBand:
         emit(svg,
-             "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"12\" fill=\"{}\" fill-opacity=\"0.22\"/>\n",
-             x1, y - 6, x2 - x1, entry.colour);
+             "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"12\" fill=\"{}\" fill-opacity=\"0.22\"/>\n", x1,
+             y - 6, x2 - x1, entry.colour);
         [[fallthrough]];
       case LegendMark::Line:
-        emit(svg, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"2\"{}/>\n",
-             x1, y, x2, y, entry.colour, dash_attribute(entry.dash));
+        emit(svg,
+             "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"2\"{}/>\n", x1,
+             y, x2, y, entry.colour, dash_attribute(entry.dash));
         break;
       case LegendMark::PointWithBar:
-        emit(svg, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"1.8\"/>\n",
-             x1, y, x2, y, entry.colour);
+        emit(svg,
+             "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"1.8\"/>\n", x1,
+             y, x2, y, entry.colour);
         [[fallthrough]];
       case LegendMark::Point:
         emit(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\" stroke=\"white\" stroke-width=\"1.2\"/>\n",
@@ -393,7 +395,8 @@ void draw_colour_bar(std::string& svg, double left, double top, double width, co
       if (value == 0 || std::abs(value) > std::abs(end) * (1 + 1e-9) || (value < 0) != (end < 0)) continue;
       side.push_back({value, tick_label(value, ticks.step, std::abs(end))});
     }
-    std::sort(side.begin(), side.end(), [](const auto& a, const auto& b) { return std::abs(a.value) < std::abs(b.value); });
+    std::sort(side.begin(), side.end(),
+              [](const auto& a, const auto& b) { return std::abs(a.value) < std::abs(b.value); });
     candidates.insert(candidates.end(), side.begin(), side.end());
   };
   if (scale.low < 0) add_side(scale.low);

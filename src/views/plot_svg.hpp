@@ -86,8 +86,7 @@ void draw_band(std::string& svg, const Panel& panel, const std::vector<double>& 
 
 enum class Direction { Horizontal, Vertical };
 // A line across the whole panel at `value` of the y axis (horizontal) or x axis (vertical).
-void draw_reference_line(std::string& svg, const Panel& panel, Direction direction, double value,
-                         const Stroke& stroke);
+void draw_reference_line(std::string& svg, const Panel& panel, Direction direction, double value, const Stroke& stroke);
 
 // A disc at (x, y) with a horizontal bar from x_low to x_high, capped at both ends.
 void draw_point_with_error_bar(std::string& svg, const Panel& panel, double x, double x_low, double x_high, double y,

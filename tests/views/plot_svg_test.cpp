@@ -1,13 +1,13 @@
 #include "views/plot_svg.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "support/xml_check.hpp"
 
@@ -106,7 +106,7 @@ TEST(PlotSvgTest, PanelMapsLinearAndLogAxesAndClampsToTheirEdges) {
   EXPECT_DOUBLE_EQ(panel.y_pixel(10), 250);
   EXPECT_DOUBLE_EQ(panel.y_pixel(1000), 50);
   EXPECT_NEAR(panel.y_pixel(std::sqrt(10.0)), 300, 1e-9);
-  EXPECT_DOUBLE_EQ(panel.y_pixel(0), 350);    // below a log axis: its bottom edge
+  EXPECT_DOUBLE_EQ(panel.y_pixel(0), 350);  // below a log axis: its bottom edge
   EXPECT_DOUBLE_EQ(panel.y_pixel(-5), 350);
   EXPECT_DOUBLE_EQ(panel.y_pixel(1e6), 50);
 }
@@ -128,7 +128,8 @@ TEST(PlotSvgTest, PolylinesBreakAtMissingValuesAndBandsGoAlongHighThenBackAlongL
   svg.clear();
   draw_band(svg, panel, {0, 5, 10}, {1, 2, 3}, {4, 5, 6}, "#abcdef");
   EXPECT_EQ(count_of(svg, "<polygon"), 1);
-  EXPECT_EQ(attribute_after(svg, 0, "points"), "0.00,60.00 50.00,50.00 100.00,40.00 100.00,70.00 50.00,80.00 0.00,90.00");
+  EXPECT_EQ(attribute_after(svg, 0, "points"),
+            "0.00,60.00 50.00,50.00 100.00,40.00 100.00,70.00 50.00,80.00 0.00,90.00");
   EXPECT_EQ(attribute_after(svg, 0, "fill"), "#abcdef");
 
   svg.clear();
@@ -197,7 +198,8 @@ TEST(PlotSvgTest, DocumentIsStandaloneSvgWithEscapedText) {
   std::string body;
   draw_axes(body, panel);
   draw_text(body, 5, 5, "a < b & \"c\"", {.bold = true});
-  draw_legend(body, 300, 20, {{LegendMark::LineWithBand, "#0072b2", "", "mean & band"}, {LegendMark::Point, "#000000", "", "P_i"}});
+  draw_legend(body, 300, 20,
+              {{LegendMark::LineWithBand, "#0072b2", "", "mean & band"}, {LegendMark::Point, "#000000", "", "P_i"}});
   const std::string svg = svg_document(400.2, 200, "plot <1>", body);
   EXPECT_EQ(check_well_formed(svg), "");
   EXPECT_NE(svg.find("xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);
