@@ -1,0 +1,760 @@
+#include "views/paper_figures.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <stdexcept>
+#include <string_view>
+
+#include "common/input_error.hpp"
+#include "common/input_file.hpp"
+#include "experiments/statistics.hpp"
+#include "views/plot_svg.hpp"
+#include "views/svg_text.hpp"
+
+namespace crux {
+namespace {
+
+using Json = nlohmann::ordered_json;  // keeps transfer_vs_control's metrics in file order
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Input echoed in an error stays short enough for one line.
+std::string shortened(std::string_view text) {
+  constexpr std::size_t kMax = 40;
+  return text.size() <= kMax ? std::string(text) : std::string(text.substr(0, kMax - 3)) + "...";
+}
+
+// A value of summary.json with its key path, so that every error names the key.
+struct Field {
+  const std::string& file;
+  const Json& value;
+  std::string path;
+
+  Field operator[](std::string_view key) const {
+    const std::string where = path.empty() ? std::string(key) : fmt::format("{}.{}", path, key);
+    if (!value.is_object())
+      throw InputError(file, fmt::format("{} must be an object", path.empty() ? "the file" : path));
+    const auto found = value.find(key);
+    if (found == value.end()) throw InputError(file, "missing key " + where);
+    return {file, *found, where};
+  }
+  Field operator[](std::size_t index) const { return {file, value.at(index), fmt::format("{}[{}]", path, index)}; }
+  bool contains(std::string_view key) const { return value.is_object() && value.contains(key); }
+  bool is_null() const { return value.is_null(); }
+
+  std::size_t size() const {
+    if (!value.is_array()) throw InputError(file, path + " must be an array");
+    return value.size();
+  }
+  // An array of exactly n elements.
+  void expect_size(std::size_t n) const {
+    if (size() != n) throw InputError(file, fmt::format("{} has {} values, not {}", path, value.size(), n));
+  }
+  double number() const {
+    if (!value.is_number()) throw InputError(file, path + " must be a number");
+    return value.get<double>();
+  }
+  int integer(std::int64_t min = std::numeric_limits<int>::min()) const {
+    if (!value.is_number_integer()) throw InputError(file, path + " must be an integer");
+    const auto n = value.get<std::int64_t>();
+    if (n < min || n > std::numeric_limits<int>::max()) {
+      throw InputError(file, fmt::format("{} is {}; it must be an integer of at least {}", path, n, min));
+    }
+    return static_cast<int>(n);
+  }
+  bool boolean() const {
+    if (!value.is_boolean()) throw InputError(file, path + " must be true or false");
+    return value.get<bool>();
+  }
+  std::string string() const {
+    if (!value.is_string()) throw InputError(file, path + " must be a string");
+    return value.get<std::string>();
+  }
+};
+
+GridParameters read_grid(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  const std::string text = read_input_file(file, "config file");
+  toml::table table;
+  try {
+    table = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    throw InputError(file, fmt::format("TOML syntax error at line {}, column {}: {}", e.source().begin.line,
+                                       e.source().begin.column, e.description()));
+  }
+  const auto integer = [&](std::string_view key, int min) {
+    const auto node = table["grid"][key];
+    if (!node) throw InputError(file, fmt::format("missing key grid.{}", key));
+    const auto value = node.value_exact<std::int64_t>();
+    if (!value || *value < min || *value > 1'000'000) {
+      throw InputError(file, fmt::format("grid.{} must be an integer from {} to 1000000", key, min));
+    }
+    return static_cast<int>(*value);
+  };
+  const auto length = [&](std::string_view key) {
+    const auto node = table["grid"][key];
+    if (!node) throw InputError(file, fmt::format("missing key grid.{}", key));
+    const auto value = node.value<double>();
+    if (!value || !(*value > 0) || !std::isfinite(*value)) {
+      throw InputError(file, fmt::format("grid.{} must be a positive number of metres", key));
+    }
+    return *value;
+  };
+  GridParameters grid;
+  grid.columns = integer("columns", 1);
+  grid.rows = integer("rows", 1);
+  grid.tile_width = length("tile_width");
+  grid.tile_height = length("tile_height");
+  // GridParameters counts tiles in an int, and each tile is one value per map.
+  if (static_cast<std::int64_t>(grid.columns) * grid.rows > 1'000'000) {
+    throw InputError(file, fmt::format("a grid of {} x {} tiles is larger than the 1000000 tiles this reads",
+                                       grid.columns, grid.rows));
+  }
+  for (int l = 0; l < kLimbCount; ++l) {
+    const std::string limb = limb_name(static_cast<Limb>(l));
+    grid.anchors[l] = {integer(limb + "_anchor_column", 0), integer(limb + "_anchor_row", 0)};
+    if (grid.anchors[l][0] >= grid.columns || grid.anchors[l][1] >= grid.rows) {
+      throw InputError(file, fmt::format("the {} anchor tile ({}, {}) lies outside the {} x {} grid", limb,
+                                         grid.anchors[l][0], grid.anchors[l][1], grid.columns, grid.rows));
+    }
+  }
+  return grid;
+}
+
+std::vector<Regime> read_regimes(const std::filesystem::path& path, int iterations) {
+  const std::string file = path.string();
+  const std::string text = read_input_file(file, "iterations file");
+  constexpr std::string_view kHeader = "iteration,episode,regime,hold,success,root_rise_cm,reward";
+  constexpr std::array<Regime, kRegimeCount> kRegimes{Regime::WGreedy, Regime::GGreedy, Regime::Random};
+  std::vector<Regime> regimes;
+  std::size_t at = 0;
+  for (int line = 1; at < text.size(); ++line) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string_view row(text.data() + at, end - at);
+    at = end + 1;
+    if (line == 1) {
+      if (row != kHeader) {
+        throw InputError(file, fmt::format("line 1: the header must be '{}', not '{}'", kHeader, shortened(row)));
+      }
+      continue;
+    }
+    std::vector<std::string_view> fields;
+    for (std::size_t start = 0;;) {
+      const std::size_t comma = row.find(',', start);
+      fields.push_back(row.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+      if (comma == std::string_view::npos) break;
+      start = comma + 1;
+    }
+    if (fields.size() != 7) throw InputError(file, fmt::format("line {}: {} fields, not 7", line, fields.size()));
+    int iteration = 0;
+    const auto [end_of_number, error] =
+        std::from_chars(fields[0].data(), fields[0].data() + fields[0].size(), iteration);
+    if (error != std::errc() || end_of_number != fields[0].data() + fields[0].size() || iteration != line - 1) {
+      throw InputError(
+          file, fmt::format("line {}: iteration '{}' where {} was expected", line, shortened(fields[0]), line - 1));
+    }
+    const auto regime =
+        std::find_if(kRegimes.begin(), kRegimes.end(), [&](Regime r) { return fields[2] == regime_name(r); });
+    if (regime == kRegimes.end()) {
+      throw InputError(file, fmt::format("line {}: unknown regime '{}'", line, shortened(fields[2])));
+    }
+    regimes.push_back(*regime);
+  }
+  if (text.empty()) throw InputError(file, "is empty; the header line is missing");
+  if (static_cast<int>(regimes.size()) != iterations) {
+    throw InputError(file, fmt::format("has {} iterations, but summary.json says {}", regimes.size(), iterations));
+  }
+  return regimes;
+}
+
+TransferMetricData read_metric(const Field& metric, const std::string& name) {
+  TransferMetricData out;
+  out.name = name;
+  out.description = metric["description"].string();
+  out.higher_is_better = metric["higher_is_better"].boolean();
+  out.control_mean = metric["control"]["mean"].number();
+  const Field difference = metric["transfer_minus_control"];
+  out.difference = difference["mean"].number();
+  const Field interval = difference["ci95_t_over_walls"];
+  if (!interval.is_null()) {
+    interval.expect_size(2);
+    out.difference_ci95 = std::array<double, 2>{interval[0].number(), interval[1].number()};
+  }
+  out.p_value = difference["p_value"].number();
+  out.walls = difference["walls"].integer(0);
+  return out;
+}
+
+// --- Statistics over walls -------------------------------------------------------------
+
+// The mean over walls of each wall's mean of `values` (run i on wall wall_of[i]).
+MeanInterval over_walls(const std::vector<double>& values, const std::vector<std::size_t>& wall_of) {
+  return mean_interval(cluster_means(values, wall_of));
+}
+
+void append(WallBandSeries& series, double x, const MeanInterval& m) {
+  series.x.push_back(x);
+  series.mean.push_back(m.mean);
+  series.low.push_back(m.n >= 2 ? m.mean - m.half_width : kNaN);
+  series.high.push_back(m.n >= 2 ? m.mean + m.half_width : kNaN);
+  series.walls.push_back(m.n);
+}
+
+int wall_count(const PaperConditionData& condition) {
+  std::set<int> walls;
+  for (const PaperRunData& run : condition.runs) walls.insert(run.wall_pair);
+  return static_cast<int>(walls.size());
+}
+
+// One sampled iteration in about 400 keeps Fig. 3's file small and its lines smooth.
+int fig3_step(int iterations) { return std::max(1, (iterations + 399) / 400); }
+
+// --- Page layout -----------------------------------------------------------------------
+
+constexpr double kMargin = 16;
+constexpr const char* kTitleColour = "#111111";
+constexpr const char* kSubtitleColour = "#555555";
+constexpr const char* kAnchorColour = "#1a9641";  // the P_i point, as in the wall view (Fig. 2a)
+
+// Okabe-Ito colours, told apart by colour-blind readers.
+const char* condition_colour(Condition condition) {
+  switch (condition) {
+    case Condition::Training:
+      return "#0072b2";
+    case Condition::Transfer:
+      return "#d55e00";
+    case Condition::Control:
+      return "#009e73";
+  }
+  return "#333333";
+}
+
+struct RegimeStyle {
+  const char* label;
+  const char* colour;
+  const char* dash;  // told apart in grey print too
+};
+constexpr std::array<RegimeStyle, kRegimeCount> kRegimeStyles{{
+    {"w-greedy", "#0072b2", ""},
+    {"g-greedy", "#e69f00", "8 4"},
+    {"random", "#333333", "2 3"},
+}};
+
+struct Header {
+  std::string title;
+  std::vector<std::string> subtitles;
+
+  double height() const { return 30 + 16 * static_cast<double>(subtitles.size()) + 12; }
+  double width() const {
+    double widest = estimated_text_width(title, kPlotTitleFontSize);
+    for (const std::string& line : subtitles) {
+      widest = std::max(widest, estimated_text_width(line, kPlotSubtitleFontSize));
+    }
+    return widest;
+  }
+  void draw(std::string& svg) const {
+    draw_text(svg, kMargin, kMargin + 14, title, {.size = kPlotTitleFontSize, .colour = kTitleColour, .bold = true});
+    for (std::size_t i = 0; i < subtitles.size(); ++i) {
+      draw_text(svg, kMargin, kMargin + 34 + 16 * static_cast<double>(i), subtitles[i],
+                {.size = kPlotSubtitleFontSize, .colour = kSubtitleColour});
+    }
+  }
+};
+
+std::string runs_phrase(int runs, int walls) {
+  return fmt::format("{} run{} on {} wall{}", runs, runs == 1 ? "" : "s", walls, walls == 1 ? "" : "s");
+}
+
+std::string band_phrase(const PaperFigureData& data) {
+  int walls = 0;
+  for (const PaperConditionData& c : data.conditions) walls = std::max(walls, wall_count(c));
+  const std::string per_wall =
+      data.seeds_per_wall == 1
+          ? std::string("mean over walls (one run per wall)")
+          : fmt::format("mean over walls of each wall's mean over its {} runs", data.seeds_per_wall);
+  if (walls < 2) return per_wall + "; one wall, so no interval";
+  return per_wall + "; band: Student-t 95 % interval over walls";
+}
+
+std::string limb_title(Limb limb) {
+  std::string name = limb_name(limb);
+  std::replace(name.begin(), name.end(), '_', ' ');
+  return name + " free";
+}
+
+std::string format_length(double value) { return fmt::format("{:.1f}", value); }
+
+}  // namespace
+
+PaperFigureData read_paper_figure_data(const std::filesystem::path& folder) {
+  PaperFigureData data;
+  data.grid = read_grid(folder / "config.toml");
+
+  const std::string file = (folder / "summary.json").string();
+  Json json;
+  try {
+    json = Json::parse(read_input_file(file, "summary file"));
+  } catch (const Json::parse_error& e) {
+    throw InputError(file, fmt::format("not JSON: {}", e.what()));
+  }
+  const Field summary{file, json, ""};
+  if (const std::string format = summary["format"].string(); format != "crux-summary") {
+    throw InputError(file, fmt::format("format is '{}', not 'crux-summary'", shortened(format)));
+  }
+  if (const int version = summary["version"].integer(); version != 3) {
+    throw InputError(file, fmt::format("version {} is not the version 3 this crux reads", version));
+  }
+  data.iterations = summary["iterations"].integer(0);
+  data.seeds_per_wall = summary["seeds_per_wall"].integer(1);
+
+  const Field lengths = summary["episode_lengths"];
+  for (const Condition condition : kConditions) {
+    const std::string name = condition_name(condition);
+    if (!lengths.contains(name)) continue;
+    PaperConditionData c;
+    c.condition = condition;
+    const Field run_lengths = lengths[name];
+    const Field facts = summary["run_facts"][name];
+    facts.expect_size(run_lengths.size());
+    for (std::size_t i = 0; i < run_lengths.size(); ++i) {
+      PaperRunData run;
+      run.wall_pair = facts[i]["wall_pair"].integer(0);
+      run.plan_length = facts[i]["plan_length"].integer(-1);
+      const Field episodes = run_lengths[i];
+      for (std::size_t e = 0; e < episodes.size(); ++e) run.episode_lengths.push_back(episodes[e].integer(1));
+      run.regimes = read_regimes(folder / "runs" / fmt::format("{}_{}", name, i) / "iterations.csv", data.iterations);
+      c.runs.push_back(std::move(run));
+    }
+    for (int l = 0; l < kLimbCount; ++l) {
+      const Field map = summary["qgrid_maps"][name][limb_name(static_cast<Limb>(l))];
+      map.expect_size(static_cast<std::size_t>(data.grid.tile_count()));
+      for (std::size_t t = 0; t < map.size(); ++t) c.q_grid_maps[l].push_back(map[t].number());
+    }
+    data.conditions.push_back(std::move(c));
+  }
+  if (data.conditions.empty()) throw InputError(file, "episode_lengths holds none of training, transfer, control");
+
+  const Field metrics = summary["transfer_vs_control"];
+  if (!metrics.value.is_object()) throw InputError(file, "transfer_vs_control must be an object");
+  for (const auto& [name, value] : metrics.value.items()) {
+    data.transfer_metrics.push_back(read_metric(metrics[name], name));
+  }
+  return data;
+}
+
+std::array<WallBandSeries, kRegimeCount> regime_series(const PaperConditionData& condition, int iterations, int step) {
+  step = std::max(1, step);
+  std::vector<int> samples;  // iterations, from 1
+  for (int i = 1; i <= iterations; ++i) {
+    if (i == 1 || i % step == 0 || i == iterations) samples.push_back(i);
+  }
+  // counts[run][sample][regime]: the run's actions of each regime up to that iteration.
+  std::vector<std::vector<std::array<double, kRegimeCount>>> counts;
+  std::vector<std::size_t> wall_of;
+  for (const PaperRunData& run : condition.runs) {
+    std::array<double, kRegimeCount> count{};
+    std::vector<std::array<double, kRegimeCount>> at_samples;
+    std::size_t next = 0;
+    for (int i = 1; i <= iterations; ++i) {
+      if (i <= static_cast<int>(run.regimes.size())) count[static_cast<int>(run.regimes[i - 1])] += 1;
+      if (next < samples.size() && samples[next] == i) {
+        at_samples.push_back(count);
+        ++next;
+      }
+    }
+    counts.push_back(std::move(at_samples));
+    wall_of.push_back(static_cast<std::size_t>(run.wall_pair));
+  }
+  std::array<WallBandSeries, kRegimeCount> series;
+  std::vector<double> values(condition.runs.size());
+  for (std::size_t s = 0; s < samples.size(); ++s) {
+    for (int r = 0; r < kRegimeCount; ++r) {
+      for (std::size_t k = 0; k < counts.size(); ++k) values[k] = counts[k][s][r];
+      append(series[r], samples[s], over_walls(values, wall_of));
+    }
+  }
+  return series;
+}
+
+WallBandSeries episode_length_series(const PaperConditionData& condition) {
+  std::size_t episodes = 0;
+  for (const PaperRunData& run : condition.runs) episodes = std::max(episodes, run.episode_lengths.size());
+  WallBandSeries series;
+  for (std::size_t e = 0; e < episodes; ++e) {
+    std::vector<double> values;
+    std::vector<std::size_t> wall_of;
+    for (const PaperRunData& run : condition.runs) {
+      if (e >= run.episode_lengths.size()) continue;  // this run never completed episode e
+      values.push_back(run.episode_lengths[e]);
+      wall_of.push_back(static_cast<std::size_t>(run.wall_pair));
+    }
+    append(series, static_cast<double>(e + 1), over_walls(values, wall_of));
+  }
+  return series;
+}
+
+// Paper, Fig. 2b: one map per free limb of the summed Q_grid value of each tile, with the
+// limb's P_i point. Rows here are conditions, so that transfer's maps sit under
+// training's.
+std::string fig2b_svg(const PaperFigureData& data) {
+  const GridParameters& grid = data.grid;
+  const Header header{
+      "Fig. 2b: Q_grid maps per free limb",
+      {"each tile: Q_grid(s, tile) summed over the agent-space states s with that free limb, mean over a condition's "
+       "runs",
+       fmt::format("{} x {} grid of {} x {} m tiles, drawn as the climber facing the wall sees it (its right on the "
+                   "right)",
+                   grid.columns, grid.rows, grid.tile_width, grid.tile_height),
+       "one colour scale for all maps: white at 0; blue to the lowest value, red to the highest"}};
+
+  // Each map fits a 130 x 240 pixel box, its tiles keeping their proportions.
+  const double scale = std::min(130.0 / (grid.columns * grid.tile_width), 240.0 / (grid.rows * grid.tile_height));
+  const double cell_width = grid.tile_width * scale, cell_height = grid.tile_height * scale;
+  const double map_width = cell_width * grid.columns, map_height = cell_height * grid.rows;
+  double heading_width = 0;
+  for (int l = 0; l < kLimbCount; ++l) {
+    heading_width = std::max(heading_width, estimated_text_width(limb_title(static_cast<Limb>(l)), kPlotLabelFontSize));
+  }
+  const double slot = std::max(map_width, heading_width) + 32;
+  const double maps_left = kMargin + 56;  // room for the row numbers and the row title
+  const auto map_left = [&](int limb) { return maps_left + slot * limb + (slot - 32 - map_width) / 2; };
+
+  DivergingScale colours{0, 0};
+  for (const PaperConditionData& c : data.conditions) {
+    for (const auto& map : c.q_grid_maps) {
+      if (map.size() != static_cast<std::size_t>(grid.tile_count())) {
+        throw std::invalid_argument(
+            fmt::format("fig2b_svg: a map of {} values for a grid of {} tiles", map.size(), grid.tile_count()));
+      }
+      for (const double v : map) {
+        colours.low = std::min(colours.low, v);
+        colours.high = std::max(colours.high, v);
+      }
+    }
+  }
+
+  std::string svg;
+  header.draw(svg);
+  double y = kMargin + header.height();
+  for (int l = 0; l < kLimbCount; ++l) {
+    draw_text(svg, map_left(l) + map_width / 2, y + 12, limb_title(static_cast<Limb>(l)),
+              {.anchor = "middle", .bold = true});
+  }
+  y += 22;
+  // Numbers at most every 14 pixels, so that they never touch.
+  const int column_every = static_cast<int>(std::ceil(14 / cell_width));
+  const int row_every = static_cast<int>(std::ceil(14 / cell_height));
+  const double rows_top = y;
+  for (const PaperConditionData& c : data.conditions) {
+    draw_text(svg, maps_left - 30, y + 13,
+              fmt::format("{} (mean over {})", condition_name(c.condition),
+                          runs_phrase(static_cast<int>(c.runs.size()), wall_count(c))),
+              {.colour = condition_colour(c.condition), .bold = true});
+    y += 22;
+    for (int l = 0; l < kLimbCount; ++l) {
+      // The climber's view: column 0 (the climber's right) on the right, row 0 at the bottom.
+      const auto cell_x = [&](int column) { return map_left(l) + (grid.columns - 1 - column) * cell_width; };
+      const auto cell_y = [&](int row) { return y + (grid.rows - 1 - row) * cell_height; };
+      std::vector<Cell> cells;
+      for (int tile = 0; tile < grid.tile_count(); ++tile) {
+        const int column = tile % grid.columns, row = tile / grid.columns;
+        cells.push_back({cell_x(column), cell_y(row), cell_width, cell_height, c.q_grid_maps[l][tile]});
+      }
+      draw_cells(svg, cells, colours);
+      svg += fmt::format(
+          "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#888888\" "
+          "stroke-width=\"1\"/>\n",
+          map_left(l), y, map_width, map_height);
+      const auto [anchor_column, anchor_row] = grid.anchors[l];
+      svg += fmt::format(
+          "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"4.5\" fill=\"{}\" stroke=\"white\" "
+          "stroke-width=\"1.5\"/>\n",
+          cell_x(anchor_column) + cell_width / 2, cell_y(anchor_row) + cell_height / 2, kAnchorColour);
+    }
+    for (int row = 0; row < grid.rows; row += row_every) {
+      draw_text(svg, maps_left - 8, y + (grid.rows - 0.5 - row) * cell_height + 4, std::to_string(row),
+                {.size = kPlotTickFontSize, .anchor = "end", .colour = "#444444"});
+    }
+    y += map_height + 14;
+  }
+  for (int l = 0; l < kLimbCount; ++l) {
+    for (int column = 0; column < grid.columns; column += column_every) {
+      draw_text(svg, map_left(l) + (grid.columns - 0.5 - column) * cell_width, y + 2, std::to_string(column),
+                {.size = kPlotTickFontSize, .anchor = "middle", .colour = "#444444"});
+    }
+  }
+  const double maps_right = maps_left + slot * kLimbCount - 32;
+  draw_text(svg, (maps_left + maps_right) / 2, y + 22, "grid column (0 = the climber's right)", {.anchor = "middle"});
+  draw_text(svg, kMargin + 12, (rows_top + y - 14) / 2, "grid row (0 = bottom)", {.anchor = "middle", .rotation = -90});
+  y += 42;
+
+  const double bar_width = std::min(360.0, maps_right - maps_left);
+  draw_colour_bar(svg, maps_left, y, bar_width, colours, "summed Q_grid (reward units)");
+  const std::vector<LegendEntry> legend{
+      {LegendMark::Point, kAnchorColour, "", "P_i: centre of the free limb's anchor tile"}};
+  const double legend_left = maps_left + bar_width + 32;
+  draw_legend(svg, legend_left, y - 3, legend);
+
+  const double width = std::max({maps_right, legend_left + legend_width(legend), kMargin + header.width()}) + kMargin;
+  return svg_document(width, y + kColourBarRoom + kMargin, header.title, svg);
+}
+
+// Paper, Fig. 3: how many actions each selection regime has taken by each iteration, one
+// panel per condition on a shared y axis.
+std::string fig3_svg(const PaperFigureData& data) {
+  const int step = fig3_step(data.iterations);
+  const Header header{"Fig. 3: cumulative actions per selection regime",
+                      {band_phrase(data), fmt::format("sampled at iteration 1, every {}{} iteration and the last", step,
+                                                      step == 1 ? "" : "th")}};
+  constexpr double kPanelWidth = 300, kPanelHeight = 240, kPanelGap = 24;
+  const Axis x = linear_axis(0, std::max(1, data.iterations), "iteration (real actions)");
+  const Axis y = linear_axis(0, std::max(1, data.iterations), "cumulative actions (count)");
+  Axis y_untitled = y;
+  y_untitled.title.clear();
+
+  std::string svg;
+  header.draw(svg);
+  const double top = kMargin + header.height() + 22;  // room for the panel titles
+  double left = kMargin + y_axis_room(y);
+  bool any_band = false;
+  for (const PaperConditionData& c : data.conditions) {
+    // Only the first panel carries the y axis title; all panels share the axis.
+    const Panel panel{left, top, kPanelWidth, kPanelHeight, x, &c == &data.conditions.front() ? y : y_untitled};
+    draw_axes(svg, panel);
+    const auto series = regime_series(c, data.iterations, step);
+    for (int r = 0; r < kRegimeCount; ++r) {
+      draw_band(svg, panel, series[r].x, series[r].low, series[r].high, kRegimeStyles[r].colour);
+      any_band = any_band ||
+                 std::any_of(series[r].low.begin(), series[r].low.end(), [](double v) { return std::isfinite(v); });
+    }
+    for (int r = 0; r < kRegimeCount; ++r) {
+      draw_polyline(svg, panel, series[r].x, series[r].mean, {kRegimeStyles[r].colour, 2, kRegimeStyles[r].dash});
+    }
+    draw_text(svg, left, top - 8,
+              fmt::format("{} ({})", condition_name(c.condition),
+                          runs_phrase(static_cast<int>(c.runs.size()), wall_count(c))),
+              {.colour = condition_colour(c.condition), .bold = true});
+    left += kPanelWidth + kPanelGap + y_axis_room(y_untitled);
+  }
+  std::vector<LegendEntry> legend;
+  for (const RegimeStyle& style : kRegimeStyles) {
+    legend.push_back({any_band ? LegendMark::LineWithBand : LegendMark::Line, style.colour, style.dash, style.label});
+  }
+  const double legend_left = left - y_axis_room(y_untitled) - kPanelGap + 24;
+  draw_legend(svg, legend_left, top, legend);
+  const double width = std::max(legend_left + legend_width(legend), kMargin + header.width()) + kMargin;
+  return svg_document(width, top + kPanelHeight + kXAxisRoom + kMargin, header.title, svg);
+}
+
+// Paper, Fig. 4: episode length against episode, on a log scale, with the walls' shortest
+// climb for reference (the paper quotes about 10 actions for the optimal policy).
+std::string fig4_svg(const PaperFigureData& data) {
+  const Header header{
+      "Fig. 4: episode lengths",
+      {band_phrase(data) + " (cut at the axis)",
+       "episode n counts only the runs that completed it, so later episodes rest on fewer runs",
+       "dashed: the shortest climb of the condition's walls (exact plan), mean over the walls where it is known"}};
+
+  std::vector<WallBandSeries> series;
+  double low = std::numeric_limits<double>::infinity(), high = 0, episodes = 1;
+  for (const PaperConditionData& c : data.conditions) {
+    series.push_back(episode_length_series(c));
+    for (std::size_t i = 0; i < series.back().x.size(); ++i) {
+      low = std::min(low, series.back().mean[i]);
+      high = std::max(high, series.back().mean[i]);
+      if (std::isfinite(series.back().high[i])) high = std::max(high, series.back().high[i]);
+    }
+    episodes = std::max(episodes, static_cast<double>(series.back().x.size()));
+  }
+  // The dashed lines: conditions whose walls give the same mean share one (transfer and
+  // control run on the same walls).
+  std::map<std::string, std::vector<Condition>> plans;  // the mean, formatted -> its conditions
+  std::map<std::string, double> plan_values;
+  for (const PaperConditionData& c : data.conditions) {
+    std::map<int, int> plan_of_wall;
+    for (const PaperRunData& run : c.runs) {
+      if (run.plan_length >= 0) plan_of_wall[run.wall_pair] = run.plan_length;
+    }
+    if (plan_of_wall.empty()) continue;
+    double sum = 0;
+    for (const auto& [wall, length] : plan_of_wall) sum += length;
+    const double mean = sum / static_cast<double>(plan_of_wall.size());
+    plans[format_length(mean)].push_back(c.condition);
+    plan_values[format_length(mean)] = mean;
+    low = std::min(low, mean);
+    high = std::max(high, mean);
+  }
+  if (!std::isfinite(low)) low = high = 1;  // no episode at all
+  low = std::max(low, 1.0);
+  const Axis x = linear_axis(0, episodes, "episode (from 1)");
+  const Axis y = log10_axis(low, std::max(high, low), "episode length (actions, log scale)");
+  const Panel panel{kMargin + y_axis_room(y), kMargin + header.height() + 6, 640, 360, x, y};
+
+  std::string svg;
+  header.draw(svg);
+  draw_axes(svg, panel);
+  std::vector<LegendEntry> legend;
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const PaperConditionData& c = data.conditions[k];
+    const bool band =
+        std::any_of(series[k].low.begin(), series[k].low.end(), [](double v) { return std::isfinite(v); });
+    // Fainter than Fig. 3's: three conditions' bands overlap here.
+    draw_band(svg, panel, series[k].x, series[k].low, series[k].high, condition_colour(c.condition), 0.15);
+    legend.push_back({band ? LegendMark::LineWithBand : LegendMark::Line, condition_colour(c.condition), "",
+                      fmt::format("{} ({})", condition_name(c.condition),
+                                  runs_phrase(static_cast<int>(c.runs.size()), wall_count(c)))});
+  }
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    draw_polyline(svg, panel, series[k].x, series[k].mean, {condition_colour(data.conditions[k].condition), 1.6, ""});
+  }
+  // Labels under the right end of their line, where no mean can be (no episode is shorter
+  // than the shortest climb), on a white ground over the bands, pushed down so that close
+  // lines' labels do not overlap; the highest line first.
+  double label_floor = -std::numeric_limits<double>::infinity();
+  for (auto it = plans.rbegin(); it != plans.rend(); ++it) {
+    const auto& [text, conditions] = *it;
+    const char* colour = conditions.size() == 1 ? condition_colour(conditions.front()) : "#444444";
+    std::string names;
+    for (const Condition c : conditions) names += fmt::format("{}{}", names.empty() ? "" : ", ", condition_name(c));
+    const double value = plan_values[text];
+    draw_reference_line(svg, panel, Direction::Horizontal, value, {colour, 1.6, "7 4"});
+    double label_y = std::max(panel.y_pixel(value) + 15, label_floor + 15);
+    if (label_y > panel.top + panel.height - 4) label_y = panel.y_pixel(value) - 5;  // a line on the axis
+    label_floor = label_y;
+    const std::string label = fmt::format("shortest climb {} ({})", text, names);
+    const double label_width = estimated_text_width(label, kPlotTickFontSize);
+    svg += fmt::format(
+        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"15\" fill=\"white\" fill-opacity=\"0.85\"/>\n",
+        panel.left + panel.width - 8 - label_width, label_y - 11.5, label_width + 4);
+    draw_text(svg, panel.left + panel.width - 6, label_y, label,
+              {.size = kPlotTickFontSize, .anchor = "end", .colour = colour});
+    legend.push_back({LegendMark::Line, colour, "7 4", fmt::format("shortest climb {} (walls of {})", text, names)});
+  }
+  const double legend_left = panel.left + panel.width + 20;
+  draw_legend(svg, legend_left, panel.top, legend);
+  const double width = std::max(legend_left + legend_width(legend), kMargin + header.width()) + kMargin;
+  return svg_document(width, panel.top + panel.height + kXAxisRoom + kMargin, header.title, svg);
+}
+
+// Not in the paper: the transfer metrics as a forest plot, each difference divided by
+// |control's mean| so that metrics of different units share one axis.
+std::string transfer_metrics_svg(const PaperFigureData& data) {
+  int walls = 0;
+  for (const TransferMetricData& m : data.transfer_metrics) walls = std::max(walls, m.walls);
+  const Header header{
+      "Transfer minus control, per metric",
+      {"point: mean over walls of each wall's mean paired difference (transfer run minus its control run)",
+       fmt::format("bar: Student-t 95 % interval over {} wall{}; both in % of |control's mean|, so that metrics of "
+                   "different units share one axis",
+                   walls, walls == 1 ? "" : "s")}};
+  constexpr const char* kFavoursTransfer = "#0072b2";
+  constexpr const char* kFavoursControl = "#d55e00";
+  constexpr const char* kNoDifference = "#777777";
+  constexpr double kRowHeight = 46;
+
+  struct Row {
+    const TransferMetricData* metric;
+    bool available;
+    double value = 0, low = 0, high = 0;
+  };
+  std::vector<Row> rows;
+  double low = 0, high = 0;
+  for (const TransferMetricData& m : data.transfer_metrics) {
+    Row row{&m, m.control_mean != 0};
+    if (row.available) {
+      const double scale = 100 / std::abs(m.control_mean);
+      row.value = m.difference * scale;
+      row.low = m.difference_ci95 ? (*m.difference_ci95)[0] * scale : row.value;
+      row.high = m.difference_ci95 ? (*m.difference_ci95)[1] * scale : row.value;
+      low = std::min({low, row.value, row.low});
+      high = std::max({high, row.value, row.high});
+    }
+    rows.push_back(row);
+  }
+  double label_width = 0, note_width = 0;
+  std::vector<std::string> notes;
+  for (const Row& row : rows) {
+    const TransferMetricData& m = *row.metric;
+    label_width =
+        std::max({label_width,
+                  estimated_text_width(m.name + (m.higher_is_better ? " (higher is better)" : " (lower is better)"),
+                                       kPlotLabelFontSize),
+                  estimated_text_width(m.description, kPlotTickFontSize)});
+    std::string note = "n/a";
+    if (row.available) {
+      note = m.difference_ci95 ? fmt::format("{:+.1f} % [{:+.1f}, {:+.1f}]", row.value, row.low, row.high)
+                               : fmt::format("{:+.1f} % (no interval)", row.value);
+    }
+    notes.push_back(note);
+    note_width = std::max(note_width, estimated_text_width(note, kPlotTickFontSize));
+  }
+  const Axis x = linear_axis(low, high, "transfer minus control (% of |control's mean|)", 6);
+  const double plot_left = kMargin + label_width + 20;
+  const double plot_height = kRowHeight * static_cast<double>(std::max<std::size_t>(rows.size(), 1));
+  const Panel panel{
+      plot_left, kMargin + header.height() + 6,
+      380,       plot_height,
+      x,         Axis{AxisScale::Linear, 0, std::max<double>(1, static_cast<double>(rows.size())), {}, {}, ""}};
+
+  std::string svg;
+  header.draw(svg);
+  const double right_edge = panel.left + panel.width + 16 + std::max(note_width, 120.0);
+  for (std::size_t i = 0; i < rows.size(); i += 2) {  // every other row shaded, to guide the eye
+    svg += fmt::format("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"#f4f4f4\"/>\n",
+                       kMargin, panel.top + kRowHeight * static_cast<double>(i), right_edge - kMargin, kRowHeight);
+  }
+  draw_axes(svg, panel);
+  draw_reference_line(svg, panel, Direction::Vertical, 0, {"#444444", 1.2, "5 4"});
+  if (rows.empty()) {
+    draw_text(svg, panel.left + panel.width / 2, panel.top + kRowHeight / 2 + 4, "no metrics in this folder",
+              {.anchor = "middle", .colour = kNoDifference, .italic = true});
+  }
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row& row = rows[i];
+    const TransferMetricData& m = *row.metric;
+    const double centre = static_cast<double>(rows.size()) - 0.5 - static_cast<double>(i);
+    const double row_top = panel.top + kRowHeight * static_cast<double>(i);
+    draw_text(svg, kMargin + 4, row_top + 19,
+              m.name + (m.higher_is_better ? " (higher is better)" : " (lower is better)"), {.bold = true});
+    draw_text(svg, kMargin + 4, row_top + 36, m.description, {.size = kPlotTickFontSize, .colour = kSubtitleColour});
+    const double text_left = panel.left + panel.width + 16;
+    draw_text(svg, text_left, row_top + 19, notes[i], {.size = kPlotTickFontSize});
+    const std::string p = m.p_value < 0.001 ? "p < 0.001" : fmt::format("p = {:.3f}", m.p_value);
+    draw_text(svg, text_left, row_top + 36, fmt::format("{}, {} wall{}", p, m.walls, m.walls == 1 ? "" : "s"),
+              {.size = kPlotTickFontSize, .colour = kSubtitleColour});
+    if (!row.available) {
+      draw_text(svg, panel.left + panel.width / 2, panel.y_pixel(centre) + 4, "not available: control's mean is 0",
+                {.size = kPlotTickFontSize, .anchor = "middle", .colour = kNoDifference, .italic = true});
+      continue;
+    }
+    const char* colour = row.value == 0                          ? kNoDifference
+                         : (row.value > 0) == m.higher_is_better ? kFavoursTransfer
+                                                                 : kFavoursControl;
+    draw_point_with_error_bar(svg, panel, row.value, row.low, row.high, centre, colour);
+  }
+  const std::vector<LegendEntry> legend{{LegendMark::PointWithBar, kFavoursTransfer, "", "favours transfer"},
+                                        {LegendMark::PointWithBar, kFavoursControl, "", "favours control"},
+                                        {LegendMark::Line, "#444444", "5 4", "no difference"}};
+  const double legend_top = panel.top + panel.height + kXAxisRoom + 6;
+  draw_legend(svg, panel.left, legend_top, legend);
+  const double width = std::max({right_edge, panel.left + legend_width(legend), kMargin + header.width()}) + kMargin;
+  return svg_document(width, legend_top + legend_height(legend) + kMargin, header.title, svg);
+}
+
+std::vector<std::pair<std::string, std::string>> paper_figures(const PaperFigureData& data) {
+  return {{"fig2b_qgrid_maps.svg", fig2b_svg(data)},
+          {"fig3_regimes.svg", fig3_svg(data)},
+          {"fig4_episode_lengths.svg", fig4_svg(data)},
+          {"transfer_minus_control.svg", transfer_metrics_svg(data)}};
+}
+
+}  // namespace crux
