@@ -7,6 +7,7 @@
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "reports/figure_tables.hpp"
+#include "reports/report_figures.hpp"
 #include "reports/run_files.hpp"
 #include "wall/wall_file.hpp"
 
@@ -104,6 +105,8 @@ void write_experiment_folder(const fs::path& directory, const ExperimentResult& 
   write_file_atomically(directory / "figures" / "fig2b_qgrid_maps.csv",
                         fig2b_csv(result, settings.learning.climbing.grid));
   write_file_atomically(directory / "summary.json", summary.dump(2) + "\n");
+  // Drawn from the files just written, as `crux figures` redraws them.
+  write_paper_figure_files(directory);
   mark_complete(directory);
 }
 

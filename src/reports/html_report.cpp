@@ -1,0 +1,233 @@
+#include "reports/html_report.hpp"
+
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "common/input_error.hpp"
+#include "common/input_file.hpp"
+#include "learning/action_selection.hpp"
+#include "reports/paper_reference.hpp"
+#include "views/svg_text.hpp"
+
+namespace crux {
+namespace {
+
+using Json = nlohmann::json;
+
+constexpr std::array<const char*, 3> kConditionNames{"training", "transfer", "control"};
+constexpr std::array<const char*, 2> kWindowNames{"beginning", "overall"};
+
+// A JSON value from the summary, or null when the path does not exist.
+const Json& at(const Json& json, std::initializer_list<std::string_view> path) {
+  static const Json null;
+  const Json* node = &json;
+  for (const std::string_view key : path) {
+    if (!node->is_object()) return null;
+    const auto found = node->find(key);
+    if (found == node->end()) return null;
+    node = &*found;
+  }
+  return *node;
+}
+
+std::string number(const Json& value, const char* format = "{:.3g}") {
+  if (!value.is_number()) return "&ndash;";
+  return fmt::format(fmt::runtime(format), value.get<double>());
+}
+
+std::string interval(const Json& value, const char* format = "{:.3g}") {
+  if (!value.is_array() || value.size() != 2) return "&ndash;";
+  return fmt::format("[{}, {}]", number(value[0], format), number(value[1], format));
+}
+
+class Page {
+ public:
+  explicit Page(const ReportPage& page) : page_(page) {}
+
+  std::string render() {
+    out_ += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+    out_ += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+    // Nothing may leave the page: no fetch, image, font or frame from anywhere.
+    out_ +=
+        "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
+        "style-src 'unsafe-inline'; img-src data: blob:\">\n";
+    emit("<title>{}</title>\n<style>\n{}\n</style>\n</head>\n<body>\n<main>\n", xml_escaped(page_.title),
+         page_.style);
+    write_header();
+    const bool experiment = at(page_.summary, {"kind"}) == "experiment";
+    if (experiment) {
+      write_table_one();
+      write_statistics();
+    } else {
+      write_run_facts();
+    }
+    write_figures();
+    if (!page_.replay.is_null()) write_replay();
+    out_ += "</main>\n";
+    if (!page_.replay.is_null()) {
+      std::string data = page_.replay.dump();
+      // Inside <script>, "</" could end the element early; JSON reads "<\/" as "</".
+      for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 3)) {
+        data.replace(at, 2, "<\\/");
+      }
+      emit("<script type=\"application/json\" id=\"crux-replay-data\">{}</script>\n", data);
+      emit("<script>\n{}\n</script>\n", page_.script);
+    }
+    out_ += "</body>\n</html>\n";
+    return std::move(out_);
+  }
+
+ private:
+  template <typename... Args>
+  void emit(fmt::format_string<Args...> format, Args&&... args) {
+    fmt::format_to(std::back_inserter(out_), format, std::forward<Args>(args)...);
+  }
+
+  void write_header() {
+    const Json& s = page_.summary;
+    emit("<h1>{}</h1>\n<dl class=\"facts\">\n", xml_escaped(page_.title));
+    const auto fact = [&](std::string_view name, const std::string& value) {
+      emit("<dt>{}</dt><dd>{}</dd>\n", name, value);
+    };
+    const auto text = [](const Json& value) {
+      return value.is_string() ? xml_escaped(value.get<std::string>()) : value.is_null() ? std::string("&ndash;")
+                                                                                        : xml_escaped(value.dump());
+    };
+    fact("crux", text(at(s, {"provenance", "crux_version"})) + " (" + text(at(s, {"provenance", "git_commit"})) + ")");
+    fact("body model", text(at(s, {"provenance", "urdf"})));
+    fact("seed", text(at(s, {"seed"})));
+    fact("design", fmt::format("{} wall pair(s) &times; {} seed(s) per wall, {} iterations per run, {} IK solver",
+                               text(at(s, {"wall_pairs"})), text(at(s, {"seeds_per_wall"})),
+                               text(at(s, {"iterations"})), text(at(s, {"solver"}))));
+    out_ += "</dl>\n";
+  }
+
+  // Table I (paper, section IV): ours with the paper's values beside them.
+  void write_table_one() {
+    const PaperTableOne& paper = paper_table_one();
+    out_ += "<section id=\"table-one\">\n<h2>Table I: actions by regime</h2>\n";
+    emit(
+        "<p>Pooled over the runs of each condition; the paper's values in brackets (section IV, Table I). "
+        "Beginning = the first {} iterations. The control condition, absent from the paper, learns on the transfer "
+        "walls without transferred knowledge.</p>\n",
+        number(at(page_.summary, {"beginning_iterations"}), "{:.0f}"));
+    static const char* const metrics[3] = {"vertical rise of e0 (cm)", "success rate (%)", "actions per run"};
+    for (int w = 0; w < 2; ++w) {
+      emit("<table class=\"numbers\">\n<caption>{}</caption>\n<thead><tr><th></th><th></th>", kWindowNames[w]);
+      for (const char* condition : kConditionNames) emit("<th>{}</th>", condition);
+      out_ += "</tr></thead>\n<tbody>\n";
+      for (int metric = 0; metric < 3; ++metric) {
+        for (int r = 0; r < kRegimeCount; ++r) {
+          out_ += "<tr>";
+          if (r == 0) emit("<th rowspan=\"3\">{}</th>", metrics[metric]);
+          emit("<th>{}</th>", regime_name(static_cast<Regime>(r)));
+          for (int c = 0; c < 3; ++c) {
+            const Json& stats = at(page_.summary, {"table1", kConditionNames[c], kWindowNames[w],
+                                                   regime_name(static_cast<Regime>(r))});
+            std::string value;
+            if (metric == 0) value = number(at(stats, {"vertical_cm"}), "{:.1f}");
+            if (metric == 1) {
+              const Json& rate = at(stats, {"success_rate"});
+              value = rate.is_number() ? fmt::format("{:.1f}", 100 * rate.get<double>()) : "&ndash;";
+            }
+            if (metric == 2) value = number(at(stats, {"actions"}), "{:.0f}");
+            if (metric < 2 && c < 2) {
+              const double reference = metric == 0 ? paper.vertical_cm[c][w][r] : 100 * paper.success_rate[c][w][r];
+              value += fmt::format(" <span class=\"paper\">({:.1f})</span>", reference);
+            }
+            emit("<td>{}</td>", value);
+          }
+          out_ += "</tr>\n";
+        }
+      }
+      out_ += "</tbody>\n</table>\n";
+    }
+    out_ += "</section>\n";
+  }
+
+  void write_statistics() {
+    const Json& comparisons = at(page_.summary, {"transfer_vs_control"});
+    if (!comparisons.is_object()) return;
+    out_ += "<section id=\"statistics\">\n<h2>Transfer minus control</h2>\n";
+    emit(
+        "<p>Each transfer run is paired with a control run on the same wall and seed. Differences are averaged per "
+        "wall, then over the {} walls: 95&nbsp;% intervals by Student's t over walls and by a cluster bootstrap over "
+        "walls; p from a two-sided t-test over walls, not corrected for the number of metrics.</p>\n",
+        number(at(page_.summary, {"wall_pairs"}), "{:.0f}"));
+    out_ +=
+        "<table class=\"numbers\">\n<thead><tr><th>metric</th><th>better</th><th>transfer</th><th>control</th>"
+        "<th>difference</th><th>95&nbsp;% CI (t)</th><th>95&nbsp;% CI (bootstrap)</th><th>p</th><th>walls</th>"
+        "</tr></thead>\n<tbody>\n";
+    for (const auto& [metric, values] : comparisons.items()) {
+      const Json& difference = at(values, {"transfer_minus_control"});
+      emit(
+          "<tr><th title=\"{}\">{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
+          "<td>{}</td></tr>\n",
+          xml_escaped(at(values, {"description"}).is_string() ? at(values, {"description"}).get<std::string>() : ""),
+          xml_escaped(metric), at(values, {"higher_is_better"}) == true ? "higher" : "lower",
+          number(at(values, {"transfer", "mean"})), number(at(values, {"control", "mean"})),
+          number(at(difference, {"mean"})), interval(at(difference, {"ci95_t_over_walls"})),
+          interval(at(difference, {"ci95_cluster_bootstrap"})), number(at(difference, {"p_value"}), "{:.3f}"),
+          number(at(difference, {"walls"}), "{:.0f}"));
+    }
+    out_ += "</tbody>\n</table>\n</section>\n";
+  }
+
+  void write_run_facts() {
+    out_ += "<section id=\"run\">\n<h2>The run</h2>\n<table class=\"numbers\">\n<tbody>\n";
+    for (const char* condition : kConditionNames) {
+      const Json& facts = at(page_.summary, {"run_facts", condition});
+      if (!facts.is_array() || facts.empty()) continue;
+      const Json& run = facts[0];
+      emit("<tr><th>condition</th><td>{}</td></tr>\n", condition);
+      for (const char* key : {"episodes", "greedy_length", "take_off_iteration", "ik_solves", "explored_pairs"}) {
+        emit("<tr><th>{}</th><td>{}</td></tr>\n", key, number(at(run, {key}), "{:.0f}"));
+      }
+    }
+    out_ += "</tbody>\n</table>\n</section>\n";
+  }
+
+  void write_figures() {
+    if (page_.figures.empty()) return;
+    out_ += "<section id=\"figures\">\n<h2>Figures</h2>\n";
+    for (const ReportFigure& figure : page_.figures) {
+      std::string_view svg = figure.svg;
+      if (svg.starts_with("<?xml")) svg.remove_prefix(svg.find("?>") + 2);
+      emit("<figure>\n<h3>{}</h3>\n{}\n<figcaption>{}</figcaption>\n</figure>\n", xml_escaped(figure.title), svg,
+           xml_escaped(figure.caption));
+    }
+    out_ += "</section>\n";
+  }
+
+  void write_replay() {
+    emit(
+        "<section id=\"replay\">\n<h2>Replay: {}</h2>\n<p>The last completed climb of the run, move by move. Between "
+        "two postures the body follows the path of the paper's gradient-descent IK (Algorithm 1). Drag to orbit, "
+        "scroll to zoom; space plays and pauses, the arrow keys step.</p>\n<div id=\"crux-replay\"></div>\n"
+        "</section>\n",
+        xml_escaped(page_.replay_title));
+  }
+
+  const ReportPage& page_;
+  std::string out_;
+};
+
+}  // namespace
+
+nlohmann::json read_summary(const std::filesystem::path& folder) {
+  const std::filesystem::path file = folder / "summary.json";
+  const std::string text = read_input_file(file.string(), "summary file");
+  Json summary = Json::parse(text, nullptr, false);
+  if (summary.is_discarded() || !summary.is_object() || at(summary, {"format"}) != "crux-summary") {
+    throw InputError(file.string(), "not a crux summary (format \"crux-summary\")");
+  }
+  if (at(summary, {"version"}) != 3) {
+    throw InputError(file.string(), "summary version 3 is the one this crux reads; write the folder again");
+  }
+  return summary;
+}
+
+std::string html_report(const ReportPage& page) { return Page(page).render(); }
+
+}  // namespace crux

@@ -1,0 +1,36 @@
+#pragma once
+// `crux report`: one self-contained HTML page for an output folder (docs/OUTPUTS.md,
+// "crux report"). Everything it shows comes from the folder's files; every script and
+// style is inlined and a Content-Security-Policy forbids the page any request.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace crux {
+
+struct ReportFigure {
+  std::string title;
+  std::string caption;
+  std::string svg;  // a standalone SVG document; its XML declaration is dropped when inlined
+};
+
+struct ReportPage {
+  std::string title;
+  nlohmann::json summary;  // the folder's summary.json
+  std::vector<ReportFigure> figures;
+  std::string replay_title;
+  nlohmann::ordered_json replay;  // replay_data(); null for none
+  std::string_view style;         // the page's CSS
+  std::string_view script;        // the replay's script (three.js bundled in)
+};
+
+// The summary.json of `folder`, checked to be crux's; InputError naming the file.
+nlohmann::json read_summary(const std::filesystem::path& folder);
+
+std::string html_report(const ReportPage& page);
+
+}  // namespace crux

@@ -1,0 +1,186 @@
+#include "reports/replay_data.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <fmt/format.h>
+
+#include "body/body_data.hpp"
+#include "body/kinematics.hpp"
+#include "common/input_error.hpp"
+#include "configurations/hold_configuration.hpp"
+#include "ik/ik_solver.hpp"
+
+namespace crux {
+namespace {
+
+nlohmann::ordered_json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+nlohmann::ordered_json quaternion_json(const Eigen::Matrix3d& rotation) {
+  const Eigen::Quaterniond q(rotation);
+  return {q.x(), q.y(), q.z(), q.w()};
+}
+
+nlohmann::ordered_json configuration_json(const Wall& wall, const HoldConfiguration& configuration) {
+  nlohmann::ordered_json out;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const int hold = configuration.holds[limb];
+    out[limb_name(static_cast<Limb>(limb))] = hold == kFree ? 0 : wall.holds[hold].id;
+  }
+  return out;
+}
+
+class FrameWriter {
+ public:
+  FrameWriter(const ReplaySettings& settings) : settings_(settings) {}
+
+  void add(const Posture& posture) {
+    for (int i = 0; i < kConfigurationDof; ++i) values_.push_back(std::round(posture[i] * settings_.decimals) / settings_.decimals);
+    ++count_;
+  }
+  int count() const { return count_; }
+  Posture frame(int index) const {
+    return Eigen::Map<const Posture>(values_.data() + static_cast<std::size_t>(index) * kConfigurationDof);
+  }
+  const std::vector<double>& values() const { return values_; }
+
+ private:
+  const ReplaySettings& settings_;
+  std::vector<double> values_;
+  int count_ = 0;
+};
+
+// Frames along an IK path at equal joint-space distances (the solver's first iterates
+// move far more than its last), joined linearly to `end`: the last frame is exactly
+// `end`, the recorded posture.
+void add_path_frames(const std::vector<Posture>& path, const Posture& end, int count, FrameWriter& frames) {
+  std::vector<double> distance(path.size(), 0.0);
+  for (std::size_t i = 1; i < path.size(); ++i) distance[i] = distance[i - 1] + (path[i] - path[i - 1]).norm();
+  std::size_t segment = 1;
+  for (int f = 1; f <= count; ++f) {
+    const double fraction = static_cast<double>(f) / count;
+    Posture on_path = path.back();
+    if (distance.back() > 0) {
+      const double wanted = fraction * distance.back();
+      while (segment + 1 < path.size() && distance[segment] < wanted) ++segment;
+      const double length = distance[segment] - distance[segment - 1];
+      const double t = length > 0 ? std::clamp((wanted - distance[segment - 1]) / length, 0.0, 1.0) : 1.0;
+      on_path = (1 - t) * path[segment - 1] + t * path[segment];
+    }
+    frames.add((1 - fraction) * on_path + fraction * end);
+  }
+}
+
+}  // namespace
+
+nlohmann::ordered_json body_model_json(const BodyModel& model) {
+  nlohmann::ordered_json body;
+  body["joints"] = nlohmann::ordered_json::array();
+  for (const BodyJoint& joint : model.joints) {
+    body["joints"].push_back({{"name", joint.name},
+                              {"parent", joint.parent},
+                              {"origin_xyz", vector_json(joint.origin_translation)},
+                              {"origin_quat", quaternion_json(joint.origin_rotation)},
+                              {"axis", vector_json(joint.axis)},
+                              {"prismatic", joint.prismatic}});
+  }
+  body["visuals"] = nlohmann::ordered_json::array();
+  for (const BodyVisual& visual : model.visuals) {
+    nlohmann::ordered_json size;
+    switch (visual.shape) {
+      case VisualShape::Box: size = vector_json(visual.size); break;
+      case VisualShape::Cylinder: size = {visual.size.x(), visual.size.y()}; break;
+      case VisualShape::Sphere: size = {visual.size.x()}; break;
+    }
+    body["visuals"].push_back({{"link", visual.link},
+                               {"joint", visual.joint},
+                               {"xyz", vector_json(visual.translation)},
+                               {"quat", quaternion_json(visual.rotation)},
+                               {"shape", visual_shape_name(visual.shape)},
+                               {"size", size},
+                               {"rgba", visual.rgba}});
+  }
+  body["grasp_points"] = nlohmann::ordered_json::array();
+  for (const AttachedPoint& point : model.grasp_points) {
+    body["grasp_points"].push_back({{"joint", point.joint}, {"offset", vector_json(point.offset)}});
+  }
+  return body;
+}
+
+nlohmann::ordered_json replay_data(const BodyModel& model, const RunFolder& folder,
+                                   const ReachabilityParameters& reach, const std::string& title,
+                                   const ReplaySettings& settings) {
+  const Wall& wall = folder.wall;
+  nlohmann::ordered_json out;
+  out["format"] = "crux-replay";
+  out["version"] = 1;
+  out["title"] = title;
+  out["model"] = body_model_json(model);
+  out["grasp_radius"] = reach.ik.tolerances.grasp_radius;
+  nlohmann::ordered_json holds = nlohmann::ordered_json::array();
+  for (const Hold& hold : wall.holds) {
+    holds.push_back({{"id", hold.id}, {"position", vector_json(hold.position)}, {"radius", hold.radius}});
+  }
+  out["wall"] = {{"name", wall.name},
+                 {"finish_height", wall.finish_height},
+                 {"holds", holds},
+                 {"start", configuration_json(wall, start_configuration(wall))}};
+
+  IkSettings ik = reach.ik;
+  ik.solver = IkSolverKind::Paper;
+  BodyData data(model);
+  FrameWriter frames(settings);
+  nlohmann::ordered_json moves = nlohmann::ordered_json::array();
+  if (!folder.climb.empty()) frames.add(folder.climb.front());
+  HoldConfiguration configuration = start_configuration(wall).with(Limb::RightHand, kFree);
+  std::size_t posture = 0;  // index into the climb of the body's current posture
+  std::vector<Posture> path;
+  for (const RunStep& step : folder.climb_steps) {
+    const Limb free = configuration.free_limb();
+    const int hold = wall.index_of(step.hold_id);
+    if (hold < 0) {
+      throw InputError((folder.directory / "iterations.csv").string(),
+                       fmt::format("iteration {} tries hold {}, which the wall does not have", step.iteration,
+                                   step.hold_id));
+    }
+    const HoldConfiguration complete = configuration.with(free, hold);
+    const int first = frames.count();
+    if (step.success) {
+      const Posture& from = folder.climb[posture];
+      const Posture& to = folder.climb[posture + 1];
+      solve_ik(model, data, from, reach_target(model, wall, complete, reach.root), ik, PathRecorder{&path, 1});
+      add_path_frames(path, to, settings.frames_per_move, frames);
+      ++posture;
+      configuration = complete.with(next_free_limb(free), kFree);
+    } else {
+      for (int f = 0; f < settings.frames_per_failure; ++f) frames.add(folder.climb[posture]);
+    }
+    moves.push_back({{"iteration", step.iteration},
+                     {"regime", regime_name(step.regime)},
+                     {"limb", limb_name(free)},
+                     {"hold", step.hold_id},
+                     {"success", step.success},
+                     {"reward", step.reward},
+                     {"root_rise_cm", step.root_rise_cm},
+                     {"configuration", configuration_json(wall, step.success ? complete : configuration)},
+                     {"first_frame", first},
+                     {"last_frame", frames.count() - 1}});
+  }
+  out["frames"] = {{"count", frames.count()}, {"postures", frames.values()}};
+  out["moves"] = std::move(moves);
+  if (frames.count() > 0) {
+    // What the page's forward kinematics must reproduce, on the rounded posture it reads.
+    const int check = frames.count() / 2;
+    forward_kinematics(model, data, frames.frame(check));
+    nlohmann::ordered_json points = nlohmann::ordered_json::array();
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      points.push_back(vector_json(data.points[operational_point(static_cast<Limb>(limb))]));
+    }
+    out["check"] = {{"frame", check}, {"grasp_points", points}};
+  }
+  return out;
+}
+
+}  // namespace crux

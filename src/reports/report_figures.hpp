@@ -1,0 +1,24 @@
+#pragma once
+// The figures of an output folder as SVG: the paper's Figs. 2b, 3 and 4 and the
+// transfer-minus-control plot of a `crux paper` folder, written into its figures/, and
+// the report's figures, which add the climber at the start of the replayed climb (Fig. 1).
+
+#include <filesystem>
+#include <vector>
+
+#include "configurations/reachability.hpp"
+#include "reports/html_report.hpp"
+#include "reports/run_folder.hpp"
+
+namespace crux {
+
+// Draws the figures of the `crux paper` folder from its files and writes them into its
+// figures/ atomically; returns the files written.
+std::vector<std::filesystem::path> write_paper_figure_files(const std::filesystem::path& experiment_folder);
+
+// The report's figures: those of `experiment_folder` when it is not empty, then Fig. 1 at
+// the first posture of `run`'s last climb (or its wall's start posture if it has none).
+std::vector<ReportFigure> report_figures(const std::filesystem::path& experiment_folder, const BodyModel& model,
+                                         const RunFolder& run, const ReachabilityParameters& reach);
+
+}  // namespace crux

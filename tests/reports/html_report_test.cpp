@@ -1,0 +1,89 @@
+#include "reports/html_report.hpp"
+
+#include <regex>
+
+#include <gtest/gtest.h>
+
+#include "support/svg_check.hpp"
+
+namespace crux {
+namespace {
+
+using testing::count_of;
+
+ReportPage experiment_page() {
+  ReportPage page;
+  page.title = "crux report: <test>";
+  page.summary = nlohmann::json::parse(R"({
+    "format": "crux-summary", "version": 3, "kind": "experiment",
+    "provenance": {"crux_version": "0.1.0", "git_commit": "abc", "urdf": "/m/crux_human.urdf"},
+    "seed": 7, "wall_pairs": 6, "seeds_per_wall": 1, "iterations": 8000, "beginning_iterations": 2000, "solver": "fast",
+    "table1": {"training": {"beginning": {"w_greedy": {"actions": 33.2, "success_rate": 1.0, "vertical_cm": 7.94}}}},
+    "transfer_vs_control": {"jumpstart": {"description": "length of the first episode", "higher_is_better": false,
+      "transfer": {"mean": 725.3}, "control": {"mean": 551.8},
+      "transfer_minus_control": {"mean": 173.5, "ci95_t_over_walls": [-677.7, 1024.7],
+                                 "ci95_cluster_bootstrap": [-453.7, 692.7], "p_value": 0.6227, "walls": 6}}}
+  })");
+  page.figures.push_back({"Fig. 4", "lengths", "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"/>"});
+  page.replay_title = "training_0";
+  page.replay = {{"title", "a </script> in a name"}, {"frames", {{"count", 0}}}};
+  page.style = "main { margin: 0 }";
+  page.script = "window.loaded = true;";
+  return page;
+}
+
+TEST(HtmlReport, ForbidsEveryRequestAndInlinesItsStyleAndScript) {
+  const std::string html = html_report(experiment_page());
+  EXPECT_NE(html.find("content=\"default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'"),
+            std::string::npos);
+  EXPECT_NE(html.find("<style>\nmain { margin: 0 }\n</style>"), std::string::npos);
+  EXPECT_NE(html.find("<script>\nwindow.loaded = true;\n</script>"), std::string::npos);
+  // The only URLs are SVG's namespace names, which are never fetched.
+  const std::regex url("(https?:|src=|href=|url\\()");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), url); it != std::sregex_iterator(); ++it) {
+    EXPECT_EQ(html.compare(it->position(), 26, "http://www.w3.org/2000/svg"), 0) << html.substr(it->position(), 40);
+  }
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+}
+
+TEST(HtmlReport, ReplayDataCannotCloseItsScriptElement) {
+  const std::string html = html_report(experiment_page());
+  const std::size_t data = html.find("<script type=\"application/json\" id=\"crux-replay-data\">");
+  ASSERT_NE(data, std::string::npos);
+  const std::size_t end = html.find("</script>", data);
+  const std::string json = html.substr(data, end - data);
+  EXPECT_NE(json.find("a <\\/script> in a name"), std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(json.substr(json.find('>') + 1))["title"], "a </script> in a name");
+  EXPECT_NE(html.find("<div id=\"crux-replay\"></div>"), std::string::npos);
+}
+
+TEST(HtmlReport, TableOneShowsOursBesideThePapersAndTheStatisticsTheirIntervals) {
+  const std::string html = html_report(experiment_page());
+  // training, beginning, w-greedy: 7.9 cm against the paper's 7.3, 100 % against 100.
+  EXPECT_NE(html.find("<td>7.9 <span class=\"paper\">(7.3)</span></td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>100.0 <span class=\"paper\">(100.0)</span></td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>33</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>174</td><td>[-678, 1.02e+03]</td><td>[-454, 693]</td><td>0.623</td><td>6</td>"),
+            std::string::npos);
+  EXPECT_NE(html.find("crux report: &lt;test&gt;"), std::string::npos);
+}
+
+TEST(HtmlReport, FiguresAreInlinedWithoutTheirXmlDeclaration) {
+  const std::string html = html_report(experiment_page());
+  EXPECT_EQ(html.find("<?xml"), std::string::npos);
+  EXPECT_EQ(count_of(html, "<figure>"), 1);
+  EXPECT_NE(html.find("<svg xmlns=\"http://www.w3.org/2000/svg\"/>"), std::string::npos);
+}
+
+TEST(HtmlReport, ARunPageHasNoTableOneAndNoReplayWhenThereIsNoClimb) {
+  ReportPage page = experiment_page();
+  page.summary["kind"] = "run";
+  page.replay = nullptr;
+  const std::string html = html_report(page);
+  EXPECT_EQ(html.find("id=\"table-one\""), std::string::npos);
+  EXPECT_EQ(html.find("crux-replay"), std::string::npos);
+  EXPECT_NE(html.find("id=\"run\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace crux
