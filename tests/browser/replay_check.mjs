@@ -139,6 +139,10 @@ async function main() {
     console.error(`replay_check: cannot load playwright-core from ${args.npmDir}/node_modules: run scripts/setup.sh (${e.message})`);
     process.exit(1);
   }
+  if (!fs.existsSync(args.chromium)) {
+    console.error(`replay_check: no chromium at ${args.chromium}: run scripts/setup.sh (Debian's chromium package)`);
+    process.exit(1);
+  }
   fs.mkdirSync(args.out, { recursive: true });
   const pageUrl = pathToFileURL(reportPath).href;
   const problems = [];
