@@ -1,7 +1,7 @@
 // The wall (plane x = 0 facing +x), its holds, start-hold rings, the tried-hold halo,
 // the finish height and the floor.
 import {
-  BufferGeometry, Color, DoubleSide, Float32BufferAttribute, Group, InstancedMesh, Line, LineBasicMaterial,
+  BufferGeometry, Color, DoubleSide, Float32BufferAttribute, Group, Line, LineBasicMaterial,
   LineSegments, Matrix4, Mesh, MeshBasicMaterial, MeshLambertMaterial, PlaneGeometry, SphereGeometry, TorusGeometry, Vector3,
 } from 'three';
 
@@ -71,23 +71,44 @@ export class WallView {
       this.group.add(bandMesh);
     }
 
-    // Holds: one instanced mesh, one colour per instance.
+    // Holds: all spheres merged into one geometry with per-vertex colours: one draw call, and a
+    // highlight rewrites the colours of a few holds. (An InstancedMesh costs far more per frame in
+    // software WebGL.)
     const holds = wall.holds || [];
     this.holdCount = holds.length;
     this.holdColor = new Color();
     this.holds = null;
     if (holds.length > 0) {
-      this.holds = new InstancedMesh(new SphereGeometry(1, 20, 14), new MeshLambertMaterial({ color: 0xffffff }), holds.length);
-      this.holds.name = 'holds';
-      const m = new Matrix4();
+      const unit = new SphereGeometry(1, 16, 10).toNonIndexed();
+      const up = unit.getAttribute('position').array;
+      const un = unit.getAttribute('normal').array;
+      const n = up.length / 3;
+      this.holdVertices = n;
+      const pos = new Float32Array(n * 3 * holds.length);
+      const nor = new Float32Array(n * 3 * holds.length);
+      const col = new Float32Array(n * 3 * holds.length);
       holds.forEach((h, i) => {
         const r = h.radius > 0 ? h.radius : 0.03;
-        m.makeScale(r, r, r).setPosition(h.position[0], h.position[1], h.position[2]);
-        this.holds.setMatrixAt(i, m);
-        this.holds.setColorAt(i, this.holdColor.set(COLORS.hold));
+        for (let k = 0; k < n; ++k) {
+          const o = (i * n + k) * 3;
+          pos[o] = h.position[0] + r * up[k * 3];
+          pos[o + 1] = h.position[1] + r * up[k * 3 + 1];
+          pos[o + 2] = h.position[2] + r * up[k * 3 + 2];
+          nor[o] = un[k * 3];
+          nor[o + 1] = un[k * 3 + 1];
+          nor[o + 2] = un[k * 3 + 2];
+        }
       });
-      this.holds.instanceMatrix.needsUpdate = true;
-      this.holds.computeBoundingSphere();
+      unit.dispose();
+      const g = new BufferGeometry();
+      g.setAttribute('position', new Float32BufferAttribute(pos, 3));
+      g.setAttribute('normal', new Float32BufferAttribute(nor, 3));
+      this.holdColors = new Float32BufferAttribute(col, 3);
+      g.setAttribute('color', this.holdColors);
+      g.computeBoundingSphere();
+      this.holds = new Mesh(g, new MeshLambertMaterial({ vertexColors: true }));
+      this.holds.name = 'holds';
+      for (let i = 0; i < holds.length; ++i) this.paintHold(i, COLORS.hold);
       this.group.add(this.holds);
     }
 
@@ -117,25 +138,34 @@ export class WallView {
     this.lastKey = '';
   }
 
+  paintHold(i, colour) {
+    const c = this.holdColor.set(colour);
+    const a = this.holdColors.array;
+    for (let k = i * this.holdVertices * 3, end = k + this.holdVertices * 3; k < end; k += 3) {
+      a[k] = c.r;
+      a[k + 1] = c.g;
+      a[k + 2] = c.b;
+    }
+  }
+
   /** Colours the holds: held (configuration), tried (success or not), others plain. */
   highlight(data, configuration, triedId, success) {
     const key = `${triedId}:${success}:${configuration.right_hand},${configuration.left_hand},${configuration.right_foot},${configuration.left_foot}`;
     if (key === this.lastKey) return;
     this.lastKey = key;
     const holds = data.wall.holds || [];
-    if (this.holds) {
-      for (let i = 0; i < holds.length; ++i) this.holds.setColorAt(i, this.holdColor.set(COLORS.hold));
-      for (const limb of Object.keys(configuration)) {
-        const i = data.holdIndex.get(configuration[limb]);
-        if (i !== undefined) this.holds.setColorAt(i, this.holdColor.set(COLORS.held));
-      }
+    // Repaint only the holds whose colour changes.
+    const wanted = new Map();
+    for (const limb of Object.keys(configuration)) {
+      const i = data.holdIndex.get(configuration[limb]);
+      if (i !== undefined) wanted.set(i, COLORS.held);
     }
     const t = data.holdIndex.get(triedId);
     if (t === undefined) {
       this.halo.visible = false;
     } else {
       const colour = success ? COLORS.reached : COLORS.unreachable;
-      if (this.holds) this.holds.setColorAt(t, this.holdColor.set(colour));
+      wanted.set(t, colour);
       const h = holds[t];
       const r = (h.radius > 0 ? h.radius : 0.03) * 2.2;
       this.halo.position.set(h.position[0], h.position[1], h.position[2]);
@@ -143,6 +173,12 @@ export class WallView {
       this.haloMaterial.color.set(colour);
       this.halo.visible = true;
     }
-    if (this.holds) this.holds.instanceColor.needsUpdate = true;
+    if (this.holds) {
+      const painted = this.painted || new Map();
+      for (const [i] of painted) if (!wanted.has(i)) this.paintHold(i, COLORS.hold);
+      for (const [i, colour] of wanted) if (painted.get(i) !== colour) this.paintHold(i, colour);
+      this.painted = wanted;
+      this.holdColors.needsUpdate = true;
+    }
   }
 }

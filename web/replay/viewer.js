@@ -10,7 +10,6 @@ import { COLORS, WallView } from './scene.js';
 
 export const BASE_FPS = 30; // 1x = 30 replay frames per second
 export const SPEEDS = [0.25, 0.5, 1, 2, 4];
-const MIN_PLAY_FPS = 40;
 const LIMB_NAMES = { right_hand: 'right hand', left_hand: 'left hand', right_foot: 'right foot', left_foot: 'left foot' };
 const REGIME_NAMES = { w_greedy: 'w-greedy', g_greedy: 'g-greedy', random: 'random' };
 
@@ -43,12 +42,6 @@ export class ReplayViewer {
     this.lastTime = null;
     this.dirty = true;
     this.follow = true;
-    // Adaptive resolution: while playing, when frames come slower than MIN_PLAY_FPS (software
-    // rendering, a weak GPU), the drawing buffer shrinks step by step (down to half size); a paused
-    // view is always drawn at full resolution.
-    this.resolutionScale = 1;
-    this.windowStart = null;
-    this.windowFrames = 0;
     this.lastUiUpdate = 0;
 
     this.buildDom();
@@ -192,7 +185,7 @@ export class ReplayViewer {
 
   applyResolution() {
     // Paused: 1.5x supersampling stands in for MSAA (the stills are what a reader looks at).
-    const scale = this.playing ? this.resolutionScale : 1.5;
+    const scale = this.playing ? 1 : 1.5;
     const ratio = Math.min(this.basePixelRatio * scale, 3);
     if (ratio !== this.renderer.getPixelRatio()) this.renderer.setPixelRatio(ratio);
     this.renderer.setSize(this.width, this.height, false);
@@ -221,7 +214,6 @@ export class ReplayViewer {
     this.playing = true;
     this.accumulator = 0;
     this.lastTime = null;
-    this.windowStart = null;
     this.applyResolution();
     this.playButton.textContent = 'Pause';
     this.playButton.setAttribute('aria-pressed', 'true');
@@ -304,27 +296,6 @@ export class ReplayViewer {
     this.frameLabel.textContent = `frame ${f} / ${this.data.frameCount - 1}`;
   }
 
-  adaptResolution(time) {
-    if (this.windowStart === null) {
-      this.windowStart = time;
-      this.windowFrames = 0;
-      return;
-    }
-    this.windowFrames += 1;
-    const elapsed = time - this.windowStart;
-    if (elapsed < 500) return;
-    const fps = (this.windowFrames * 1000) / elapsed;
-    this.windowStart = time;
-    this.windowFrames = 0;
-    let scale = this.resolutionScale;
-    if (fps < MIN_PLAY_FPS && scale > 0.5) scale = Math.max(0.5, scale * 0.8);
-    else if (fps > 55 && scale < 1) scale = Math.min(1, scale / 0.8);
-    if (scale !== this.resolutionScale) {
-      this.resolutionScale = scale;
-      this.applyResolution();
-    }
-  }
-
   render() {
     this.renderer.render(this.scene, this.camera);
     this.renderedFrames += 1;
@@ -344,7 +315,6 @@ export class ReplayViewer {
         this.accumulator -= advance;
       }
       this.lastTime = time;
-      this.adaptResolution(time);
       if (advance > 0) {
         const last = this.data.frameCount - 1;
         const next = Math.min(last, this.frame + advance);
