@@ -91,6 +91,7 @@ export class ReplayViewer {
     this.renderer.setPixelRatio(this.basePixelRatio);
     this.renderer.setClearColor(0xf6f7f9, 1);
     this.canvas = this.renderer.domElement;
+    this.canvas.style.removeProperty('display'); // three sets display:block inline; report.css decides (print hides it)
     this.view.append(this.canvas);
 
     this.scene = new Scene();
@@ -172,9 +173,10 @@ export class ReplayViewer {
   }
 
   resize() {
-    const w = Math.max(1, this.view.clientWidth);
-    const h = Math.max(1, this.view.clientHeight);
-    if (w === this.width && h === this.height) return;
+    // The canvas fills the view; it has no size while hidden (print media shows a still instead).
+    const w = this.canvas.clientWidth;
+    const h = this.canvas.clientHeight;
+    if (w === 0 || h === 0 || (w === this.width && h === this.height)) return;
     this.width = w;
     this.height = h;
     this.applyResolution();
