@@ -1,0 +1,273 @@
+#!/usr/bin/env node
+// Browser test of a crux report's 3D replay, in Debian's headless chromium (no browser download).
+//
+//   node replay_check.mjs --report FILE.html --out DIR [--expect-figures N] [--fps] [--npm-dir DIR]
+//
+// Fails (exit 1, with the reasons) on any console error or warning, page error, or network request
+// other than the page's own file URL; checks that the replay becomes ready, draws a non-blank
+// canvas, draws frame 0 and the middle frame differently, puts the grasp points where the C++
+// forward kinematics put them (data.check, within 1e-6 m), shows at least N SVG figures in
+// #figures, plays when Play is clicked and steps with the keyboard. Saves replay_start.png,
+// replay_middle.png and page.png into DIR. With --fps, plays one replay frame per animation frame
+// for about 5 s and prints {"fps": ...} measured from cruxReplay.renderedFrames.
+//
+// playwright-core is loaded from build/npm/node_modules (scripts/setup_web.sh), or --npm-dir /
+// CRUX_NPM_DIR (the folder that holds node_modules).
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { createRequire } from 'node:module';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+
+// Headless chromium on a machine without a GPU: WebGL runs on SwiftShader (software), which
+// chromium no longer falls back to on its own; --use-angle=swiftshader selects ANGLE's SwiftShader
+// backend and --enable-unsafe-swiftshader allows WebGL on it (without it the WebGL context is
+// refused or comes with a deprecation warning in the console, which this test treats as a failure).
+export const CHROMIUM_ARGS = [
+  '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+  '--disable-component-update', '--disable-sync',
+  '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+];
+
+// With --disable-gpu the page is composited in software, so chromium reads every WebGL frame back
+// from SwiftShader and logs its own ANGLE performance note for it (4 times, then "will no longer
+// repeat"), whatever the page draws. Only that exact message is tolerated (and counted);
+// any other console warning or error fails the test.
+const CHROMIUM_READBACK_NOTE = /^\[\.WebGL-0x[0-9a-f]+\]GL Driver Message \(OpenGL, Performance, GL_CLOSE_PATH_NV, High\): GPU stall due to ReadPixels( \(this message will no longer repeat\))?$/;
+
+function usage(message) {
+  if (message) console.error(`replay_check: ${message}`);
+  console.error('usage: node replay_check.mjs --report FILE --out DIR [--expect-figures N] [--fps] [--npm-dir DIR]');
+  process.exit(2);
+}
+
+function parseArgs(argv) {
+  const a = { report: null, out: null, expectFigures: null, fps: false, npmDir: process.env.CRUX_NPM_DIR || path.resolve(here, '../../build/npm'), chromium: '/usr/bin/chromium' };
+  for (let i = 0; i < argv.length; ++i) {
+    const k = argv[i];
+    const value = () => { if (i + 1 >= argv.length) usage(`${k} needs a value`); return argv[++i]; };
+    if (k === '--report') a.report = value();
+    else if (k === '--out') a.out = value();
+    else if (k === '--expect-figures') { a.expectFigures = Number(value()); if (!Number.isInteger(a.expectFigures) || a.expectFigures < 0) usage('--expect-figures needs a count'); }
+    else if (k === '--fps') a.fps = true;
+    else if (k === '--npm-dir') a.npmDir = value();
+    else if (k === '--chromium') a.chromium = value();
+    else if (k === '--help' || k === '-h') usage();
+    else usage(`unknown argument ${k}`);
+  }
+  if (!a.report || !a.out) usage('--report and --out are required');
+  return a;
+}
+
+// ---- a minimal PNG decoder (8-bit greyscale/RGB/RGBA, not interlaced): what chromium writes ----
+export function decodePng(buf) {
+  if (buf.readUInt32BE(0) !== 0x89504e47) throw new Error('not a PNG');
+  let off = 8, width = 0, height = 0, bitDepth = 0, colorType = 0, interlace = 0;
+  const idat = [];
+  while (off < buf.length) {
+    const len = buf.readUInt32BE(off);
+    const type = buf.toString('latin1', off + 4, off + 8);
+    const body = buf.subarray(off + 8, off + 8 + len);
+    if (type === 'IHDR') {
+      width = body.readUInt32BE(0); height = body.readUInt32BE(4);
+      bitDepth = body[8]; colorType = body[9]; interlace = body[12];
+    } else if (type === 'IDAT') idat.push(body);
+    else if (type === 'IEND') break;
+    off += 12 + len;
+  }
+  const channels = { 0: 1, 2: 3, 4: 2, 6: 4 }[colorType];
+  if (bitDepth !== 8 || !channels || interlace) throw new Error(`unsupported PNG (depth ${bitDepth}, type ${colorType}, interlace ${interlace})`);
+  const raw = zlib.inflateSync(Buffer.concat(idat));
+  const stride = width * channels;
+  const px = Buffer.alloc(stride * height);
+  for (let y = 0; y < height; ++y) {
+    const filter = raw[y * (stride + 1)];
+    const line = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
+    const out = px.subarray(y * stride, (y + 1) * stride);
+    const prev = y > 0 ? px.subarray((y - 1) * stride, y * stride) : null;
+    for (let x = 0; x < stride; ++x) {
+      const a = x >= channels ? out[x - channels] : 0;
+      const b = prev ? prev[x] : 0;
+      const c = prev && x >= channels ? prev[x - channels] : 0;
+      let v = line[x];
+      if (filter === 1) v += a;
+      else if (filter === 2) v += b;
+      else if (filter === 3) v += (a + b) >> 1;
+      else if (filter === 4) { const p = a + b - c, pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c); v += pa <= pb && pa <= pc ? a : pb <= pc ? b : c; }
+      out[x] = v & 0xff;
+    }
+  }
+  return { width, height, channels, px };
+}
+
+function luminance(img) {
+  const n = img.width * img.height;
+  const lum = new Float64Array(n);
+  for (let i = 0; i < n; ++i) {
+    const p = i * img.channels;
+    lum[i] = img.channels >= 3 ? 0.299 * img.px[p] + 0.587 * img.px[p + 1] + 0.114 * img.px[p + 2] : img.px[p];
+  }
+  return lum;
+}
+
+function variance(values) {
+  let s = 0, s2 = 0;
+  for (const v of values) { s += v; s2 += v * v; }
+  const m = s / values.length;
+  return s2 / values.length - m * m;
+}
+
+function changedPixels(a, b) {
+  if (a.length !== b.length) return Infinity;
+  let n = 0;
+  for (let i = 0; i < a.length; ++i) if (Math.abs(a[i] - b[i]) > 8) ++n;
+  return n;
+}
+
+async function main() {
+  const args = parseArgs(process.argv.slice(2));
+  const reportPath = path.resolve(args.report);
+  if (!fs.existsSync(reportPath)) usage(`no report at ${reportPath}`);
+  const require = createRequire(path.join(args.npmDir, 'package.json'));
+  let chromium;
+  try {
+    ({ chromium } = require('playwright-core'));
+  } catch (e) {
+    console.error(`replay_check: cannot load playwright-core from ${args.npmDir}/node_modules: run scripts/setup.sh (${e.message})`);
+    process.exit(1);
+  }
+  if (!fs.existsSync(args.chromium)) {
+    console.error(`replay_check: no chromium at ${args.chromium}: run scripts/setup.sh (Debian's chromium package)`);
+    process.exit(1);
+  }
+  fs.mkdirSync(args.out, { recursive: true });
+  const pageUrl = pathToFileURL(reportPath).href;
+  const problems = [];
+  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'crux-replay-check-'));
+  const context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath: args.chromium,
+    headless: true,
+    args: CHROMIUM_ARGS,
+    viewport: { width: 1280, height: 900 },
+    deviceScaleFactor: 1,
+    offline: false,
+  });
+  const fail = (message) => { problems.push(message); };
+  let readbackNotes = 0;
+  let page;
+  try {
+    context.on('request', (r) => {
+      const url = r.url();
+      if (url !== pageUrl && !url.startsWith('data:') && !url.startsWith('blob:')) fail(`network request: ${r.method()} ${url}`);
+    });
+    page = context.pages()[0] || await context.newPage();
+    page.on('console', (m) => {
+      if (m.type() !== 'error' && m.type() !== 'warning') return;
+      if (m.type() === 'warning' && CHROMIUM_READBACK_NOTE.test(m.text())) { readbackNotes += 1; return; }
+      fail(`console ${m.type()}: ${m.text()}`);
+    });
+    page.on('pageerror', (e) => fail(`page error: ${e.message}`));
+    await page.goto(pageUrl, { waitUntil: 'load' });
+    try {
+      await page.waitForFunction(() => window.cruxReplay && window.cruxReplay.ready === true, null, { timeout: 30000 });
+    } catch {
+      throw new Error('window.cruxReplay.ready never became true');
+    }
+
+    const info = await page.evaluate(() => {
+      const data = JSON.parse(document.getElementById('crux-replay-data').textContent);
+      return { check: data.check, frameCount: data.frames.count, moves: data.moves.length, firstMoveEnd: data.moves.length ? data.moves[0].last_frame : 0 };
+    });
+    const count = await page.evaluate(() => window.cruxReplay.frameCount);
+    if (count !== info.frameCount) fail(`cruxReplay.frameCount ${count} != frames.count ${info.frameCount}`);
+
+    const canvas = page.locator('#crux-replay canvas');
+    const panel = page.locator('#crux-replay');
+    await canvas.scrollIntoViewIfNeeded();
+    const middle = Math.floor((info.frameCount - 1) / 2);
+    await page.evaluate(() => window.cruxReplay.setFrame(0));
+    const shotStart = await canvas.screenshot();
+    await panel.screenshot({ path: path.join(args.out, 'replay_start.png') });
+    const startInfo = await page.locator('.crux-replay-info').textContent();
+    if (info.moves > 0 && !/Move 1 of \d+/.test(startInfo)) fail(`info line at frame 0 does not say "Move 1 of M": ${startInfo}`);
+    await page.evaluate((f) => window.cruxReplay.setFrame(f), middle);
+    const shotMiddle = await canvas.screenshot();
+    await panel.screenshot({ path: path.join(args.out, 'replay_middle.png') });
+    const lumStart = luminance(decodePng(shotStart));
+    const lumMiddle = luminance(decodePng(shotMiddle));
+    const v = variance(lumStart);
+    if (!(v > 25)) fail(`the canvas looks blank (luminance variance ${v.toFixed(2)})`);
+    const changed = changedPixels(lumStart, lumMiddle);
+    if (middle > 0 && !(changed > 50)) fail(`frames 0 and ${middle} render the same image (${changed} pixels differ)`);
+
+    if (info.check) {
+      const got = await page.evaluate((f) => window.cruxReplay.graspPoints(f), info.check.frame);
+      let worst = 0;
+      info.check.grasp_points.forEach((p, i) => p.forEach((x, k) => { worst = Math.max(worst, Math.abs(x - got[i][k])); }));
+      if (!(worst <= 1e-6)) fail(`grasp points at frame ${info.check.frame} are off by ${worst.toExponential(3)} m (> 1e-6): got ${JSON.stringify(got)}, expected ${JSON.stringify(info.check.grasp_points)}`);
+    } else fail('the data has no check');
+
+    if (args.expectFigures !== null) {
+      const svgs = await page.evaluate(() => document.querySelectorAll('#figures svg').length);
+      if (svgs < args.expectFigures) fail(`#figures holds ${svgs} svg elements, expected at least ${args.expectFigures}`);
+    }
+
+    // Play: the frame advances.
+    await page.evaluate(() => window.cruxReplay.setFrame(0));
+    await page.locator('#crux-replay button.crux-replay-play').click();
+    await page.waitForTimeout(700);
+    const played = await page.evaluate(() => { const f = window.cruxReplay.frame; window.cruxReplay.pause(); return f; });
+    if (!(played > 0)) fail('clicking Play did not advance the frame');
+
+    // Keyboard: arrow right steps to the end of the first move, space plays.
+    await page.evaluate(() => window.cruxReplay.setFrame(0));
+    await page.locator('#crux-replay .crux-replay-view').focus();
+    await page.keyboard.press('ArrowRight');
+    const stepped = await page.evaluate(() => window.cruxReplay.frame);
+    if (info.moves > 0 && stepped !== info.firstMoveEnd) fail(`ArrowRight went to frame ${stepped}, expected ${info.firstMoveEnd}`);
+    await page.keyboard.press('ArrowLeft');
+    const back = await page.evaluate(() => window.cruxReplay.frame);
+    if (back !== 0) fail(`ArrowLeft went to frame ${back}, expected 0`);
+    await page.keyboard.press('Space');
+    await page.waitForTimeout(300);
+    const spacePlayed = await page.evaluate(() => { const p = window.cruxReplay.playing; window.cruxReplay.pause(); return p; });
+    if (!spacePlayed) fail('space did not start playing');
+
+    await page.evaluate((f) => window.cruxReplay.setFrame(f), middle);
+    await page.screenshot({ path: path.join(args.out, 'page.png'), fullPage: true });
+
+    if (args.fps) {
+      const r = await page.evaluate(async () => {
+        const R = window.cruxReplay;
+        R.pause();
+        R.setFrame(0);
+        await new Promise((ok) => requestAnimationFrame(() => ok()));
+        const r0 = R.renderedFrames, f0 = R.frame, t0 = performance.now();
+        R.play({ perAnimationFrame: true });
+        while (performance.now() - t0 < 5000 && R.playing) await new Promise((ok) => setTimeout(ok, 50));
+        const t1 = performance.now(), r1 = R.renderedFrames, f1 = R.frame;
+        R.pause();
+        return { rendered: r1 - r0, advanced: f1 - f0, seconds: (t1 - t0) / 1000 };
+      });
+      const fps = r.rendered / r.seconds;
+      console.log(JSON.stringify({ fps: Number(fps.toFixed(1)), rendered_frames: r.rendered, replay_frames_advanced: r.advanced, seconds: Number(r.seconds.toFixed(2)), frame_count: info.frameCount }));
+    }
+  } catch (e) {
+    fail(e.message);
+  } finally {
+    await context.close();
+    fs.rmSync(userDataDir, { recursive: true, force: true });
+  }
+  if (problems.length > 0) {
+    console.error(`replay_check: FAILED for ${reportPath}`);
+    for (const p of problems) console.error(`  - ${p}`);
+    process.exit(1);
+  }
+  const note = readbackNotes ? ` (ignored ${readbackNotes} chromium ReadPixels note${readbackNotes > 1 ? 's' : ''} of software compositing)` : '';
+  console.error(`replay_check: ok (${reportPath}); screenshots in ${path.resolve(args.out)}${note}`);
+}
+
+main().catch((e) => { console.error(`replay_check: ${e.stack || e}`); process.exit(1); });
