@@ -15,15 +15,23 @@ packages=(
   liburdfdom-tools
   # Fuzzing the readers: clang's libFuzzer (the fuzz preset).
   clang libfuzzer-14-dev
+  # The report's browser tests run Debian's Chromium headless.
+  chromium fonts-dejavu-core
 )
+# The report's scripts (three.js, esbuild, playwright-core) come from npm, pinned in
+# web/package-lock.json. A machine with its own Node.js keeps it; otherwise Debian's.
+command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#packages[@]} packages already installed"
+  bash "$here/setup_web.sh"
   exit 0
 fi
 
@@ -36,3 +44,4 @@ echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends "${missing[@]}"
+bash "$here/setup_web.sh"

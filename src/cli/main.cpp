@@ -120,6 +120,7 @@ int main(int argc, char** argv) {
   crux::cli::add_filter_stats_command(app);
   crux::cli::add_learning_commands(app);
   crux::cli::add_view_command(app);
+  crux::cli::add_report_commands(app);
   const CLI::App* command = &app;
   if (const int refused = check_names(app, argc, argv, command); refused != 0) return refused;
   crux::remove_temporaries_on_signals();

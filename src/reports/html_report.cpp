@@ -52,6 +52,7 @@ class Page {
     out_ +=
         "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
         "style-src 'unsafe-inline'; img-src data: blob:\">\n";
+    out_ += "<link rel=\"icon\" href=\"data:,\">\n";  // or the browser asks the server for /favicon.ico
     emit("<title>{}</title>\n<style>\n{}\n</style>\n</head>\n<body>\n<main>\n", xml_escaped(page_.title),
          page_.style);
     write_header();

@@ -241,6 +241,20 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   EXPECT_NE(nested.err.find("(did you mean 'wall generate'?)"), std::string::npos) << nested.err;
 }
 
+TEST(CliLearning, ViewAndReportAnswerBadInputWithOneLine) {
+  const fs::path never = scratch("never_report.html");
+  const auto no_folder = run_crux("report /nonexistent/crux_folder -o " + never.string());
+  EXPECT_EQ(no_folder.exit_code, 2);
+  EXPECT_EQ(no_folder.err, "crux: /nonexistent/crux_folder: no such output folder\n");
+  const auto no_run = run_crux("view --run " + fs::temp_directory_path().string() + " --svg " + never.string());
+  EXPECT_EQ(no_run.exit_code, 2);
+  EXPECT_NE(no_run.err.find("not a run folder"), std::string::npos) << no_run.err;
+  EXPECT_EQ(testing::count_lines(no_run.err), 1);
+  const auto both = run_crux("view --svg x.svg");
+  EXPECT_EQ(both.err, "crux: --run: give a run folder (--run DIR) or a wall file (--wall-file FILE), not both\n");
+  EXPECT_FALSE(fs::exists(never));
+}
+
 TEST(CliLearning, EveryCommandPrintsOneJsonDocument) {
   const fs::path wall = scratch("json_wall.json"), train = scratch("json_train");
   const std::vector<std::string> commands{
@@ -250,7 +264,11 @@ TEST(CliLearning, EveryCommandPrintsOneJsonDocument) {
       "train --wall-file " + wall.string() + " --iterations 100 -o " + train.string(),
       "transfer --q-grid " + (train / "q_grid.bin").string() + " --wall-seed 2 --iterations 100 -o " +
           scratch("json_transfer").string(),
-      "paper --walls 1 --iterations 100 --plan false -o " + scratch("json_paper").string()};
+      "paper --walls 1 --iterations 100 --plan false -o " + scratch("json_paper").string(),
+      "view --wall-file " + wall.string() + " --svg " + scratch("json_view.svg").string(),
+      "figures " + scratch("json_paper").string(),
+      "report " + scratch("json_paper").string() + " -o " + scratch("json_report.html").string(),
+      "report " + train.string() + " -o " + scratch("json_train_report.html").string()};
   for (const std::string& command : commands) {
     const auto outcome = run_crux(command + " --json");
     ASSERT_EQ(outcome.exit_code, 0) << command << ": " << outcome.err;

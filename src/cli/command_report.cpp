@@ -1,0 +1,125 @@
+// crux report: one self-contained HTML page for an output folder, with the figures, the
+// statistics and a 3D replay of a climb.
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/parameter_binding.hpp"
+#include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
+#include "experiments/run_inputs.hpp"
+#include "reports/html_report.hpp"
+#include "reports/replay_data.hpp"
+#include "reports/report_figures.hpp"
+#include "reports/run_folder.hpp"
+#include "reports/web_assets.hpp"
+
+namespace crux::cli {
+
+namespace {
+
+const ParameterSet kReportParameters{{"experiment.urdf", "ik"}, {"ik.cache_unreachable"}};
+
+struct ReportCommand {
+  ParameterBinding binding{"report", kReportParameters};
+  std::string folder;
+  std::string output;
+  std::string replay_run = "training_0";
+  bool json = false;
+
+  void run() {
+    const auto started = std::chrono::steady_clock::now();
+    ExperimentConfig config = binding.resolve();
+    namespace fs = std::filesystem;
+    std::error_code error;
+    if (!fs::is_directory(folder, error)) throw InputError(folder, "no such output folder");
+    const bool experiment = !fs::exists(fs::path(folder) / "wall.json", error) &&
+                            fs::exists(fs::path(folder) / "summary.json", error);
+    const fs::path run_directory = experiment ? fs::path(folder) / "runs" / replay_run : fs::path(folder);
+    if (experiment && !fs::is_directory(run_directory, error)) {
+      throw InputError("--replay-run", fmt::format("'{}' is not a run of {} (runs/<condition>_<i>)", replay_run, folder));
+    }
+    RunFolder run = locate_run_folder(run_directory);
+    if (config.urdf.empty()) config.urdf = run.urdf;
+    const BodyModel model = load_configured_body(config);
+    read_run_climb(run, model);
+
+    ReportPage page;
+    page.summary = read_summary(run.summary_file.parent_path());
+    page.title = fmt::format("crux report: {}", fs::absolute(folder).lexically_normal().filename().string());
+    const ReachabilityParameters& reach = config.settings.learning.climbing.reachability;
+    page.figures = report_figures(experiment ? fs::path(folder) : fs::path(), model, run, reach);
+    page.replay_title = fmt::format("{} on '{}'", run.name, run.wall.name);
+    if (!run.climb.empty()) page.replay = replay_data(model, run, reach, page.replay_title);
+    page.style = report_style();
+    page.script = replay_script();
+    const std::string html = html_report(page);
+    write_file_atomically(output, html);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const int frames = page.replay.is_null() ? 0 : page.replay["frames"]["count"].get<int>();
+    const std::size_t moves = page.replay.is_null() ? 0 : page.replay["moves"].size();
+    if (json) {
+      nlohmann::ordered_json out;
+      out["report"] = output;
+      out["bytes"] = html.size();
+      out["figures"] = page.figures.size();
+      out["replay_run"] = run.name;
+      out["replay_moves"] = moves;
+      out["replay_frames"] = frames;
+      out["seconds"] = seconds;
+      std::cout << out.dump(2) << '\n';
+    } else {
+      std::cout << fmt::format("wrote {} ({:.1f} MB, {} figures, a replay of {} with {} moves) in {:.2f} s\n", output,
+                               static_cast<double>(html.size()) / 1e6, page.figures.size(), run.name, moves, seconds);
+    }
+  }
+};
+
+struct FiguresCommand {
+  std::string folder;
+  bool json = false;
+
+  void run() const {
+    const std::vector<std::filesystem::path> written = write_paper_figure_files(folder);
+    if (json) {
+      nlohmann::ordered_json out;
+      out["figures"] = nlohmann::ordered_json::array();
+      for (const auto& file : written) out["figures"].push_back(file.string());
+      std::cout << out.dump(2) << '\n';
+      return;
+    }
+    for (const auto& file : written) std::cout << "wrote " << file.string() << '\n';
+  }
+};
+
+}  // namespace
+
+void add_report_commands(CLI::App& app) {
+  auto figures = std::make_shared<FiguresCommand>();
+  auto* f = app.add_subcommand(
+      "figures", "Redraw the SVG figures of a crux paper folder into its figures/ from its files: Figs. 2b, 3, 4\n"
+                 "and the transfer-minus-control plot (crux paper writes them too)");
+  f->add_option("folder", figures->folder, "The crux paper output folder")->required();
+  f->add_flag("--json", figures->json, "Print JSON instead of text");
+  f->callback([figures] { figures->run(); });
+
+  auto report = std::make_shared<ReportCommand>();
+  auto* r = app.add_subcommand(
+      "report", "Write one self-contained HTML page for an output folder of crux paper, train or transfer: Table I\n"
+                "beside the paper's, the statistics, the figures and a 3D replay of a climb (works offline)");
+  r->add_option("folder", report->folder, "The output folder")->required();
+  r->add_option("-o,--output", report->output, "The HTML file to write")->required();
+  r->add_option("--replay-run", report->replay_run,
+                "For a crux paper folder: the run whose last climb is replayed, runs/<condition>_<i>")
+      ->capture_default_str();
+  r->add_flag("--json", report->json, "Print JSON instead of text");
+  report->binding.bind(r);
+  r->callback([report] { report->run(); });
+}
+
+}  // namespace crux::cli
