@@ -6,3 +6,4 @@ bash scripts/setup.sh
 cmake --preset release
 cmake --build --preset release
 ./build/release/crux paper --overwrite
+./build/release/crux report out/paper -o out/paper-report.html

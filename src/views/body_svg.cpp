@@ -196,10 +196,13 @@ class BodyFigure {
     }
     panel_height_ = (z_top_ - z_low_) * scale;
     width_ = std::ceil(std::max(left - kPanelGap + kMargin,
-                                kMargin + 2 * std::max(estimated_text_width(options_.title, 15),
+                                2 * kMargin + std::max(estimated_text_width(options_.title, 15),
                                                        estimated_text_width(options_.subtitle, 11))));
-    width_ = std::max(width_, 2 * kMargin + legend_width());
-    height_ = std::ceil(kMargin + kHeaderHeight + panel_height_ + kBelowPanel + kLegendHeight + kMargin);
+    for (const View& view : views_) {
+      width_ = std::max(width_, std::ceil(view.left + estimated_text_width(view.title, 12) + kMargin));
+    }
+    legend_rows_ = lay_out_legend();
+    height_ = std::ceil(kMargin + kHeaderHeight + panel_height_ + kBelowPanel + kLegendHeight * legend_rows_ + kMargin);
   }
 
   void write_panel(const View& view) {
@@ -304,18 +307,34 @@ class BodyFigure {
     texts.push_back(fmt::format("finish height, {:.2f} m", wall_.finish_height));
     return texts;
   }
-  double legend_width() const {
-    double width = 0;
-    for (const std::string& text : legend_texts()) width += 30 + estimated_text_width(text, 11) + 14;
-    return width;
+  static double legend_entry_width(const std::string& text) { return 30 + estimated_text_width(text, 11) + 14; }
+
+  // Places the legend's entries in rows no wider than the page (widened for a single
+  // entry that would not fit); returns the number of rows.
+  int lay_out_legend() {
+    legend_positions_.clear();
+    double x = kMargin;
+    int row = 0;
+    for (const std::string& text : legend_texts()) {
+      const double width = legend_entry_width(text);
+      if (x > kMargin && x + width > width_ - kMargin) {
+        x = kMargin;
+        ++row;
+      }
+      width_ = std::max(width_, std::ceil(x + width + kMargin));
+      legend_positions_.push_back({x, static_cast<double>(row)});
+      x += width;
+    }
+    return row + 1;
   }
 
   void write_legend() {
-    double x = kMargin;
-    const double y = kMargin + kHeaderHeight + panel_height_ + kBelowPanel + kLegendHeight / 2;
     const std::vector<std::string> texts = legend_texts();
     out_ += "<g class=\"legend\" font-size=\"11\" fill=\"#333333\">\n";
     for (std::size_t i = 0; i < texts.size(); ++i) {
+      const double x = legend_positions_[i][0];
+      const double y =
+          kMargin + kHeaderHeight + panel_height_ + kBelowPanel + kLegendHeight * (legend_positions_[i][1] + 0.5);
       if (i == 0) {
         emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\"/>\n", x + 12, y, kHoldColour);
       } else if (i <= kLimbCount) {
@@ -328,7 +347,6 @@ class BodyFigure {
              x, y, x + 24, y);
       }
       emit("<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", x + 30, y + 4, xml_escaped(texts[i]));
-      x += 30 + estimated_text_width(texts[i], 11) + 14;
     }
     out_ += "</g>\n";
   }
@@ -340,6 +358,8 @@ class BodyFigure {
   std::vector<PlacedVisual> visuals_;
   std::array<View, 2> views_{};
   double z_low_ = 0, z_top_ = 0, panel_height_ = 0, width_ = 0, height_ = 0;
+  std::vector<Point> legend_positions_;  // left edge and row of each legend entry
+  int legend_rows_ = 1;
   std::string out_;
 };
 
