@@ -10,6 +10,7 @@
 
 #include "reports/output_folder.hpp"
 #include "reports/summary.hpp"
+#include "experiments/experiment_config.hpp"
 #include "experiments/table_one.hpp"
 #include "support/test_models.hpp"
 
@@ -47,7 +48,12 @@ TEST(PaperExperiment, SameSeedGivesIdenticalFilesWithOneOrTwoThreads) {
     settings.seeds_per_wall = 2;
     const auto write = [&](const fs::path& folder, const ExperimentResult& result) {
       const ExperimentAnalysis analysis = analyse_experiment(result, settings);
-      write_experiment_folder(folder, result, settings, model, "", summary_json(result, &analysis, settings, {}));
+      ExperimentConfig config;
+      config.settings = settings;
+      // The figures read the grid's shape back from config.toml.
+      const std::string config_toml = config_to_toml(config, ParameterSet{{"grid"}, {}});
+      write_experiment_folder(folder, result, settings, model, config_toml,
+                              summary_json(result, &analysis, settings, {}));
     };
     write(directory, run_paper_experiment(model, settings));
     settings.learning.dyna.planner = Planner::Prioritized;
@@ -69,7 +75,8 @@ TEST(PaperExperiment, SameSeedGivesIdenticalFilesWithOneOrTwoThreads) {
     EXPECT_EQ(read_bytes(entry.path()), read_bytes(twin)) << fs::relative(entry.path(), one);
     ++compared;
   }
-  EXPECT_GE(compared, 2 * (3 * 4 * 4 + 4 + 3)) << "every run's four files, the walls and the figures, per planner";
+  EXPECT_GE(compared, 2 * (3 * 4 * 4 + 4 + 3 + 4))
+      << "every run's four files, the walls and the figures (CSV and SVG), per planner";
 }
 
 TEST(PaperExperiment, ControlRunsOnTransferWallsAndTransferStartsFromTraining) {
