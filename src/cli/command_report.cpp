@@ -4,6 +4,7 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <regex>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -30,6 +31,7 @@ struct ReportCommand {
   std::string folder;
   std::string output;
   std::string replay_run = "training_0";
+  std::string climb_kind = "greedy";
   bool json = false;
 
   void run() {
@@ -40,9 +42,20 @@ struct ReportCommand {
     if (!fs::is_directory(folder, error)) throw InputError(folder, "no such output folder");
     const bool experiment = !fs::exists(fs::path(folder) / "wall.json", error) &&
                             fs::exists(fs::path(folder) / "summary.json", error);
+    if (!experiment && !fs::exists(fs::path(folder) / "wall.json", error)) {
+      throw InputError(folder,
+                       "not an output folder of crux paper, train or transfer (for one run of a crux paper folder, "
+                       "give the paper folder and --replay-run <condition>_<i>)");
+    }
+    static const std::regex run_name("(training|transfer|control)_[0-9]{1,9}");
+    if (experiment && !std::regex_match(replay_run, run_name)) {
+      throw InputError("--replay-run", fmt::format("'{}' is not a run name: <condition>_<i>, condition training, "
+                                                   "transfer or control",
+                                                   replay_run));
+    }
     const fs::path run_directory = experiment ? fs::path(folder) / "runs" / replay_run : fs::path(folder);
     if (experiment && !fs::is_directory(run_directory, error)) {
-      throw InputError("--replay-run", fmt::format("'{}' is not a run of {} (runs/<condition>_<i>)", replay_run, folder));
+      throw InputError("--replay-run", fmt::format("'{}' is not a run of {}", replay_run, folder));
     }
     RunFolder run = locate_run_folder(run_directory);
     if (config.urdf.empty()) config.urdf = run.urdf;
@@ -54,8 +67,14 @@ struct ReportCommand {
     page.title = fmt::format("crux report: {}", fs::absolute(folder).lexically_normal().filename().string());
     const ReachabilityParameters& reach = config.settings.learning.climbing.reachability;
     page.figures = report_figures(experiment ? fs::path(folder) : fs::path(), model, run, reach);
-    page.replay_title = fmt::format("{} on '{}'", run.name, run.wall.name);
-    if (!run.climb.empty()) page.replay = replay_data(model, run, reach, page.replay_title);
+    // The learnt policy's climb when it finishes, else the last episode that did.
+    const RecordedClimb& climb = climb_kind == "greedy" && !run.greedy.postures.empty() ? run.greedy : run.last;
+    page.replay_title = fmt::format("{} on '{}': {}", run.name, run.wall.name,
+                                    climb.kind == "greedy" ? "the greedy policy's climb after learning"
+                                                           : fmt::format("episode {}", climb.episode));
+    if (!climb.postures.empty()) {
+      page.replay = replay_data(model, run.wall, climb, reach, page.replay_title, run.directory.string());
+    }
     page.style = report_style();
     page.script = replay_script();
     const std::string html = html_report(page);
@@ -69,6 +88,7 @@ struct ReportCommand {
       out["bytes"] = html.size();
       out["figures"] = page.figures.size();
       out["replay_run"] = run.name;
+      out["replay_climb"] = page.replay.is_null() ? nlohmann::ordered_json() : nlohmann::ordered_json(climb.kind);
       out["replay_moves"] = moves;
       out["replay_frames"] = frames;
       out["seconds"] = seconds;
@@ -116,6 +136,11 @@ void add_report_commands(CLI::App& app) {
   r->add_option("-o,--output", report->output, "The HTML file to write")->required();
   r->add_option("--replay-run", report->replay_run,
                 "For a crux paper folder: the run whose last climb is replayed, runs/<condition>_<i>")
+      ->capture_default_str();
+  r->add_option("--climb", report->climb_kind,
+                "The climb replayed: greedy (the learnt policy's, after learning; the last episode's when it does "
+                "not finish) or last (the last completed episode, with its exploration)")
+      ->check(CLI::IsMember({"greedy", "last"}))
       ->capture_default_str();
   r->add_flag("--json", report->json, "Print JSON instead of text");
   report->binding.bind(r);

@@ -28,12 +28,16 @@ struct ViewCommand {
   ParameterBinding binding{"view", kViewParameters};
   std::string run;
   int step = 0;
+  std::string climb_kind = "greedy";
   std::string svg;
   bool json = false;
 
   void run_command() {
     ExperimentConfig config = binding.resolve();
-    if (run.empty() == config.wall_file.empty()) {
+    if (run.empty() && config.wall_file.empty()) {
+      throw InputError("--run", "give a run folder (--run DIR) or a wall file (--wall-file FILE)");
+    }
+    if (!run.empty() && !config.wall_file.empty()) {
       throw InputError("--run", "give a run folder (--run DIR) or a wall file (--wall-file FILE), not both");
     }
     if (svg.empty()) throw InputError("--svg", "give the SVG file to write");
@@ -46,16 +50,21 @@ struct ViewCommand {
       if (config.urdf.empty()) config.urdf = folder.urdf;
       const BodyModel model = load_configured_body(config);
       read_run_climb(folder, model);
-      if (folder.climb.empty()) throw InputError(run, "the run completed no climb, so it has no posture to show");
-      if (step < 0 || step >= static_cast<int>(folder.climb.size())) {
-        throw InputError("--step", fmt::format("must be from 0 to {}, the postures of the run's last climb, got {}",
-                                               folder.climb.size() - 1, step));
+      // The learnt policy's climb when it finishes, else the last episode that did.
+      const RecordedClimb& climb =
+          climb_kind == "greedy" && !folder.greedy.postures.empty() ? folder.greedy : folder.last;
+      if (climb.postures.empty()) throw InputError(run, "the run completed no climb, so it has no posture to show");
+      if (step < 0 || step >= static_cast<int>(climb.postures.size())) {
+        throw InputError("--step", fmt::format("must be from 0 to {}, the postures of the climb, got {}",
+                                               climb.postures.size() - 1, step));
       }
       wall = folder.wall;
-      posture = folder.climb[step];
+      posture = climb.postures[step];
       title = fmt::format("{} on '{}'", folder.name, wall.name);
-      subtitle = fmt::format("step {} of the climb of episode {} ({} postures, the start is step 0)", step,
-                             folder.climb_episode, folder.climb.size());
+      subtitle = fmt::format("step {} of {} ({} postures, the start is step 0)", step,
+                             climb.kind == "greedy" ? std::string("the greedy policy's climb after learning")
+                                                    : fmt::format("the climb of episode {}", climb.episode),
+                             climb.postures.size());
       write(model, posture, wall, title, subtitle, reach);
       return;
     }
@@ -108,7 +117,11 @@ void add_view_command(CLI::App& app) {
               "last climb (--run DIR --step K), or the start posture of a wall file (--wall-file FILE)");
   v->add_option("--run", view->run,
                 "A run folder: that of crux train or transfer, or runs/<condition>_<i> of a crux paper folder");
-  v->add_option("--step", view->step, "The posture of the run's last climb to draw: 0 is the start")
+  v->add_option("--step", view->step, "The posture of the climb to draw: 0 is the start")->capture_default_str();
+  v->add_option("--climb", view->climb_kind,
+                "The run's climb: greedy (the learnt policy's, after learning; the last episode's when it does not "
+                "finish) or last (the last completed episode)")
+      ->check(CLI::IsMember({"greedy", "last"}))
       ->capture_default_str();
   v->add_option("--svg", view->svg, "The SVG file to write");
   v->add_flag("--json", view->json, "Print JSON instead of text");

@@ -4,20 +4,31 @@ namespace crux {
 
 namespace {
 
-// One climb from the start following the best Q_wall action. The cache may grow, but
-// no table is updated.
-int greedy_climb_length(ClimbingMdp& mdp, const QTable& q_wall, int cap) {
+// One climb from the start following the best Q_wall action, recorded in `result`. The
+// cache may grow, but no table is updated.
+void greedy_climb(ClimbingMdp& mdp, const QTable& q_wall, int cap, RunResult& result) {
   mdp.reset();
+  std::vector<Posture> postures{mdp.posture()};
+  std::vector<ClimbMove> moves;
   for (int step = 1; step <= cap; ++step) {
     const auto candidates = mdp.candidates();
-    if (candidates.empty()) return -1;
+    if (candidates.empty()) return;
     std::size_t best = 0;
     for (std::size_t i = 1; i < candidates.size(); ++i) {
       if (q_wall.value(mdp.state().wall, candidates[i].wall) > q_wall.value(mdp.state().wall, candidates[best].wall)) best = i;
     }
-    if (mdp.step(candidates[best].wall).finished) return step;
+    const ActionCode hold = candidates[best].wall;  // step() refills the candidates
+    const StepOutcome outcome = mdp.step(hold);
+    if (!outcome.reached) return;
+    moves.push_back({mdp.wall().holds[hold].id, outcome.reward});
+    postures.push_back(*outcome.posture);
+    if (outcome.finished) {
+      result.greedy_length = step;
+      result.greedy_climb = std::move(postures);
+      result.greedy_moves = std::move(moves);
+      return;
+    }
   }
-  return -1;
 }
 
 }  // namespace
@@ -67,7 +78,7 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
   result.reached_configurations = mdp.reacher().cache().reached_count();
   result.unreachable_configurations = mdp.reacher().cache().unreachable_count();
   result.ik_solves = mdp.reacher().solves();
-  result.greedy_length = greedy_climb_length(mdp, agent.q_wall(), parameters.greedy_cap);
+  greedy_climb(mdp, agent.q_wall(), parameters.greedy_cap, result);
   result.q_grid = agent.q_grid();
   result.explored_pairs = agent.model().size();
   result.planning_updates = agent.planning_updates();

@@ -36,6 +36,12 @@ struct IterationRecord {
   bool back_to_left_hold = false;
 };
 
+// A reached move of a recorded climb: the hold taken and the reward.
+struct ClimbMove {
+  int hold_id = 0;
+  double reward = 0.0;
+};
+
 struct RunResult {
   std::vector<IterationRecord> iterations;
   std::vector<int> episode_lengths;  // completed episodes, in iterations (failed ones included)
@@ -49,6 +55,11 @@ struct RunResult {
   // Length of one climb by the learnt greedy policy (best Q_wall action, ties to the
   // first candidate) after learning; -1 if it does not finish within greedy_cap actions.
   int greedy_length = -1;
+  // That climb when it finishes (else empty): its postures (the start, then one per
+  // move) and its moves. A finished greedy climb has no unreachable move: after one, the
+  // state, the table and so the choice would stay the same until the cap.
+  std::vector<Posture> greedy_climb;
+  std::vector<ClimbMove> greedy_moves;
 };
 
 // Deterministic in `seed`. `initial_q_grid` starts the grid table from transferred

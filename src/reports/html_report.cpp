@@ -68,9 +68,10 @@ class Page {
     out_ += "</main>\n";
     if (!page_.replay.is_null()) {
       std::string data = page_.replay.dump();
-      // Inside <script>, "</" could end the element early; JSON reads "<\/" as "</".
-      for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 3)) {
-        data.replace(at, 2, "<\\/");
+      // Inside <script>, "</script" would end the element and "<!--" change how it is read;
+      // JSON reads the escape \u003c as "<".
+      for (std::size_t at = data.find('<'); at != std::string::npos; at = data.find('<', at + 6)) {
+        data.replace(at, 1, "\\u003c");
       }
       emit("<script type=\"application/json\" id=\"crux-replay-data\">{}</script>\n", data);
       emit("<script>\n{}\n</script>\n", page_.script);
@@ -203,8 +204,8 @@ class Page {
 
   void write_replay() {
     emit(
-        "<section id=\"replay\">\n<h2>Replay: {}</h2>\n<p>The last completed climb of the run, move by move. Between "
-        "two postures the body follows the path of the paper's gradient-descent IK (Algorithm 1). Drag to orbit, "
+        "<section id=\"replay\">\n<h2>Replay: {}</h2>\n<p>The climb move by move. Between two recorded "
+        "postures the body follows the path of the paper's gradient-descent IK (Algorithm 1). Drag to orbit, "
         "scroll to zoom; space plays and pauses, the arrow keys step.</p>\n<div id=\"crux-replay\"></div>\n"
         "</section>\n",
         xml_escaped(page_.replay_title));

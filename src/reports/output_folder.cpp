@@ -19,7 +19,7 @@ namespace {
 
 // Everything a crux command writes into an output folder.
 constexpr const char* kOutputNames[] = {"config.toml", "summary.json", "runs",      "walls",    "figures",
-                                        "iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "wall.json",
+                                        "iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv", "wall.json",
                                         kIncompleteMarker};
 
 void begin_output_folder(const fs::path& directory) {

@@ -109,14 +109,14 @@ nlohmann::ordered_json body_model_json(const BodyModel& model) {
   return body;
 }
 
-nlohmann::ordered_json replay_data(const BodyModel& model, const RunFolder& folder,
+nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, const RecordedClimb& climb,
                                    const ReachabilityParameters& reach, const std::string& title,
-                                   const ReplaySettings& settings) {
-  const Wall& wall = folder.wall;
+                                   const std::string& source, const ReplaySettings& settings) {
   nlohmann::ordered_json out;
   out["format"] = "crux-replay";
   out["version"] = 1;
   out["title"] = title;
+  out["climb"] = climb.kind;
   out["model"] = body_model_json(model);
   out["grasp_radius"] = reach.ik.tolerances.grasp_radius;
   nlohmann::ordered_json holds = nlohmann::ordered_json::array();
@@ -133,31 +133,38 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const RunFolder& fold
   BodyData data(model);
   FrameWriter frames(settings);
   nlohmann::ordered_json moves = nlohmann::ordered_json::array();
-  if (!folder.climb.empty()) frames.add(folder.climb.front());
+  if (!climb.postures.empty()) frames.add(climb.postures.front());
   HoldConfiguration configuration = start_configuration(wall).with(Limb::RightHand, kFree);
   std::size_t posture = 0;  // index into the climb of the body's current posture
   std::vector<Posture> path;
-  for (const RunStep& step : folder.climb_steps) {
+  for (const RunStep& step : climb.steps) {
     const Limb free = configuration.free_limb();
     const int hold = wall.index_of(step.hold_id);
     if (hold < 0) {
-      throw InputError((folder.directory / "iterations.csv").string(),
-                       fmt::format("iteration {} tries hold {}, which the wall does not have", step.iteration,
-                                   step.hold_id));
+      throw InputError(source, fmt::format("a move tries hold {}, which the wall does not have", step.hold_id));
     }
     const HoldConfiguration complete = configuration.with(free, hold);
     const int first = frames.count();
     if (step.success) {
-      const Posture& from = folder.climb[posture];
-      const Posture& to = folder.climb[posture + 1];
-      solve_ik(model, data, from, reach_target(model, wall, complete, reach.root), ik, PathRecorder{&path, 1});
+      if (posture + 1 >= climb.postures.size()) throw InputError(source, "more reached moves than postures");
+      const Posture& from = climb.postures[posture];
+      const Posture& to = climb.postures[posture + 1];
+      const ReachTarget target = reach_target(model, wall, complete, reach.root);
+      forward_kinematics(model, data, from);
+      // A move that the posture already grasps (back to the hold just left, say) needs no
+      // path; the gradient descent would wander off and come back.
+      if (target_reached(data.points, target, ik.tolerances)) {
+        path.assign(1, from);
+      } else {
+        solve_ik(model, data, from, target, ik, PathRecorder{&path, 1});
+      }
       add_path_frames(path, to, settings.frames_per_move, frames);
       ++posture;
       configuration = complete.with(next_free_limb(free), kFree);
     } else {
-      for (int f = 0; f < settings.frames_per_failure; ++f) frames.add(folder.climb[posture]);
+      for (int f = 0; f < settings.frames_per_failure; ++f) frames.add(climb.postures[posture]);
     }
-    moves.push_back({{"iteration", step.iteration},
+    moves.push_back({{"iteration", step.iteration > 0 ? nlohmann::ordered_json(step.iteration) : nullptr},
                      {"regime", regime_name(step.regime)},
                      {"limb", limb_name(free)},
                      {"hold", step.hold_id},

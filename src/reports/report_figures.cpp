@@ -6,6 +6,7 @@
 
 #include "body/body_data.hpp"
 #include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
 #include "views/body_svg.hpp"
 #include "views/paper_figures.hpp"
 
@@ -40,9 +41,14 @@ const std::map<std::string, FigureText>& figure_texts() {
 }  // namespace
 
 std::vector<std::filesystem::path> write_paper_figure_files(const std::filesystem::path& experiment_folder) {
+  if (read_summary(experiment_folder).value("kind", "") != "experiment") {
+    throw InputError(experiment_folder.string(), "not a crux paper folder (its summary.json is of kind \"run\")");
+  }
+  // Drawn before anything is written, so that bad input leaves the folder as it was.
+  const auto figures = paper_figures(read_paper_figure_data(experiment_folder));
   std::vector<std::filesystem::path> written;
   make_output_directory(experiment_folder / "figures");
-  for (const auto& [name, svg] : paper_figures(read_paper_figure_data(experiment_folder))) {
+  for (const auto& [name, svg] : figures) {
     written.push_back(experiment_folder / "figures" / name);
     write_file_atomically(written.back(), svg);
   }
@@ -59,14 +65,8 @@ std::vector<ReportFigure> report_figures(const std::filesystem::path& experiment
                          text != figure_texts().end() ? text->second.caption : "", std::move(svg)});
     }
   }
-  Posture posture;
-  if (!run.climb.empty()) {
-    posture = run.climb.front();
-  } else {
-    BodyData data(model);
-    const IkResult start = solve_start(model, data, run.wall, reach);
-    posture = start.posture;
-  }
+  BodyData data(model);
+  const Posture posture = solve_start(model, data, run.wall, reach).posture;
   BodySvgOptions options;
   options.title = fmt::format("{} on '{}'", run.name, run.wall.name);
   options.subtitle = "the start posture";

@@ -17,7 +17,7 @@ namespace crux {
 std::vector<std::filesystem::path> write_paper_figure_files(const std::filesystem::path& experiment_folder);
 
 // The report's figures: those of `experiment_folder` when it is not empty, then Fig. 1 at
-// the first posture of `run`'s last climb (or its wall's start posture if it has none).
+// the start posture of `run`'s wall, solved by IK from standing.
 std::vector<ReportFigure> report_figures(const std::filesystem::path& experiment_folder, const BodyModel& model,
                                          const RunFolder& run, const ReachabilityParameters& reach);
 

@@ -25,6 +25,13 @@ void write_run_files(const std::filesystem::path& directory, const RunResult& ru
   write_file_atomically(directory / "episodes.csv", episodes);
   save_q_table((directory / "q_grid.bin").string(), run.q_grid, describe_grid(grid));
   write_file_atomically(directory / "climb.csv", posture_csv(model, run.last_climb, "step"));
+  // The start row has no move: hold 0, reward 0.
+  PostureCsvColumn holds{"hold", {"0"}}, rewards{"reward", {"0"}};
+  for (const ClimbMove& move : run.greedy_moves) {
+    holds.cells.push_back(fmt::format("{}", move.hold_id));
+    rewards.cells.push_back(fmt::format("{:.17g}", move.reward));
+  }
+  write_file_atomically(directory / "greedy_climb.csv", posture_csv(model, run.greedy_climb, "step", {holds, rewards}));
 }
 
 }  // namespace crux

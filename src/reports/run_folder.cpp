@@ -88,12 +88,14 @@ RunFolder locate_run_folder(const fs::path& directory) {
     folder.summary_file = experiment / "summary.json";
     const nlohmann::json summary = read_json(folder.summary_file);
     const auto seeds = summary.find("seeds_per_wall");
-    if (seeds == summary.end() || !seeds->is_number_unsigned() || seeds->get<int>() < 1) {
-      throw InputError(folder.summary_file.string(), "seeds_per_wall must be a positive integer");
+    if (seeds == summary.end() || !seeds->is_number_unsigned() || seeds->get<std::uint64_t>() < 1 ||
+        seeds->get<std::uint64_t>() > 1'000'000) {
+      throw InputError(folder.summary_file.string(), "seeds_per_wall must be an integer from 1 to 1000000");
     }
     const int run = std::stoi(match[2]);
     folder.wall_file = experiment / "walls" /
-                       fmt::format("{}_{}.json", match[1] == "training" ? "training" : "transfer", run / seeds->get<int>());
+                       fmt::format("{}_{}.json", match[1] == "training" ? "training" : "transfer",
+                                   run / seeds->get<int>());
   }
   const nlohmann::json summary = read_json(folder.summary_file);
   if (const auto provenance = summary.find("provenance"); provenance != summary.end() && provenance->is_object()) {
@@ -105,55 +107,101 @@ RunFolder locate_run_folder(const fs::path& directory) {
   return folder;
 }
 
+namespace {
+
+// The postures of a climb file: `columns` before the joints, returned as text.
+std::vector<Posture> read_postures(const fs::path& file, const BodyModel& model, const std::vector<std::string>& columns,
+                                   std::vector<std::vector<std::string_view>>& cells, std::string& text) {
+  text = read_input_file(file.string(), "climb file");
+  std::string header = "step";
+  for (const std::string& column : columns) header += "," + column;
+  for (const BodyJoint& joint : model.joints) header += "," + joint.name;
+  const std::vector<std::string_view> rows = csv_rows(text, file, header);
+  std::vector<Posture> postures;
+  const std::size_t first = 1 + columns.size();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::vector<std::string_view> row = split(rows[i], ',');
+    if (row.size() != first + kConfigurationDof) {
+      throw InputError(file.string(), fmt::format("line {}: expected {} columns", i + 2, first + kConfigurationDof));
+    }
+    Posture posture;
+    for (int k = 0; k < kConfigurationDof; ++k) posture[k] = number<double>(row[first + k], file, i + 2);
+    // A climb stays near its wall and within the joints' limits; anything else is not a
+    // posture crux wrote (and would give the drawings absurd extents).
+    constexpr double kRootLimit = 1000, kAngleSlack = 1e-6;
+    for (int k = 0; k < kConfigurationDof; ++k) {
+      const bool root = k < kRootDof;
+      if (root ? std::abs(posture[k]) > kRootLimit
+               : posture[k] < model.lower_limits[k] - kAngleSlack || posture[k] > model.upper_limits[k] + kAngleSlack) {
+        throw InputError(file.string(), fmt::format("line {}: {} = {} is outside {}", i + 2, model.joints[k].name,
+                                                    posture[k], root ? "[-1000, 1000] m" : "the joint's limits"));
+      }
+    }
+    postures.push_back(posture);
+    row.resize(first);
+    cells.push_back(std::move(row));
+  }
+  return postures;
+}
+
+}  // namespace
+
 void read_run_climb(RunFolder& folder, const BodyModel& model) {
   const fs::path episodes_file = folder.directory / "episodes.csv";
   const std::string episodes_text = read_input_file(episodes_file.string(), "episodes file");
   const std::vector<std::string_view> episodes = csv_rows(episodes_text, episodes_file, "episode,length");
-  folder.climb_episode = -1;
+  RecordedClimb& last = folder.last;
+  last = {"last", -1, {}, {}};
   if (!episodes.empty()) {
-    folder.climb_episode = number<int>(split(episodes.back(), ',').front(), episodes_file, episodes.size() + 1);
+    last.episode = number<int>(split(episodes.back(), ',').front(), episodes_file, episodes.size() + 1);
+    if (last.episode < 0) throw InputError(episodes_file.string(), "episodes count from 0");
   }
 
   const fs::path iterations_file = folder.directory / "iterations.csv";
   const std::string iterations_text = read_input_file(iterations_file.string(), "iterations file");
   const std::vector<std::string_view> rows =
       csv_rows(iterations_text, iterations_file, "iteration,episode,regime,hold,success,root_rise_cm,reward");
-  folder.climb_steps.clear();
   std::size_t reached = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const std::size_t line = i + 2;
     const std::vector<std::string_view> cells = split(rows[i], ',');
     if (cells.size() != 7) throw InputError(iterations_file.string(), fmt::format("line {}: expected 7 columns", line));
-    const int episode = number<int>(cells[1], iterations_file, line);
-    if (episode != folder.climb_episode) continue;
-    RunStep step{number<int>(cells[0], iterations_file, line), episode, regime_of(cells[2], iterations_file, line),
-                 number<int>(cells[3], iterations_file, line), cells[4] == "1",
-                 number<double>(cells[5], iterations_file, line), number<double>(cells[6], iterations_file, line)};
+    // Every row is checked, not only the climb's: a file crux did not write is refused whole.
+    if (cells[4] != "0" && cells[4] != "1") {
+      throw InputError(iterations_file.string(), fmt::format("line {}: success must be 0 or 1", line));
+    }
+    const RunStep step{number<int>(cells[0], iterations_file, line), number<int>(cells[1], iterations_file, line),
+                       regime_of(cells[2], iterations_file, line),   number<int>(cells[3], iterations_file, line),
+                       cells[4] == "1",                              number<double>(cells[5], iterations_file, line),
+                       number<double>(cells[6], iterations_file, line)};
+    if (step.episode < 0) throw InputError(iterations_file.string(), fmt::format("line {}: episodes count from 0", line));
+    if (step.episode != last.episode) continue;
+    last.steps.push_back(step);
     reached += step.success ? 1 : 0;
-    folder.climb_steps.push_back(step);
   }
 
   const fs::path climb_file = folder.directory / "climb.csv";
-  const std::string climb_text = read_input_file(climb_file.string(), "climb file");
-  std::string header = "step";
-  for (const BodyJoint& joint : model.joints) header += "," + joint.name;
-  const std::vector<std::string_view> climb = csv_rows(climb_text, climb_file, header);
-  folder.climb.clear();
-  for (std::size_t i = 0; i < climb.size(); ++i) {
-    const std::vector<std::string_view> cells = split(climb[i], ',');
-    if (cells.size() != 1 + kConfigurationDof) {
-      throw InputError(climb_file.string(), fmt::format("line {}: expected {} columns", i + 2, 1 + kConfigurationDof));
-    }
-    Posture posture;
-    for (int k = 0; k < kConfigurationDof; ++k) posture[k] = number<double>(cells[1 + k], climb_file, i + 2);
-    folder.climb.push_back(posture);
-  }
-  if (folder.climb_episode >= 0 && folder.climb.size() != reached + 1) {
+  std::string climb_text;
+  std::vector<std::vector<std::string_view>> unused;
+  last.postures = read_postures(climb_file, model, {}, unused, climb_text);
+  if (last.postures.size() != (last.episode >= 0 ? reached + 1 : 0)) {
     throw InputError(climb_file.string(),
                      fmt::format("holds {} postures, but episode {} in iterations.csv reaches {} holds (expected the "
                                  "start and one posture per reached hold; a folder of crux 0.1 before the replay "
                                  "lacks the finishing posture: run it again)",
-                                 folder.climb.size(), folder.climb_episode, reached));
+                                 last.postures.size(), last.episode, reached));
+  }
+
+  const fs::path greedy_file = folder.directory / "greedy_climb.csv";
+  std::string greedy_text;
+  std::vector<std::vector<std::string_view>> cells;
+  RecordedClimb& greedy = folder.greedy;
+  greedy = {"greedy", -1, {}, {}};
+  greedy.postures = read_postures(greedy_file, model, {"hold", "reward"}, cells, greedy_text);
+  for (std::size_t i = 1; i < greedy.postures.size(); ++i) {
+    const double rise_cm = 100 * (greedy.postures[i][2] - greedy.postures[i - 1][2]);
+    greedy.steps.push_back({0, -1, Regime::WGreedy, number<int>(cells[i][1], greedy_file, i + 2), true, rise_cm,
+                            number<double>(cells[i][2], greedy_file, i + 2)});
   }
 }
 

@@ -25,6 +25,14 @@ struct RunStep {
   double reward = 0.0;
 };
 
+// A climb the run recorded, with the moves between its postures.
+struct RecordedClimb {
+  std::string kind;  // "last": the last completed episode; "greedy": the learnt policy's climb
+  int episode = -1;  // of the last climb; -1 for the greedy climb, or when no episode ended
+  std::vector<RunStep> steps;     // every move; a greedy move has iteration 0
+  std::vector<Posture> postures;  // the start, then one per reached move
+};
+
 struct RunFolder {
   std::filesystem::path directory;
   std::string name;  // "training_3" in an experiment, else the folder's name
@@ -32,19 +40,16 @@ struct RunFolder {
   Wall wall;
   std::filesystem::path summary_file;
   std::string urdf;  // the body model recorded in the summary's provenance ("" if none)
-  // The last completed episode (-1 if none) and its iterations; climb.csv's postures:
-  // the start, then one per reached iteration of that episode.
-  int climb_episode = -1;
-  std::vector<RunStep> climb_steps;
-  std::vector<Posture> climb;
+  RecordedClimb last;    // climb.csv and its episode's rows of iterations.csv
+  RecordedClimb greedy;  // greedy_climb.csv; empty when the greedy policy does not finish
 };
 
 // Where the folder's wall and summary are, and the body model it recorded; InputError
 // naming the folder (or the file) when it is not a run folder.
 RunFolder locate_run_folder(const std::filesystem::path& directory);
 
-// Reads the wall, climb.csv (whose columns must be `model`'s joints) and iterations.csv
-// into `folder`; InputError naming the file and the problem.
+// Reads climb.csv and greedy_climb.csv (whose columns must be `model`'s joints) and
+// iterations.csv into `folder`; InputError naming the file and the problem.
 void read_run_climb(RunFolder& folder, const BodyModel& model);
 
 }  // namespace crux

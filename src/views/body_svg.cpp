@@ -25,7 +25,9 @@ constexpr double kBelowPanel = 40;  // horizontal tick labels and axis title
 constexpr double kPanelGap = 30;
 constexpr double kPadding = 0.15;   // metres of wall around what is drawn
 constexpr double kLegendHeight = 24;
-constexpr double kTickSpacing = 0.5;
+constexpr double kTickSpacing = 0.5;      // metres, doubled while lines would crowd
+constexpr double kMinimumTickGap = 30;    // pixels between metre lines
+constexpr double kMaxPanelPixels = 20000;  // the larger extent of the drawing, at most
 constexpr int kCylinderSides = 24;
 constexpr const char* kHoldColour = "#555555";
 constexpr const char* kWallColour = "#9a8f80";
@@ -185,7 +187,14 @@ class BodyFigure {
     }
     z_low_ = z_low - kPadding;
     z_top_ = z_high + kPadding;
-    const double scale = options_.pixels_per_metre;
+    // A wall far larger than a climber is drawn smaller, so that the page and its number
+    // of metre lines stay bounded.
+    double span = z_top_ - z_low_;
+    for (const View& view : views_) span = std::max(span, view.high - view.low);
+    if (!std::isfinite(span)) throw std::invalid_argument("render_body_svg: the wall is too large to draw");
+    const double scale = std::min(options_.pixels_per_metre, kMaxPanelPixels / span);
+    tick_spacing_ = kTickSpacing;
+    while (tick_spacing_ * scale < kMinimumTickGap) tick_spacing_ *= 2;
     double left = kMargin;
     for (View& view : views_) {
       view.left = left + kAxisRoom;
@@ -209,21 +218,30 @@ class BodyFigure {
     const double bottom = view.top + panel_height_;
     emit("<g class=\"panel\">\n<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"12\" fill=\"#333333\">{}</text>\n",
          view.left, view.top - 6, view.title);
-    // Metre lines and their labels.
+    // Metre lines and their labels, at multiples of the tick spacing.
+    const auto ticks = [&](double low, double high) {
+      std::vector<double> values;
+      const auto last = static_cast<long>(std::floor(high / tick_spacing_));
+      for (auto k = static_cast<long>(std::ceil(low / tick_spacing_)); k <= last; ++k) {
+        values.push_back(static_cast<double>(k) * tick_spacing_);
+      }
+      return values;
+    };
+    const std::vector<double> z_ticks = ticks(z_low_, z_top_), u_ticks = ticks(view.low, view.high);
     out_ += "<g stroke=\"#ececec\" stroke-width=\"1\">\n";
-    for (double z = std::ceil(z_low_ / kTickSpacing) * kTickSpacing; z <= z_top_; z += kTickSpacing) {
+    for (const double z : z_ticks) {
       const double y = view.top + (z_top_ - z) * view.scale;
       emit("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\"/>\n", view.left, y, view.left + view.width(), y);
     }
-    for (double u = std::ceil(view.low / kTickSpacing) * kTickSpacing; u <= view.high; u += kTickSpacing) {
+    for (const double u : u_ticks) {
       emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", view.x_of(u), view.top, bottom);
     }
     out_ += "</g>\n<g font-size=\"10\" fill=\"#555555\">\n";
-    for (double z = std::ceil(z_low_ / kTickSpacing) * kTickSpacing; z <= z_top_; z += kTickSpacing) {
+    for (const double z : z_ticks) {
       emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">{:.1f}</text>\n", view.left - 4,
            view.top + (z_top_ - z) * view.scale + 3.5, z + 0.0);
     }
-    for (double u = std::ceil(view.low / kTickSpacing) * kTickSpacing; u <= view.high; u += kTickSpacing) {
+    for (const double u : u_ticks) {
       // The label is the world coordinate, whose sign the front view flips.
       emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{:.1f}</text>\n", view.x_of(u), bottom + 14,
            view.horizontal_sign * u + 0.0);
@@ -358,6 +376,7 @@ class BodyFigure {
   std::vector<PlacedVisual> visuals_;
   std::array<View, 2> views_{};
   double z_low_ = 0, z_top_ = 0, panel_height_ = 0, width_ = 0, height_ = 0;
+  double tick_spacing_ = kTickSpacing;
   std::vector<Point> legend_positions_;  // left edge and row of each legend entry
   int legend_rows_ = 1;
   std::string out_;

@@ -675,6 +675,10 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
       row.value = m.difference * scale;
       row.low = m.difference_ci95 ? (*m.difference_ci95)[0] * scale : row.value;
       row.high = m.difference_ci95 ? (*m.difference_ci95)[1] * scale : row.value;
+      // A control mean so close to 0 that the ratio overflows is no comparison either.
+      row.available = std::isfinite(row.value) && std::isfinite(row.low) && std::isfinite(row.high);
+    }
+    if (row.available) {
       low = std::min({low, row.value, row.low});
       high = std::max({high, row.value, row.high});
     }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <map>
 
 #include "support/run_crux.hpp"
 #include "support/test_models.hpp"
@@ -251,8 +252,64 @@ TEST(CliLearning, ViewAndReportAnswerBadInputWithOneLine) {
   EXPECT_NE(no_run.err.find("not a run folder"), std::string::npos) << no_run.err;
   EXPECT_EQ(testing::count_lines(no_run.err), 1);
   const auto both = run_crux("view --svg x.svg");
-  EXPECT_EQ(both.err, "crux: --run: give a run folder (--run DIR) or a wall file (--wall-file FILE), not both\n");
+  EXPECT_EQ(both.err, "crux: --run: give a run folder (--run DIR) or a wall file (--wall-file FILE)\n");
   EXPECT_FALSE(fs::exists(never));
+}
+
+// crux figures draws a paper folder's figures again from its files, byte for byte.
+TEST(CliLearning, FiguresRedrawsThePaperFiguresByteForByte) {
+  const fs::path paper = scratch("figures_paper");
+  ASSERT_EQ(run_crux("paper --walls 2 --iterations 400 --plan false -o " + paper.string()).exit_code, 0);
+  std::map<std::string, std::string> first;
+  for (const auto& entry : fs::directory_iterator(paper / "figures")) {
+    if (entry.path().extension() == ".svg") first[entry.path().filename().string()] = read_text(entry.path());
+  }
+  ASSERT_EQ(first.size(), 4u);
+  for (const auto& [name, _] : first) fs::remove(paper / "figures" / name);
+  const auto redrawn = run_crux("figures " + paper.string());
+  ASSERT_EQ(redrawn.exit_code, 0) << redrawn.err;
+  for (const auto& [name, svg] : first) EXPECT_EQ(read_text(paper / "figures" / name), svg) << name;
+}
+
+// Run folders that crux did not write, or wrote differently, are refused with one line
+// and exit code 2, and nothing is written.
+TEST(CliLearning, MalformedRunFoldersAreRefusedWithOneLine) {
+  const fs::path train = scratch("malformed_train");
+  ASSERT_EQ(run_crux("train --wall-seed 3 --seed 5 --iterations 2000 -o " + train.string()).exit_code, 0);
+  const auto copy_with = [&](const std::string& name, const std::string& file, const std::string& from,
+                             const std::string& to) {
+    const fs::path copy = scratch(name);
+    fs::copy(train, copy, fs::copy_options::recursive);
+    std::string text = read_text(copy / file);
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    std::ofstream(copy / file, std::ios::trunc) << text;
+    return copy;
+  };
+  const fs::path never = scratch("malformed.svg");
+  struct Case {
+    fs::path folder;
+    std::string problem;
+  };
+  const std::vector<Case> cases{
+      {copy_with("far_posture", "climb.csv", "\n0,0.2", "\n0,9999.2"), "is outside [-1000, 1000] m"},
+      {copy_with("negative_episode", "iterations.csv", "\n1,0,", "\n1,-1,"), "episodes count from 0"},
+      {copy_with("unknown_regime", "iterations.csv", "\n1,0,random,", "\n1,0,randomly,"), "unknown regime"}};
+  for (const Case& c : cases) {
+    for (const std::string& command : {"view --run " + c.folder.string() + " --svg " + never.string(),
+                                       "report " + c.folder.string() + " -o " + never.string()}) {
+      const auto outcome = run_crux(command);
+      EXPECT_EQ(outcome.exit_code, 2) << command;
+      EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
+      EXPECT_NE(outcome.err.find(c.problem), std::string::npos) << outcome.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(never));
+  const auto not_paper = run_crux("figures " + train.string());
+  EXPECT_EQ(not_paper.exit_code, 2);
+  EXPECT_NE(not_paper.err.find("not a crux paper folder"), std::string::npos) << not_paper.err;
+  EXPECT_FALSE(fs::exists(train / "figures"));
 }
 
 TEST(CliLearning, EveryCommandPrintsOneJsonDocument) {

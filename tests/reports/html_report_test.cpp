@@ -53,7 +53,8 @@ TEST(HtmlReport, ReplayDataCannotCloseItsScriptElement) {
   ASSERT_NE(data, std::string::npos);
   const std::size_t end = html.find("</script>", data);
   const std::string json = html.substr(data, end - data);
-  EXPECT_NE(json.find("a <\\/script> in a name"), std::string::npos);
+  EXPECT_NE(json.find("a \\u003c/script> in a name"), std::string::npos);
+  EXPECT_EQ(json.find('<', 1), std::string::npos) << "no '<' inside the data";
   EXPECT_EQ(nlohmann::json::parse(json.substr(json.find('>') + 1))["title"], "a </script> in a name");
   EXPECT_NE(html.find("<div id=\"crux-replay\"></div>"), std::string::npos);
 }

@@ -42,6 +42,8 @@ RunResult hand_made_run() {
   run.last_climb = {standing_posture(root), standing_posture(root + Eigen::Vector3d(0, 0, 0.125)),
                     standing_posture(root + Eigen::Vector3d(0, 0.1, 0.3))};
   run.last_climb[1][5] = 0.75;  // one bent joint
+  run.greedy_climb = {run.last_climb[0], run.last_climb[2]};
+  run.greedy_moves = {{12, 200000.5}};
   return run;
 }
 
@@ -107,12 +109,25 @@ TEST(RunFiles, ClimbCsvHasARowPerPosture) {
   }
 }
 
-TEST(RunFiles, CreatesTheFolderAndWritesOnlyItsFourFiles) {
+TEST(RunFiles, GreedyClimbCsvHasTheHoldAndRewardOfEachMove) {
+  const BodyModel& model = testing::human_model();
+  const RunResult run = hand_made_run();
+  const auto dir = testing::temporary_path("run_files_greedy");
+  write_run_files(dir, run, model, GridParameters{});
+  const std::vector<std::string> lines = lines_of(read_text(dir / "greedy_climb.csv"));
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0].rfind("step,hold,reward," + model.joints[0].name + ",", 0), 0u) << lines[0];
+  EXPECT_EQ(lines[1].rfind("0,0,0,0.29999999999999999,", 0), 0u) << "the start: no hold, no reward; " << lines[1];
+  EXPECT_EQ(lines[2].rfind("1,12,200000.5,0.29999999999999999,0.69999999999999996,", 0), 0u) << lines[2];
+}
+
+TEST(RunFiles, CreatesTheFolderAndWritesOnlyItsFiveFiles) {
   const auto dir = testing::temporary_path("run_files_nested") / "runs" / "transfer_0";
   write_run_files(dir, hand_made_run(), testing::human_model(), GridParameters{});
   std::set<std::string> names;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) names.insert(entry.path().filename().string());
-  EXPECT_EQ(names, (std::set<std::string>{"climb.csv", "episodes.csv", "iterations.csv", "q_grid.bin"}));
+  EXPECT_EQ(names,
+            (std::set<std::string>{"climb.csv", "episodes.csv", "greedy_climb.csv", "iterations.csv", "q_grid.bin"}));
 }
 
 TEST(RunFiles, AnEmptyRunWritesHeadersAndAnEmptyTable) {

@@ -270,7 +270,7 @@ export class ReplayViewer {
       const rise = move.root_rise_cm;
       text = [
         `Move ${k + 1} of ${M}`,
-        `iteration ${move.iteration}`,
+        move.iteration === null ? 'greedy policy, after learning' : `iteration ${move.iteration}`,
         REGIME_NAMES[move.regime] || move.regime,
         LIMB_NAMES[move.limb] || move.limb,
         `hold ${move.hold}`,
