@@ -114,7 +114,7 @@ void add_view_command(CLI::App& app) {
   auto view = std::make_shared<ViewCommand>();
   auto* v = app.add_subcommand(
       "view", "Draw the climber on the wall at one posture, front and side (paper Fig. 1), as SVG: step K of a run's\n"
-              "last climb (--run DIR --step K), or the start posture of a wall file (--wall-file FILE)");
+              "climb (--run DIR --step K), or the start posture of a wall file (--wall-file FILE)");
   v->add_option("--run", view->run,
                 "A run folder: that of crux train or transfer, or runs/<condition>_<i> of a crux paper folder");
   v->add_option("--step", view->step, "The posture of the climb to draw: 0 is the start")->capture_default_str();

@@ -53,7 +53,7 @@ class Page {
         "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
         "style-src 'unsafe-inline'; img-src data: blob:\">\n";
     out_ += "<link rel=\"icon\" href=\"data:,\">\n";  // or the browser asks the server for /favicon.ico
-    emit("<title>{}</title>\n<style>\n{}\n</style>\n</head>\n<body>\n<main>\n", xml_escaped(page_.title),
+    append_format(out_, "<title>{}</title>\n<style>\n{}\n</style>\n</head>\n<body>\n<main>\n", xml_escaped(page_.title),
          page_.style);
     write_header();
     const bool experiment = at(page_.summary, {"kind"}) == "experiment";
@@ -73,24 +73,19 @@ class Page {
       for (std::size_t at = data.find('<'); at != std::string::npos; at = data.find('<', at + 6)) {
         data.replace(at, 1, "\\u003c");
       }
-      emit("<script type=\"application/json\" id=\"crux-replay-data\">{}</script>\n", data);
-      emit("<script>\n{}\n</script>\n", page_.script);
+      append_format(out_, "<script type=\"application/json\" id=\"crux-replay-data\">{}</script>\n", data);
+      append_format(out_, "<script>\n{}\n</script>\n", page_.script);
     }
     out_ += "</body>\n</html>\n";
     return std::move(out_);
   }
 
  private:
-  template <typename... Args>
-  void emit(fmt::format_string<Args...> format, Args&&... args) {
-    fmt::format_to(std::back_inserter(out_), format, std::forward<Args>(args)...);
-  }
-
   void write_header() {
     const Json& s = page_.summary;
-    emit("<h1>{}</h1>\n<dl class=\"facts\">\n", xml_escaped(page_.title));
+    append_format(out_, "<h1>{}</h1>\n<dl class=\"facts\">\n", xml_escaped(page_.title));
     const auto fact = [&](std::string_view name, const std::string& value) {
-      emit("<dt>{}</dt><dd>{}</dd>\n", name, value);
+      append_format(out_, "<dt>{}</dt><dd>{}</dd>\n", name, value);
     };
     const auto text = [](const Json& value) {
       return value.is_string() ? xml_escaped(value.get<std::string>()) : value.is_null() ? std::string("&ndash;")
@@ -109,21 +104,21 @@ class Page {
   void write_table_one() {
     const PaperTableOne& paper = paper_table_one();
     out_ += "<section id=\"table-one\">\n<h2>Table I: actions by regime</h2>\n";
-    emit(
+    append_format(out_, 
         "<p>Pooled over the runs of each condition; the paper's values in brackets (section IV, Table I). "
         "Beginning = the first {} iterations. The control condition, absent from the paper, learns on the transfer "
         "walls without transferred knowledge.</p>\n",
         number(at(page_.summary, {"beginning_iterations"}), "{:.0f}"));
     static const char* const metrics[3] = {"vertical rise of e0 (cm)", "success rate (%)", "actions per run"};
     for (int w = 0; w < 2; ++w) {
-      emit("<table class=\"numbers\">\n<caption>{}</caption>\n<thead><tr><th></th><th></th>", kWindowNames[w]);
-      for (const char* condition : kConditionNames) emit("<th>{}</th>", condition);
+      append_format(out_, "<table class=\"numbers\">\n<caption>{}</caption>\n<thead><tr><th></th><th></th>", kWindowNames[w]);
+      for (const char* condition : kConditionNames) append_format(out_, "<th>{}</th>", condition);
       out_ += "</tr></thead>\n<tbody>\n";
       for (int metric = 0; metric < 3; ++metric) {
         for (int r = 0; r < kRegimeCount; ++r) {
           out_ += "<tr>";
-          if (r == 0) emit("<th rowspan=\"3\">{}</th>", metrics[metric]);
-          emit("<th>{}</th>", regime_name(static_cast<Regime>(r)));
+          if (r == 0) append_format(out_, "<th rowspan=\"3\">{}</th>", metrics[metric]);
+          append_format(out_, "<th>{}</th>", regime_name(static_cast<Regime>(r)));
           for (int c = 0; c < 3; ++c) {
             const Json& stats = at(page_.summary, {"table1", kConditionNames[c], kWindowNames[w],
                                                    regime_name(static_cast<Regime>(r))});
@@ -138,7 +133,7 @@ class Page {
               const double reference = metric == 0 ? paper.vertical_cm[c][w][r] : 100 * paper.success_rate[c][w][r];
               value += fmt::format(" <span class=\"paper\">({:.1f})</span>", reference);
             }
-            emit("<td>{}</td>", value);
+            append_format(out_, "<td>{}</td>", value);
           }
           out_ += "</tr>\n";
         }
@@ -152,7 +147,7 @@ class Page {
     const Json& comparisons = at(page_.summary, {"transfer_vs_control"});
     if (!comparisons.is_object()) return;
     out_ += "<section id=\"statistics\">\n<h2>Transfer minus control</h2>\n";
-    emit(
+    append_format(out_, 
         "<p>Each transfer run is paired with a control run on the same wall and seed. Differences are averaged per "
         "wall, then over the {} walls: 95&nbsp;% intervals by Student's t over walls and by a cluster bootstrap over "
         "walls; p from a two-sided t-test over walls, not corrected for the number of metrics.</p>\n",
@@ -163,7 +158,7 @@ class Page {
         "</tr></thead>\n<tbody>\n";
     for (const auto& [metric, values] : comparisons.items()) {
       const Json& difference = at(values, {"transfer_minus_control"});
-      emit(
+      append_format(out_, 
           "<tr><th title=\"{}\">{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
           "<td>{}</td></tr>\n",
           xml_escaped(at(values, {"description"}).is_string() ? at(values, {"description"}).get<std::string>() : ""),
@@ -182,9 +177,9 @@ class Page {
       const Json& facts = at(page_.summary, {"run_facts", condition});
       if (!facts.is_array() || facts.empty()) continue;
       const Json& run = facts[0];
-      emit("<tr><th>condition</th><td>{}</td></tr>\n", condition);
+      append_format(out_, "<tr><th>condition</th><td>{}</td></tr>\n", condition);
       for (const char* key : {"episodes", "greedy_length", "take_off_iteration", "ik_solves", "explored_pairs"}) {
-        emit("<tr><th>{}</th><td>{}</td></tr>\n", key, number(at(run, {key}), "{:.0f}"));
+        append_format(out_, "<tr><th>{}</th><td>{}</td></tr>\n", key, number(at(run, {key}), "{:.0f}"));
       }
     }
     out_ += "</tbody>\n</table>\n</section>\n";
@@ -196,14 +191,14 @@ class Page {
     for (const ReportFigure& figure : page_.figures) {
       std::string_view svg = figure.svg;
       if (svg.starts_with("<?xml")) svg.remove_prefix(svg.find("?>") + 2);
-      emit("<figure>\n<h3>{}</h3>\n{}\n<figcaption>{}</figcaption>\n</figure>\n", xml_escaped(figure.title), svg,
+      append_format(out_, "<figure>\n<h3>{}</h3>\n{}\n<figcaption>{}</figcaption>\n</figure>\n", xml_escaped(figure.title), svg,
            xml_escaped(figure.caption));
     }
     out_ += "</section>\n";
   }
 
   void write_replay() {
-    emit(
+    append_format(out_, 
         "<section id=\"replay\">\n<h2>Replay: {}</h2>\n<p>The climb move by move. Between two recorded "
         "postures the body follows the path of the paper's gradient-descent IK (Algorithm 1). Drag to orbit, "
         "scroll to zoom; space plays and pauses, the arrow keys step.</p>\n<div id=\"crux-replay\"></div>\n"

@@ -125,16 +125,16 @@ class BodyFigure {
   }
 
   std::string render() {
-    emit(
+    append_format(out_, 
         "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
         "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{0:.0f}\" height=\"{1:.0f}\" "
         "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
         width_, height_);
-    emit("<title>{}</title>\n", xml_escaped(options_.title));
-    emit("<rect width=\"{:.0f}\" height=\"{:.0f}\" fill=\"white\"/>\n", width_, height_);
-    emit("<text x=\"{}\" y=\"{}\" font-size=\"15\" font-weight=\"bold\" fill=\"#111111\">{}</text>\n", kMargin,
+    append_format(out_, "<title>{}</title>\n", xml_escaped(options_.title));
+    append_format(out_, "<rect width=\"{:.0f}\" height=\"{:.0f}\" fill=\"white\"/>\n", width_, height_);
+    append_format(out_, "<text x=\"{}\" y=\"{}\" font-size=\"15\" font-weight=\"bold\" fill=\"#111111\">{}</text>\n", kMargin,
          kMargin + 14, xml_escaped(options_.title));
-    emit("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#555555\">{}</text>\n", kMargin, kMargin + 32,
+    append_format(out_, "<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#555555\">{}</text>\n", kMargin, kMargin + 32,
          xml_escaped(options_.subtitle));
     for (const View& view : views_) write_panel(view);
     write_legend();
@@ -143,11 +143,6 @@ class BodyFigure {
   }
 
  private:
-  template <typename... Args>
-  void emit(fmt::format_string<Args...> format, Args&&... args) {
-    fmt::format_to(std::back_inserter(out_), format, std::forward<Args>(args)...);
-  }
-
   Eigen::Vector3d grasp_point(int limb) const { return data_.points[operational_point(static_cast<Limb>(limb))]; }
 
   void lay_out() {
@@ -216,7 +211,7 @@ class BodyFigure {
 
   void write_panel(const View& view) {
     const double bottom = view.top + panel_height_;
-    emit("<g class=\"panel\">\n<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"12\" fill=\"#333333\">{}</text>\n",
+    append_format(out_, "<g class=\"panel\">\n<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"12\" fill=\"#333333\">{}</text>\n",
          view.left, view.top - 6, view.title);
     // Metre lines and their labels, at multiples of the tick spacing.
     const auto ticks = [&](double low, double high) {
@@ -231,39 +226,39 @@ class BodyFigure {
     out_ += "<g stroke=\"#ececec\" stroke-width=\"1\">\n";
     for (const double z : z_ticks) {
       const double y = view.top + (z_top_ - z) * view.scale;
-      emit("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\"/>\n", view.left, y, view.left + view.width(), y);
+      append_format(out_, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\"/>\n", view.left, y, view.left + view.width(), y);
     }
     for (const double u : u_ticks) {
-      emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", view.x_of(u), view.top, bottom);
+      append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", view.x_of(u), view.top, bottom);
     }
     out_ += "</g>\n<g font-size=\"10\" fill=\"#555555\">\n";
     for (const double z : z_ticks) {
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">{:.1f}</text>\n", view.left - 4,
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">{:.1f}</text>\n", view.left - 4,
            view.top + (z_top_ - z) * view.scale + 3.5, z + 0.0);
     }
     for (const double u : u_ticks) {
       // The label is the world coordinate, whose sign the front view flips.
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{:.1f}</text>\n", view.x_of(u), bottom + 14,
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{:.1f}</text>\n", view.x_of(u), bottom + 14,
            view.horizontal_sign * u + 0.0);
     }
     out_ += "</g>\n";
-    emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"11\" fill=\"#333333\" text-anchor=\"middle\">{}</text>\n",
+    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"11\" fill=\"#333333\" text-anchor=\"middle\">{}</text>\n",
          view.left + view.width() / 2, bottom + 32, view.axis_title);
-    emit(
+    append_format(out_, 
         "<text x=\"{0:.2f}\" y=\"{1:.2f}\" font-size=\"11\" fill=\"#333333\" text-anchor=\"middle\" "
         "transform=\"rotate(-90 {0:.2f} {1:.2f})\">z (m), up</text>\n",
         view.left - 32, view.top + panel_height_ / 2);
-    emit(
+    append_format(out_, 
         "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\"/>\n",
         view.left, view.top, view.width(), panel_height_);
     if (view.horizontal_axis == 0) {  // the wall plane, seen edge on
       const double x = view.x_of(0.0);
-      emit("<line class=\"wall\" x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\" stroke=\"{3}\" "
+      append_format(out_, "<line class=\"wall\" x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\" stroke=\"{3}\" "
            "stroke-width=\"3\"/>\n",
            x, view.top, bottom, kWallColour);
     }
     const double finish = view.top + (z_top_ - wall_.finish_height) * view.scale;
-    emit(
+    append_format(out_, 
         "<line class=\"finish\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" "
         "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
         view.left, finish, view.left + view.width(), finish);
@@ -274,10 +269,10 @@ class BodyFigure {
   }
 
   void write_holds(const View& view) {
-    emit("<g class=\"holds\" fill=\"{}\">\n", kHoldColour);
+    append_format(out_, "<g class=\"holds\" fill=\"{}\">\n", kHoldColour);
     for (const Hold& hold : wall_.holds) {
       const Point c = view.project(hold.position);
-      emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", c[0], c[1],
+      append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", c[0], c[1],
            std::max(1.5, hold.radius * view.scale));
     }
     out_ += "</g>\n";
@@ -295,15 +290,15 @@ class BodyFigure {
       const std::string fill = colour(v->visual->rgba, 1.0), stroke = colour(v->visual->rgba, 0.55);
       if (v->outline.empty()) {
         const Point c = view.project(v->centre);
-        emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\" stroke=\"{}\"/>\n", c[0], c[1],
+        append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\" stroke=\"{}\"/>\n", c[0], c[1],
              v->visual->size.x() * view.scale, fill, stroke);
         continue;
       }
       std::vector<Point> points;
       for (const Eigen::Vector3d& p : v->outline) points.push_back(view.project(p));
-      emit("<polygon fill=\"{}\" stroke=\"{}\" points=\"", fill, stroke);
+      append_format(out_, "<polygon fill=\"{}\" stroke=\"{}\" points=\"", fill, stroke);
       const std::vector<Point> hull = convex_hull(std::move(points));
-      for (std::size_t i = 0; i < hull.size(); ++i) emit("{}{:.2f},{:.2f}", i == 0 ? "" : " ", hull[i][0], hull[i][1]);
+      for (std::size_t i = 0; i < hull.size(); ++i) append_format(out_, "{}{:.2f},{:.2f}", i == 0 ? "" : " ", hull[i][0], hull[i][1]);
       out_ += "\"/>\n";
     }
     out_ += "</g>\n";
@@ -313,7 +308,7 @@ class BodyFigure {
     out_ += "<g class=\"grasp-spheres\" fill-opacity=\"0.35\" stroke-width=\"1.5\">\n";
     for (int limb = 0; limb < kLimbCount; ++limb) {
       const Point c = view.project(grasp_point(limb));
-      emit("<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"{2:.2f}\" fill=\"{3}\" stroke=\"{3}\"/>\n", c[0], c[1],
+      append_format(out_, "<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"{2:.2f}\" fill=\"{3}\" stroke=\"{3}\"/>\n", c[0], c[1],
            options_.grasp_radius * view.scale, kLimbStyles[limb].colour);
     }
     out_ += "</g>\n";
@@ -354,17 +349,17 @@ class BodyFigure {
       const double y =
           kMargin + kHeaderHeight + panel_height_ + kBelowPanel + kLegendHeight * (legend_positions_[i][1] + 0.5);
       if (i == 0) {
-        emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\"/>\n", x + 12, y, kHoldColour);
+        append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\"/>\n", x + 12, y, kHoldColour);
       } else if (i <= kLimbCount) {
-        emit("<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"6\" fill=\"{2}\" fill-opacity=\"0.35\" stroke=\"{2}\" "
+        append_format(out_, "<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"6\" fill=\"{2}\" fill-opacity=\"0.35\" stroke=\"{2}\" "
              "stroke-width=\"1.5\"/>\n",
              x + 12, y, kLimbStyles[i - 1].colour);
       } else {
-        emit("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" stroke-width=\"1.2\" "
+        append_format(out_, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" stroke-width=\"1.2\" "
              "stroke-dasharray=\"6 4\"/>\n",
              x, y, x + 24, y);
       }
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", x + 30, y + 4, xml_escaped(texts[i]));
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", x + 30, y + 4, xml_escaped(texts[i]));
     }
     out_ += "</g>\n";
   }

@@ -3,8 +3,12 @@
 // laying out text (SVG cannot measure it), and the limbs' colours.
 
 #include <array>
+#include <iterator>
 #include <string>
 #include <string_view>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "body/limb.hpp"
 
@@ -13,6 +17,12 @@ namespace crux {
 // `text` with XML's special characters escaped, and the control characters XML 1.0
 // forbids replaced by U+FFFD.
 std::string xml_escaped(std::string_view text);
+
+// Appends the formatted text to `out`: how the SVG and HTML writers build their documents.
+template <typename... Args>
+void append_format(std::string& out, fmt::format_string<Args...> format, Args&&... args) {
+  fmt::format_to(std::back_inserter(out), format, std::forward<Args>(args)...);
+}
 
 // Width of `text` in a sans-serif font of `font_size` pixels, from a generous average.
 double estimated_text_width(std::string_view text, double font_size);

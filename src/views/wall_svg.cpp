@@ -126,11 +126,6 @@ class WallFigure {
   }
 
  private:
-  template <typename... Args>
-  void emit(fmt::format_string<Args...> format, Args&&... args) {
-    fmt::format_to(std::back_inserter(out_), format, std::forward<Args>(args)...);
-  }
-
   double hold_radius_pixels(const Hold& hold) const {
     return std::max(kMinimumHoldRadius, hold.radius * options_.pixels_per_metre);
   }
@@ -223,20 +218,20 @@ class WallFigure {
 
   void write_document_start() {
     out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-    emit(
+    append_format(out_, 
         "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" "
         "width=\"{0:.0f}\" height=\"{1:.0f}\" "
         "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
         page_width_, page_height_);
-    emit("<title>{}</title>\n", xml_escaped(wall_.name));
-    emit("<rect width=\"{:.0f}\" height=\"{:.0f}\" fill=\"white\"/>\n", page_width_, page_height_);
+    append_format(out_, "<title>{}</title>\n", xml_escaped(wall_.name));
+    append_format(out_, "<rect width=\"{:.0f}\" height=\"{:.0f}\" fill=\"white\"/>\n", page_width_, page_height_);
   }
 
   void write_header() {
-    emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-weight=\"bold\" fill=\"#111111\">{}</text>\n",
+    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-weight=\"bold\" fill=\"#111111\">{}</text>\n",
          kPageMargin, kPageMargin + 14, kTitleFontSize, xml_escaped(wall_.name));
     for (std::size_t i = 0; i < subtitles_.size(); ++i) {
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"#555555\">{}</text>\n", kPageMargin,
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"#555555\">{}</text>\n", kPageMargin,
            kPageMargin + 32 + 15 * static_cast<double>(i), kSubtitleFontSize, xml_escaped(subtitles_[i]));
     }
   }
@@ -249,28 +244,28 @@ class WallFigure {
     const auto last_y = static_cast<long>(std::floor(extent_.y_max / tick_spacing_));
     for (long k = first_y; k <= last_y; ++k) {
       const double x = view_.screen_x(static_cast<double>(k) * tick_spacing_);
-      emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", x, top, bottom);
+      append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", x, top, bottom);
     }
     const auto first_z = static_cast<long>(std::ceil(extent_.z_min / tick_spacing_));
     const auto last_z = static_cast<long>(std::floor(extent_.z_max / tick_spacing_));
     for (long k = first_z; k <= last_z; ++k) {
       const double y = view_.screen_y(static_cast<double>(k) * tick_spacing_);
-      emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", left, y, right);
+      append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", left, y, right);
     }
     out_ += "</g>\n";
-    emit(
+    append_format(out_, 
         "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\" "
         "stroke-width=\"1\"/>\n",
         left, top, plot_width_, plot_height_);
 
-    emit("<g class=\"tick-labels\" font-size=\"{}\" fill=\"#555555\">\n", kLabelFontSize - 1);
+    append_format(out_, "<g class=\"tick-labels\" font-size=\"{}\" fill=\"#555555\">\n", kLabelFontSize - 1);
     for (long k = first_y; k <= last_y; ++k) {
       const double y = static_cast<double>(k) * tick_spacing_;
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{:.1f}</text>\n", view_.screen_x(y), bottom + 14, y);
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{:.1f}</text>\n", view_.screen_x(y), bottom + 14, y);
     }
     for (long k = first_z; k <= last_z; ++k) {
       const double z = static_cast<double>(k) * tick_spacing_;
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">{:.1f}</text>\n", left - 5, view_.screen_y(z) + 3.5, z);
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">{:.1f}</text>\n", left - 5, view_.screen_y(z) + 3.5, z);
     }
     out_ += "</g>\n";
   }
@@ -282,30 +277,30 @@ class WallFigure {
     const double y1 = y0 + grid.columns * grid.tile_width, z1 = z0 + grid.rows * grid.tile_height;
     if (anchor_tile_ != kOutsideGrid) {
       const int column = anchor_tile_ % grid.columns, row = anchor_tile_ / grid.columns;
-      emit("<rect class=\"anchor-tile\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"/>\n",
+      append_format(out_, "<rect class=\"anchor-tile\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"/>\n",
            view_.screen_x(y0 + (column + 1) * grid.tile_width), view_.screen_y(z0 + (row + 1) * grid.tile_height),
            grid.tile_width * view_.scale, grid.tile_height * view_.scale, kAnchorTileFill);
     }
-    emit("<g class=\"moving-grid\" stroke=\"{}\" stroke-width=\"0.8\">\n", kGridColour);
+    append_format(out_, "<g class=\"moving-grid\" stroke=\"{}\" stroke-width=\"0.8\">\n", kGridColour);
     for (int column = 1; column < grid.columns; ++column) {
       const double x = view_.screen_x(y0 + column * grid.tile_width);
-      emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", x, view_.screen_y(z1),
+      append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", x, view_.screen_y(z1),
            view_.screen_y(z0));
     }
     for (int row = 1; row < grid.rows; ++row) {
       const double y = view_.screen_y(z0 + row * grid.tile_height);
-      emit("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", view_.screen_x(y1), y,
+      append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", view_.screen_x(y1), y,
            view_.screen_x(y0));
     }
-    emit("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke-width=\"1.5\"/>\n",
+    append_format(out_, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke-width=\"1.5\"/>\n",
          view_.screen_x(y1), view_.screen_y(z1), (y1 - y0) * view_.scale, (z1 - z0) * view_.scale);
     out_ += "</g>\n";
 
-    emit("<g class=\"tile-numbers\" font-size=\"{}\" fill=\"{}\">\n", kTileNumberFontSize, kGridColour);
+    append_format(out_, "<g class=\"tile-numbers\" font-size=\"{}\" fill=\"{}\">\n", kTileNumberFontSize, kGridColour);
     for (int tile = 0; tile < grid.columns * grid.rows; ++tile) {
       const int column = tile % grid.columns, row = tile / grid.columns;
       // The tile's top corner on the screen's left is its corner of larger y and z.
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", view_.screen_x(y0 + (column + 1) * grid.tile_width) + 3,
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", view_.screen_x(y0 + (column + 1) * grid.tile_width) + 3,
            view_.screen_y(z0 + (row + 1) * grid.tile_height) + kTileNumberFontSize + 1, tile);
     }
     out_ += "</g>\n";
@@ -313,12 +308,12 @@ class WallFigure {
 
   void write_finish_line() {
     const double y = view_.screen_y(wall_.finish_height), right = view_.left + plot_width_;
-    emit(
+    append_format(out_, 
         "<line class=\"finish\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" "
         "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
         view_.left, y, right, y);
     // Outside the plot, where no hold label can cover it.
-    emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-style=\"italic\" fill=\"#444444\">finish</text>\n",
+    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-style=\"italic\" fill=\"#444444\">finish</text>\n",
          right + 4, y + 3.5, kLabelFontSize - 1);
   }
 
@@ -326,7 +321,7 @@ class WallFigure {
     out_ += "<g class=\"holds\">\n";
     for (int i = 0; i < wall_.hold_count(); ++i) {
       const Hold& hold = wall_.holds[i];
-      emit("<circle id=\"hold-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\"/>\n", hold.id, hold_x(hold),
+      append_format(out_, "<circle id=\"hold-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\"/>\n", hold.id, hold_x(hold),
            hold_y(hold), hold_radius_pixels(hold), outside_grid(i) ? kGreyedColour : kHoldColour);
     }
     out_ += "</g>\n";
@@ -335,12 +330,12 @@ class WallFigure {
   // Grid -> wall: a ring around the hold each tile projects onto.
   void write_tile_projection() {
     const GridPlacement& grid = *options_.grid;
-    emit("<g class=\"tile-holds\" fill=\"none\" stroke=\"{}\" stroke-width=\"1\">\n", kTileColour);
+    append_format(out_, "<g class=\"tile-holds\" fill=\"none\" stroke=\"{}\" stroke-width=\"1\">\n", kTileColour);
     for (int tile = 0; tile < grid.columns * grid.rows; ++tile) {
       const int index = hold_in_tile(wall_, grid, tile);
       if (index < 0) continue;
       const Hold& hold = wall_.holds[index];
-      emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", hold_x(hold), hold_y(hold),
+      append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", hold_x(hold), hold_y(hold),
            hold_radius_pixels(hold) + chosen_ring_gap(index));
     }
     out_ += "</g>\n";
@@ -350,12 +345,12 @@ class WallFigure {
   // the group is defined once and drawn twice, stroked white and then plain.
   template <typename... Args>
   void begin_haloed_labels(std::string_view group_class, fmt::format_string<Args...> attributes, Args&&... args) {
-    emit("<defs>\n<g class=\"{0}\" id=\"{0}\" ", group_class);
-    emit(attributes, std::forward<Args>(args)...);
+    append_format(out_, "<defs>\n<g class=\"{0}\" id=\"{0}\" ", group_class);
+    append_format(out_, attributes, std::forward<Args>(args)...);
     out_ += ">\n";
   }
   void end_haloed_labels(std::string_view group_class) {
-    emit(
+    append_format(out_, 
         "</g>\n</defs>\n<use xlink:href=\"#{0}\" stroke=\"white\" stroke-width=\"3\" stroke-linejoin=\"round\"/>\n"
         "<use xlink:href=\"#{0}\"/>\n",
         group_class);
@@ -368,7 +363,7 @@ class WallFigure {
       const Hold& hold = wall_.holds[index];
       for (std::size_t k = 0; k < limbs.size(); ++k) {
         const LimbStyle& style = kLimbStyles[limbs[k]];
-        emit("<circle id=\"start-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" stroke=\"{}\"/>\n", style.code,
+        append_format(out_, "<circle id=\"start-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" stroke=\"{}\"/>\n", style.code,
              hold_x(hold), hold_y(hold), hold_radius_pixels(hold) + start_ring_gap(k), style.colour);
       }
     }
@@ -380,11 +375,11 @@ class WallFigure {
     begin_haloed_labels("start-marks", "font-size=\"{}\" font-weight=\"bold\" text-anchor=\"end\"", kHoldFontSize + 1);
     for (const auto& [index, limbs] : start_limbs_) {
       const Hold& hold = wall_.holds[index];
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">",
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">",
            hold_x(hold) - hold_radius_pixels(hold) - chosen_ring_gap(index) - kLabelGap, hold_y(hold) + 3.5);
       for (std::size_t k = 0; k < limbs.size(); ++k) {
         const LimbStyle& style = kLimbStyles[limbs[k]];
-        emit("{}<tspan fill=\"{}\">{}</tspan>", k == 0 ? "" : "/", style.colour, style.code);
+        append_format(out_, "{}<tspan fill=\"{}\">{}</tspan>", k == 0 ? "" : "/", style.colour, style.code);
       }
       out_ += "</text>\n";
     }
@@ -397,7 +392,7 @@ class WallFigure {
     for (int i = 0; i < wall_.hold_count(); ++i) {
       const Hold& hold = wall_.holds[i];
       const double radius = hold_radius_pixels(hold);
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\"{}>{}</text>\n", hold_x(hold), hold_y(hold) - radius - label_gap(),
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\"{}>{}</text>\n", hold_x(hold), hold_y(hold) - radius - label_gap(),
            outside_grid(i) ? fmt::format(" fill=\"{}\"", kGreyedColour) : "", hold.id);
     }
     end_haloed_labels("hold-ids");
@@ -412,7 +407,7 @@ class WallFigure {
       const Hold& hold = wall_.holds[i];
       const double radius = hold_radius_pixels(hold);
       // The baseline sits a cap height below the gap.
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">t{}</text>\n", hold_x(hold), hold_y(hold) + radius + label_gap() + 7,
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">t{}</text>\n", hold_x(hold), hold_y(hold) + radius + label_gap() + 7,
            hold_tiles_[i]);
     }
     end_haloed_labels("hold-tiles");
@@ -421,7 +416,7 @@ class WallFigure {
   // The P_i point: the anchor tile's centre, placed on the free limb.
   void write_anchor() {
     const Eigen::Vector3d centre = options_.grid->tile_centre(anchor_tile_);
-    emit(
+    append_format(out_, 
         "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" "
         "stroke-width=\"1\"/>\n",
         view_.screen_x(centre.y()), view_.screen_y(centre.z()), kAnchorColour);
@@ -431,28 +426,28 @@ class WallFigure {
   void write_axis_titles() {
     const double bottom = view_.top + plot_height_;
     const double z_title_x = 18, z_title_y = view_.top + plot_height_ / 2;
-    emit("<g class=\"axis-titles\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
-    emit(
+    append_format(out_, "<g class=\"axis-titles\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
+    append_format(out_, 
         "<text x=\"{0:.2f}\" y=\"{1:.2f}\" text-anchor=\"middle\" transform=\"rotate(-90 {0:.2f} {1:.2f})\">"
         "z (m), up</text>\n",
         z_title_x, z_title_y);
     const double title_width = 36 + estimated_text_width(y_axis_title_, kLabelFontSize);
     const double arrow_x = view_.left + std::max(0.0, (plot_width_ - title_width) / 2), arrow_y = bottom + 36;
-    emit("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#333333\" stroke-width=\"1.2\"/>\n",
+    append_format(out_, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#333333\" stroke-width=\"1.2\"/>\n",
          arrow_x + 4, arrow_y, arrow_x + 30, arrow_y);
-    emit("<polygon points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\"/>\n", arrow_x, arrow_y, arrow_x + 8,
+    append_format(out_, "<polygon points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\"/>\n", arrow_x, arrow_y, arrow_x + 8,
          arrow_y - 4, arrow_x + 8, arrow_y + 4);
-    emit("<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", arrow_x + 36, arrow_y + 4, xml_escaped(y_axis_title_));
+    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", arrow_x + 36, arrow_y + 4, xml_escaped(y_axis_title_));
     out_ += "</g>\n";
   }
 
   void write_legend() {
-    emit("<g class=\"legend\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
+    append_format(out_, "<g class=\"legend\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
     for (std::size_t i = 0; i < legend_.size(); ++i) {
       const LegendEntry& entry = legend_[i];
       const double y = view_.top + kLegendRowHeight * (static_cast<double>(i) + 0.5);
       write_swatch(entry, legend_left_ + kLegendSwatchWidth / 2, y);
-      emit("<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", legend_left_ + kLegendSwatchWidth + 6, y + 4,
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", legend_left_ + kLegendSwatchWidth + 6, y + 4,
            xml_escaped(entry.text));
     }
     out_ += "</g>\n";
@@ -461,10 +456,10 @@ class WallFigure {
   void write_swatch(const LegendEntry& entry, double x, double y) {
     constexpr double radius = 4.5;
     const auto disc = [&](const char* colour) {
-      emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"{}\"/>\n", x, y, radius, colour);
+      append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"{}\"/>\n", x, y, radius, colour);
     };
     const auto ring = [&](double ring_radius, const char* colour, double width) {
-      emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"/>\n", x, y,
+      append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"/>\n", x, y,
            ring_radius, colour, width);
     };
     switch (entry.swatch) {
@@ -474,21 +469,21 @@ class WallFigure {
         ring(radius + kStartRingGap, kLimbStyles[entry.limb].colour, 2);
         break;
       case Swatch::Finish:
-        emit(
+        append_format(out_, 
             "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" stroke-width=\"1.2\" "
             "stroke-dasharray=\"6 4\"/>\n",
             x - 12, y, x + 12, y);
         break;
       case Swatch::GridTile:
-        emit(
+        append_format(out_, 
             "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"none\" stroke=\"{}\" "
             "stroke-width=\"0.8\"/>\n",
             x - 11, y - 7, kGridColour);
-        emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\">12</text>\n", x - 9, y + 1,
+        append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\">12</text>\n", x - 9, y + 1,
              kTileNumberFontSize, kGridColour);
         break;
       case Swatch::HoldTile:
-        emit("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">t12</text>\n", x,
+        append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">t12</text>\n", x,
              y + 3, kHoldFontSize, kTileColour);
         break;
       case Swatch::ChosenHold:
@@ -497,9 +492,9 @@ class WallFigure {
         break;
       case Swatch::OutsideHold: disc(kGreyedColour); break;
       case Swatch::Anchor:
-        emit("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"{}\"/>\n", x - 11, y - 7,
+        append_format(out_, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"{}\"/>\n", x - 11, y - 7,
              kAnchorTileFill);
-        emit("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" stroke-width=\"1\"/>\n", x, y,
+        append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" stroke-width=\"1\"/>\n", x, y,
              kAnchorColour);
         break;
     }
