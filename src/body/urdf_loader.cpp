@@ -152,7 +152,9 @@ class ModelBuilder {
     joint.mass = mass;
   }
 
-  void add_visuals(const urdf::Link& link, int carrier, const RigidTransform& in_carrier) {
+  // Not inlined: visit() recurses once per link, and this frame's locals would make each
+  // level's stack frame several times larger (a 1000-link chain overflowed under ASan).
+  [[gnu::noinline]] void add_visuals(const urdf::Link& link, int carrier, const RigidTransform& in_carrier) {
     for (const urdf::VisualSharedPtr& visual : link.visual_array) {
       if (!visual || !visual->geometry) continue;
       BodyVisual out;

@@ -282,8 +282,11 @@ class BodyFigure {
   void write_body(const View& view) {
     std::vector<const PlacedVisual*> order;
     for (const PlacedVisual& v : visuals_) order.push_back(&v);
-    std::stable_sort(order.begin(), order.end(), [&](const PlacedVisual* a, const PlacedVisual* b) {
-      return view.depth(a->centre) < view.depth(b->centre);
+    // Ties keep the model's order (std::sort with the index, not std::stable_sort, whose
+    // temporary buffer libstdc++ 12 frees in a way ASan reports as a mismatch).
+    std::sort(order.begin(), order.end(), [&](const PlacedVisual* a, const PlacedVisual* b) {
+      const double depth_a = view.depth(a->centre), depth_b = view.depth(b->centre);
+      return depth_a != depth_b ? depth_a < depth_b : a < b;
     });
     out_ += "<g class=\"body\" stroke-width=\"0.8\" stroke-linejoin=\"round\">\n";
     for (const PlacedVisual* v : order) {
