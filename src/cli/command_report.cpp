@@ -135,7 +135,7 @@ void add_report_commands(CLI::App& app) {
   r->add_option("folder", report->folder, "The output folder")->required();
   r->add_option("-o,--output", report->output, "The HTML file to write")->required();
   r->add_option("--replay-run", report->replay_run,
-                "For a crux paper folder: the run whose last climb is replayed, runs/<condition>_<i>")
+                "For a crux paper folder: the run whose climb is replayed, runs/<condition>_<i>")
       ->capture_default_str();
   r->add_option("--climb", report->climb_kind,
                 "The climb replayed: greedy (the learnt policy's, after learning; the last episode's when it does "
