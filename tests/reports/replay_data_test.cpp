@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
@@ -25,7 +26,8 @@ namespace fs = std::filesystem;
 // completes episodes and learns a greedy climb (both checked below).
 const fs::path& trained_folder() {
   static const fs::path folder = [] {
-    const fs::path path = testing::temporary_path("replay_train");
+    // Per process: ctest runs this file's tests in parallel processes, each training once.
+    const fs::path path = testing::temporary_path("replay_train_" + std::to_string(::getpid()));
     const testing::Outcome outcome = testing::run_crux(
         "train --wall-seed 3 --seed 5 --overwrite -o " + path.string());
     EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
@@ -81,7 +83,7 @@ TEST(RunFolder, ReadsTheGreedyClimb) {
 }
 
 TEST(RunFolder, AFolderThatIsNoRunIsNamed) {
-  const fs::path empty = testing::temporary_path("not_a_run");
+  const fs::path empty = testing::temporary_path("not_a_run_" + std::to_string(::getpid()));
   fs::create_directories(empty);
   try {
     locate_run_folder(empty);
@@ -93,7 +95,7 @@ TEST(RunFolder, AFolderThatIsNoRunIsNamed) {
 }
 
 TEST(RunFolder, AClimbThatDoesNotMatchItsIterationsIsRefused) {
-  const fs::path copy = testing::temporary_path("replay_train_cut");
+  const fs::path copy = testing::temporary_path("replay_train_cut_" + std::to_string(::getpid()));
   fs::copy(trained_folder(), copy, fs::copy_options::recursive);
   std::string climb;
   {
