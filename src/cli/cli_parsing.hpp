@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include <CLI/CLI.hpp>
 #include <Eigen/Core>
 #include <fmt/format.h>
 
@@ -31,6 +32,16 @@ inline IkSolverKind require_ik_solver(const std::string& name, const char* flag)
   const auto kind = parse_ik_solver(name);
   if (!kind) throw InputError(flag, fmt::format("unknown solver '{}' (expected paper or fast)", name));
   return *kind;
+}
+
+// --climb of view and report: which recorded climb of a run (chosen_climb).
+inline void add_climb_option(CLI::App* command, std::string& kind) {
+  command
+      ->add_option("--climb", kind,
+                   "The run's climb: greedy (the learnt policy's, after learning; the last episode's when it does "
+                   "not finish) or last (the last completed episode, with its exploration)")
+      ->check(CLI::IsMember({"greedy", "last"}))
+      ->capture_default_str();
 }
 
 }  // namespace crux::cli

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_parsing.hpp"
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
 #include "common/atomic_file.hpp"
@@ -63,12 +64,11 @@ struct ReportCommand {
     read_run_climb(run, model);
 
     ReportPage page;
-    page.summary = read_summary(run.summary_file.parent_path());
+    page.summary = std::move(run.summary);
     page.title = fmt::format("crux report: {}", fs::absolute(folder).lexically_normal().filename().string());
     const ReachabilityParameters& reach = config.settings.learning.climbing.reachability;
     page.figures = report_figures(experiment ? fs::path(folder) : fs::path(), model, run, reach);
-    // The learnt policy's climb when it finishes, else the last episode that did.
-    const RecordedClimb& climb = climb_kind == "greedy" && !run.greedy.postures.empty() ? run.greedy : run.last;
+    const RecordedClimb& climb = chosen_climb(run, climb_kind);
     page.replay_title = fmt::format("{} on '{}': {}", run.name, run.wall.name,
                                     climb.kind == "greedy" ? "the greedy policy's climb after learning"
                                                            : fmt::format("episode {}", climb.episode));
@@ -137,11 +137,7 @@ void add_report_commands(CLI::App& app) {
   r->add_option("--replay-run", report->replay_run,
                 "For a crux paper folder: the run whose climb is replayed, runs/<condition>_<i>")
       ->capture_default_str();
-  r->add_option("--climb", report->climb_kind,
-                "The climb replayed: greedy (the learnt policy's, after learning; the last episode's when it does "
-                "not finish) or last (the last completed episode, with its exploration)")
-      ->check(CLI::IsMember({"greedy", "last"}))
-      ->capture_default_str();
+  add_climb_option(r, report->climb_kind);
   r->add_flag("--json", report->json, "Print JSON instead of text");
   report->binding.bind(r);
   r->callback([report] { report->run(); });

@@ -8,6 +8,7 @@
 
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
+#include "cli/cli_parsing.hpp"
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
 #include "common/atomic_file.hpp"
@@ -50,9 +51,7 @@ struct ViewCommand {
       if (config.urdf.empty()) config.urdf = folder.urdf;
       const BodyModel model = load_configured_body(config);
       read_run_climb(folder, model);
-      // The learnt policy's climb when it finishes, else the last episode that did.
-      const RecordedClimb& climb =
-          climb_kind == "greedy" && !folder.greedy.postures.empty() ? folder.greedy : folder.last;
+      const RecordedClimb& climb = chosen_climb(folder, climb_kind);
       if (climb.postures.empty()) throw InputError(run, "the run completed no climb, so it has no posture to show");
       if (step < 0 || step >= static_cast<int>(climb.postures.size())) {
         throw InputError("--step", fmt::format("must be from 0 to {}, the postures of the climb, got {}",
@@ -118,11 +117,7 @@ void add_view_command(CLI::App& app) {
   v->add_option("--run", view->run,
                 "A run folder: that of crux train or transfer, or runs/<condition>_<i> of a crux paper folder");
   v->add_option("--step", view->step, "The posture of the climb to draw: 0 is the start")->capture_default_str();
-  v->add_option("--climb", view->climb_kind,
-                "The run's climb: greedy (the learnt policy's, after learning; the last episode's when it does not "
-                "finish) or last (the last completed episode)")
-      ->check(CLI::IsMember({"greedy", "last"}))
-      ->capture_default_str();
+  add_climb_option(v, view->climb_kind);
   v->add_option("--svg", view->svg, "The SVG file to write");
   v->add_flag("--json", view->json, "Print JSON instead of text");
   view->binding.bind(v);

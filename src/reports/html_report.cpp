@@ -4,8 +4,6 @@
 
 #include <fmt/format.h>
 
-#include "common/input_error.hpp"
-#include "common/input_file.hpp"
 #include "learning/action_selection.hpp"
 #include "reports/paper_reference.hpp"
 #include "views/svg_text.hpp"
@@ -104,7 +102,7 @@ class Page {
   void write_table_one() {
     const PaperTableOne& paper = paper_table_one();
     out_ += "<section id=\"table-one\">\n<h2>Table I: actions by regime</h2>\n";
-    append_format(out_, 
+    append_format(out_,
         "<p>Pooled over the runs of each condition; the paper's values in brackets (section IV, Table I). "
         "Beginning = the first {} iterations. The control condition, absent from the paper, learns on the transfer "
         "walls without transferred knowledge.</p>\n",
@@ -147,7 +145,7 @@ class Page {
     const Json& comparisons = at(page_.summary, {"transfer_vs_control"});
     if (!comparisons.is_object()) return;
     out_ += "<section id=\"statistics\">\n<h2>Transfer minus control</h2>\n";
-    append_format(out_, 
+    append_format(out_,
         "<p>Each transfer run is paired with a control run on the same wall and seed. Differences are averaged per "
         "wall, then over the {} walls: 95&nbsp;% intervals by Student's t over walls and by a cluster bootstrap over "
         "walls; p from a two-sided t-test over walls, not corrected for the number of metrics.</p>\n",
@@ -158,7 +156,7 @@ class Page {
         "</tr></thead>\n<tbody>\n";
     for (const auto& [metric, values] : comparisons.items()) {
       const Json& difference = at(values, {"transfer_minus_control"});
-      append_format(out_, 
+      append_format(out_,
           "<tr><th title=\"{}\">{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
           "<td>{}</td></tr>\n",
           xml_escaped(at(values, {"description"}).is_string() ? at(values, {"description"}).get<std::string>() : ""),
@@ -198,7 +196,7 @@ class Page {
   }
 
   void write_replay() {
-    append_format(out_, 
+    append_format(out_,
         "<section id=\"replay\">\n<h2>Replay: {}</h2>\n<p>The climb move by move. Between two recorded "
         "postures the body follows the path of the paper's gradient-descent IK (Algorithm 1). Drag to orbit, "
         "scroll to zoom; space plays and pauses, the arrow keys step.</p>\n<div id=\"crux-replay\"></div>\n"
@@ -211,19 +209,6 @@ class Page {
 };
 
 }  // namespace
-
-nlohmann::json read_summary(const std::filesystem::path& folder) {
-  const std::filesystem::path file = folder / "summary.json";
-  const std::string text = read_input_file(file.string(), "summary file");
-  Json summary = Json::parse(text, nullptr, false);
-  if (summary.is_discarded() || !summary.is_object() || at(summary, {"format"}) != "crux-summary") {
-    throw InputError(file.string(), "not a crux summary (format \"crux-summary\")");
-  }
-  if (at(summary, {"version"}) != 3) {
-    throw InputError(file.string(), "summary version 3 is the one this crux reads; write the folder again");
-  }
-  return summary;
-}
 
 std::string html_report(const ReportPage& page) { return Page(page).render(); }
 

@@ -28,9 +28,6 @@ struct ReportPage {
   std::string_view script;        // the replay's script (three.js bundled in)
 };
 
-// The summary.json of `folder`, checked to be crux's; InputError naming the file.
-nlohmann::json read_summary(const std::filesystem::path& folder);
-
 std::string html_report(const ReportPage& page);
 
 }  // namespace crux

@@ -7,6 +7,7 @@
 #include "body/body_data.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
+#include "reports/run_folder.hpp"
 #include "views/body_svg.hpp"
 #include "views/paper_figures.hpp"
 

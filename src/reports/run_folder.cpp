@@ -57,14 +57,24 @@ Regime regime_of(std::string_view name, const fs::path& file, std::size_t line) 
   throw InputError(file.string(), fmt::format("line {}: unknown regime '{}'", line, name.substr(0, 40)));
 }
 
-nlohmann::json read_json(const fs::path& file) {
+}  // namespace
+
+nlohmann::json read_summary(const fs::path& folder) {
+  const fs::path file = folder / "summary.json";
   const std::string text = read_input_file(file.string(), "summary file");
-  nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
-  if (json.is_discarded() || !json.is_object()) throw InputError(file.string(), "not a JSON object");
-  return json;
+  nlohmann::json summary = nlohmann::json::parse(text, nullptr, false);
+  if (summary.is_discarded() || !summary.is_object() || summary.value("format", "") != "crux-summary") {
+    throw InputError(file.string(), "not a crux summary (format \"crux-summary\")");
+  }
+  if (summary.value("version", 0) != 3) {
+    throw InputError(file.string(), "summary version 3 is the one this crux reads; write the folder again");
+  }
+  return summary;
 }
 
-}  // namespace
+const RecordedClimb& chosen_climb(const RunFolder& folder, std::string_view kind) {
+  return kind == "greedy" && !folder.greedy.postures.empty() ? folder.greedy : folder.last;
+}
 
 RunFolder locate_run_folder(const fs::path& directory) {
   RunFolder folder;
@@ -86,9 +96,9 @@ RunFolder locate_run_folder(const fs::path& directory) {
                        "runs/<condition>_<i> of a crux paper folder");
     }
     folder.summary_file = experiment / "summary.json";
-    const nlohmann::json summary = read_json(folder.summary_file);
-    const auto seeds = summary.find("seeds_per_wall");
-    if (seeds == summary.end() || !seeds->is_number_unsigned() || seeds->get<std::uint64_t>() < 1 ||
+    folder.summary = read_summary(experiment);
+    const auto seeds = folder.summary.find("seeds_per_wall");
+    if (seeds == folder.summary.end() || !seeds->is_number_unsigned() || seeds->get<std::uint64_t>() < 1 ||
         seeds->get<std::uint64_t>() > 1'000'000) {
       throw InputError(folder.summary_file.string(), "seeds_per_wall must be an integer from 1 to 1000000");
     }
@@ -97,7 +107,8 @@ RunFolder locate_run_folder(const fs::path& directory) {
                        fmt::format("{}_{}.json", match[1] == "training" ? "training" : "transfer",
                                    run / seeds->get<int>());
   }
-  const nlohmann::json summary = read_json(folder.summary_file);
+  if (folder.summary.is_null()) folder.summary = read_summary(folder.directory);
+  const nlohmann::json& summary = folder.summary;
   if (const auto provenance = summary.find("provenance"); provenance != summary.end() && provenance->is_object()) {
     if (const auto urdf = provenance->find("urdf"); urdf != provenance->end() && urdf->is_string()) {
       folder.urdf = urdf->get<std::string>();

@@ -6,7 +6,10 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "body/body_model.hpp"
 #include "learning/action_selection.hpp"
@@ -39,10 +42,15 @@ struct RunFolder {
   std::filesystem::path wall_file;
   Wall wall;
   std::filesystem::path summary_file;
+  nlohmann::json summary;  // its contents: the run's, or its experiment's
   std::string urdf;  // the body model recorded in the summary's provenance ("" if none)
   RecordedClimb last;    // climb.csv and its episode's rows of iterations.csv
   RecordedClimb greedy;  // greedy_climb.csv; empty when the greedy policy does not finish
 };
+
+// The summary.json of an output folder, checked to be crux's (format and version);
+// InputError naming the file.
+nlohmann::json read_summary(const std::filesystem::path& folder);
 
 // Where the folder's wall and summary are, and the body model it recorded; InputError
 // naming the folder (or the file) when it is not a run folder.
@@ -51,5 +59,9 @@ RunFolder locate_run_folder(const std::filesystem::path& directory);
 // Reads climb.csv and greedy_climb.csv (whose columns must be `model`'s joints) and
 // iterations.csv into `folder`; InputError naming the file and the problem.
 void read_run_climb(RunFolder& folder, const BodyModel& model);
+
+// The climb to show: "greedy" is the greedy climb when it finishes, else the last
+// episode's; "last" the last episode's.
+const RecordedClimb& chosen_climb(const RunFolder& folder, std::string_view kind);
 
 }  // namespace crux

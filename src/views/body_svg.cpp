@@ -125,7 +125,7 @@ class BodyFigure {
   }
 
   std::string render() {
-    append_format(out_, 
+    append_format(out_,
         "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
         "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{0:.0f}\" height=\"{1:.0f}\" "
         "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
@@ -244,11 +244,11 @@ class BodyFigure {
     out_ += "</g>\n";
     append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"11\" fill=\"#333333\" text-anchor=\"middle\">{}</text>\n",
          view.left + view.width() / 2, bottom + 32, view.axis_title);
-    append_format(out_, 
+    append_format(out_,
         "<text x=\"{0:.2f}\" y=\"{1:.2f}\" font-size=\"11\" fill=\"#333333\" text-anchor=\"middle\" "
         "transform=\"rotate(-90 {0:.2f} {1:.2f})\">z (m), up</text>\n",
         view.left - 32, view.top + panel_height_ / 2);
-    append_format(out_, 
+    append_format(out_,
         "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\"/>\n",
         view.left, view.top, view.width(), panel_height_);
     if (view.horizontal_axis == 0) {  // the wall plane, seen edge on
@@ -258,7 +258,7 @@ class BodyFigure {
            x, view.top, bottom, kWallColour);
     }
     const double finish = view.top + (z_top_ - wall_.finish_height) * view.scale;
-    append_format(out_, 
+    append_format(out_,
         "<line class=\"finish\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" "
         "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
         view.left, finish, view.left + view.width(), finish);

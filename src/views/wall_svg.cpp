@@ -218,7 +218,7 @@ class WallFigure {
 
   void write_document_start() {
     out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-    append_format(out_, 
+    append_format(out_,
         "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" "
         "width=\"{0:.0f}\" height=\"{1:.0f}\" "
         "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
@@ -253,7 +253,7 @@ class WallFigure {
       append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", left, y, right);
     }
     out_ += "</g>\n";
-    append_format(out_, 
+    append_format(out_,
         "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\" "
         "stroke-width=\"1\"/>\n",
         left, top, plot_width_, plot_height_);
@@ -308,7 +308,7 @@ class WallFigure {
 
   void write_finish_line() {
     const double y = view_.screen_y(wall_.finish_height), right = view_.left + plot_width_;
-    append_format(out_, 
+    append_format(out_,
         "<line class=\"finish\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" "
         "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
         view_.left, y, right, y);
@@ -350,7 +350,7 @@ class WallFigure {
     out_ += ">\n";
   }
   void end_haloed_labels(std::string_view group_class) {
-    append_format(out_, 
+    append_format(out_,
         "</g>\n</defs>\n<use xlink:href=\"#{0}\" stroke=\"white\" stroke-width=\"3\" stroke-linejoin=\"round\"/>\n"
         "<use xlink:href=\"#{0}\"/>\n",
         group_class);
@@ -416,7 +416,7 @@ class WallFigure {
   // The P_i point: the anchor tile's centre, placed on the free limb.
   void write_anchor() {
     const Eigen::Vector3d centre = options_.grid->tile_centre(anchor_tile_);
-    append_format(out_, 
+    append_format(out_,
         "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" "
         "stroke-width=\"1\"/>\n",
         view_.screen_x(centre.y()), view_.screen_y(centre.z()), kAnchorColour);
@@ -427,7 +427,7 @@ class WallFigure {
     const double bottom = view_.top + plot_height_;
     const double z_title_x = 18, z_title_y = view_.top + plot_height_ / 2;
     append_format(out_, "<g class=\"axis-titles\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
-    append_format(out_, 
+    append_format(out_,
         "<text x=\"{0:.2f}\" y=\"{1:.2f}\" text-anchor=\"middle\" transform=\"rotate(-90 {0:.2f} {1:.2f})\">"
         "z (m), up</text>\n",
         z_title_x, z_title_y);
@@ -469,13 +469,13 @@ class WallFigure {
         ring(radius + kStartRingGap, kLimbStyles[entry.limb].colour, 2);
         break;
       case Swatch::Finish:
-        append_format(out_, 
+        append_format(out_,
             "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" stroke-width=\"1.2\" "
             "stroke-dasharray=\"6 4\"/>\n",
             x - 12, y, x + 12, y);
         break;
       case Swatch::GridTile:
-        append_format(out_, 
+        append_format(out_,
             "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"none\" stroke=\"{}\" "
             "stroke-width=\"0.8\"/>\n",
             x - 11, y - 7, kGridColour);
