@@ -1,6 +1,5 @@
 #include "body/urdf_loader.hpp"
 
-#include <set>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -10,6 +9,7 @@
 #include <set>
 
 #include <console_bridge/console.h>
+#include <dlfcn.h>
 #include <Eigen/Geometry>
 #include <fmt/format.h>
 #include <urdf_parser/urdf_parser.h>
@@ -304,11 +304,34 @@ class ModelBuilder {
   static constexpr int kMaxTreeDepth = 1000;
 };
 
+// urdfdom parses with TinyXML 2.6.2, which in UTF-8 mode steps over a character by the
+// length its lead byte announces, even across the string's terminating NUL
+// (TiXmlBase::GetChar): a lead byte among the last three bytes of the text sends the
+// parser past the end of the buffer. Such text, and text with a NUL (where TinyXML would
+// silently stop), is refused before urdfdom sees it.
+void check_parser_safe(const std::string& xml, const std::string& source) {
+  if (const std::size_t nul = xml.find('\0'); nul != std::string::npos) {
+    throw InputError(source, fmt::format("invalid URDF: a NUL byte at offset {}", nul));
+  }
+  const auto announced_length = [](unsigned char lead) -> std::size_t {
+    if (lead >= 0xc2 && lead <= 0xdf) return 2;
+    if (lead >= 0xe0 && lead <= 0xef) return 3;
+    if (lead >= 0xf0 && lead <= 0xf4) return 4;
+    return 1;
+  };
+  for (std::size_t i = xml.size() >= 3 ? xml.size() - 3 : 0; i < xml.size(); ++i) {
+    if (i + announced_length(static_cast<unsigned char>(xml[i])) > xml.size()) {
+      throw InputError(source, "invalid URDF: the file ends inside a UTF-8 character");
+    }
+  }
+}
+
 }  // namespace
 
 BodyModel load_body_model_from_string(const std::string& urdf_xml, const std::string& source,
                                       const GraspFrameNames& frames) {
   if (urdf_xml.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(source, "the file is empty");
+  check_parser_safe(urdf_xml, source);
   const urdf::ModelInterfaceSharedPtr parsed = parse_urdf(urdf_xml, source);
   // urdfdom links own their children through shared pointers, so joints that form a cycle
   // would keep the whole graph alive; cutting those edges lets the parsed model be freed.
@@ -330,18 +353,26 @@ std::string default_body_model_path() {
   if (const char* dir = std::getenv("CRUX_MODEL_DIR"); dir != nullptr && *dir != '\0') {
     return (fs::path(dir) / "crux_human.urdf").string();
   }
-  // An installed binary lives in <prefix>/bin beside <prefix>/share/crux; the build tree
-  // mirrors that layout under the build folder, for the binaries at its top and in its
-  // subfolders (tests/, bench/).
+  // The file that holds this code: the crux binary, or the Python module crux/_crux.so.
+  // Installed, they live in <prefix>/bin and <prefix>/lib/python3.X/dist-packages/crux,
+  // beside <prefix>/share/crux; the build tree mirrors that layout under the build
+  // folder, for the binaries at its top, in its subfolders (tests/, bench/) and in
+  // python/crux/. So the first folder up from it that has share/crux/models is the one.
+  Dl_info info{};
   std::error_code error;
-  const fs::path executable = fs::read_symlink("/proc/self/exe", error);
-  const fs::path relative = fs::path("share") / "crux" / "models" / "crux_human.urdf";
-  if (!error) {
-    for (const fs::path& base : {executable.parent_path(), executable.parent_path().parent_path()}) {
-      if (fs::exists(base / relative, error)) return (base / relative).string();
-    }
+  fs::path code_file;
+  if (dladdr(reinterpret_cast<const void*>(&default_body_model_path), &info) != 0 && info.dli_fname != nullptr) {
+    code_file = fs::canonical(info.dli_fname, error);
   }
-  return (executable.parent_path().parent_path() / relative).string();  // named by the error that follows
+  if (code_file.empty()) code_file = fs::read_symlink("/proc/self/exe", error);
+  const fs::path relative = fs::path("share") / "crux" / "models" / "crux_human.urdf";
+  constexpr int kFoldersUp = 5;
+  fs::path base = code_file.parent_path();
+  for (int up = 0; up < kFoldersUp && !base.empty(); ++up, base = base.parent_path()) {
+    if (fs::exists(base / relative, error)) return (base / relative).string();
+    if (base == base.root_path()) break;
+  }
+  return (code_file.parent_path().parent_path() / relative).string();  // named by the error that follows
 }
 
 }  // namespace crux

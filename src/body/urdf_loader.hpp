@@ -18,8 +18,9 @@ BodyModel load_body_model_from_string(const std::string& urdf_xml, const std::st
                                       const GraspFrameNames& frames = {});
 
 // The repository's 1.70 m human (models/crux_human.urdf): $CRUX_MODEL_DIR/crux_human.urdf
-// when that variable is set, else share/crux/models/ beside the running binary's folder
-// (an install: <prefix>/bin and <prefix>/share) or inside it (the build tree).
+// when that variable is set, else the first share/crux/models/ found going up from the
+// folder of the file that holds this code: the crux binary (<prefix>/bin) or the Python
+// module (<prefix>/lib/python3.X/dist-packages/crux), in an install or the build tree.
 std::string default_body_model_path();
 
 }  // namespace crux

@@ -107,6 +107,10 @@ std::string very_long_chain(const std::string& u) {
   }
   return replaced(u, "</robot>", chain + "</robot>");
 }
+// TinyXML would read past the end of the text from this last byte, a UTF-8 lead byte
+// (found by the URDF fuzzer).
+std::string ends_inside_utf8_character(const std::string&) { return "<?xml version=\"1.0\"?><robot a=\"\xd5"; }
+std::string nul_byte(const std::string& u) { return replaced(u, "</robot>", std::string("<!--") + '\0' + "--></robot>"); }
 std::string negative_mass(const std::string& u) { return replaced(u, "<mass value=\"24.14\"/>", "<mass value=\"-24.14\"/>"); }
 std::string nan_mass(const std::string& u) { return replaced(u, "<mass value=\"24.14\"/>", "<mass value=\"nan\"/>"); }
 
@@ -143,7 +147,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadModelCase{"cycle", cycle_back_to_torso, "torso"},
                       BadModelCase{"very_long_chain", very_long_chain, "deeper than 1000 links"},
                       BadModelCase{"negative_mass", negative_mass, "has mass -24.14"},
-                      BadModelCase{"nan_mass", nan_mass, "mass"}),
+                      BadModelCase{"nan_mass", nan_mass, "mass"},
+                      BadModelCase{"ends_inside_utf8_character", ends_inside_utf8_character,
+                                   "ends inside a UTF-8 character"},
+                      BadModelCase{"nul_byte", nul_byte, "a NUL byte at offset"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(BadModelFile, MissingFileAndDirectoryAreInputErrors) {
