@@ -74,6 +74,7 @@ StepOutcome ClimbingMdp::step(ActionCode hold) {
   outcome.posture = reached;
   outcome.root_rise_m = (*reached)[2] - posture_[2];  // G[2] is e0's height
   const BodyData& body = reacher_.place(*reached);
+  outcome.centre_of_mass = body.centre_of_mass;
   if (body.centre_of_mass.z() >= wall_.finish_height) {
     outcome.finished = true;
     outcome.reward = parameters_.rewards.finish;

@@ -72,7 +72,8 @@ ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& setti
 }
 
 ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSettings& settings,
-                                      const std::function<void(int)>& progress) {
+                                      const std::function<void(int)>& progress,
+                                      const std::function<void()>& interruption_point) {
   const auto started = std::chrono::steady_clock::now();
   const int walls = settings.wall_pairs, runs = settings.runs();
   std::optional<tbb::global_control> limit;
@@ -80,7 +81,11 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSe
 
   ExperimentResult result;
   result.walls.resize(2 * walls);
+  const auto interruptible = [&](int) {
+    if (interruption_point) interruption_point();
+  };
   tbb::parallel_for(0, 2 * walls, [&](int w) {
+    interruptible(w);
     ExperimentWall& wall = result.walls[w];
     wall = draw_wall(model, settings, w < walls ? kTrainingRole : kTransferRole, w % walls);
     wall.filtered_pairs = filtered_pairs(wall.wall, settings.learning.climbing.filter);
@@ -101,7 +106,8 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSe
     c.cluster_of_run[i] = pair;
     c.wall_of_run[i] = condition == Condition::Training ? pair : walls + pair;
     c.learning_seeds[i] = learning_seed(settings.seed, condition, i);
-    c.runs[i] = run_learning(model, result.walls[c.wall_of_run[i]].wall, settings.learning, c.learning_seeds[i], initial);
+    c.runs[i] = run_learning(model, result.walls[c.wall_of_run[i]].wall, settings.learning, c.learning_seeds[i],
+                             initial, interruptible);
     if (progress) {
       const std::lock_guard lock(progress_mutex);
       progress(++done);

@@ -70,8 +70,11 @@ struct ExperimentResult {
 };
 
 // Progress: the number of runs finished out of 3 x runs() (called under a lock).
+// `interruption_point` is called often from the worker threads (before each wall and at
+// every learning iteration); an exception it throws stops the experiment and leaves it.
 ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSettings& settings,
-                                      const std::function<void(int runs_done)>& progress = {});
+                                      const std::function<void(int runs_done)>& progress = {},
+                                      const std::function<void()>& interruption_point = {});
 
 // Draws the wall of (role, run) from the experiment seed, skipping candidates whose
 // start configuration is unreachable (they are recorded, never used).

@@ -1,0 +1,211 @@
+// The body: loading, joints and limits, forward kinematics (one posture or a batch).
+
+#include <mutex>
+
+#include <fmt/format.h>
+
+#include "bindings.hpp"
+#include "body/body_data.hpp"
+#include "body/kinematics.hpp"
+#include "body/urdf_loader.hpp"
+#include "common/input_error.hpp"
+
+namespace crux::python {
+
+BodyModelPtr body_or_default(const py::handle& model) {
+  if (!model.is_none()) return model.cast<BodyModelPtr>();
+  static std::mutex mutex;
+  static BodyModelPtr body;
+  const std::lock_guard lock(mutex);
+  if (!body) body = std::make_shared<BodyModel>(load_body_model(default_body_model_path()));
+  return body;
+}
+
+std::string path_from(const py::handle& path) {
+  if (!py::isinstance<py::str>(path) && !py::isinstance(path, py::module_::import("os").attr("PathLike"))) {
+    throw py::type_error("a path is a str or an os.PathLike");
+  }
+  return py::str(py::module_::import("os").attr("fspath")(path)).cast<std::string>();
+}
+
+namespace {
+
+py::array_t<double> as_double_array(const py::handle& array, const char* what) {
+  try {
+    return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+  } catch (const py::error_already_set&) {
+    throw InputError(what, "must be an array of numbers");
+  }
+}
+
+}  // namespace
+
+Posture posture_from(const py::handle& array, const char* what) {
+  const auto a = as_double_array(array, what);
+  if (!a || a.ndim() != 1 || a.shape(0) != kConfigurationDof) {
+    throw InputError(what, fmt::format("must be an array of shape ({},)", kConfigurationDof));
+  }
+  Posture g;
+  for (int i = 0; i < kConfigurationDof; ++i) g[i] = a.at(i);
+  if (!g.allFinite()) throw InputError(what, "must hold finite numbers");
+  return g;
+}
+
+Eigen::Vector3d point_from(const py::handle& array, const char* what) {
+  const auto a = as_double_array(array, what);
+  if (!a || a.ndim() != 1 || a.shape(0) != 3) throw InputError(what, "must be an array of shape (3,)");
+  const Eigen::Vector3d v(a.at(0), a.at(1), a.at(2));
+  if (!v.allFinite()) throw InputError(what, "must hold finite numbers");
+  return v;
+}
+
+Limb limb_from(const py::handle& limb) {
+  if (py::isinstance<py::str>(limb)) {
+    const std::string name = limb.cast<std::string>();
+    if (const auto parsed = parse_limb(name)) return *parsed;
+    throw InputError("limb", fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", name));
+  }
+  if (py::isinstance<py::int_>(limb) && !py::isinstance<py::bool_>(limb)) {
+    const long long index = limb.cast<long long>();
+    if (index >= 0 && index < kLimbCount) return static_cast<Limb>(index);
+  }
+  throw InputError("limb", "must be 0-3 or a limb's name (right_hand, left_hand, right_foot, left_foot)");
+}
+
+py::array_t<double> to_array(const Eigen::Vector3d& v) {
+  py::array_t<double> out(3);
+  std::copy(v.data(), v.data() + 3, out.mutable_data());
+  return out;
+}
+
+py::array_t<double> to_array(const Posture& g) {
+  py::array_t<double> out(kConfigurationDof);
+  std::copy(g.data(), g.data() + kConfigurationDof, out.mutable_data());
+  return out;
+}
+
+namespace {
+
+py::array_t<double> vector_array(const Posture& values) { return to_array(values); }
+
+// Fills one posture's rows of the outputs: points (5, 3), centre of mass (3), and the
+// Jacobians (5, 3, 35) when asked.
+void kinematics_of(const BodyModel& model, BodyData& data, const Posture& g, double* points, double* com,
+                   double* jacobians) {
+  forward_kinematics(model, data, g);
+  centre_of_mass(model, data);
+  for (int k = 0; k < kOperationalPointCount; ++k) {
+    for (int c = 0; c < 3; ++c) points[3 * k + c] = data.points[k][c];
+  }
+  for (int c = 0; c < 3; ++c) com[c] = data.centre_of_mass[c];
+  if (jacobians == nullptr) return;
+  operational_jacobians(model, data);
+  for (int k = 0; k < kOperationalPointCount; ++k) {
+    for (int r = 0; r < 3; ++r) {
+      for (int j = 0; j < kConfigurationDof; ++j) {
+        jacobians[(k * 3 + r) * kConfigurationDof + j] = data.jacobians[k](r, j);
+      }
+    }
+  }
+}
+
+py::dict forward_kinematics_py(const BodyModelPtr& model, const py::handle& postures, bool with_jacobians) {
+  const auto a = as_double_array(postures, "postures");
+  if (!a || (a.ndim() != 1 && a.ndim() != 2) || a.shape(a.ndim() - 1) != kConfigurationDof) {
+    throw InputError("postures", fmt::format("must be an array of shape ({0},) or (N, {0})", kConfigurationDof));
+  }
+  const bool batch = a.ndim() == 2;
+  const py::ssize_t n = batch ? a.shape(0) : 1;
+  std::vector<Posture> gs(n);
+  for (py::ssize_t i = 0; i < n; ++i) {
+    for (int j = 0; j < kConfigurationDof; ++j) gs[i][j] = a.data()[i * kConfigurationDof + j];
+    if (!gs[i].allFinite()) throw InputError("postures", "must hold finite numbers");
+  }
+  const auto shape = [&](std::vector<py::ssize_t> tail) {
+    if (batch) tail.insert(tail.begin(), n);
+    return tail;
+  };
+  py::array_t<double> points(shape({kOperationalPointCount, 3}));
+  py::array_t<double> com(shape({3}));
+  py::array_t<double> jacobians;
+  if (with_jacobians) jacobians = py::array_t<double>(shape({kOperationalPointCount, 3, kConfigurationDof}));
+  double* p = points.mutable_data();
+  double* c = com.mutable_data();
+  double* jac = with_jacobians ? jacobians.mutable_data() : nullptr;
+  {
+    py::gil_scoped_release release;
+    BodyData data(*model);
+    for (py::ssize_t i = 0; i < n; ++i) {
+      kinematics_of(*model, data, gs[i], p + 3 * kOperationalPointCount * i, c + 3 * i,
+                    jac == nullptr ? nullptr : jac + 3 * kOperationalPointCount * kConfigurationDof * i);
+    }
+  }
+  py::dict out;
+  out["points"] = points;
+  out["centre_of_mass"] = com;
+  if (with_jacobians) out["jacobians"] = jacobians;
+  return out;
+}
+
+}  // namespace
+
+void bind_body(py::module_& m) {
+  m.attr("CONFIGURATION_DOF") = kConfigurationDof;
+  m.attr("ROOT_DOF") = kRootDof;
+  py::tuple limbs(kLimbCount);
+  for (int limb = 0; limb < kLimbCount; ++limb) limbs[limb] = limb_name(static_cast<Limb>(limb));
+  m.attr("LIMB_NAMES") = limbs;
+
+  py::class_<BodyModel, std::shared_ptr<BodyModel>>(m, "BodyModel",
+                                                    "The immutable body: a translating root and 32 revolute joints")
+      .def_static(
+          "load",
+          [](const py::handle& path) -> BodyModelPtr {
+            if (path.is_none()) return body_or_default(path);
+            return std::make_shared<BodyModel>(load_body_model(path_from(path)));
+          },
+          py::arg("path") = py::none(), "Loads a URDF file; the default 1.70 m human when path is None")
+      .def_readonly("source", &BodyModel::source)
+      .def_readonly("name", &BodyModel::name)
+      .def_readonly("total_mass", &BodyModel::total_mass, "kg")
+      .def_readonly("stature", &BodyModel::stature, "m, top of the head above the soles")
+      .def_property_readonly("joint_names",
+                             [](const BodyModel& model) {
+                               py::list names;
+                               for (const BodyJoint& joint : model.joints) names.append(joint.name);
+                               return names;
+                             })
+      .def_property_readonly("lower_limits", [](const BodyModel& model) { return vector_array(model.lower_limits); })
+      .def_property_readonly("upper_limits", [](const BodyModel& model) { return vector_array(model.upper_limits); })
+      .def_property_readonly("grasp_frame_names",
+                             [](const BodyModel& model) {
+                               py::list names;
+                               for (const std::string& name : model.grasp_frame_names) names.append(name);
+                               return names;
+                             })
+      .def(
+          "standing_posture",
+          [](const BodyModel&, const py::handle& root) { return to_array(standing_posture(point_from(root, "root"))); },
+          py::arg("root"), "All joint angles 0, the root at `root`")
+      .def(
+          "within_limits",
+          [](const BodyModel& model, const py::handle& posture) {
+            return within_limits(model, posture_from(posture, "posture"));
+          },
+          py::arg("posture"))
+      .def("__repr__", [](const BodyModel& model) {
+        return fmt::format("<crux.BodyModel '{}' from {}, {:.1f} kg>", model.name, model.source, model.total_mass);
+      });
+
+  m.def(
+      "forward_kinematics",
+      [](const py::handle& model, const py::handle& postures, bool jacobians) {
+        return forward_kinematics_py(body_or_default(model), postures, jacobians);
+      },
+      py::arg("model"), py::arg("postures"), py::arg("jacobians") = false,
+      "Operational points e0..e4 (root, then the limbs), the centre of mass and, if asked, the Jacobians "
+      "d e_i / d G, for a posture (35,) or a batch (N, 35): a dict of arrays (5, 3), (3,), (5, 3, 35), with a "
+      "leading N for a batch");
+}
+
+}  // namespace crux::python

@@ -1,0 +1,187 @@
+// ClimbEnv: the climbing MDP (sections III-C, III-D) with Gymnasium's conventions,
+// reset() -> (obs, info) and step(action) -> (obs, reward, terminated, truncated, info),
+// without needing the gymnasium package. An action is a hold index; action_mask() says
+// which the state offers (the geometric filter's possible actions).
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "bindings.hpp"
+#include "body/urdf_loader.hpp"
+#include "body/kinematics.hpp"
+#include "climbing/climbing_mdp.hpp"
+#include "common/input_error.hpp"
+#include "python_config.hpp"
+
+namespace crux::python {
+
+namespace {
+
+const ParameterSet kEnvParameters{{"experiment.urdf", "reward", "ik", "filter", "grid"}, {}};
+
+class ClimbEnv {
+ public:
+  ClimbEnv(Wall wall, const py::handle& config, int max_steps, const py::handle& model)
+      : wall_(std::move(wall)), max_steps_(max_steps) {
+    if (max_steps <= 0) throw InputError("max_steps", "must be positive");
+    const ExperimentConfig c = config_from_python(config, kEnvParameters, "ClimbEnv");
+    if (!model.is_none()) {
+      model_ = model.cast<BodyModelPtr>();
+    } else if (!c.urdf.empty()) {
+      model_ = std::make_shared<BodyModel>(load_body_model(c.urdf));
+    } else {
+      model_ = body_or_default(model);
+    }
+    parameters_ = c.settings.learning.climbing;
+    {
+      py::gil_scoped_release release;
+      mdp_ = std::make_unique<ClimbingMdp>(*model_, wall_, parameters_);
+      BodyData data(*model_);
+      forward_kinematics(*model_, data, mdp_->start_posture());
+      start_centre_of_mass_ = centre_of_mass(*model_, data);
+    }
+    centre_of_mass_ = start_centre_of_mass_;
+  }
+
+  py::tuple reset(const py::handle&, const py::handle&) {
+    mdp_->reset();
+    steps_ = 0;
+    over_ = false;
+    centre_of_mass_ = start_centre_of_mass_;
+    py::dict info;
+    info["centre_of_mass"] = to_array(centre_of_mass_);
+    return py::make_tuple(observation(), info);
+  }
+
+  py::tuple step(const py::handle& action_handle) {
+    if (over_) throw std::logic_error("the episode is over (terminated or truncated): call reset() first");
+    const int action = checked_action(action_handle);
+    const StepOutcome outcome = mdp_->step(action);
+    ++steps_;
+    if (outcome.reached) centre_of_mass_ = outcome.centre_of_mass;
+    const bool terminated = outcome.finished;
+    const bool truncated = !terminated && steps_ >= max_steps_;
+    over_ = terminated || truncated;
+    py::dict info;
+    info["reached"] = outcome.reached;
+    info["root_rise"] = outcome.root_rise_m;
+    info["centre_of_mass"] = to_array(centre_of_mass_);
+    // After the finishing move the MDP is back at the start (Algorithm 2): the
+    // observation is the start's, and info keeps the posture that finished.
+    if (terminated) info["final_posture"] = to_array(*outcome.posture);
+    return py::make_tuple(observation(), outcome.reward, terminated, truncated, info);
+  }
+
+  // The C++ steps alone, for the cost of the binding (bench/python_step_overhead.py).
+  double replay_actions(const py::array_t<int, py::array::c_style | py::array::forcecast>& actions) {
+    std::vector<int> checked(actions.size());
+    for (py::ssize_t i = 0; i < actions.size(); ++i) checked[i] = actions.data()[i];
+    double total = 0.0;
+    py::gil_scoped_release release;
+    for (const int action : checked) {
+      if (!possible(action)) throw InputError("actions", fmt::format("hold {} is not a possible action", action));
+      total += mdp_->step(action).reward;
+    }
+    return total;
+  }
+
+  py::array_t<bool> action_mask() const {
+    py::array_t<bool> mask(wall_.hold_count());
+    bool* out = mask.mutable_data();
+    std::fill(out, out + wall_.hold_count(), false);
+    for (const ActionCandidate& candidate : mdp_->candidates()) out[candidate.wall] = true;
+    return mask;
+  }
+
+  py::dict observation() const {
+    const HoldConfiguration& c = mdp_->configuration();
+    py::array_t<double> holds({kLimbCount, 3});
+    double* h = holds.mutable_data();
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      for (int k = 0; k < 3; ++k) {
+        h[3 * limb + k] = c.holds[limb] == kFree ? std::numeric_limits<double>::quiet_NaN()
+                                                 : wall_.holds[c.holds[limb]].position[k];
+      }
+    }
+    py::dict obs;
+    obs["wall_state"] = mdp_->state().wall;
+    obs["grid_state"] = mdp_->state().grid;
+    obs["free_limb"] = static_cast<int>(c.free_limb());
+    obs["configuration"] = to_array(c);
+    obs["holds"] = holds;
+    obs["posture"] = to_array(mdp_->posture());
+    return obs;
+  }
+
+  int action_count() const { return wall_.hold_count(); }
+  int grid_action_count() const { return mdp_->grid_action_count(); }
+  const Wall& wall() const { return wall_; }
+  BodyModelPtr model() const { return model_; }
+  int max_steps() const { return max_steps_; }
+  int steps() const { return steps_; }
+
+ private:
+  int checked_action(const py::handle& handle) const {
+    const auto number = py::reinterpret_steal<py::object>(PyNumber_Index(handle.ptr()));
+    if (!number) {
+      PyErr_Clear();
+      throw InputError("action", "must be an integer hold index");
+    }
+    const long long action = number.cast<long long>();
+    if (action < 0 || action >= wall_.hold_count()) {
+      throw InputError("action", fmt::format("{} is not a hold index of the wall (0 to {})", action,
+                                             wall_.hold_count() - 1));
+    }
+    if (possible(static_cast<int>(action))) return static_cast<int>(action);
+    throw InputError("action", fmt::format("hold {} is not a possible action of this state (see action_mask())",
+                                           action));
+  }
+
+  bool possible(int action) const {
+    for (const ActionCandidate& candidate : mdp_->candidates()) {
+      if (candidate.wall == action) return true;
+    }
+    return false;
+  }
+
+  BodyModelPtr model_;
+  Wall wall_;  // before mdp_, which keeps a reference to it
+  ClimbingParameters parameters_;
+  std::unique_ptr<ClimbingMdp> mdp_;
+  int max_steps_;
+  int steps_ = 0;
+  bool over_ = false;
+  Eigen::Vector3d start_centre_of_mass_, centre_of_mass_;
+};
+
+}  // namespace
+
+void bind_climb_env(py::module_& m) {
+  py::class_<ClimbEnv>(m, "ClimbEnv",
+                       "The climbing MDP as a Gymnasium-style environment: an action is a hold index for the free "
+                       "limb; see action_mask()")
+      .def(py::init<Wall, const py::handle&, int, const py::handle&>(), py::arg("wall"),
+           py::arg("config") = py::none(), py::arg("max_steps") = 1000, py::arg("model") = py::none(),
+           "config takes the keys of config.toml's [reward], [ik], [filter] and [grid] tables and experiment.urdf; "
+           "an episode is truncated after max_steps actions")
+      .def("reset", &ClimbEnv::reset, py::arg("seed") = py::none(), py::arg("options") = py::none(),
+           "Back to the start configuration with the right hand free: (obs, info). The environment draws no random "
+           "number, so the seed changes nothing.")
+      .def("step", &ClimbEnv::step, py::arg("action"), "(obs, reward, terminated, truncated, info)")
+      .def("action_mask", &ClimbEnv::action_mask, "bool array over hold indices: the possible actions of the state")
+      .def("observation", &ClimbEnv::observation)
+      .def("replay_actions", &ClimbEnv::replay_actions, py::arg("actions"),
+           "Steps through hold indices in C++ without observations, returning the summed reward (the baseline of the "
+           "binding's cost)")
+      .def_property_readonly("action_count", &ClimbEnv::action_count, "the number of actions: the wall's holds")
+      .def_property_readonly("grid_action_count", &ClimbEnv::grid_action_count)
+      .def_property_readonly("wall", &ClimbEnv::wall)
+      .def_property_readonly("model", &ClimbEnv::model)
+      .def_property_readonly("max_steps", &ClimbEnv::max_steps)
+      .def_property_readonly("steps", &ClimbEnv::steps, "actions since the last reset");
+}
+
+}  // namespace crux::python

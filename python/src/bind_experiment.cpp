@@ -1,0 +1,169 @@
+// The paper's agent and experiment: one learning run (Algorithm 2), and the experiment
+// of section IV, returning what the CLI's summary.json holds.
+
+#include <chrono>
+#include <optional>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "bindings.hpp"
+#include "common/input_error.hpp"
+#include "experiments/experiment_analysis.hpp"
+#include "experiments/learning_run.hpp"
+#include "experiments/run_inputs.hpp"
+#include "interruption.hpp"
+#include "python_config.hpp"
+#include "reports/output_folder.hpp"
+#include "reports/summary.hpp"
+
+namespace crux::python {
+
+namespace {
+
+// The keys of crux train and crux transfer, and of crux paper.
+const ParameterSet kRunParameters{{"experiment.urdf", "experiment.seed", "experiment.iterations",
+                                   "experiment.beginning", "experiment.threshold_length", "experiment.greedy_cap",
+                                   "experiment.q_grid", "learning", "reward", "ik", "filter", "grid", "wall"},
+                                  {"wall.name", "wall.count"}};
+const ParameterSet kPaperParameters{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"},
+                                    {"experiment.q_grid", "wall.file", "wall.seed", "wall.name", "wall.count"}};
+
+py::object json_to_python(const nlohmann::ordered_json& json) {
+  return py::module_::import("json").attr("loads")(json.dump());
+}
+
+py::array_t<double> postures_array(const std::vector<Posture>& postures) {
+  py::array_t<double> out({static_cast<py::ssize_t>(postures.size()), py::ssize_t{kConfigurationDof}});
+  for (std::size_t i = 0; i < postures.size(); ++i) {
+    std::copy(postures[i].data(), postures[i].data() + kConfigurationDof, out.mutable_data() + i * kConfigurationDof);
+  }
+  return out;
+}
+
+struct LearningRun {
+  RunResult run;
+  py::object summary;
+};
+
+py::dict iterations_dict(const RunResult& run) {
+  const auto n = static_cast<py::ssize_t>(run.iterations.size());
+  py::array_t<int> episode(n), hold_id(n);
+  py::array_t<bool> success(n);
+  py::array_t<double> reward(n), root_rise(n);
+  py::list regime;
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const IterationRecord& r = run.iterations[i];
+    episode.mutable_at(i) = r.episode;
+    hold_id.mutable_at(i) = r.hold_id;
+    success.mutable_at(i) = r.success;
+    reward.mutable_at(i) = r.reward;
+    root_rise.mutable_at(i) = r.root_rise_m;
+    regime.append(regime_name(r.regime));
+  }
+  py::dict out;
+  out["episode"] = episode;
+  out["regime"] = regime;
+  out["hold_id"] = hold_id;
+  out["success"] = success;
+  out["reward"] = reward;
+  out["root_rise_m"] = root_rise;
+  return out;
+}
+
+LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& config_handle,
+                            const py::handle& seed_handle, const py::handle& q_grid_handle,
+                            const py::handle& model_handle) {
+  ExperimentConfig config = config_from_python(config_handle, kRunParameters, "run_learning");
+  if (!seed_handle.is_none()) config.settings.seed = seed_handle.cast<std::uint64_t>();
+  std::optional<QTable> initial;
+  if (!q_grid_handle.is_none()) {
+    if (py::isinstance<QTable>(q_grid_handle)) {
+      initial = q_grid_handle.cast<QTable>();
+      if (initial->action_count() != config.settings.learning.climbing.grid.tile_count()) {
+        throw InputError("q_grid", "its action count is not the configured grid's tile count");
+      }
+    } else {
+      config.q_grid = path_from(q_grid_handle);
+    }
+  }
+  if (!initial && !config.q_grid.empty()) initial = load_q_grid(config.q_grid, config.settings.learning.climbing.grid);
+  const Provenance provenance = record_provenance(config);
+  const BodyModelPtr model =
+      model_handle.is_none() ? std::make_shared<BodyModel>(load_configured_body(config)) : body_or_default(model_handle);
+  const Wall wall = wall_handle.is_none() ? load_configured_wall(config) : wall_handle.cast<Wall>();
+  const Condition condition = initial ? Condition::Transfer : Condition::Training;
+  InterruptGuard guard;
+  LearningRun out;
+  nlohmann::ordered_json summary;
+  {
+    py::gil_scoped_release release;
+    const auto start = std::chrono::steady_clock::now();
+    RunResult run = run_learning(*model, wall, config.settings.learning, config.settings.seed,
+                                 initial ? &*initial : nullptr, [](int) { InterruptGuard::poll(); });
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const ExperimentResult result = single_run_result(run, wall, wall_handle.is_none() ? config.wall_seed : std::nullopt,
+                                                      config.settings.seed, condition, seconds);
+    summary = summary_json(result, nullptr, config.settings, provenance);
+    out.run = std::move(run);
+  }
+  out.summary = json_to_python(summary);
+  return out;
+}
+
+py::object run_experiment_py(const py::handle& config_handle, const py::handle& output, bool overwrite) {
+  ExperimentConfig config = config_from_python(config_handle, kPaperParameters, "run_experiment");
+  const Provenance provenance = record_provenance(config);
+  const bool from_file = !config_handle.is_none() && !py::isinstance<py::dict>(config_handle);
+  if (from_file) check_recorded_provenance(config, provenance, path_from(config_handle));
+  const BodyModel model = load_configured_body(config);
+  std::string folder;
+  std::string config_toml;
+  if (!output.is_none()) {
+    folder = path_from(output);
+    config_toml = config_file_text(config, kPaperParameters, provenance);
+    const std::vector<std::string> inputs{config.urdf, from_file ? path_from(config_handle) : std::string()};
+    check_output_folder(folder, inputs, overwrite);
+  }
+  InterruptGuard guard;
+  nlohmann::ordered_json summary;
+  {
+    py::gil_scoped_release release;
+    const ExperimentResult result = run_paper_experiment(model, config.settings, {}, &InterruptGuard::poll);
+    const ExperimentAnalysis analysis = analyse_experiment(result, config.settings);
+    summary = summary_json(result, &analysis, config.settings, provenance);
+    if (!folder.empty()) write_experiment_folder(folder, result, config.settings, model, config_toml, summary);
+  }
+  return json_to_python(summary);
+}
+
+}  // namespace
+
+void bind_experiment(py::module_& m) {
+  py::class_<LearningRun>(m, "LearningRun", "One learning run (Algorithm 2) and its summary")
+      .def_readonly("summary", &LearningRun::summary, "what crux train (or transfer) writes to summary.json")
+      .def_property_readonly("episode_lengths",
+                             [](const LearningRun& r) {
+                               return py::array_t<int>(static_cast<py::ssize_t>(r.run.episode_lengths.size()),
+                                                       r.run.episode_lengths.data());
+                             })
+      .def_property_readonly("iterations", [](const LearningRun& r) { return iterations_dict(r.run); },
+                             "per iteration: episode, regime, hold_id, success, reward, root_rise_m")
+      .def_property_readonly("q_grid", [](const LearningRun& r) { return r.run.q_grid; })
+      .def_property_readonly("greedy_length", [](const LearningRun& r) { return r.run.greedy_length; },
+                             "actions of the learnt greedy policy's climb, -1 if it did not finish")
+      .def_property_readonly("greedy_climb", [](const LearningRun& r) { return postures_array(r.run.greedy_climb); })
+      .def_property_readonly("last_climb", [](const LearningRun& r) { return postures_array(r.run.last_climb); });
+
+  m.def("run_learning", &run_learning_py, py::arg("wall") = py::none(), py::arg("config") = py::none(),
+        py::arg("seed") = py::none(), py::arg("q_grid") = py::none(), py::arg("model") = py::none(),
+        "One learning run on a wall (a Wall, or config's wall.file or wall.seed), from empty tables or from a "
+        "transferred Q_grid (a QTable or a q_grid.bin path): crux train, or crux transfer. config takes their keys; "
+        "seed overrides experiment.seed.");
+  m.def("run_experiment", &run_experiment_py, py::arg("config") = py::none(), py::arg("output") = py::none(),
+        py::arg("overwrite") = false,
+        "The paper's experiment (crux paper): returns summary.json's contents; writes crux paper's folder to "
+        "`output` when given. config takes crux paper's keys (a dict, or a config.toml path).");
+}
+
+}  // namespace crux::python

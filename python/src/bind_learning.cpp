@@ -1,0 +1,106 @@
+// Q-tables to and from numpy, and Q-table files (the format of q_grid.bin).
+
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "agent_space/moving_grid.hpp"
+#include "bindings.hpp"
+#include "common/input_error.hpp"
+#include "learning/q_table.hpp"
+#include "learning/q_table_file.hpp"
+#include "python_config.hpp"
+
+namespace crux::python {
+
+namespace {
+
+const ParameterSet kGridParameters{{"grid"}, {}};
+
+py::tuple table_to_numpy(const QTable& table) {
+  const auto rows = static_cast<py::ssize_t>(table.state_count());
+  const py::ssize_t actions = table.action_count();
+  py::array_t<std::uint64_t> states(rows);
+  py::array_t<double> values({rows, actions});
+  py::array_t<std::uint32_t> visits({rows, actions});
+  py::ssize_t row = 0;
+  table.for_each_row([&](StateCode s, std::span<const double> v, std::span<const std::uint32_t> n) {
+    states.mutable_at(row) = s;
+    std::copy(v.begin(), v.end(), values.mutable_data() + row * actions);
+    std::copy(n.begin(), n.end(), visits.mutable_data() + row * actions);
+    ++row;
+  });
+  return py::make_tuple(states, values, visits);
+}
+
+QTable table_from_numpy(const py::handle& states_handle, const py::handle& values_handle,
+                        const py::handle& visits_handle) {
+  const auto states = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(states_handle);
+  const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values_handle);
+  if (!states || states.ndim() != 1) throw InputError("states", "must be a 1-D array of state codes");
+  if (!values || values.ndim() != 2 || values.shape(0) != states.shape(0) || values.shape(1) < 1) {
+    throw InputError("values", "must have shape (len(states), actions)");
+  }
+  std::optional<py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>> visits;
+  if (!visits_handle.is_none()) {
+    visits = py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>::ensure(visits_handle);
+    if (!*visits || visits->ndim() != 2 || visits->shape(0) != values.shape(0) || visits->shape(1) != values.shape(1)) {
+      throw InputError("visits", "must have the shape of values");
+    }
+  }
+  const auto actions = static_cast<int>(values.shape(1));
+  QTable table(actions);
+  for (py::ssize_t r = 0; r < states.shape(0); ++r) {
+    const StateCode s = states.at(r);
+    for (int a = 0; a < actions; ++a) {
+      const double v = values.at(r, a);
+      if (!std::isfinite(v)) throw InputError("values", "must hold finite numbers");
+      table.set_value(s, a, v);
+      if (visits) table.set_visits(s, a, visits->at(r, a));
+    }
+    if (table.state_count() != static_cast<std::size_t>(r + 1)) {
+      throw InputError("states", fmt::format("state {} is listed twice", s));
+    }
+  }
+  return table;
+}
+
+}  // namespace
+
+void bind_learning(py::module_& m) {
+  py::class_<QTable>(m, "QTable",
+                     "A Q-table over integer states and actions, sparse in states; unwritten values are 0")
+      .def(py::init<int>(), py::arg("action_count"))
+      .def_property_readonly("action_count", &QTable::action_count)
+      .def_property_readonly("state_count", &QTable::state_count)
+      .def("value", &QTable::value, py::arg("state"), py::arg("action"))
+      .def("visits", &QTable::visits, py::arg("state"), py::arg("action"))
+      .def("set_value", &QTable::set_value, py::arg("state"), py::arg("action"), py::arg("value"))
+      .def("to_numpy", &table_to_numpy,
+           "(states (R,) uint64, values (R, A) float64, visits (R, A) uint32), states ascending")
+      .def_static("from_numpy", &table_from_numpy, py::arg("states"), py::arg("values"), py::arg("visits") = py::none())
+      .def_static(
+          "load",
+          [](const py::handle& path, int action_count, const std::string& state_space) {
+            return load_q_table(path_from(path), action_count, state_space);
+          },
+          py::arg("path"), py::arg("action_count"), py::arg("state_space"),
+          "Reads a crux Q-table file whose action count and state space are those given")
+      .def(
+          "save",
+          [](const QTable& table, const py::handle& path, const std::string& state_space) {
+            save_q_table(path_from(path), table, state_space);
+          },
+          py::arg("path"), py::arg("state_space"));
+
+  m.def(
+      "grid_state_space",
+      [](const py::handle& config) {
+        return describe_grid(config_from_python(config, kGridParameters, "grid_state_space")
+                                 .settings.learning.climbing.grid);
+      },
+      py::arg("config") = py::none(), "The state space a Q_grid file records for the configured moving grid");
+}
+
+}  // namespace crux::python

@@ -1,0 +1,20 @@
+#pragma once
+// A `config` argument of the Python API, read into the CLI's parameters: None (the
+// defaults), the path of a config.toml (as --config FILE), or a dict whose keys are
+// the config file's, dotted ("learning.epsilon") or nested ({"learning": {...}}). The
+// values are checked as the CLI checks them; an error names the key.
+
+#include <string>
+
+#include <pybind11/pybind11.h>
+
+#include "experiments/experiment_config.hpp"
+
+namespace crux::python {
+
+// `caller` names the Python function in errors: "ClimbEnv" gives "crux.ClimbEnv does
+// not take wall.seed".
+ExperimentConfig config_from_python(const pybind11::handle& config, const ParameterSet& accepted,
+                                    const std::string& caller);
+
+}  // namespace crux::python

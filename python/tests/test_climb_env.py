@@ -1,0 +1,135 @@
+"""ClimbEnv's invariants: Gymnasium's conventions over the climbing MDP."""
+
+import numpy as np
+import pytest
+
+import crux
+
+REWARDS = {"unreachable": -1000.0, "step": -1.0, "finish": 200000.0}
+
+
+def random_policy_steps(env, seed, count):
+    """(action, step result) pairs of a seeded random policy over the mask."""
+    rng = np.random.default_rng(seed)
+    env.reset()
+    out = []
+    for _ in range(count):
+        action = int(rng.choice(np.flatnonzero(env.action_mask())))
+        result = env.step(action)
+        out.append((action, result))
+        if result[2] or result[3]:
+            env.reset()
+    return out
+
+
+def same_observation(a, b):
+    return a.keys() == b.keys() and all(np.array_equal(a[k], b[k], equal_nan=True) for k in a)
+
+
+def test_reset_is_the_start_with_the_right_hand_free(wall7):
+    env = crux.ClimbEnv(wall7)
+    obs, info = env.reset(seed=5)
+    expected = wall7.start.copy()
+    expected[0] = -1
+    assert np.array_equal(obs["configuration"], expected)
+    assert obs["free_limb"] == 0 and np.all(np.isnan(obs["holds"][0]))
+    assert np.array_equal(obs["holds"][1:], wall7.positions[wall7.start[1:]])
+    assert obs["wall_state"] == crux.wall_state(wall7, expected)
+    placement = crux.place_grid(0, crux.forward_kinematics(env.model, obs["posture"])["points"][1])
+    assert obs["grid_state"] == crux.agent_state(wall7, expected, placement)
+    assert np.array_equal(info["centre_of_mass"], crux.forward_kinematics(None, obs["posture"])["centre_of_mass"])
+    assert env.action_count == wall7.hold_count and env.grid_action_count == 35
+
+
+def test_the_mask_is_the_possible_actions_of_every_state(wall7):
+    env = crux.ClimbEnv(wall7)
+    obs, _ = env.reset()
+    rng = np.random.default_rng(1)
+    for _ in range(300):
+        mask = env.action_mask()
+        assert np.array_equal(np.flatnonzero(mask), crux.possible_actions(wall7, obs["configuration"]))
+        obs, _, terminated, truncated, _ = env.step(int(rng.choice(np.flatnonzero(mask))))
+        if terminated or truncated:
+            obs, _ = env.reset()
+
+
+def test_rewards_and_what_each_kind_of_step_does(wall7):
+    env = crux.ClimbEnv(wall7, max_steps=10**6)
+    kinds = set()
+    before, _ = env.reset()
+    rng = np.random.default_rng(2)
+    for _ in range(3000):
+        action = int(rng.choice(np.flatnonzero(env.action_mask())))
+        after, reward, terminated, truncated, info = env.step(action)
+        assert not truncated
+        if not info["reached"]:
+            kinds.add("unreachable")
+            assert reward == REWARDS["unreachable"] and not terminated and info["root_rise"] == 0.0
+            assert same_observation(before, after)
+        elif terminated:
+            kinds.add("finish")
+            assert reward == REWARDS["finish"]
+            assert info["final_posture"].shape == (35,)
+            after, _ = env.reset()
+        else:
+            kinds.add("step")
+            assert reward == REWARDS["step"]
+            assert after["configuration"][after["free_limb"]] == -1
+            assert after["free_limb"] == (before["free_limb"] + 1) % 4
+            assert info["root_rise"] == pytest.approx(after["posture"][2] - before["posture"][2])
+            com = crux.forward_kinematics(None, after["posture"])["centre_of_mass"]
+            assert np.array_equal(info["centre_of_mass"], com) and com[2] < wall7.finish_height
+        before = after
+    assert kinds == {"unreachable", "finish", "step"}
+
+
+def test_truncation_after_max_steps_and_no_step_after_the_end(wall7):
+    env = crux.ClimbEnv(wall7, max_steps=3)
+    env.reset()
+    ends = []
+    for _ in range(3):
+        _, _, terminated, truncated, _ = env.step(int(np.flatnonzero(env.action_mask())[0]))
+        ends.append((terminated, truncated))
+    assert ends == [(False, False), (False, False), (False, True)]
+    with pytest.raises(RuntimeError, match="call reset"):
+        env.step(int(np.flatnonzero(env.action_mask())[0]))
+    env.reset()
+    assert env.steps == 0
+
+
+def test_same_actions_same_observations(wall7):
+    first = random_policy_steps(crux.ClimbEnv(wall7), 9, 400)
+    second = random_policy_steps(crux.ClimbEnv(crux.Wall.random(7)), 9, 400)
+    for (a1, r1), (a2, r2) in zip(first, second):
+        assert a1 == a2 and same_observation(r1[0], r2[0]) and r1[1:4] == r2[1:4]
+
+
+def test_replay_in_cpp_gives_the_rewards_of_step(wall7):
+    env = crux.ClimbEnv(wall7, max_steps=10**6)
+    steps = random_policy_steps(env, 4, 500)
+    total = sum(result[1] for _, result in steps)
+    env.reset()
+    assert env.replay_actions(np.array([a for a, _ in steps])) == total
+
+
+def test_bad_actions_are_value_errors(wall7):
+    env = crux.ClimbEnv(wall7)
+    env.reset()
+    impossible = int(np.flatnonzero(~env.action_mask())[0])
+    with pytest.raises(ValueError, match=f"action: hold {impossible} is not a possible action"):
+        env.step(impossible)
+    with pytest.raises(ValueError, match="is not a hold index"):
+        env.step(wall7.hold_count)
+    with pytest.raises(ValueError, match="must be an integer"):
+        env.step(1.5)
+    with pytest.raises(ValueError, match="config: crux.ClimbEnv does not take wall.seed"):
+        crux.ClimbEnv(wall7, config={"wall.seed": 3})
+    with pytest.raises(ValueError, match="config: reward.step must be a finite number"):
+        crux.ClimbEnv(wall7, config={"reward": {"step": "minus one"}})
+
+
+def test_config_changes_the_rewards(wall7):
+    env = crux.ClimbEnv(wall7, config={"reward": {"step": -2.0}})
+    env.reset()
+    rewards = {result[1] for _, result in random_policy_steps(env, 3, 200) if result[4]["reached"]}
+    assert -2.0 in rewards and -1.0 not in rewards

@@ -1,0 +1,142 @@
+"""The paper's agent and experiment from Python give the CLI's numbers, by seed."""
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import crux
+
+SMALL_PAPER = {"experiment": {"walls": 2, "iterations": 400, "plan": False, "threads": 2,
+                              "bootstrap_resamples": 200}}
+
+
+def without_timing(summary):
+    summary = dict(summary)
+    summary.pop("seconds")
+    return summary
+
+
+def test_run_experiment_equals_crux_paper(run_cli, tmp_path):
+    (tmp_path / "small.toml").write_text(
+        "[experiment]\nwalls = 2\niterations = 400\nplan = false\nthreads = 2\nbootstrap_resamples = 200\n")
+    code, out, err = run_cli("paper", "--config", tmp_path / "small.toml", "-o", tmp_path / "cli", "--json")
+    assert code == 0, err
+    from_cli = json.loads(out)
+    from_dict = crux.run_experiment(SMALL_PAPER, output=tmp_path / "py")
+    assert without_timing(from_dict) == without_timing(from_cli)
+    assert without_timing(crux.run_experiment(tmp_path / "small.toml")) == without_timing(from_cli)
+    # The folder written is crux paper's, byte for byte but for summary.json's timing.
+    cli_files = sorted(p.relative_to(tmp_path / "cli") for p in (tmp_path / "cli").rglob("*") if p.is_file())
+    py_files = sorted(p.relative_to(tmp_path / "py") for p in (tmp_path / "py").rglob("*") if p.is_file())
+    assert cli_files == py_files
+    for name in cli_files:
+        if name.name != "summary.json":
+            assert (tmp_path / "cli" / name).read_bytes() == (tmp_path / "py" / name).read_bytes(), name
+
+
+def test_run_learning_equals_crux_train_and_transfer(run_cli, tmp_path):
+    code, out, err = run_cli("train", "--wall-seed", 3, "--seed", 5, "--iterations", 600, "-o", tmp_path / "train",
+                             "--json")
+    assert code == 0, err
+    run = crux.run_learning(config={"wall.seed": 3, "experiment.iterations": 600}, seed=5)
+    assert without_timing(run.summary) == without_timing(json.loads(out))
+    assert run.episode_lengths.sum() <= 600 and len(run.iterations["reward"]) == 600
+    run.q_grid.save(tmp_path / "q_grid.bin", crux.grid_state_space())
+    assert (tmp_path / "q_grid.bin").read_bytes() == (tmp_path / "train" / "q_grid.bin").read_bytes()
+
+    code, out, err = run_cli("transfer", "--wall-seed", 4, "--seed", 6, "--iterations", 600, "--q-grid",
+                             tmp_path / "train" / "q_grid.bin", "-o", tmp_path / "transfer", "--json")
+    assert code == 0, err
+    config = {"wall.seed": 4, "experiment.iterations": 600}
+    from_file = crux.run_learning(config=config, seed=6, q_grid=tmp_path / "train" / "q_grid.bin")
+    from_table = crux.run_learning(crux.Wall.random(4), config={"experiment.iterations": 600}, seed=6,
+                                   q_grid=run.q_grid)
+    assert without_timing(from_file.summary) == without_timing(json.loads(out))
+    assert np.array_equal(from_table.episode_lengths, from_file.episode_lengths)
+
+
+def test_same_seed_same_run_and_another_seed_another(wall7):
+    config = {"experiment.iterations": 500}
+    first, again, other = (crux.run_learning(wall7, config, seed=s) for s in (1, 1, 2))
+    assert without_timing(first.summary) == without_timing(again.summary)
+    for a, b in zip(first.q_grid.to_numpy(), again.q_grid.to_numpy()):
+        assert np.array_equal(a, b)
+    assert not np.array_equal(first.iterations["hold_id"], other.iterations["hold_id"])
+
+
+def test_q_tables_to_numpy_and_back(wall7, tmp_path):
+    table = crux.run_learning(wall7, {"experiment.iterations": 300}, seed=1).q_grid
+    states, values, visits = table.to_numpy()
+    assert np.all(np.diff(states.astype(np.float64)) > 0) and values.shape == (len(states), 35)
+    back = crux.QTable.from_numpy(states, values, visits)
+    for a, b in zip(back.to_numpy(), (states, values, visits)):
+        assert np.array_equal(a, b)
+    table.save(tmp_path / "t.bin", "tables")
+    loaded = crux.QTable.load(tmp_path / "t.bin", 35, "tables")
+    assert np.array_equal(loaded.to_numpy()[1], values)
+    with pytest.raises(ValueError, match="listed twice"):
+        crux.QTable.from_numpy([1, 1], np.zeros((2, 3)))
+
+
+def test_bad_q_table_file_is_the_cli_message(run_cli, tmp_path):
+    bad = tmp_path / "q.bin"
+    bad.write_bytes(b"CRUXQTAB and then nothing useful")
+    code, _, err = run_cli("transfer", "--wall-seed", 4, "--q-grid", bad, "-o", tmp_path / "out")
+    assert code == 2
+    with pytest.raises(ValueError) as error:
+        crux.run_learning(config={"wall.seed": 4}, q_grid=bad)
+    assert err.strip() == "crux: " + str(error.value)
+
+
+def test_bad_urdf_is_the_cli_message(run_cli, tmp_path):
+    bad = tmp_path / "body.urdf"
+    bad.write_text("<robot name='x'></robot>")
+    code, _, err = run_cli("model", "--urdf", bad)
+    assert code == 2
+    with pytest.raises(ValueError) as error:
+        crux.BodyModel.load(bad)
+    assert err.strip() == "crux: " + str(error.value)
+
+
+def test_config_errors_name_the_key():
+    with pytest.raises(ValueError, match="^experiment.walls: must be positive$"):
+        crux.run_experiment({"experiment": {"walls": 0}})
+    with pytest.raises(ValueError, match="^config: unknown key learning.epsilonn$"):
+        crux.run_experiment({"learning": {"epsilonn": 0.1}})
+    with pytest.raises(ValueError, match="^config: crux.run_experiment does not take wall.seed$"):
+        crux.run_experiment({"wall.seed": 1})
+
+
+def test_a_long_call_releases_the_gil(wall7):
+    worker = threading.Thread(target=crux.run_learning, args=(wall7, {"experiment.iterations": 3000}))
+    worker.start()
+    spins = 0
+    while worker.is_alive():
+        spins += 1
+    worker.join()
+    # Holding the GIL, the call would have let this loop run only between bytecode switches.
+    assert spins > 10000
+
+
+@pytest.mark.parametrize("call", [
+    "crux.run_learning(crux.Wall.random(7), {'experiment.iterations': 10**7})",
+    "crux.run_experiment({'experiment': {'walls': 2, 'iterations': 10**7, 'plan': False}})",
+])
+def test_ctrl_c_interrupts_a_long_call(call):
+    script = f"import crux, sys\nprint('started', flush=True)\n{call}\n"
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True, env=os.environ)
+    assert child.stdout.readline().strip() == "started"
+    time.sleep(1.0)
+    sent = time.monotonic()
+    child.send_signal(signal.SIGINT)
+    _, err = child.communicate(timeout=60)
+    assert "KeyboardInterrupt" in err, err
+    assert time.monotonic() - sent < 10
