@@ -56,3 +56,13 @@ def test_jacobians_match_central_finite_differences():
 def test_bad_posture_shape_is_a_value_error():
     with pytest.raises(ValueError, match=r"postures: must be an array of shape \(35,\) or \(N, 35\)"):
         crux.forward_kinematics(None, np.zeros(34))
+
+
+def test_bad_urdf_is_the_cli_message(run_cli, tmp_path):
+    bad = tmp_path / "body.urdf"
+    bad.write_text("<robot name='x'></robot>")
+    code, _, err = run_cli("model", "--urdf", bad)
+    assert code == 2
+    with pytest.raises(ValueError) as error:
+        crux.BodyModel.load(bad)
+    assert err.strip() == "crux: " + str(error.value)
