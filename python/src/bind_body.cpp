@@ -1,6 +1,6 @@
 // The body: loading, joints and limits, forward kinematics (one posture or a batch).
 
-#include <mutex>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -9,84 +9,11 @@
 #include "body/kinematics.hpp"
 #include "body/urdf_loader.hpp"
 #include "common/input_error.hpp"
+#include "conversions.hpp"
 
 namespace crux::python {
 
-BodyModelPtr body_or_default(const py::handle& model) {
-  if (!model.is_none()) return model.cast<BodyModelPtr>();
-  static std::mutex mutex;
-  static BodyModelPtr body;
-  const std::lock_guard lock(mutex);
-  if (!body) body = std::make_shared<BodyModel>(load_body_model(default_body_model_path()));
-  return body;
-}
-
-std::string path_from(const py::handle& path) {
-  if (!py::isinstance<py::str>(path) && !py::isinstance(path, py::module_::import("os").attr("PathLike"))) {
-    throw py::type_error("a path is a str or an os.PathLike");
-  }
-  return py::str(py::module_::import("os").attr("fspath")(path)).cast<std::string>();
-}
-
 namespace {
-
-py::array_t<double> as_double_array(const py::handle& array, const char* what) {
-  try {
-    return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
-  } catch (const py::error_already_set&) {
-    throw InputError(what, "must be an array of numbers");
-  }
-}
-
-}  // namespace
-
-Posture posture_from(const py::handle& array, const char* what) {
-  const auto a = as_double_array(array, what);
-  if (!a || a.ndim() != 1 || a.shape(0) != kConfigurationDof) {
-    throw InputError(what, fmt::format("must be an array of shape ({},)", kConfigurationDof));
-  }
-  Posture g;
-  for (int i = 0; i < kConfigurationDof; ++i) g[i] = a.at(i);
-  if (!g.allFinite()) throw InputError(what, "must hold finite numbers");
-  return g;
-}
-
-Eigen::Vector3d point_from(const py::handle& array, const char* what) {
-  const auto a = as_double_array(array, what);
-  if (!a || a.ndim() != 1 || a.shape(0) != 3) throw InputError(what, "must be an array of shape (3,)");
-  const Eigen::Vector3d v(a.at(0), a.at(1), a.at(2));
-  if (!v.allFinite()) throw InputError(what, "must hold finite numbers");
-  return v;
-}
-
-Limb limb_from(const py::handle& limb) {
-  if (py::isinstance<py::str>(limb)) {
-    const std::string name = limb.cast<std::string>();
-    if (const auto parsed = parse_limb(name)) return *parsed;
-    throw InputError("limb", fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", name));
-  }
-  if (py::isinstance<py::int_>(limb) && !py::isinstance<py::bool_>(limb)) {
-    const long long index = limb.cast<long long>();
-    if (index >= 0 && index < kLimbCount) return static_cast<Limb>(index);
-  }
-  throw InputError("limb", "must be 0-3 or a limb's name (right_hand, left_hand, right_foot, left_foot)");
-}
-
-py::array_t<double> to_array(const Eigen::Vector3d& v) {
-  py::array_t<double> out(3);
-  std::copy(v.data(), v.data() + 3, out.mutable_data());
-  return out;
-}
-
-py::array_t<double> to_array(const Posture& g) {
-  py::array_t<double> out(kConfigurationDof);
-  std::copy(g.data(), g.data() + kConfigurationDof, out.mutable_data());
-  return out;
-}
-
-namespace {
-
-py::array_t<double> vector_array(const Posture& values) { return to_array(values); }
 
 // Fills one posture's rows of the outputs: points (5, 3), centre of mass (3), and the
 // Jacobians (5, 3, 35) when asked.
@@ -110,8 +37,8 @@ void kinematics_of(const BodyModel& model, BodyData& data, const Posture& g, dou
 }
 
 py::dict forward_kinematics_py(const BodyModelPtr& model, const py::handle& postures, bool with_jacobians) {
-  const auto a = as_double_array(postures, "postures");
-  if (!a || (a.ndim() != 1 && a.ndim() != 2) || a.shape(a.ndim() - 1) != kConfigurationDof) {
+  const auto a = double_array_from(postures, "postures");
+  if ((a.ndim() != 1 && a.ndim() != 2) || a.shape(a.ndim() - 1) != kConfigurationDof) {
     throw InputError("postures", fmt::format("must be an array of shape ({0},) or (N, {0})", kConfigurationDof));
   }
   const bool batch = a.ndim() == 2;
@@ -175,8 +102,8 @@ void bind_body(py::module_& m) {
                                for (const BodyJoint& joint : model.joints) names.append(joint.name);
                                return names;
                              })
-      .def_property_readonly("lower_limits", [](const BodyModel& model) { return vector_array(model.lower_limits); })
-      .def_property_readonly("upper_limits", [](const BodyModel& model) { return vector_array(model.upper_limits); })
+      .def_property_readonly("lower_limits", [](const BodyModel& model) { return to_array(model.lower_limits); })
+      .def_property_readonly("upper_limits", [](const BodyModel& model) { return to_array(model.upper_limits); })
       .def_property_readonly("grasp_frame_names",
                              [](const BodyModel& model) {
                                py::list names;

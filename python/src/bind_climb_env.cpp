@@ -3,13 +3,13 @@
 // without needing the gymnasium package. An action is a hold index; action_mask() says
 // which the state offers (the geometric filter's possible actions).
 
-#include <cmath>
 #include <limits>
 #include <memory>
 
 #include <fmt/format.h>
 
 #include "bindings.hpp"
+#include "conversions.hpp"
 #include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
 #include "climbing/climbing_mdp.hpp"
@@ -24,27 +24,33 @@ const ParameterSet kEnvParameters{{"experiment.urdf", "reward", "ik", "filter", 
 
 class ClimbEnv {
  public:
-  ClimbEnv(Wall wall, const py::handle& config, int max_steps, const py::handle& model)
-      : wall_(std::move(wall)), max_steps_(max_steps) {
-    if (max_steps <= 0) throw InputError("max_steps", "must be positive");
+  ClimbEnv(Wall wall, const py::handle& config, const py::handle& max_steps, const py::handle& model)
+      : wall_(std::move(wall)),
+        max_steps_(static_cast<int>(integer_from(max_steps, 1, std::numeric_limits<int>::max(), "max_steps"))) {
     const ExperimentConfig c = config_from_python(config, kEnvParameters, "ClimbEnv");
+    if (!model.is_none() && !c.urdf.empty()) {
+      throw InputError("model", "give the body as model or as config's experiment.urdf, not both");
+    }
     if (!model.is_none()) {
-      model_ = model.cast<BodyModelPtr>();
+      model_ = body_or_default(model);
     } else if (!c.urdf.empty()) {
       model_ = std::make_shared<BodyModel>(load_body_model(c.urdf));
     } else {
       model_ = body_or_default(model);
     }
-    parameters_ = c.settings.learning.climbing;
     {
       py::gil_scoped_release release;
-      mdp_ = std::make_unique<ClimbingMdp>(*model_, wall_, parameters_);
+      mdp_ = std::make_unique<ClimbingMdp>(*model_, wall_, c.settings.learning.climbing);
       BodyData data(*model_);
       forward_kinematics(*model_, data, mdp_->start_posture());
       start_centre_of_mass_ = centre_of_mass(*model_, data);
     }
     centre_of_mass_ = start_centre_of_mass_;
   }
+
+  // Holds the MDP, which keeps a reference to wall_: never copied nor moved.
+  ClimbEnv(const ClimbEnv&) = delete;
+  ClimbEnv& operator=(const ClimbEnv&) = delete;
 
   py::tuple reset(const py::handle&, const py::handle&) {
     mdp_->reset();
@@ -76,9 +82,15 @@ class ClimbEnv {
   }
 
   // The C++ steps alone, for the cost of the binding (bench/python_step_overhead.py).
-  double replay_actions(const py::array_t<int, py::array::c_style | py::array::forcecast>& actions) {
+  double replay_actions(const py::handle& actions_handle) {
+    const auto actions = integer_array_from(actions_handle, "actions");
     std::vector<int> checked(actions.size());
-    for (py::ssize_t i = 0; i < actions.size(); ++i) checked[i] = actions.data()[i];
+    for (py::ssize_t i = 0; i < actions.size(); ++i) {
+      if (actions.data()[i] < 0 || actions.data()[i] >= wall_.hold_count()) {
+        throw InputError("actions", "holds a value that is not a hold index");
+      }
+      checked[i] = static_cast<int>(actions.data()[i]);
+    }
     double total = 0.0;
     py::gil_scoped_release release;
     for (const int action : checked) {
@@ -125,17 +137,8 @@ class ClimbEnv {
 
  private:
   int checked_action(const py::handle& handle) const {
-    const auto number = py::reinterpret_steal<py::object>(PyNumber_Index(handle.ptr()));
-    if (!number) {
-      PyErr_Clear();
-      throw InputError("action", "must be an integer hold index");
-    }
-    const long long action = number.cast<long long>();
-    if (action < 0 || action >= wall_.hold_count()) {
-      throw InputError("action", fmt::format("{} is not a hold index of the wall (0 to {})", action,
-                                             wall_.hold_count() - 1));
-    }
-    if (possible(static_cast<int>(action))) return static_cast<int>(action);
+    const auto action = static_cast<int>(integer_from(handle, 0, wall_.hold_count() - 1, "action"));
+    if (possible(action)) return action;
     throw InputError("action", fmt::format("hold {} is not a possible action of this state (see action_mask())",
                                            action));
   }
@@ -149,7 +152,6 @@ class ClimbEnv {
 
   BodyModelPtr model_;
   Wall wall_;  // before mdp_, which keeps a reference to it
-  ClimbingParameters parameters_;
   std::unique_ptr<ClimbingMdp> mdp_;
   int max_steps_;
   int steps_ = 0;
@@ -163,7 +165,7 @@ void bind_climb_env(py::module_& m) {
   py::class_<ClimbEnv>(m, "ClimbEnv",
                        "The climbing MDP as a Gymnasium-style environment: an action is a hold index for the free "
                        "limb; see action_mask()")
-      .def(py::init<Wall, const py::handle&, int, const py::handle&>(), py::arg("wall"),
+      .def(py::init<Wall, const py::handle&, const py::handle&, const py::handle&>(), py::arg("wall"),
            py::arg("config") = py::none(), py::arg("max_steps") = 1000, py::arg("model") = py::none(),
            "config takes the keys of config.toml's [reward], [ik], [filter] and [grid] tables and experiment.urdf; "
            "an episode is truncated after max_steps actions")
@@ -174,8 +176,8 @@ void bind_climb_env(py::module_& m) {
       .def("action_mask", &ClimbEnv::action_mask, "bool array over hold indices: the possible actions of the state")
       .def("observation", &ClimbEnv::observation)
       .def("replay_actions", &ClimbEnv::replay_actions, py::arg("actions"),
-           "Steps through hold indices in C++ without observations, returning the summed reward (the baseline of the "
-           "binding's cost)")
+           "Steps through possible actions in C++, returning the summed reward and nothing else (the baseline of "
+           "bench/python_step_overhead.py); leaves steps and the episode's end as they were")
       .def_property_readonly("action_count", &ClimbEnv::action_count, "the number of actions: the wall's holds")
       .def_property_readonly("grid_action_count", &ClimbEnv::grid_action_count)
       .def_property_readonly("wall", &ClimbEnv::wall)

@@ -4,10 +4,10 @@
 #include <chrono>
 #include <optional>
 
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
+#include "conversions.hpp"
 #include "common/input_error.hpp"
 #include "experiments/experiment_analysis.hpp"
 #include "experiments/learning_run.hpp"
@@ -71,27 +71,41 @@ py::dict iterations_dict(const RunResult& run) {
   return out;
 }
 
+// A config given as a file replays a folder: its recorded digests must match the inputs.
+bool config_is_file(const py::handle& config) { return !config.is_none() && !py::isinstance<py::dict>(config); }
+
 LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& config_handle,
                             const py::handle& seed_handle, const py::handle& q_grid_handle,
                             const py::handle& model_handle) {
   ExperimentConfig config = config_from_python(config_handle, kRunParameters, "run_learning");
-  if (!seed_handle.is_none()) config.settings.seed = seed_handle.cast<std::uint64_t>();
+  const bool wall_given = !wall_handle.is_none();
+  if (wall_given && (!config.wall_file.empty() || config.wall_seed)) {
+    throw InputError("wall", "give the wall as wall or as config's wall.file or wall.seed, not both");
+  }
+  if (!model_handle.is_none() && !config.urdf.empty()) {
+    throw InputError("model", "give the body as model or as config's experiment.urdf, not both");
+  }
+  if (!seed_handle.is_none()) config.settings.seed = uint64_from(seed_handle, "seed");
+  const BodyModelPtr model =
+      model_handle.is_none() ? std::make_shared<BodyModel>(load_configured_body(config)) : body_or_default(model_handle);
+  config.urdf = model->source;  // what the provenance records: the body used
+  const GridParameters& grid = config.settings.learning.climbing.grid;
   std::optional<QTable> initial;
   if (!q_grid_handle.is_none()) {
+    if (!config.q_grid.empty()) {
+      throw InputError("q_grid", "give the Q_grid as q_grid or as config's experiment.q_grid, not both");
+    }
     if (py::isinstance<QTable>(q_grid_handle)) {
       initial = q_grid_handle.cast<QTable>();
-      if (initial->action_count() != config.settings.learning.climbing.grid.tile_count()) {
-        throw InputError("q_grid", "its action count is not the configured grid's tile count");
-      }
+      check_q_grid(*initial, grid, "q_grid");
     } else {
       config.q_grid = path_from(q_grid_handle);
     }
   }
-  if (!initial && !config.q_grid.empty()) initial = load_q_grid(config.q_grid, config.settings.learning.climbing.grid);
+  if (!initial && !config.q_grid.empty()) initial = load_q_grid(config.q_grid, grid);
   const Provenance provenance = record_provenance(config);
-  const BodyModelPtr model =
-      model_handle.is_none() ? std::make_shared<BodyModel>(load_configured_body(config)) : body_or_default(model_handle);
-  const Wall wall = wall_handle.is_none() ? load_configured_wall(config) : wall_handle.cast<Wall>();
+  if (config_is_file(config_handle)) check_recorded_provenance(config, provenance, path_from(config_handle));
+  const Wall wall = wall_given ? wall_handle.cast<Wall>() : load_configured_wall(config);
   const Condition condition = initial ? Condition::Transfer : Condition::Training;
   InterruptGuard guard;
   LearningRun out;
@@ -100,10 +114,10 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
     py::gil_scoped_release release;
     const auto start = std::chrono::steady_clock::now();
     RunResult run = run_learning(*model, wall, config.settings.learning, config.settings.seed,
-                                 initial ? &*initial : nullptr, [](int) { InterruptGuard::poll(); });
+                                 initial ? &*initial : nullptr, [&guard](int) { guard.poll(); });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const ExperimentResult result = single_run_result(run, wall, wall_handle.is_none() ? config.wall_seed : std::nullopt,
-                                                      config.settings.seed, condition, seconds);
+    const ExperimentResult result =
+        single_run_result(run, wall, config.wall_seed, config.settings.seed, condition, seconds);
     summary = summary_json(result, nullptr, config.settings, provenance);
     out.run = std::move(run);
   }
@@ -114,7 +128,7 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
 py::object run_experiment_py(const py::handle& config_handle, const py::handle& output, bool overwrite) {
   ExperimentConfig config = config_from_python(config_handle, kPaperParameters, "run_experiment");
   const Provenance provenance = record_provenance(config);
-  const bool from_file = !config_handle.is_none() && !py::isinstance<py::dict>(config_handle);
+  const bool from_file = config_is_file(config_handle);
   if (from_file) check_recorded_provenance(config, provenance, path_from(config_handle));
   const BodyModel model = load_configured_body(config);
   std::string folder;
@@ -122,14 +136,14 @@ py::object run_experiment_py(const py::handle& config_handle, const py::handle& 
   if (!output.is_none()) {
     folder = path_from(output);
     config_toml = config_file_text(config, kPaperParameters, provenance);
-    const std::vector<std::string> inputs{config.urdf, from_file ? path_from(config_handle) : std::string()};
-    check_output_folder(folder, inputs, overwrite);
+    check_output_folder(folder, {config.urdf, from_file ? path_from(config_handle) : std::string()}, overwrite);
   }
   InterruptGuard guard;
   nlohmann::ordered_json summary;
   {
     py::gil_scoped_release release;
-    const ExperimentResult result = run_paper_experiment(model, config.settings, {}, &InterruptGuard::poll);
+    const ExperimentResult result =
+        run_paper_experiment(model, config.settings, {}, [&guard] { guard.poll(); });
     const ExperimentAnalysis analysis = analyse_experiment(result, config.settings);
     summary = summary_json(result, &analysis, config.settings, provenance);
     if (!folder.empty()) write_experiment_folder(folder, result, config.settings, model, config_toml, summary);
@@ -149,7 +163,8 @@ void bind_experiment(py::module_& m) {
                              })
       .def_property_readonly("iterations", [](const LearningRun& r) { return iterations_dict(r.run); },
                              "per iteration: episode, regime, hold_id, success, reward, root_rise_m")
-      .def_property_readonly("q_grid", [](const LearningRun& r) { return r.run.q_grid; })
+      .def_property_readonly(
+          "q_grid", [](LearningRun& r) -> QTable& { return r.run.q_grid; }, py::return_value_policy::reference_internal)
       .def_property_readonly("greedy_length", [](const LearningRun& r) { return r.run.greedy_length; },
                              "actions of the learnt greedy policy's climb, -1 if it did not finish")
       .def_property_readonly("greedy_climb", [](const LearningRun& r) { return postures_array(r.run.greedy_climb); })

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "bindings.hpp"
+#include "conversions.hpp"
 #include "body/body_data.hpp"
 #include "common/input_error.hpp"
 #include "ik/ik_solver.hpp"

@@ -1,12 +1,15 @@
 // Q-tables to and from numpy, and Q-table files (the format of q_grid.bin).
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <optional>
 
 #include <fmt/format.h>
 
 #include "agent_space/moving_grid.hpp"
 #include "bindings.hpp"
+#include "conversions.hpp"
 #include "common/input_error.hpp"
 #include "learning/q_table.hpp"
 #include "learning/q_table_file.hpp"
@@ -36,28 +39,34 @@ py::tuple table_to_numpy(const QTable& table) {
 
 QTable table_from_numpy(const py::handle& states_handle, const py::handle& values_handle,
                         const py::handle& visits_handle) {
-  const auto states = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(states_handle);
-  const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values_handle);
-  if (!states || states.ndim() != 1) throw InputError("states", "must be a 1-D array of state codes");
-  if (!values || values.ndim() != 2 || values.shape(0) != states.shape(0) || values.shape(1) < 1) {
+  const auto states = integer_array_from(states_handle, "states");
+  const auto values = double_array_from(values_handle, "values");
+  if (states.ndim() != 1) throw InputError("states", "must be a 1-D array of state codes");
+  if (values.ndim() != 2 || values.shape(0) != states.shape(0) || values.shape(1) < 1) {
     throw InputError("values", "must have shape (len(states), actions)");
   }
-  std::optional<py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>> visits;
+  std::optional<py::array_t<std::int64_t>> visits;
   if (!visits_handle.is_none()) {
-    visits = py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>::ensure(visits_handle);
-    if (!*visits || visits->ndim() != 2 || visits->shape(0) != values.shape(0) || visits->shape(1) != values.shape(1)) {
+    visits = integer_array_from(visits_handle, "visits");
+    if (visits->ndim() != 2 || visits->shape(0) != values.shape(0) || visits->shape(1) != values.shape(1)) {
       throw InputError("visits", "must have the shape of values");
     }
   }
   const auto actions = static_cast<int>(values.shape(1));
   QTable table(actions);
   for (py::ssize_t r = 0; r < states.shape(0); ++r) {
-    const StateCode s = states.at(r);
+    if (states.at(r) < 0) throw InputError("states", "must be state codes, 0 or more");
+    const auto s = static_cast<StateCode>(states.at(r));
     for (int a = 0; a < actions; ++a) {
       const double v = values.at(r, a);
       if (!std::isfinite(v)) throw InputError("values", "must hold finite numbers");
       table.set_value(s, a, v);
-      if (visits) table.set_visits(s, a, visits->at(r, a));
+      if (!visits) continue;
+      const std::int64_t n = visits->at(r, a);
+      if (n < 0 || n > std::numeric_limits<std::uint32_t>::max()) {
+        throw InputError("visits", "must be counts from 0 to 4294967295");
+      }
+      table.set_visits(s, a, static_cast<std::uint32_t>(n));
     }
     if (table.state_count() != static_cast<std::size_t>(r + 1)) {
       throw InputError("states", fmt::format("state {} is listed twice", s));
@@ -66,17 +75,40 @@ QTable table_from_numpy(const py::handle& states_handle, const py::handle& value
   return table;
 }
 
+ActionCode action_from(const QTable& table, const py::handle& action) {
+  return static_cast<ActionCode>(integer_from(action, 0, table.action_count() - 1, "action"));
+}
+
 }  // namespace
 
 void bind_learning(py::module_& m) {
   py::class_<QTable>(m, "QTable",
                      "A Q-table over integer states and actions, sparse in states; unwritten values are 0")
-      .def(py::init<int>(), py::arg("action_count"))
+      .def(py::init([](const py::handle& action_count) {
+             return QTable(static_cast<int>(integer_from(action_count, 1, 1 << 20, "action_count")));
+           }),
+           py::arg("action_count"))
       .def_property_readonly("action_count", &QTable::action_count)
       .def_property_readonly("state_count", &QTable::state_count)
-      .def("value", &QTable::value, py::arg("state"), py::arg("action"))
-      .def("visits", &QTable::visits, py::arg("state"), py::arg("action"))
-      .def("set_value", &QTable::set_value, py::arg("state"), py::arg("action"), py::arg("value"))
+      .def(
+          "value",
+          [](const QTable& t, const py::handle& s, const py::handle& a) {
+            return t.value(uint64_from(s, "state"), action_from(t, a));
+          },
+          py::arg("state"), py::arg("action"))
+      .def(
+          "visits",
+          [](const QTable& t, const py::handle& s, const py::handle& a) {
+            return t.visits(uint64_from(s, "state"), action_from(t, a));
+          },
+          py::arg("state"), py::arg("action"))
+      .def(
+          "set_value",
+          [](QTable& t, const py::handle& s, const py::handle& a, double value) {
+            if (!std::isfinite(value)) throw InputError("value", "must be a finite number");
+            t.set_value(uint64_from(s, "state"), action_from(t, a), value);
+          },
+          py::arg("state"), py::arg("action"), py::arg("value"))
       .def("to_numpy", &table_to_numpy,
            "(states (R,) uint64, values (R, A) float64, visits (R, A) uint32), states ascending")
       .def_static("from_numpy", &table_from_numpy, py::arg("states"), py::arg("values"), py::arg("visits") = py::none())

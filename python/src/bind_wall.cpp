@@ -9,6 +9,7 @@
 #include "agent_space/moving_grid.hpp"
 #include "bindings.hpp"
 #include "common/input_error.hpp"
+#include "conversions.hpp"
 #include "configurations/geometric_filter.hpp"
 #include "configurations/possible_actions.hpp"
 #include "configurations/reachability.hpp"
@@ -17,29 +18,6 @@
 #include "wall/wall_file.hpp"
 
 namespace crux::python {
-
-HoldConfiguration configuration_from(const py::handle& holds, const Wall& wall, const char* what) {
-  const auto a = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(holds);
-  if (!a || a.ndim() != 1 || a.shape(0) != kLimbCount) {
-    throw InputError(what, "must be 4 hold indices in limb order (-1 for a free limb)");
-  }
-  HoldConfiguration c;
-  for (int limb = 0; limb < kLimbCount; ++limb) {
-    const long long hold = a.at(limb);
-    if (hold < kFree || hold >= wall.hold_count()) {
-      throw InputError(what, fmt::format("hold index {} is not -1 (free) or a hold of the wall (0 to {})", hold,
-                                         wall.hold_count() - 1));
-    }
-    c.holds[limb] = static_cast<int>(hold);
-  }
-  return c;
-}
-
-py::array_t<int> to_array(const HoldConfiguration& c) {
-  py::array_t<int> out(kLimbCount);
-  std::copy(c.holds.begin(), c.holds.end(), out.mutable_data());
-  return out;
-}
 
 namespace {
 
@@ -59,8 +37,9 @@ void bind_wall(py::module_& m) {
   py::class_<Wall>(m, "Wall", "A climbing wall: hold spheres, the start configuration and the finishing height")
       .def_static(
           "random",
-          [](std::uint64_t seed, const py::handle& config) {
-            return generate_random_wall(seed, config_from_python(config, kWallParameters, "Wall.random").settings.walls);
+          [](const py::handle& seed, const py::handle& config) {
+            return generate_random_wall(uint64_from(seed, "seed"),
+                                        config_from_python(config, kWallParameters, "Wall.random").settings.walls);
           },
           py::arg("seed"), py::arg("config") = py::none(),
           "The random wall of a seed (section III-A); config takes the wall.* keys (columns, rows, sigma, ...)")
@@ -134,9 +113,8 @@ void bind_wall(py::module_& m) {
            py::arg("point"), "the tile holding a point, or -1 outside the grid")
       .def(
           "tile_centre",
-          [](const GridPlacement& p, int tile) {
-            if (tile < 0 || tile >= p.columns * p.rows) throw InputError("tile", "is not a tile of the grid");
-            return to_array(p.tile_centre(tile));
+          [](const GridPlacement& p, const py::handle& tile) {
+            return to_array(p.tile_centre(static_cast<int>(integer_from(tile, 0, p.columns * p.rows - 1, "tile"))));
           },
           py::arg("tile"));
 
@@ -151,9 +129,9 @@ void bind_wall(py::module_& m) {
 
   m.def(
       "hold_in_tile",
-      [](const Wall& wall, const GridPlacement& placement, int tile) {
-        if (tile < 0 || tile >= placement.columns * placement.rows) throw InputError("tile", "is not a tile of the grid");
-        return hold_in_tile(wall, placement, tile);
+      [](const Wall& wall, const GridPlacement& placement, const py::handle& tile) {
+        return hold_in_tile(wall, placement,
+                            static_cast<int>(integer_from(tile, 0, placement.columns * placement.rows - 1, "tile")));
       },
       py::arg("wall"), py::arg("placement"), py::arg("tile"),
       "Grid -> wall: the hold nearest the tile's centre among those in it, or -1");

@@ -8,6 +8,8 @@ namespace crux::python {
 
 namespace {
 
+// Set by the handler of the one active guard (only the main thread installs one, and
+// its calls do not nest).
 std::atomic<bool> interrupt_requested{false};
 
 extern "C" void raise_interrupt_flag(int) { interrupt_requested.store(true); }
@@ -15,23 +17,27 @@ extern "C" void raise_interrupt_flag(int) { interrupt_requested.store(true); }
 }  // namespace
 
 InterruptGuard::InterruptGuard() {
-  // Python delivers signals to its main thread only; a call made from another thread
-  // leaves SIGINT to Python, as Python code would.
-  const pybind11::module_ threading = pybind11::module_::import("threading");
+  namespace py = pybind11;
+  const py::module_ threading = py::module_::import("threading");
   if (!threading.attr("current_thread")().is(threading.attr("main_thread")())) return;
+  const py::module_ signal = py::module_::import("signal");
+  if (!signal.attr("getsignal")(signal.attr("SIGINT")).is(signal.attr("default_int_handler"))) return;
   interrupt_requested.store(false);
   struct sigaction action {};
   action.sa_handler = raise_interrupt_flag;
   sigemptyset(&action.sa_mask);
-  installed_ = sigaction(SIGINT, &action, &previous_) == 0;
+  active_ = sigaction(SIGINT, &action, &previous_) == 0;
 }
 
 InterruptGuard::~InterruptGuard() {
-  if (installed_) sigaction(SIGINT, &previous_, nullptr);
+  if (!active_) return;
+  sigaction(SIGINT, &previous_, nullptr);
+  // A Ctrl-C no poll saw (the call was past its last one) is Python's to act on.
+  if (interrupt_requested.exchange(false) && !std::uncaught_exceptions()) PyErr_SetInterrupt();
 }
 
-void InterruptGuard::poll() {
-  if (interrupt_requested.load(std::memory_order_relaxed)) throw Interrupted();
+void InterruptGuard::poll() const {
+  if (active_ && interrupt_requested.load(std::memory_order_relaxed)) throw Interrupted();
 }
 
 }  // namespace crux::python

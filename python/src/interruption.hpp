@@ -1,9 +1,11 @@
 #pragma once
 // Ctrl-C during a long call. The call runs without the GIL, often on worker threads,
-// where Python's own SIGINT handler cannot act; so while it runs, SIGINT only raises a
-// flag that the call's progress callback polls, and the call unwinds from there with
-// Interrupted, which Python sees as KeyboardInterrupt. The previous handler comes back
-// when the guard ends.
+// where Python's own SIGINT handler cannot act. So while a call made from the main
+// thread runs, and only when SIGINT is Python's default (KeyboardInterrupt), SIGINT just
+// raises this guard's flag; the call's progress callback polls it and unwinds with
+// Interrupted, which Python sees as KeyboardInterrupt. A signal that arrives after the
+// last poll is handed back to Python when the guard ends. A script that handles or
+// ignores SIGINT itself keeps its choice: the guard then stays inactive.
 
 #include <csignal>
 #include <stdexcept>
@@ -21,12 +23,13 @@ class InterruptGuard {
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
 
-  // Throws Interrupted once SIGINT has arrived; called from any thread.
-  static void poll();
+  // Throws Interrupted once SIGINT has arrived while this guard is active; called from
+  // any thread.
+  void poll() const;
 
  private:
-  struct sigaction previous_{};
-  bool installed_ = false;
+  struct sigaction previous_ {};
+  bool active_ = false;
 };
 
 }  // namespace crux::python

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
+#include "conversions.hpp"
 
 namespace py = pybind11;
 
@@ -33,29 +34,34 @@ void assign(const ConfigField& field, const py::handle& value) {
   const auto fail = [&](const char* expected) {
     throw InputError(kSource, fmt::format("{} must be {}", field.key, expected));
   };
-  const bool is_bool = py::isinstance<py::bool_>(value);
-  const bool is_int = !is_bool && py::isinstance<py::int_>(value);
+  const bool is_bool = py::isinstance<py::bool_>(value) || py::isinstance(value, py::module_::import("numpy").attr("bool_"));
+  const bool is_text = py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value);
   std::visit(
       [&](auto* target) {
         using T = std::remove_pointer_t<decltype(target)>;
         if constexpr (std::is_same_v<T, double>) {
-          if (is_bool || !(is_int || py::isinstance<py::float_>(value))) fail("a finite number");
-          const double v = value.cast<double>();
+          // Python's and numpy's numbers, through __float__.
+          if (is_bool || is_text) fail("a finite number");
+          const double v = PyFloat_AsDouble(value.ptr());
+          if (PyErr_Occurred() != nullptr) {
+            PyErr_Clear();
+            fail("a finite number");
+          }
           if (!std::isfinite(v)) fail("a finite number");
           *target = v;
         } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::optional<int>>) {
-          if (!is_int) fail("an integer");
-          const long long v = value.cast<py::int_>().cast<long long>();
-          if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) {
+          try {
+            *target = static_cast<int>(integer_from(value, std::numeric_limits<int>::min(),
+                                                    std::numeric_limits<int>::max(), field.key.c_str()));
+          } catch (const InputError&) {
             fail("an integer from -2147483648 to 2147483647");
           }
-          *target = static_cast<int>(v);
         } else if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, std::optional<std::uint64_t>>) {
-          if (!is_int || value.cast<py::int_>() < py::int_(0) ||
-              value.cast<py::int_>() > py::int_(std::numeric_limits<std::uint64_t>::max())) {
+          try {
+            *target = uint64_from(value, field.key.c_str());
+          } catch (const InputError&) {
             fail("an integer from 0 to 18446744073709551615");
           }
-          *target = value.cast<std::uint64_t>();
         } else if constexpr (std::is_same_v<T, bool>) {
           if (!is_bool) fail("true or false");
           *target = value.cast<bool>();
@@ -63,7 +69,7 @@ void assign(const ConfigField& field, const py::handle& value) {
           if (py::isinstance<py::str>(value)) {
             *target = value.cast<std::string>();
           } else if (py::isinstance(value, py::module_::import("os").attr("PathLike"))) {
-            *target = py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>();
+            *target = path_from(value);
           } else {
             fail("a string");
           }
@@ -80,8 +86,7 @@ ExperimentConfig config_from_python(const py::handle& config, const ParameterSet
   if (config.is_none()) {
     // the defaults
   } else if (py::isinstance<py::str>(config) || py::isinstance(config, py::module_::import("os").attr("PathLike"))) {
-    const std::string path = py::str(py::module_::import("os").attr("fspath")(config)).cast<std::string>();
-    apply_config_file(path, out, accepted, caller);
+    apply_config_file(path_from(config), out, accepted, caller);
   } else if (py::isinstance<py::dict>(config)) {
     std::vector<std::pair<std::string, py::handle>> entries;
     flatten(config.cast<py::dict>(), "", entries);

@@ -78,17 +78,65 @@ def test_config_errors_name_the_key():
         crux.run_experiment({"learning": {"epsilonn": 0.1}})
     with pytest.raises(ValueError, match="^config: crux.run_experiment does not take wall.seed$"):
         crux.run_experiment({"wall.seed": 1})
+    with pytest.raises(ValueError, match="^config: grid.columns must be an integer from -2147483648 to 2147483647$"):
+        crux.run_learning(crux.Wall.random(1), {"grid.columns": 2**70})
+    with pytest.raises(ValueError, match="^config: reward.step must be a finite number$"):
+        crux.run_learning(crux.Wall.random(1), {"reward.step": 10**400})
+    with pytest.raises(ValueError, match="^seed: must be an integer from 0 to 18446744073709551615$"):
+        crux.run_learning(crux.Wall.random(1), seed=-1)
+    with pytest.raises(ValueError, match="^seed: must be an integer from 0 to 18446744073709551615$"):
+        crux.Wall.random(2**64)
+    with pytest.raises(ValueError, match="^wall: give the wall as wall or as config's wall.file or wall.seed"):
+        crux.run_learning(crux.Wall.random(8), {"wall.seed": 3})
+
+
+def test_numpy_numbers_are_config_values(wall7):
+    config = {"experiment.iterations": np.int64(200), "learning.epsilon": np.float32(0.25)}
+    plain = {"experiment.iterations": 200, "learning.epsilon": float(np.float32(0.25))}
+    assert without_timing(crux.run_learning(wall7, config).summary) == without_timing(
+        crux.run_learning(wall7, plain).summary)
 
 
 def test_a_long_call_releases_the_gil(wall7):
-    worker = threading.Thread(target=crux.run_learning, args=(wall7, {"experiment.iterations": 3000}))
+    def spin(seconds):
+        spins, end = 0, time.perf_counter() + seconds
+        while time.perf_counter() < end:
+            spins += 1
+        return spins
+
+    rate = spin(0.2) / 0.2
+    duration = []
+
+    def call():
+        start = time.perf_counter()
+        crux.run_learning(wall7, {"experiment.iterations": 8000})
+        duration.append(time.perf_counter() - start)
+
+    worker = threading.Thread(target=call)
     worker.start()
     spins = 0
     while worker.is_alive():
         spins += 1
     worker.join()
-    # Holding the GIL, the call would have let this loop run only between bytecode switches.
-    assert spins > 10000
+    # Holding the GIL, the call would leave this loop only the switch interval before it
+    # (5 ms of a call of some 0.3 s); released, the loop runs beside it.
+    assert spins > 0.2 * rate * duration[0], (spins, rate, duration)
+
+
+def run_interrupted(script):
+    """Runs a script that prints 'started' and then makes a long call; sends SIGINT a
+    second later. Returns (stdout after 'started', stderr, seconds from SIGINT to exit)."""
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True, env=os.environ)
+    try:
+        assert child.stdout.readline().strip() == "started"
+        time.sleep(1.0)
+        sent = time.monotonic()
+        child.send_signal(signal.SIGINT)
+        out, err = child.communicate(timeout=60)
+        return out, err, time.monotonic() - sent
+    finally:
+        child.kill()
 
 
 @pytest.mark.parametrize("call", [
@@ -96,13 +144,30 @@ def test_a_long_call_releases_the_gil(wall7):
     "crux.run_experiment({'experiment': {'walls': 2, 'iterations': 10**7, 'plan': False}})",
 ])
 def test_ctrl_c_interrupts_a_long_call(call):
-    script = f"import crux, sys\nprint('started', flush=True)\n{call}\n"
-    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             text=True, env=os.environ)
-    assert child.stdout.readline().strip() == "started"
-    time.sleep(1.0)
-    sent = time.monotonic()
-    child.send_signal(signal.SIGINT)
-    _, err = child.communicate(timeout=60)
+    _, err, seconds = run_interrupted(f"import crux\nprint('started', flush=True)\n{call}\n")
     assert "KeyboardInterrupt" in err, err
-    assert time.monotonic() - sent < 10
+    assert seconds < 10
+
+
+def test_after_a_ctrl_c_other_calls_run_and_a_script_keeps_its_own_handler():
+    script = """
+import signal, threading, crux
+wall = crux.Wall.random(7)
+print('started', flush=True)
+try:
+    crux.run_learning(wall, {'experiment.iterations': 10**7})
+except KeyboardInterrupt:
+    print('interrupted')
+lengths = []
+worker = threading.Thread(target=lambda: lengths.append(len(crux.run_learning(wall, {'experiment.iterations': 300}).episode_lengths)))
+worker.start()
+worker.join()
+print('thread call finished', len(lengths))
+caught = []
+signal.signal(signal.SIGINT, lambda *args: caught.append(1))
+threading.Timer(0.3, lambda: signal.raise_signal(signal.SIGINT)).start()
+run = crux.run_learning(wall, {'experiment.iterations': 20000})
+print('own handler', len(caught), len(run.iterations['reward']))
+"""
+    out, err, _ = run_interrupted(script)
+    assert out.split("\n")[:3] == ["interrupted", "thread call finished 1", "own handler 1 20000"], (out, err)

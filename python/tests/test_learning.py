@@ -28,3 +28,33 @@ def test_bad_q_table_file_is_the_cli_message(run_cli, tmp_path):
     with pytest.raises(ValueError) as error:
         crux.run_learning(config={"wall.seed": 4}, q_grid=bad)
     assert err.strip() == "crux: " + str(error.value)
+
+
+def test_bad_table_arguments_are_value_errors():
+    table = crux.QTable(3)
+    table.set_value(5, 2, 1.5)
+    assert table.value(5, 2) == 1.5 and table.value(6, 0) == 0.0
+    with pytest.raises(ValueError, match="^action: must be an integer from 0 to 2$"):
+        table.value(5, 10**8)
+    with pytest.raises(ValueError, match="^action: must be an integer from 0 to 2$"):
+        table.set_value(5, -1, 1.0)
+    with pytest.raises(ValueError, match="^state: must be an integer from 0 to 18446744073709551615$"):
+        table.value(-1, 0)
+    with pytest.raises(ValueError, match="^action_count: must be an integer from 1 to"):
+        crux.QTable(0)
+    with pytest.raises(ValueError, match="^states: must be state codes, 0 or more$"):
+        crux.QTable.from_numpy(np.array([-1]), np.zeros((1, 3)))
+    with pytest.raises(ValueError, match="^states: must be an array of integers$"):
+        crux.QTable.from_numpy(np.array([0.5]), np.zeros((1, 3)))
+    with pytest.raises(ValueError, match="^visits: must be counts from 0 to 4294967295$"):
+        crux.QTable.from_numpy([1], np.zeros((1, 3)), np.array([[0, -1, 0]]))
+
+
+def test_a_transferred_table_must_fit_the_grid():
+    wrong_width = crux.QTable(5)
+    with pytest.raises(ValueError, match="^q_grid: has 5 actions, but the grid has 35 tiles$"):
+        crux.run_learning(crux.Wall.random(4), q_grid=wrong_width)
+    foreign_state = crux.QTable(35)
+    foreign_state.set_value(10**9, 0, 1.0)
+    with pytest.raises(ValueError, match="^q_grid: state code 1000000000 does not exist on a 5 x 7 grid$"):
+        crux.run_learning(crux.Wall.random(4), q_grid=foreign_state)

@@ -10,6 +10,7 @@
 
 #include <console_bridge/console.h>
 #include <dlfcn.h>
+#include <link.h>
 #include <Eigen/Geometry>
 #include <fmt/format.h>
 #include <urdf_parser/urdf_parser.h>
@@ -358,11 +359,16 @@ std::string default_body_model_path() {
   // beside <prefix>/share/crux; the build tree mirrors that layout under the build
   // folder, for the binaries at its top, in its subfolders (tests/, bench/) and in
   // python/crux/. So the first folder up from it that has share/crux/models is the one.
+  // For the main program dladdr names argv[0], which may be a bare command name: the
+  // executable's own path then comes from /proc/self/exe.
   Dl_info info{};
+  link_map* object = nullptr;
   std::error_code error;
   fs::path code_file;
-  if (dladdr(reinterpret_cast<const void*>(&default_body_model_path), &info) != 0 && info.dli_fname != nullptr) {
-    code_file = fs::canonical(info.dli_fname, error);
+  if (dladdr1(reinterpret_cast<const void*>(&default_body_model_path), &info, reinterpret_cast<void**>(&object),
+              RTLD_DL_LINKMAP) != 0 &&
+      object != nullptr && object->l_name != nullptr && object->l_name[0] != '\0') {
+    code_file = fs::canonical(object->l_name, error);
   }
   if (code_file.empty()) code_file = fs::read_symlink("/proc/self/exe", error);
   const fs::path relative = fs::path("share") / "crux" / "models" / "crux_human.urdf";

@@ -22,15 +22,23 @@ Wall load_configured_wall(const ExperimentConfig& config) {
   return generate_random_wall(*config.wall_seed, config.settings.walls);
 }
 
-QTable load_q_grid(const std::string& path, const GridParameters& grid) {
-  QTable q_grid = load_q_table(path, grid.tile_count(), describe_grid(grid));
+void check_q_grid(const QTable& q_grid, const GridParameters& grid, const std::string& source) {
+  if (q_grid.action_count() != grid.tile_count()) {
+    throw InputError(source, fmt::format("has {} actions, but the grid has {} tiles", q_grid.action_count(),
+                                         grid.tile_count()));
+  }
   // Codes beyond this grid's would be read as states of another shape.
   q_grid.for_each_row([&](StateCode state, auto, auto) {
     if (state >= agent_state_count(grid)) {
-      throw InputError(path, fmt::format("state code {} does not exist on a {} x {} grid", state, grid.columns,
-                                         grid.rows));
+      throw InputError(source, fmt::format("state code {} does not exist on a {} x {} grid", state, grid.columns,
+                                           grid.rows));
     }
   });
+}
+
+QTable load_q_grid(const std::string& path, const GridParameters& grid) {
+  QTable q_grid = load_q_table(path, grid.tile_count(), describe_grid(grid));
+  check_q_grid(q_grid, grid, path);
   return q_grid;
 }
 

@@ -17,6 +17,10 @@ BodyModel load_configured_body(const ExperimentConfig& config);
 // configured wall parameters. InputError("wall.file", ...) when neither is given.
 Wall load_configured_wall(const ExperimentConfig& config);
 
+// A Q_grid for `grid`: InputError(source, ...) when its action count is not the grid's
+// tile count or one of its state codes does not belong to the grid.
+void check_q_grid(const QTable& q_grid, const GridParameters& grid, const std::string& source);
+
 // A Q_grid file for `grid`: InputError(path, ...) when its tile count or one of its
 // state codes does not belong to that grid.
 QTable load_q_grid(const std::string& path, const GridParameters& grid);
