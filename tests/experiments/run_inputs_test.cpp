@@ -69,3 +69,25 @@ TEST(RunInputs, AQGridLearntOnA7By5GridIsRefusedOnA5By7Run) {
 
 }  // namespace
 }  // namespace crux
+
+namespace crux {
+namespace {
+
+TEST(RunInputs, AQGridInMemoryIsCheckedLikeAFile) {
+  const GridParameters grid;
+  QTable fits(grid.tile_count());
+  fits.set_value(agent_state_count(grid) - 1, 0, 1.0);
+  EXPECT_NO_THROW(check_q_grid(fits, grid, "table"));
+  try {
+    check_q_grid(QTable(grid.tile_count() - 1), grid, "table");
+    FAIL() << "a table of 34 actions passed for a 35-tile grid";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "table: has 34 actions, but the grid has 35 tiles");
+  }
+  QTable foreign(grid.tile_count());
+  foreign.set_value(agent_state_count(grid), 0, 1.0);
+  EXPECT_THROW(check_q_grid(foreign, grid, "table"), InputError);
+}
+
+}  // namespace
+}  // namespace crux
