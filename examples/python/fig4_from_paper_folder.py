@@ -1,5 +1,6 @@
 """Fig. 4 of the paper from a `crux paper` output folder, with pandas and matplotlib:
-each condition's episode lengths, averaged over its runs, on a log axis.
+each condition's episode lengths on a log axis, episode k averaged over the runs that
+completed k + 1 episodes.
 
     PYTHONPATH=build/release/python /usr/bin/python3 examples/python/fig4_from_paper_folder.py out/paper fig4.png
 """
@@ -26,7 +27,7 @@ mean_lengths = episodes.groupby(["condition", "episode"])["length"].mean().unsta
 summary = json.loads((folder / "summary.json").read_text())
 figure, axes = plt.subplots(figsize=(7, 4))
 for condition in mean_lengths.columns:
-    axes.plot(mean_lengths.index, mean_lengths[condition], label=condition)
+    axes.plot(mean_lengths.index, mean_lengths[condition], marker=".", label=condition)
 axes.set(yscale="log", xlabel="episode", ylabel="episode length (actions)",
          title=f"Fig. 4: {summary['iterations']} iterations per run, {summary['wall_pairs']} wall pairs")
 axes.legend()
