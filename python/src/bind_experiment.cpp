@@ -10,6 +10,7 @@
 #include "conversions.hpp"
 #include "common/input_error.hpp"
 #include "experiments/experiment_analysis.hpp"
+#include "experiments/learning_parameters.hpp"
 #include "experiments/learning_run.hpp"
 #include "experiments/run_inputs.hpp"
 #include "interruption.hpp"
@@ -20,14 +21,6 @@
 namespace crux::python {
 
 namespace {
-
-// The keys of crux train and crux transfer, and of crux paper.
-const ParameterSet kRunParameters{{"experiment.urdf", "experiment.seed", "experiment.iterations",
-                                   "experiment.beginning", "experiment.threshold_length", "experiment.greedy_cap",
-                                   "experiment.q_grid", "learning", "reward", "ik", "filter", "grid", "wall"},
-                                  {"wall.name", "wall.count"}};
-const ParameterSet kPaperParameters{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"},
-                                    {"experiment.q_grid", "wall.file", "wall.seed", "wall.name", "wall.count"}};
 
 py::object json_to_python(const nlohmann::ordered_json& json) {
   return py::module_::import("json").attr("loads")(json.dump());
@@ -77,7 +70,7 @@ bool config_is_file(const py::handle& config) { return !config.is_none() && !py:
 LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& config_handle,
                             const py::handle& seed_handle, const py::handle& q_grid_handle,
                             const py::handle& model_handle) {
-  ExperimentConfig config = config_from_python(config_handle, kRunParameters, "run_learning");
+  ExperimentConfig config = config_from_python(config_handle, kTransferParameters, "run_learning");
   const bool wall_given = !wall_handle.is_none();
   if (wall_given && (!config.wall_file.empty() || config.wall_seed)) {
     throw InputError("wall", "give the wall as wall or as config's wall.file or wall.seed, not both");
@@ -116,10 +109,10 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
     RunResult run = run_learning(*model, wall, config.settings.learning, config.settings.seed,
                                  initial ? &*initial : nullptr, [&guard](int) { guard.poll(); });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const ExperimentResult result =
-        single_run_result(run, wall, config.wall_seed, config.settings.seed, condition, seconds);
+    ExperimentResult result =
+        single_run_result(std::move(run), wall, config.wall_seed, config.settings.seed, condition, seconds);
     summary = summary_json(result, nullptr, config.settings, provenance);
-    out.run = std::move(run);
+    out.run = std::move(result.conditions[static_cast<int>(condition)].runs.front());
   }
   out.summary = json_to_python(summary);
   return out;

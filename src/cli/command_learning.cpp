@@ -12,6 +12,7 @@
 #include "cli/progress_bar.hpp"
 #include "common/input_error.hpp"
 #include "common/printable.hpp"
+#include "experiments/learning_parameters.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/output_folder.hpp"
 #include "reports/summary.hpp"
@@ -21,18 +22,6 @@ namespace crux::cli {
 
 namespace {
 
-// The keys of a single learning run; transfer adds the Q_grid, paper the experiment's.
-const ParameterSet kTrainParameters{{"experiment.urdf", "experiment.seed", "experiment.iterations",
-                                     "experiment.beginning", "experiment.threshold_length", "experiment.greedy_cap",
-                                     "learning", "reward", "ik", "filter", "grid", "wall"},
-                                    {"wall.name", "wall.count"}};
-const ParameterSet kTransferParameters{{"experiment.urdf", "experiment.seed", "experiment.iterations",
-                                        "experiment.beginning", "experiment.threshold_length",
-                                        "experiment.greedy_cap", "experiment.q_grid", "learning", "reward", "ik",
-                                        "filter", "grid", "wall"},
-                                       {"wall.name", "wall.count"}};
-const ParameterSet kPaperParameters{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"},
-                                    {"experiment.q_grid", "wall.file", "wall.seed", "wall.name", "wall.count"}};
 const ParameterSet kPlanParameters{{"experiment.urdf", "experiment.plan_max_solves", "ik", "filter", "wall"}, {"wall.name", "wall.count"}};
 
 // The replayed config's recorded digests must match the inputs used now.
