@@ -31,14 +31,19 @@ std::string path_from(const py::handle& path) {
   return py::str(os.attr("fspath")(path)).cast<std::string>();
 }
 
+// numpy.bool_, looked up once (env.step converts an action at every step); the
+// reference is kept for the life of the process, as the module's.
+bool is_numpy_bool(const py::handle& value) {
+  static PyObject* const numpy_bool = py::object(py::module_::import("numpy").attr("bool_")).release().ptr();
+  return PyObject_IsInstance(value.ptr(), numpy_bool) == 1;
+}
+
 namespace {
 
 // The integer value of `value` (Python's int or numpy's integers; bools refused), or
 // nothing.
 std::optional<py::int_> as_integer(const py::handle& value) {
-  if (py::isinstance<py::bool_>(value) || py::isinstance(value, py::module_::import("numpy").attr("bool_"))) {
-    return std::nullopt;
-  }
+  if (PyBool_Check(value.ptr()) != 0 || is_numpy_bool(value)) return std::nullopt;
   PyObject* index = PyNumber_Index(value.ptr());
   if (index == nullptr) {
     PyErr_Clear();

@@ -25,6 +25,8 @@ BodyModelPtr body_or_default(const py::handle& model);
 // A str or os.PathLike as a path.
 std::string path_from(const py::handle& path);
 
+// Whether `value` is a numpy boolean (numpy lets one pass for an integer).
+bool is_numpy_bool(const py::handle& value);
 // An integer (Python's or numpy's, not a bool) from 0 to 2^64 - 1: a seed, a state code.
 std::uint64_t uint64_from(const py::handle& seed, const char* what);
 // An integer (not a bool) within [low, high].

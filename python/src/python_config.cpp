@@ -34,7 +34,7 @@ void assign(const ConfigField& field, const py::handle& value) {
   const auto fail = [&](const char* expected) {
     throw InputError(kSource, fmt::format("{} must be {}", field.key, expected));
   };
-  const bool is_bool = py::isinstance<py::bool_>(value) || py::isinstance(value, py::module_::import("numpy").attr("bool_"));
+  const bool is_bool = py::isinstance<py::bool_>(value) || is_numpy_bool(value);
   const bool is_text = py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value);
   std::visit(
       [&](auto* target) {
