@@ -27,8 +27,8 @@ struct PythonIkResult {
 };
 
 std::array<Eigen::Vector3d, kLimbCount> holds_from(const py::handle& holds) {
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(holds);
-  if (!a || a.ndim() != 2 || a.shape(0) != kLimbCount || a.shape(1) != 3) {
+  const auto a = double_array_from(holds, "holds");
+  if (a.ndim() != 2 || a.shape(0) != kLimbCount || a.shape(1) != 3) {
     throw InputError("holds", "must be an array of shape (4, 3): the hold centres in limb order");
   }
   std::array<Eigen::Vector3d, kLimbCount> out;
@@ -89,8 +89,8 @@ void bind_ik(py::module_& m) {
         ReachTarget target;
         target.hold_centres = holds_from(holds);
         if (!radii.is_none()) {
-          const auto r = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(radii);
-          if (!r || r.ndim() != 1 || r.shape(0) != kLimbCount) throw InputError("radii", "must have shape (4,)");
+          const auto r = double_array_from(radii, "radii");
+          if (r.ndim() != 1 || r.shape(0) != kLimbCount) throw InputError("radii", "must have shape (4,)");
           for (int limb = 0; limb < kLimbCount; ++limb) {
             if (!(r.at(limb) > 0.0) || !std::isfinite(r.at(limb))) throw InputError("radii", "must be positive");
             target.hold_radii[limb] = r.at(limb);

@@ -19,8 +19,6 @@ namespace crux::python {
 
 namespace {
 
-const ParameterSet kGridParameters{{"grid"}, {}};
-
 py::tuple table_to_numpy(const QTable& table) {
   const auto rows = static_cast<py::ssize_t>(table.state_count());
   const py::ssize_t actions = table.action_count();

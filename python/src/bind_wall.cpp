@@ -22,8 +22,6 @@ namespace crux::python {
 namespace {
 
 const ParameterSet kWallParameters{{"wall"}, {"wall.file", "wall.seed", "wall.name", "wall.count"}};
-const ParameterSet kFilterParameters{{"filter"}, {}};
-const ParameterSet kGridParameters{{"grid"}, {}};
 
 HoldConfiguration three_configuration_from(const py::handle& holds, const Wall& wall) {
   const HoldConfiguration c = configuration_from(holds, wall, "configuration");

@@ -12,6 +12,10 @@
 
 namespace crux::python {
 
+// The keys of one config section: what the functions over the grid or the filter take.
+inline const ParameterSet kGridParameters{{"grid"}, {}};
+inline const ParameterSet kFilterParameters{{"filter"}, {}};
+
 // `caller` names the Python function in errors: "ClimbEnv" gives "crux.ClimbEnv does
 // not take wall.seed".
 ExperimentConfig config_from_python(const pybind11::handle& config, const ParameterSet& accepted,
