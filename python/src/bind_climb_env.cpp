@@ -10,7 +10,6 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
-#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
 #include "climbing/climbing_mdp.hpp"
 #include "common/input_error.hpp"
@@ -28,16 +27,7 @@ class ClimbEnv {
       : wall_(std::move(wall)),
         max_steps_(static_cast<int>(integer_from(max_steps, 1, std::numeric_limits<int>::max(), "max_steps"))) {
     const ExperimentConfig c = config_from_python(config, kEnvParameters, "ClimbEnv");
-    if (!model.is_none() && !c.urdf.empty()) {
-      throw InputError("model", "give the body as model or as config's experiment.urdf, not both");
-    }
-    if (!model.is_none()) {
-      model_ = body_or_default(model);
-    } else if (!c.urdf.empty()) {
-      model_ = std::make_shared<BodyModel>(load_body_model(c.urdf));
-    } else {
-      model_ = body_or_default(model);
-    }
+    model_ = body_from(model, c.urdf);
     {
       py::gil_scoped_release release;
       mdp_ = std::make_unique<ClimbingMdp>(*model_, wall_, c.settings.learning.climbing);

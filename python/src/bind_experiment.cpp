@@ -75,12 +75,8 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
   if (wall_given && (!config.wall_file.empty() || config.wall_seed)) {
     throw InputError("wall", "give the wall as wall or as config's wall.file or wall.seed, not both");
   }
-  if (!model_handle.is_none() && !config.urdf.empty()) {
-    throw InputError("model", "give the body as model or as config's experiment.urdf, not both");
-  }
   if (!seed_handle.is_none()) config.settings.seed = uint64_from(seed_handle, "seed");
-  const BodyModelPtr model =
-      model_handle.is_none() ? std::make_shared<BodyModel>(load_configured_body(config)) : body_or_default(model_handle);
+  const BodyModelPtr model = body_from(model_handle, config.urdf);
   config.urdf = model->source;  // what the provenance records: the body used
   const GridParameters& grid = config.settings.learning.climbing.grid;
   std::optional<QTable> initial;

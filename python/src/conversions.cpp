@@ -23,6 +23,12 @@ BodyModelPtr body_or_default(const py::handle& model) {
   return body;
 }
 
+BodyModelPtr body_from(const py::handle& model, const std::string& configured_urdf) {
+  if (configured_urdf.empty()) return body_or_default(model);
+  if (!model.is_none()) throw InputError("model", "give the body as model or as config's experiment.urdf, not both");
+  return std::make_shared<BodyModel>(load_body_model(configured_urdf));
+}
+
 std::string path_from(const py::handle& path) {
   const py::module_ os = py::module_::import("os");
   if (!py::isinstance<py::str>(path) && !py::isinstance(path, os.attr("PathLike"))) {

@@ -22,6 +22,10 @@ using BodyModelPtr = std::shared_ptr<BodyModel>;  // never changed once loaded
 // The body `model` (a crux.BodyModel), or the default body (loaded once) when None.
 BodyModelPtr body_or_default(const py::handle& model);
 
+// The body of a call that takes both a `model` argument and config's experiment.urdf:
+// the one given (InputError when both are), else the default body.
+BodyModelPtr body_from(const py::handle& model, const std::string& configured_urdf);
+
 // A str or os.PathLike as a path.
 std::string path_from(const py::handle& path);
 
