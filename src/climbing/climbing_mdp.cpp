@@ -16,9 +16,7 @@ ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const Climbin
       candidates_(wall.hold_count()),
       tile_representative_(parameters.grid.tile_count()),
       tile_best_distance_(parameters.grid.tile_count()) {
-  const Posture* start = reacher_.reach_start();
-  if (start == nullptr) throw InputError(wall_.name, "the start configuration is not reachable");
-  start_posture_ = *start;
+  start_posture_ = reacher_.require_start(wall_.name);
   reset();
   // Every later state offers at least the hold its free limb just left; the start must
   // be checked (a wall file or the filter's parameters can leave it without actions).

@@ -1,6 +1,7 @@
 #include "climbing/configuration_reacher.hpp"
 
 #include "body/kinematics.hpp"
+#include "common/input_error.hpp"
 
 namespace crux {
 
@@ -26,6 +27,12 @@ const Posture* ConfigurationReacher::reach(const Posture& from, const HoldConfig
 const Posture* ConfigurationReacher::reach_start() {
   // solve_start's problem, answered through the cache.
   return reach(start_guess(model_, wall_, parameters_.root), start_configuration(wall_));
+}
+
+const Posture& ConfigurationReacher::require_start(const std::string& source) {
+  const Posture* start = reach_start();
+  if (start == nullptr) throw InputError(source, "the start configuration is not reachable");
+  return *start;
 }
 
 const BodyData& ConfigurationReacher::place(const Posture& posture) {

@@ -3,6 +3,8 @@
 // answered once per 4-configuration through the cache (section III-C). The climbing
 // MDP and the exact planner share it, so they apply the same reachability test.
 
+#include <string>
+
 #include "body/body_data.hpp"
 #include "climbing/posture_cache.hpp"
 #include "configurations/reachability.hpp"
@@ -19,6 +21,10 @@ class ConfigurationReacher {
 
   // The start configuration solved from standing (and cached); null if unreachable.
   const Posture* reach_start();
+
+  // reach_start's posture; InputError naming `source` (the wall as the user gave it)
+  // when the start is not reachable.
+  const Posture& require_start(const std::string& source);
 
   // Forward kinematics and centre of mass of `posture`; valid until the next call.
   const BodyData& place(const Posture& posture);

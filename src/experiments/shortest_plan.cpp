@@ -3,7 +3,6 @@
 #include <deque>
 #include <unordered_map>
 
-#include "common/input_error.hpp"
 
 namespace crux {
 
@@ -21,8 +20,7 @@ struct Node {
 Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
                    const PlanSettings& settings) {
   ConfigurationReacher reacher(model, wall, parameters.reachability);
-  const Posture* start = reacher.reach_start();
-  if (start == nullptr) throw InputError(wall.name, "the start configuration is not reachable");
+  const Posture* start = &reacher.require_start(wall.name);
   std::vector<Node> nodes{{start_configuration(wall).with(Limb::RightHand, kFree), start, -1, -1}};
   std::unordered_map<std::uint64_t, bool> seen{{encode(nodes[0].configuration, wall.hold_count()), true}};
   std::deque<std::size_t> frontier{0};

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/input_error.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
@@ -28,8 +29,15 @@ TEST(ConfigurationReacher, StartIsSolveStartAnsweredThroughTheCache) {
       ASSERT_EQ(start != nullptr, direct.reached) << "seed " << seed;
       if (start != nullptr) {
         EXPECT_EQ(*start, direct.posture) << "seed " << seed;
+        EXPECT_EQ(&reacher.require_start("wall.json"), start) << "seed " << seed;
         ++reached;
       } else {
+        try {
+          reacher.require_start("wall.json");
+          ADD_FAILURE() << "seed " << seed << ": an unreachable start is an input error";
+        } catch (const InputError& error) {
+          EXPECT_STREQ(error.what(), "wall.json: the start configuration is not reachable") << "seed " << seed;
+        }
         ++refused;
       }
       reacher.reach_start();
