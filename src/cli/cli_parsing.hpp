@@ -34,13 +34,13 @@ inline IkSolverKind require_ik_solver(const std::string& name, const char* flag)
   return *kind;
 }
 
-// --climb of view and report: which recorded climb of a run (chosen_climb).
-inline void add_climb_option(CLI::App* command, std::string& kind) {
+// --climb of view and report: which climb of a run (climb_to_show).
+inline void add_climb_option(CLI::App* command, std::string& choice) {
   command
-      ->add_option("--climb", kind,
+      ->add_option("--climb", choice,
                    "The run's climb: greedy (the learnt policy's, after learning; the last episode's when it does "
-                   "not finish) or last (the last completed episode, with its exploration)")
-      ->check(CLI::IsMember({"greedy", "last"}))
+                   "not finish), last (the last completed episode, with its exploration) or an episode number N "
+                   "(replayed from the run's actions)")
       ->capture_default_str();
 }
 

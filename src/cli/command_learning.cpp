@@ -11,10 +11,10 @@
 #include "cli/parameter_binding.hpp"
 #include "cli/progress_bar.hpp"
 #include "common/input_error.hpp"
-#include "common/printable.hpp"
 #include "experiments/learning_parameters.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/output_folder.hpp"
+#include "reports/plan_description.hpp"
 #include "reports/summary.hpp"
 #include "reports/text_report.hpp"
 
@@ -116,38 +116,7 @@ struct PlanCommand {
     const BodyModel model = load_configured_body(config);
     const Wall wall = load_configured_wall(config);
     const Plan plan = shortest_plan(model, wall, config.settings.learning.climbing, config.settings.plan_search);
-    if (json) {
-      nlohmann::ordered_json out;
-      out["wall"] = wall.name;
-      out["found"] = plan.found;
-      out["stopped_at_limit"] = plan.stopped_at_limit;
-      out["length"] = plan.found ? plan.length : -1;
-      out["holds"] = plan.hold_ids;
-      std::vector<std::string> limbs;
-      for (const Limb l : plan.limbs) limbs.push_back(limb_name(l));
-      out["limbs"] = limbs;
-      out["expanded_states"] = plan.expanded_states;
-      out["ik_solves"] = plan.ik_solves;
-      std::cout << out.dump(2) << '\n';
-      return;
-    }
-    if (plan.stopped_at_limit) {
-      std::cout << fmt::format(
-          "no climb found on '{}' within {} IK solves ({} states explored); the search stopped at its limit, "
-          "--plan-max-solves raises it\n",
-          printable(wall.name), plan.ik_solves, plan.expanded_states);
-      return;
-    }
-    if (!plan.found) {
-      std::cout << fmt::format("no climb exists on '{}' ({} states explored, {} IK solves)\n", printable(wall.name),
-                               plan.expanded_states, plan.ik_solves);
-      return;
-    }
-    std::cout << fmt::format("shortest climb on '{}': {} actions ({} states explored, {} IK solves)\n", printable(wall.name),
-                             plan.length, plan.expanded_states, plan.ik_solves);
-    for (int i = 0; i < plan.length; ++i) {
-      std::cout << fmt::format("  {:2d}. {:<10} -> hold {}\n", i + 1, limb_name(plan.limbs[i]), plan.hold_ids[i]);
-    }
+    std::cout << (json ? plan_json(wall, plan).dump(2) + "\n" : plan_text(wall, plan));
   }
 };
 

@@ -1,10 +1,9 @@
-// crux report: one self-contained HTML page for an output folder, with the figures, the
-// statistics and a 3D replay of a climb.
+// crux report and crux figures: one self-contained HTML page for an output folder, with
+// the figures, the statistics and a 3D replay of a climb; the SVG figures of a paper folder.
 
 #include <chrono>
 #include <iostream>
 #include <memory>
-#include <regex>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -13,68 +12,36 @@
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
 #include "common/atomic_file.hpp"
-#include "common/input_error.hpp"
 #include "experiments/run_inputs.hpp"
-#include "reports/html_report.hpp"
-#include "reports/replay_data.hpp"
 #include "reports/report_figures.hpp"
-#include "reports/run_folder.hpp"
+#include "reports/report_page.hpp"
 #include "reports/web_assets.hpp"
 
 namespace crux::cli {
 
 namespace {
 
-const ParameterSet kReportParameters{{"experiment.urdf", "ik"}, {"ik.cache_unreachable"}};
+// A folder is reported with its own config.toml; only the body may be named again.
+const ParameterSet kReportParameters{{"experiment.urdf"}, {}};
 
 struct ReportCommand {
   ParameterBinding binding{"report", kReportParameters};
   std::string folder;
   std::string output;
-  std::string replay_run = "training_0";
-  std::string climb_kind = "greedy";
+  std::string run_name = "training_0";
+  std::string climb_choice = "greedy";
   bool json = false;
 
   void run() {
     const auto started = std::chrono::steady_clock::now();
     ExperimentConfig config = binding.resolve();
-    namespace fs = std::filesystem;
-    std::error_code error;
-    if (!fs::is_directory(folder, error)) throw InputError(folder, "no such output folder");
-    const bool experiment = !fs::exists(fs::path(folder) / "wall.json", error) &&
-                            fs::exists(fs::path(folder) / "summary.json", error);
-    if (!experiment && !fs::exists(fs::path(folder) / "wall.json", error)) {
-      throw InputError(folder,
-                       "not an output folder of crux paper, train or transfer (for one run of a crux paper folder, "
-                       "give the paper folder and --replay-run <condition>_<i>)");
-    }
-    static const std::regex run_name("(training|transfer|control)_[0-9]{1,9}");
-    if (experiment && !std::regex_match(replay_run, run_name)) {
-      throw InputError("--replay-run", fmt::format("'{}' is not a run name: <condition>_<i>, condition training, "
-                                                   "transfer or control",
-                                                   replay_run));
-    }
-    const fs::path run_directory = experiment ? fs::path(folder) / "runs" / replay_run : fs::path(folder);
-    if (experiment && !fs::is_directory(run_directory, error)) {
-      throw InputError("--replay-run", fmt::format("'{}' is not a run of {}", replay_run, folder));
-    }
-    RunFolder run = locate_run_folder(run_directory);
+    const ReportedRun reported = locate_reported_run(folder, run_name, "--run");
+    RunFolder run = locate_run_folder(reported.run_directory);
+    const ExperimentConfig recorded = read_run_config(run);
     if (config.urdf.empty()) config.urdf = run.urdf;
     const BodyModel model = load_configured_body(config);
     read_run_climb(run, model);
-
-    ReportPage page;
-    page.summary = std::move(run.summary);
-    page.title = fmt::format("crux report: {}", fs::absolute(folder).lexically_normal().filename().string());
-    const ReachabilityParameters& reach = config.settings.learning.climbing.reachability;
-    page.figures = report_figures(experiment ? fs::path(folder) : fs::path(), model, run, reach);
-    const RecordedClimb& climb = chosen_climb(run, climb_kind);
-    page.replay_title = fmt::format("{} on '{}': {}", run.name, run.wall.name,
-                                    climb.kind == "greedy" ? "the greedy policy's climb after learning"
-                                                           : fmt::format("episode {}", climb.episode));
-    if (!climb.postures.empty()) {
-      page.replay = replay_data(model, run.wall, climb, reach, page.replay_title, run.directory.string());
-    }
+    ReportPage page = report_page(folder, reported, run, model, recorded, climb_choice);
     page.style = report_style();
     page.script = replay_script();
     const std::string html = html_report(page);
@@ -88,7 +55,8 @@ struct ReportCommand {
       out["bytes"] = html.size();
       out["figures"] = page.figures.size();
       out["replay_run"] = run.name;
-      out["replay_climb"] = page.replay.is_null() ? nlohmann::ordered_json() : nlohmann::ordered_json(climb.kind);
+      out["replay_climb"] = page.replay.is_null() ? nlohmann::ordered_json() : nlohmann::ordered_json(page.replay_climb);
+      out["replay_episode"] = page.replay_episode;
       out["replay_moves"] = moves;
       out["replay_frames"] = frames;
       out["seconds"] = seconds;
@@ -131,13 +99,13 @@ void add_report_commands(CLI::App& app) {
   auto report = std::make_shared<ReportCommand>();
   auto* r = app.add_subcommand(
       "report", "Write one self-contained HTML page for an output folder of crux paper, train or transfer: Table I\n"
-                "beside the paper's, the statistics, the figures and a 3D replay of a climb (works offline)");
+                "beside the paper's, the statistics, the figures and a 3D replay of a climb (works offline); the\n"
+                "folder is read with its own config.toml");
   r->add_option("folder", report->folder, "The output folder")->required();
   r->add_option("-o,--output", report->output, "The HTML file to write")->required();
-  r->add_option("--replay-run", report->replay_run,
-                "For a crux paper folder: the run whose climb is replayed, runs/<condition>_<i>")
+  r->add_option("--run", report->run_name, "For a crux paper folder: the run whose climb is replayed, <condition>_<i>")
       ->capture_default_str();
-  add_climb_option(r, report->climb_kind);
+  add_climb_option(r, report->climb_choice);
   r->add_flag("--json", report->json, "Print JSON instead of text");
   report->binding.bind(r);
   r->callback([report] { report->run(); });

@@ -2,10 +2,8 @@
 
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "agent_space/moving_grid.hpp"
 #include "cli/cli_parsing.hpp"
@@ -14,8 +12,8 @@
 #include "experiments/run_inputs.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
-#include "common/printable.hpp"
 #include "configurations/reachability.hpp"
+#include "reports/wall_description.hpp"
 #include "views/wall_svg.hpp"
 #include "wall/random_wall.hpp"
 #include "wall/wall_file.hpp"
@@ -41,17 +39,6 @@ IkResult check_start(const ExperimentConfig& config, const Wall& wall) {
   return solve_start(model, data, wall, config.settings.learning.climbing.reachability);
 }
 
-nlohmann::ordered_json start_json(const Wall& wall) {
-  nlohmann::ordered_json ids;
-  for (int l = 0; l < kLimbCount; ++l) ids[limb_name(static_cast<Limb>(l))] = wall.holds[wall.start[l]].id;
-  return ids;
-}
-
-std::string start_summary(const Wall& wall) {
-  return fmt::format("right hand {}, left hand {}, right foot {}, left foot {}", wall.holds[wall.start[0]].id,
-                     wall.holds[wall.start[1]].id, wall.holds[wall.start[2]].id, wall.holds[wall.start[3]].id);
-}
-
 struct GenerateCommand {
   ParameterBinding binding{"wall generate", kGenerateParameters, generate_defaults()};
   std::string output;
@@ -66,25 +53,8 @@ struct GenerateCommand {
     const IkResult reach = check_start(config, wall);
     save_wall(output, wall);
     const std::string solver = ik_solver_name(config.settings.learning.climbing.reachability.ik.solver);
-    if (json) {
-      nlohmann::ordered_json out;
-      out["file"] = output;
-      out["name"] = wall.name;
-      out["seed"] = *config.wall_seed;
-      out["holds"] = wall.hold_count();
-      out["finish_height"] = wall.finish_height;
-      out["start"] = start_json(wall);
-      out["start_reachable"] = reach.reached;
-      out["start_iterations"] = reach.iterations;
-      out["start_solver"] = solver;
-      std::cout << out.dump(2) << '\n';
-    } else {
-      std::cout << fmt::format("wrote {}: '{}', {} holds, finish height {} m\n", output, printable(wall.name), wall.hold_count(),
-                             wall.finish_height)
-              << fmt::format("start configuration ({}): ", start_summary(wall));
-      std::cout << (reach.reached ? fmt::format("reachable ({} solver, {} iterations)\n", solver, reach.iterations)
-                                  : std::string("NOT reachable\n"));
-    }
+    std::cout << (json ? generated_wall_json(output, wall, *config.wall_seed, reach, solver).dump(2) + "\n"
+                       : generated_wall_text(output, wall, reach, solver));
     if (reach.reached) return;
     std::cerr << fmt::format("crux: {}: the start configuration is not reachable (residual {:.3f} m)\n", output,
                              reach.residual_m);
@@ -98,79 +68,35 @@ struct ShowCommand {
   std::string svg;
   std::string grid_limb;
   std::string grid_at;
-  GridParameters grid;
-  std::string file;
 
   void run() {
     const ExperimentConfig config = binding.resolve();
     if (config.wall_file.empty()) throw InputError("--wall-file", "give the wall file to show");
-    file = config.wall_file;
-    grid = config.settings.learning.climbing.grid;
-    const Wall wall = load_wall(file);
+    const Wall wall = load_wall(config.wall_file);
     const IkResult reach = check_start(config, wall);
-    std::optional<GridPlacement> placement;
-    std::optional<Limb> limb;
+    std::optional<PlacedGrid> grid;
     if (!grid_limb.empty()) {
-      limb = parse_limb(grid_limb);
+      const auto limb = parse_limb(grid_limb);
       if (!limb) throw InputError("--limb", fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", grid_limb));
       Eigen::Vector3d at = wall.holds[wall.start[static_cast<int>(*limb)]].position;
       if (!grid_at.empty()) at = parse_wall_point(grid_at, "--at");
-      placement = place_grid(grid, *limb, at);
+      const GridParameters& parameters = config.settings.learning.climbing.grid;
+      grid = PlacedGrid{*limb, place_grid(parameters, *limb, at), parameters};
     }
     if (!svg.empty()) {
       WallSvgOptions options;
-      options.grid = placement;
-      options.grid_limb = limb;
+      if (grid) {
+        options.grid = grid->placement;
+        options.grid_limb = grid->limb;
+      }
       write_file_atomically(svg, render_wall_svg(wall, options));
     }
-    json ? print_json(wall, reach, placement, limb) : print_text(wall, reach, placement);
-  }
-
-  void print_text(const Wall& wall, const IkResult& reach, const std::optional<GridPlacement>& placement) const {
-    Eigen::Vector3d low = wall.holds[0].position, high = low;
-    for (const Hold& h : wall.holds) {
-      low = low.cwiseMin(h.position);
-      high = high.cwiseMax(h.position);
+    if (json) {
+      std::cout << wall_summary_json(config.wall_file, wall, reach, grid).dump(2) << '\n';
+      return;
     }
-    std::cout << fmt::format("'{}' ({}): {} holds, y from {:.2f} to {:.2f} m, z from {:.2f} to {:.2f} m\n", printable(wall.name),
-                             file, wall.hold_count(), low.y(), high.y(), low.z(), high.z())
-              << fmt::format("finish height {} m; start configuration: {} ({})\n", wall.finish_height,
-                             start_summary(wall), reach.reached ? "reachable" : "NOT reachable");
-    if (placement) {
-      std::cout << "grid tiles -> holds (tile: hold id):";
-      for (int tile = 0; tile < grid.tile_count(); ++tile) {
-        const int hold = hold_in_tile(wall, *placement, tile);
-        if (hold >= 0) std::cout << fmt::format(" {}:{}", tile, wall.holds[hold].id);
-      }
-      std::cout << '\n';
-    }
+    std::cout << wall_summary_text(config.wall_file, wall, reach, grid);
     if (!svg.empty()) std::cout << "wrote " << svg << '\n';
-  }
-
-  void print_json(const Wall& wall, const IkResult& reach, const std::optional<GridPlacement>& placement,
-                  const std::optional<Limb>& limb) const {
-    nlohmann::ordered_json out;
-    out["file"] = file;
-    out["name"] = wall.name;
-    out["holds"] = wall.hold_count();
-    out["finish_height"] = wall.finish_height;
-    out["start"] = start_json(wall);
-    out["start_reachable"] = reach.reached;
-    out["start_iterations"] = reach.iterations;
-    if (placement) {
-      nlohmann::ordered_json g;
-      g["limb"] = limb_name(*limb);
-      g["origin"] = {placement->origin.x(), placement->origin.y()};
-      g["hold_tiles"] = nlohmann::json::array();
-      for (const Hold& h : wall.holds) g["hold_tiles"].push_back({{"id", h.id}, {"tile", placement->tile_of(h.position)}});
-      g["tile_holds"] = nlohmann::json::array();
-      for (int tile = 0; tile < grid.tile_count(); ++tile) {
-        const int hold = hold_in_tile(wall, *placement, tile);
-        g["tile_holds"].push_back({{"tile", tile}, {"id", hold >= 0 ? wall.holds[hold].id : 0}});
-      }
-      out["grid"] = g;
-    }
-    std::cout << out.dump(2) << '\n';
   }
 };
 
@@ -190,7 +116,7 @@ void add_wall_command(CLI::App& app) {
   auto show = std::make_shared<ShowCommand>();
   auto* s = wall->add_subcommand("show", "Summarise a wall file; draw it (--svg), with the moving grid on a limb (--limb)");
   s->add_flag("--json", show->json, "Print JSON instead of text");
-  s->add_option("--svg", show->svg, "Write an SVG front view to this file");
+  s->add_option("-o,--output", show->svg, "Write an SVG front view to this file");
   s->add_option("--limb", show->grid_limb, "Place the moving grid on this free limb (right_hand, left_hand, ...)");
   s->add_option("--at", show->grid_at, "Y,Z of the free limb (default: its start hold)");
   show->binding.bind(s);

@@ -52,7 +52,9 @@ const std::map<std::string, std::string>& renamed_flags() {
       {"--finish-height", "--wall-finish-height"}, {"--wall", "--wall-file"}, {"--qgrid", "--q-grid"},
       {"--columns", "--wall-columns"}, {"--rows", "--wall-rows"}, {"--tile-width", "--wall-tile-width"},
       {"--tile-height", "--wall-tile-height"}, {"--sigma", "--wall-sigma"}, {"--name", "--wall-name"},
-      {"--grid", "--limb"}, {"--walls", "--wall-count"}, {"--seed", "--wall-seed"}};
+      {"--grid", "--limb"}, {"--walls", "--wall-count"}, {"--seed", "--wall-seed"}, {"--svg", "--output"},
+      {"--path-out", "--output"}, {"--replay-run", "--run"}, {"--queries", "--compare-queries"},
+      {"--walk-solver", "--compare-walk-solver"}};
   return renamed;
 }
 

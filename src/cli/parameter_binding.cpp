@@ -66,6 +66,11 @@ std::string ParameterBinding::where(const std::string& key) const {
   return given != nullptr ? flag_for_key(key) : key;
 }
 
+bool ParameterBinding::is_set(const std::string& key) const {
+  const CLI::Option* given = option(key);
+  return (given != nullptr && given->count() > 0) || lines_.contains(key);
+}
+
 ExperimentConfig ParameterBinding::resolve() {
   ExperimentConfig config = defaults_;
   if (!config_path_.empty()) lines_ = apply_config_file(config_path_, config, accepted_, command_);

@@ -28,6 +28,8 @@ class ParameterBinding {
   const std::string& config_path() const { return config_path_; }
   // How the user named `key`: its flag when given (or never set), else file:line:key.
   std::string where(const std::string& key) const;
+  // Whether `key` was given, by flag or by the config file (after resolve()).
+  bool is_set(const std::string& key) const;
 
  private:
   std::string command_;

@@ -70,6 +70,9 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"ik.root_tolerance", "Radius of the root tolerance sphere (m)", &ik.tolerances.root_radius},
       {"ik.wall_distance", "x of the root target H(C4) (m)", &m.reachability.root.distance_from_wall},
       {"ik.cache_unreachable", "Cache unreachable verdicts", &m.reachability.cache_unreachable},
+      {"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &c.compare_queries},
+      {"compare.walk_solver", "Solver whose reached postures start the next queries of ik-compare's climbing walk",
+       &c.compare_walk_solver},
       {"filter.max_span", "Largest distance between two holds of a configuration (m)", &m.filter.max_span_m},
       {"filter.reading", "Reading of 'both feet above the hands'", &c.reading},
       {"grid.columns", "Columns of the moving grid", &m.grid.columns},
@@ -258,6 +261,13 @@ void finalize_config(ExperimentConfig& config) {
   const auto solver = parse_ik_solver(config.solver);
   if (!solver) throw InputError("ik.solver", fmt::format("unknown solver '{}' (expected fast or paper)", config.solver));
   s.learning.climbing.reachability.ik.solver = *solver;
+  const auto walk_solver = parse_ik_solver(config.compare_walk_solver);
+  if (!walk_solver) {
+    throw InputError("compare.walk_solver",
+                     fmt::format("unknown solver '{}' (expected fast or paper)", config.compare_walk_solver));
+  }
+  config.compare_walk_solver_kind = *walk_solver;
+  require(config.compare_queries > 0, "compare.queries", "must be positive");
   const auto planner = parse_planner(config.planner);
   if (!planner) {
     throw InputError("learning.planner",

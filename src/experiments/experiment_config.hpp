@@ -33,6 +33,11 @@ struct ExperimentConfig {
   std::string solver = "fast";
   std::string planner = planner_name(Planner::Uniform);
   std::string reading = reading_name(FilterParameters{}.feet_above_hands);
+  // ik-compare: its climbing-like queries, and the solver whose reached postures start
+  // the walk's next queries (parsed into compare_walk_solver_kind).
+  int compare_queries = 2000;
+  std::string compare_walk_solver = "paper";
+  IkSolverKind compare_walk_solver_kind = IkSolverKind::Paper;
   // The [provenance] table of a config file read back (key -> value), to be checked
   // against the inputs of the replay.
   std::map<std::string, std::string> recorded_provenance;

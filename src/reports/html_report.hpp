@@ -23,6 +23,8 @@ struct ReportPage {
   nlohmann::json summary;  // the folder's summary.json
   std::vector<ReportFigure> figures;
   std::string replay_title;
+  std::string replay_climb;  // its kind: greedy, last or episode (RecordedClimb)
+  int replay_episode = -1;   // its episode; -1 for the greedy climb
   nlohmann::ordered_json replay;  // replay_data(); null for none
   std::string_view style;         // the page's CSS
   std::string_view script;        // the replay's script (three.js bundled in)

@@ -72,6 +72,11 @@ nlohmann::json read_summary(const fs::path& folder) {
   return summary;
 }
 
+std::string climb_description(const RecordedClimb& climb) {
+  return climb.kind == "greedy" ? std::string("the greedy policy's climb after learning")
+                                : fmt::format("the climb of episode {}", climb.episode);
+}
+
 const RecordedClimb& chosen_climb(const RunFolder& folder, std::string_view kind) {
   return kind == "greedy" && !folder.greedy.postures.empty() ? folder.greedy : folder.last;
 }
@@ -86,6 +91,7 @@ RunFolder locate_run_folder(const fs::path& directory) {
   if (fs::exists(folder.directory / "wall.json", error)) {
     folder.wall_file = folder.directory / "wall.json";
     folder.summary_file = folder.directory / "summary.json";
+    folder.config_file = folder.directory / "config.toml";
   } else {
     static const std::regex run_name("(training|transfer|control)_([0-9]{1,9})");
     std::smatch match;
@@ -96,6 +102,7 @@ RunFolder locate_run_folder(const fs::path& directory) {
                        "runs/<condition>_<i> of a crux paper folder");
     }
     folder.summary_file = experiment / "summary.json";
+    folder.config_file = experiment / "config.toml";
     folder.summary = read_summary(experiment);
     const auto seeds = folder.summary.find("seeds_per_wall");
     if (seeds == folder.summary.end() || !seeds->is_number_unsigned() || seeds->get<std::uint64_t>() < 1 ||
@@ -116,6 +123,49 @@ RunFolder locate_run_folder(const fs::path& directory) {
   }
   folder.wall = load_wall(folder.wall_file.string());
   return folder;
+}
+
+ExperimentConfig read_run_config(const RunFolder& folder) {
+  static const ParameterSet kEveryKey{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"}, {}};
+  ExperimentConfig config;
+  const std::string file = folder.config_file.string();
+  const ConfigLines lines = apply_config_file(file, config, kEveryKey, "the run's config");
+  try {
+    finalize_config(config);
+  } catch (const InputError& e) {
+    const auto line = lines.find(e.source());
+    throw InputError(line == lines.end() ? file : fmt::format("{}: line {}: {}", file, line->second, e.source()),
+                     e.problem());
+  }
+  return config;
+}
+
+ReportedRun locate_reported_run(const fs::path& folder, const std::string& run_name, const std::string& flag) {
+  std::error_code error;
+  if (!fs::is_directory(folder, error)) throw InputError(folder.string(), "no such output folder");
+  ReportedRun out;
+  out.experiment = !fs::exists(folder / "wall.json", error) && fs::exists(folder / "summary.json", error);
+  if (!out.experiment) {
+    if (!fs::exists(folder / "wall.json", error)) {
+      throw InputError(folder.string(), fmt::format("not an output folder of crux paper, train or transfer (for one "
+                                                    "run of a crux paper folder, give the paper folder and {} "
+                                                    "<condition>_<i>)",
+                                                    flag));
+    }
+    out.run_directory = folder;
+    return out;
+  }
+  static const std::regex run_pattern("(training|transfer|control)_[0-9]{1,9}");
+  if (!std::regex_match(run_name, run_pattern)) {
+    throw InputError(flag, fmt::format("'{}' is not a run name: <condition>_<i>, condition training, transfer or "
+                                       "control",
+                                       run_name.substr(0, 200)));
+  }
+  out.run_directory = folder / "runs" / run_name;
+  if (!fs::is_directory(out.run_directory, error)) {
+    throw InputError(flag, fmt::format("'{}' is not a run of {}", run_name, folder.string()));
+  }
+  return out;
 }
 
 namespace {
@@ -162,6 +212,7 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
   const std::string episodes_text = read_input_file(episodes_file.string(), "episodes file");
   const std::vector<std::string_view> episodes = csv_rows(episodes_text, episodes_file, "episode,length");
   RecordedClimb& last = folder.last;
+  folder.steps.clear();
   last = {"last", -1, {}, {}};
   if (!episodes.empty()) {
     last.episode = number<int>(split(episodes.back(), ',').front(), episodes_file, episodes.size() + 1);
@@ -186,6 +237,7 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
                        cells[4] == "1",                              number<double>(cells[5], iterations_file, line),
                        number<double>(cells[6], iterations_file, line)};
     if (step.episode < 0) throw InputError(iterations_file.string(), fmt::format("line {}: episodes count from 0", line));
+    folder.steps.push_back(step);
     if (step.episode != last.episode) continue;
     last.steps.push_back(step);
     reached += step.success ? 1 : 0;

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "body/body_model.hpp"
+#include "experiments/experiment_config.hpp"
 #include "learning/action_selection.hpp"
 #include "wall/wall.hpp"
 
@@ -39,11 +40,13 @@ struct RecordedClimb {
 struct RunFolder {
   std::filesystem::path directory;
   std::string name;  // "training_3" in an experiment, else the folder's name
+  std::filesystem::path config_file;  // the config.toml the run was written with
   std::filesystem::path wall_file;
   Wall wall;
   std::filesystem::path summary_file;
   nlohmann::json summary;  // its contents: the run's, or its experiment's
   std::string urdf;  // the body model recorded in the summary's provenance ("" if none)
+  std::vector<RunStep> steps;  // every row of iterations.csv
   RecordedClimb last;    // climb.csv and its episode's rows of iterations.csv
   RecordedClimb greedy;  // greedy_climb.csv; empty when the greedy policy does not finish
 };
@@ -56,9 +59,25 @@ nlohmann::json read_summary(const std::filesystem::path& folder);
 // naming the folder (or the file) when it is not a run folder.
 RunFolder locate_run_folder(const std::filesystem::path& directory);
 
+// The parameters the run was written with, from its config.toml (finalized); InputError
+// naming the file.
+ExperimentConfig read_run_config(const RunFolder& folder);
+
+// A report or view of `folder`: the folder itself for a run folder, or runs/`run_name`
+// of a crux paper folder (`experiment` is set). InputError naming the folder or `flag`.
+struct ReportedRun {
+  bool experiment = false;
+  std::filesystem::path run_directory;
+};
+ReportedRun locate_reported_run(const std::filesystem::path& folder, const std::string& run_name,
+                                const std::string& flag);
+
 // Reads climb.csv and greedy_climb.csv (whose columns must be `model`'s joints) and
 // iterations.csv into `folder`; InputError naming the file and the problem.
 void read_run_climb(RunFolder& folder, const BodyModel& model);
+
+// "the greedy policy's climb after learning" or "the climb of episode N".
+std::string climb_description(const RecordedClimb& climb);
 
 // The climb to show: "greedy" is the greedy climb when it finishes, else the last
 // episode's; "last" the last episode's.

@@ -10,6 +10,7 @@
 
 #include "support/run_crux.hpp"
 #include "support/test_models.hpp"
+#include "support/trained_run.hpp"
 
 namespace crux {
 namespace {
@@ -247,13 +248,55 @@ TEST(CliLearning, ViewAndReportAnswerBadInputWithOneLine) {
   const auto no_folder = run_crux("report /nonexistent/crux_folder -o " + never.string());
   EXPECT_EQ(no_folder.exit_code, 2);
   EXPECT_EQ(no_folder.err, "crux: /nonexistent/crux_folder: no such output folder\n");
-  const auto no_run = run_crux("view --run " + fs::temp_directory_path().string() + " --svg " + never.string());
+  const auto no_run = run_crux("view --run " + fs::temp_directory_path().string() + " -o " + never.string());
   EXPECT_EQ(no_run.exit_code, 2);
   EXPECT_NE(no_run.err.find("not a run folder"), std::string::npos) << no_run.err;
   EXPECT_EQ(testing::count_lines(no_run.err), 1);
-  const auto both = run_crux("view --svg x.svg");
+  const auto both = run_crux("view -o x.svg");
   EXPECT_EQ(both.err, "crux: --run: give a run folder (--run DIR) or a wall file (--wall-file FILE)\n");
   EXPECT_FALSE(fs::exists(never));
+}
+
+// A run is drawn and reported with its own config.toml: IK flags are refused with it,
+// any episode can be replayed, and renamed flags name their new names.
+TEST(CliLearning, ViewAndReportReadTheRunsOwnConfig) {
+  const fs::path train = testing::trained_run_folder();
+  const fs::path svg = scratch("episode.svg"), html = scratch("episode.html");
+  const auto ik_flag = run_crux("view --run " + train.string() + " --ik-timeout 0.01 -o " + svg.string());
+  EXPECT_EQ(ik_flag.exit_code, 2);
+  EXPECT_EQ(ik_flag.err, "crux: --ik-timeout: not used with --run: a run is drawn with its own config.toml\n");
+  const auto ik_config = testing::write_temporary("cli_view_ik.toml", "[ik]\ntimeout = 1.0\n");
+  const auto from_file = run_crux("view --run " + train.string() + " --config " + ik_config.string() + " -o " +
+                                  svg.string());
+  EXPECT_EQ(from_file.err, "crux: " + ik_config.string() + ": line 2: ik.timeout: not used with --run: a run is "
+                           "drawn with its own config.toml\n");
+  EXPECT_FALSE(fs::exists(svg));
+  const auto report_ik = run_crux("report " + train.string() + " --ik-solver paper -o " + html.string());
+  EXPECT_EQ(report_ik.exit_code, 2);
+  EXPECT_NE(report_ik.err.find("unknown option --ik-solver of 'crux report'"), std::string::npos) << report_ik.err;
+
+  const auto view = run_crux("view --run " + train.string() + " --climb 2 --step 1 --json -o " + svg.string());
+  ASSERT_EQ(view.exit_code, 0) << view.err;
+  EXPECT_NE(nlohmann::json::parse(view.out)["subtitle"].get<std::string>().find("of the climb of episode 2"),
+            std::string::npos)
+      << view.out;
+  const auto report = run_crux("report " + train.string() + " --climb 2 --json -o " + html.string());
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const auto summary = nlohmann::json::parse(report.out);
+  EXPECT_EQ(summary["replay_climb"], "episode");
+  EXPECT_EQ(summary["replay_episode"], 2);
+  const auto bad = run_crux("report " + train.string() + " --climb 100000 -o " + html.string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err.rfind("crux: --climb: the run has episodes 0 to ", 0), 0u) << bad.err;
+
+  for (const auto& [old_name, command] : std::vector<std::pair<std::string, std::string>>{
+           {"--svg", "view --svg x.svg"}, {"--replay-run", "report . --replay-run training_1 -o x.html"},
+           {"--queries", "ik-compare --queries 3"}, {"--walk-solver", "ik-compare --walk-solver fast"}}) {
+    const auto renamed = run_crux(command);
+    EXPECT_EQ(renamed.exit_code, 2) << command;
+    EXPECT_NE(renamed.err.find("unknown option " + old_name + " of"), std::string::npos) << renamed.err;
+    EXPECT_NE(renamed.err.find("(it is now --"), std::string::npos) << renamed.err;
+  }
 }
 
 // crux figures draws a paper folder's figures again from its files, byte for byte.
@@ -297,7 +340,7 @@ TEST(CliLearning, MalformedRunFoldersAreRefusedWithOneLine) {
       {copy_with("negative_episode", "iterations.csv", "\n1,0,", "\n1,-1,"), "episodes count from 0"},
       {copy_with("unknown_regime", "iterations.csv", "\n1,0,random,", "\n1,0,randomly,"), "unknown regime"}};
   for (const Case& c : cases) {
-    for (const std::string& command : {"view --run " + c.folder.string() + " --svg " + never.string(),
+    for (const std::string& command : {"view --run " + c.folder.string() + " -o " + never.string(),
                                        "report " + c.folder.string() + " -o " + never.string()}) {
       const auto outcome = run_crux(command);
       EXPECT_EQ(outcome.exit_code, 2) << command;
@@ -315,14 +358,14 @@ TEST(CliLearning, MalformedRunFoldersAreRefusedWithOneLine) {
 TEST(CliLearning, EveryCommandPrintsOneJsonDocument) {
   const fs::path wall = scratch("json_wall.json"), train = scratch("json_train");
   const std::vector<std::string> commands{
-      "model", "demo", "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0", "ik-compare --queries 5",
+      "model", "demo", "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0", "ik-compare --compare-queries 5",
       "wall generate --wall-seed 5 -o " + wall.string(), "wall show --wall-file " + wall.string(),
       "filter-stats --wall-count 1", "plan --wall-file " + wall.string(),
       "train --wall-file " + wall.string() + " --iterations 100 -o " + train.string(),
       "transfer --q-grid " + (train / "q_grid.bin").string() + " --wall-seed 2 --iterations 100 -o " +
           scratch("json_transfer").string(),
       "paper --walls 1 --iterations 100 --plan false -o " + scratch("json_paper").string(),
-      "view --wall-file " + wall.string() + " --svg " + scratch("json_view.svg").string(),
+      "view --wall-file " + wall.string() + " -o " + scratch("json_view.svg").string(),
       "figures " + scratch("json_paper").string(),
       "report " + scratch("json_paper").string() + " -o " + scratch("json_report.html").string(),
       "report " + train.string() + " -o " + scratch("json_train_report.html").string()};

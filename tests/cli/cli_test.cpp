@@ -76,7 +76,7 @@ TEST(Cli, IkOnUnreachableHoldsSaysSo) {
 }
 
 TEST(Cli, IkCompareReportsAgreement) {
-  const testing::Outcome run = testing::run_crux("ik-compare --queries 30 --seed 3 --json");
+  const testing::Outcome run = testing::run_crux("ik-compare --compare-queries 30 --seed 3 --json");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto json = nlohmann::json::parse(run.out);
   EXPECT_EQ(json["queries"], 30);
@@ -91,7 +91,7 @@ TEST(Cli, IkPathIsWrittenAsCsv) {
   const auto out = std::filesystem::temp_directory_path() / "crux-tests" / "path.csv";
   std::filesystem::remove(out);
   const testing::Outcome run =
-      testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --ik-solver paper --path-every 5 --path-out " + out.string());
+      testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --ik-solver paper --path-every 5 -o " + out.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   ASSERT_TRUE(std::filesystem::exists(out));
   EXPECT_GT(std::filesystem::file_size(out), 100u);

@@ -48,7 +48,7 @@ TEST(CliWall, ShowDrawsTheGridAsSvg) {
   const auto file = scratch("grid.json");
   ASSERT_EQ(run_crux("wall generate --wall-seed 2 -o " + file.string()).exit_code, 0);
   const auto svg = scratch("grid.svg");
-  const auto outcome = run_crux("wall show --wall-file " + file.string() + " --limb right_hand --at 0.3,1.5 --json --svg " + svg.string());
+  const auto outcome = run_crux("wall show --wall-file " + file.string() + " --limb right_hand --at 0.3,1.5 --json -o " + svg.string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const auto json = nlohmann::json::parse(outcome.out);
   EXPECT_EQ(json["grid"]["limb"], "right_hand");

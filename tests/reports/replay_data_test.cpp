@@ -14,7 +14,7 @@
 #include "configurations/hold_configuration.hpp"
 #include "configurations/reachability.hpp"
 #include "reports/run_folder.hpp"
-#include "support/run_crux.hpp"
+#include "support/trained_run.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
@@ -22,22 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A real run folder: crux train on random wall 3 with learning seed 5, 8000 iterations,
-// completes episodes and learns a greedy climb (both checked below).
-const fs::path& trained_folder() {
-  static const fs::path folder = [] {
-    // Per process: ctest runs this file's tests in parallel processes, each training once.
-    const fs::path path = testing::temporary_path("replay_train_" + std::to_string(::getpid()));
-    const testing::Outcome outcome = testing::run_crux(
-        "train --wall-seed 3 --seed 5 --overwrite -o " + path.string());
-    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
-    return path;
-  }();
-  return folder;
-}
-
 RunFolder read_trained_folder() {
-  RunFolder folder = locate_run_folder(trained_folder());
+  RunFolder folder = locate_run_folder(testing::trained_run_folder());
   read_run_climb(folder, testing::human_model());
   return folder;
 }
@@ -46,66 +32,6 @@ Posture frame(const nlohmann::ordered_json& replay, int index) {
   Posture posture;
   for (int i = 0; i < kConfigurationDof; ++i) posture[i] = replay["frames"]["postures"][index * kConfigurationDof + i];
   return posture;
-}
-
-TEST(RunFolder, ReadsTheLastCompletedClimbWithItsEpisode) {
-  const RunFolder folder = read_trained_folder();
-  ASSERT_GE(folder.last.episode, 1);
-  std::size_t reached = 0;
-  for (const RunStep& step : folder.last.steps) {
-    EXPECT_EQ(step.episode, folder.last.episode);
-    reached += step.success ? 1 : 0;
-  }
-  EXPECT_EQ(folder.last.postures.size(), reached + 1);
-  EXPECT_EQ(folder.wall.name, "random wall, seed 3");
-  EXPECT_EQ(folder.urdf, testing::human_model().source);
-}
-
-// A greedy climb: a reached move per posture after the start, its rise from the
-// postures, and as many moves as summary.json's greedy_length.
-TEST(RunFolder, ReadsTheGreedyClimb) {
-  const RunFolder folder = read_trained_folder();
-  std::ifstream in(folder.summary_file);
-  const auto summary = nlohmann::json::parse(in);
-  const int length = summary["run_facts"]["training"][0]["greedy_length"];
-  ASSERT_GT(length, 0) << "seed 5 on wall 3 learns a greedy climb in 8000 iterations";
-  ASSERT_EQ(folder.greedy.steps.size(), static_cast<std::size_t>(length));
-  ASSERT_EQ(folder.greedy.postures.size(), folder.greedy.steps.size() + 1);
-  EXPECT_EQ(folder.greedy.postures.front(), folder.last.postures.front()) << "both start at the start posture";
-  for (std::size_t i = 0; i < folder.greedy.steps.size(); ++i) {
-    const RunStep& step = folder.greedy.steps[i];
-    EXPECT_TRUE(step.success);
-    EXPECT_EQ(step.regime, Regime::WGreedy);
-    EXPECT_GE(folder.wall.index_of(step.hold_id), 0);
-    EXPECT_DOUBLE_EQ(step.root_rise_cm, 100 * (folder.greedy.postures[i + 1][2] - folder.greedy.postures[i][2]));
-  }
-  EXPECT_GT(folder.greedy.steps.back().reward, 0) << "the last move is the finishing one";
-}
-
-TEST(RunFolder, AFolderThatIsNoRunIsNamed) {
-  const fs::path empty = testing::temporary_path("not_a_run_" + std::to_string(::getpid()));
-  fs::create_directories(empty);
-  try {
-    locate_run_folder(empty);
-    FAIL() << "accepted a folder without a run";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.source(), empty.string());
-    EXPECT_NE(e.problem().find("not a run folder"), std::string::npos) << e.what();
-  }
-}
-
-TEST(RunFolder, AClimbThatDoesNotMatchItsIterationsIsRefused) {
-  const fs::path copy = testing::temporary_path("replay_train_cut_" + std::to_string(::getpid()));
-  fs::copy(trained_folder(), copy, fs::copy_options::recursive);
-  std::string climb;
-  {
-    std::ifstream in(copy / "climb.csv");
-    climb.assign(std::istreambuf_iterator<char>(in), {});
-  }
-  climb.erase(climb.rfind('\n', climb.size() - 2) + 1);  // drop the finishing posture
-  std::ofstream(copy / "climb.csv") << climb;
-  RunFolder folder = locate_run_folder(copy);
-  EXPECT_THROW(read_run_climb(folder, testing::human_model()), InputError);
 }
 
 // Every move takes its frames in order; a reached move ends exactly on the recorded

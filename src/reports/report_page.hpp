@@ -1,0 +1,19 @@
+#pragma once
+// What `crux report` shows for an output folder: its summary, its figures and the replay
+// of one run's climb, assembled from the folder's files (html_report renders it).
+
+#include <filesystem>
+#include <string>
+
+#include "reports/html_report.hpp"
+#include "reports/run_folder.hpp"
+
+namespace crux {
+
+// The page's style and script are left to the caller (crux_web_assets, which only the
+// binary embeds). `run` is the replayed run of `reported`, its climb read with `model`; `recorded` the
+// parameters the run was written with (read_run_config). `climb_choice` as climb_to_show.
+ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& reported, RunFolder& run,
+                       const BodyModel& model, const ExperimentConfig& recorded, const std::string& climb_choice);
+
+}  // namespace crux

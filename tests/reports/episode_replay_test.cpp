@@ -1,0 +1,103 @@
+#include "reports/episode_replay.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <gtest/gtest.h>
+
+#include "common/input_error.hpp"
+#include "support/test_models.hpp"
+#include "support/trained_run.hpp"
+
+namespace crux {
+namespace {
+
+namespace fs = std::filesystem;
+
+RunFolder read_folder(const fs::path& directory) {
+  RunFolder folder = locate_run_folder(directory);
+  read_run_climb(folder, testing::human_model());
+  return folder;
+}
+
+ClimbingParameters run_parameters(const RunFolder& folder) {
+  return read_run_config(folder).settings.learning.climbing;
+}
+
+// Replaying the last completed episode from the run's actions gives back climb.csv's
+// postures bit for bit (the CSV keeps 17 significant digits) and its moves.
+TEST(EpisodeReplay, TheLastEpisodeReplayedIsTheRecordedClimb) {
+  const RunFolder folder = read_folder(testing::trained_run_folder());
+  ASSERT_GE(folder.last.episode, 1);
+  const RecordedClimb replayed =
+      replay_episode(folder, testing::human_model(), run_parameters(folder), folder.last.episode, "--climb");
+  EXPECT_EQ(replayed.kind, "episode");
+  EXPECT_EQ(replayed.episode, folder.last.episode);
+  ASSERT_EQ(replayed.steps.size(), folder.last.steps.size());
+  for (std::size_t i = 0; i < replayed.steps.size(); ++i) {
+    EXPECT_EQ(replayed.steps[i].iteration, folder.last.steps[i].iteration);
+  }
+  ASSERT_EQ(replayed.postures.size(), folder.last.postures.size());
+  for (std::size_t i = 0; i < replayed.postures.size(); ++i) EXPECT_EQ(replayed.postures[i], folder.last.postures[i]) << i;
+}
+
+// An earlier episode starts at the start posture and has a posture per reached move.
+TEST(EpisodeReplay, AnEarlierEpisodeHasAPosturePerReachedMove) {
+  const RunFolder folder = read_folder(testing::trained_run_folder());
+  const RecordedClimb first = climb_to_show(folder, testing::human_model(), run_parameters(folder), "0", "--climb");
+  ASSERT_FALSE(first.steps.empty());
+  std::size_t reached = 0;
+  for (const RunStep& step : first.steps) {
+    EXPECT_EQ(step.episode, 0);
+    reached += step.success ? 1 : 0;
+  }
+  EXPECT_EQ(first.postures.size(), reached + 1);
+  EXPECT_EQ(first.postures.front(), folder.last.postures.front());
+  EXPECT_EQ(first.steps.front().iteration, 1);
+}
+
+TEST(EpisodeReplay, NamedClimbsAndBadChoicesNameTheFlag) {
+  const RunFolder folder = read_folder(testing::trained_run_folder());
+  const ClimbingParameters parameters = run_parameters(folder);
+  EXPECT_EQ(climb_to_show(folder, testing::human_model(), parameters, "greedy", "--climb").kind, "greedy");
+  EXPECT_EQ(climb_to_show(folder, testing::human_model(), parameters, "last", "--climb").kind, "last");
+  for (const std::string choice : {"-1", "99999", "2x", "", "best"}) {
+    try {
+      climb_to_show(folder, testing::human_model(), parameters, choice, "--climb");
+      ADD_FAILURE() << "accepted --climb '" << choice << "'";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.source(), "--climb") << choice;
+    }
+  }
+}
+
+// A folder whose actions the MDP does not reproduce (here a move's verdict flipped) is
+// refused, naming its iterations.csv and the iteration.
+TEST(EpisodeReplay, ActionsThatDoNotReplayAreRefused) {
+  const fs::path copy = testing::temporary_path("replay_flipped_" + std::to_string(::getpid()));
+  fs::copy(testing::trained_run_folder(), copy, fs::copy_options::recursive);
+  std::string text;
+  {
+    std::ifstream in(copy / "iterations.csv");
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  // iteration,episode,regime,hold,success,...: flip the first row's success.
+  std::size_t cell = text.find('\n');
+  for (int comma = 0; comma < 4; ++comma) cell = text.find(',', cell + 1);
+  text[cell + 1] = text[cell + 1] == '0' ? '1' : '0';
+  std::ofstream(copy / "iterations.csv", std::ios::trunc) << text;
+  const RunFolder folder = read_folder(copy);
+  try {
+    replay_episode(folder, testing::human_model(), run_parameters(folder), 0, "--climb");
+    FAIL() << "replayed a flipped verdict";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.source().find("iterations.csv"), std::string::npos) << e.what();
+    EXPECT_NE(e.problem().find("iteration 1:"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace crux

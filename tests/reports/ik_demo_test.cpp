@@ -1,0 +1,33 @@
+#include "reports/ik_demo.hpp"
+
+#include <gtest/gtest.h>
+
+#include "support/test_models.hpp"
+
+namespace crux {
+namespace {
+
+// Five queries with both solvers; the reachable moves are reached by both and the 3 m
+// reach by neither.
+TEST(IkDemo, BothSolversAnswerEveryQuery) {
+  const BodyModel& model = testing::human_model();
+  const auto solves = run_ik_demo(model);
+  ASSERT_EQ(solves.size(), 10u);
+  for (std::size_t i = 0; i < solves.size(); i += 2) {
+    EXPECT_EQ(solves[i].query, solves[i + 1].query);
+    EXPECT_EQ(solves[i].solver, IkSolverKind::Paper);
+    EXPECT_EQ(solves[i + 1].solver, IkSolverKind::Fast);
+    const bool impossible = solves[i].query.find("no body can") != std::string::npos;
+    EXPECT_EQ(solves[i].result.reached, !impossible) << solves[i].query;
+    EXPECT_EQ(solves[i + 1].result.reached, !impossible) << solves[i].query;
+  }
+  const auto json = ik_demo_json(solves);
+  ASSERT_EQ(json.size(), 10u);
+  EXPECT_EQ(json[1]["solver"], "fast");
+  const std::string text = ik_demo_text(model, solves);
+  EXPECT_EQ(text.rfind("body '" + model.name + "'", 0), 0u);
+  EXPECT_NE(text.find("\nleft hand 3 m up (no body can):\n  paper NOT reached"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace crux

@@ -1,0 +1,44 @@
+#include "reports/plan_description.hpp"
+
+#include <gtest/gtest.h>
+
+namespace crux {
+namespace {
+
+Wall named_wall() {
+  Wall wall;
+  wall.name = "w";
+  return wall;
+}
+
+TEST(PlanDescription, AFoundPlanListsItsMoves) {
+  Plan plan;
+  plan.found = true;
+  plan.length = 2;
+  plan.hold_ids = {7, 9};
+  plan.limbs = {Limb::RightHand, Limb::LeftFoot};
+  plan.expanded_states = 12;
+  plan.ik_solves = 40;
+  const auto json = plan_json(named_wall(), plan);
+  EXPECT_EQ(json["length"], 2);
+  EXPECT_EQ(json["holds"], nlohmann::json({7, 9}));
+  EXPECT_EQ(json["limbs"], nlohmann::json({"right_hand", "left_foot"}));
+  EXPECT_EQ(plan_text(named_wall(), plan),
+            "shortest climb on 'w': 2 actions (12 states explored, 40 IK solves)\n"
+            "   1. right_hand -> hold 7\n"
+            "   2. left_foot  -> hold 9\n");
+}
+
+TEST(PlanDescription, NoPlanSaysWhy) {
+  Plan none;
+  none.expanded_states = 3;
+  none.ik_solves = 5;
+  EXPECT_EQ(plan_json(named_wall(), none)["length"], -1);
+  EXPECT_EQ(plan_text(named_wall(), none), "no climb exists on 'w' (3 states explored, 5 IK solves)\n");
+  none.stopped_at_limit = true;
+  EXPECT_NE(plan_text(named_wall(), none).find("--plan-max-solves raises it"), std::string::npos);
+  EXPECT_EQ(plan_json(named_wall(), none)["stopped_at_limit"], true);
+}
+
+}  // namespace
+}  // namespace crux

@@ -1,0 +1,24 @@
+#include "support/trained_run.hpp"
+
+#include <unistd.h>
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/run_crux.hpp"
+#include "support/test_models.hpp"
+
+namespace crux::testing {
+
+const std::filesystem::path& trained_run_folder() {
+  static const std::filesystem::path folder = [] {
+    const std::filesystem::path path = temporary_path("trained_run_" + std::to_string(::getpid()));
+    const Outcome outcome = run_crux("train --wall-seed 3 --seed 5 --overwrite -o " + path.string());
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    return path;
+  }();
+  return folder;
+}
+
+}  // namespace crux::testing
