@@ -12,7 +12,6 @@
 
 #include "body/body_model.hpp"
 #include "common/input_error.hpp"
-#include "ik/ik_solver.hpp"
 
 namespace crux::cli {
 
@@ -25,13 +24,6 @@ inline Eigen::Vector3d parse_wall_point(const std::string& text, const char* fla
     throw InputError(flag, fmt::format("expected Y,Z in metres, got '{}'", text));
   }
   return {0.0, y, z};
-}
-
-// "paper" or "fast"; InputError naming `flag` otherwise.
-inline IkSolverKind require_ik_solver(const std::string& name, const char* flag) {
-  const auto kind = parse_ik_solver(name);
-  if (!kind) throw InputError(flag, fmt::format("unknown solver '{}' (expected paper or fast)", name));
-  return *kind;
 }
 
 // --climb of view and report: which climb of a run (climb_to_show).

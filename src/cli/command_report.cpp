@@ -5,9 +5,6 @@
 #include <iostream>
 #include <memory>
 
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-
 #include "cli/cli_parsing.hpp"
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
@@ -47,24 +44,8 @@ struct ReportCommand {
     const std::string html = html_report(page);
     write_file_atomically(output, html);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const int frames = page.replay.is_null() ? 0 : page.replay["frames"]["count"].get<int>();
-    const std::size_t moves = page.replay.is_null() ? 0 : page.replay["moves"].size();
-    if (json) {
-      nlohmann::ordered_json out;
-      out["report"] = output;
-      out["bytes"] = html.size();
-      out["figures"] = page.figures.size();
-      out["replay_run"] = run.name;
-      out["replay_climb"] = page.replay.is_null() ? nlohmann::ordered_json() : nlohmann::ordered_json(page.replay_climb);
-      out["replay_episode"] = page.replay_episode;
-      out["replay_moves"] = moves;
-      out["replay_frames"] = frames;
-      out["seconds"] = seconds;
-      std::cout << out.dump(2) << '\n';
-    } else {
-      std::cout << fmt::format("wrote {} ({:.1f} MB, {} figures, a replay of {} with {} moves) in {:.2f} s\n", output,
-                               static_cast<double>(html.size()) / 1e6, page.figures.size(), run.name, moves, seconds);
-    }
+    std::cout << (json ? written_report_json(page, run.name, output, html.size(), seconds).dump(2) + "\n"
+                       : written_report_text(page, run.name, output, html.size(), seconds));
   }
 };
 
@@ -74,14 +55,7 @@ struct FiguresCommand {
 
   void run() const {
     const std::vector<std::filesystem::path> written = write_paper_figure_files(folder);
-    if (json) {
-      nlohmann::ordered_json out;
-      out["figures"] = nlohmann::ordered_json::array();
-      for (const auto& file : written) out["figures"].push_back(file.string());
-      std::cout << out.dump(2) << '\n';
-      return;
-    }
-    for (const auto& file : written) std::cout << "wrote " << file.string() << '\n';
+    std::cout << (json ? figure_files_json(written).dump(2) + "\n" : figure_files_text(written));
   }
 };
 

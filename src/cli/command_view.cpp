@@ -56,8 +56,7 @@ struct ViewCommand {
     const ReachabilityParameters& reach = config.settings.learning.climbing.reachability;
     ConfigurationReacher reacher(model, wall, reach);
     const Posture start = reacher.require_start(config.wall_file);
-    write(model, start, wall, {output, fmt::format("'{}'", wall.name), "the start posture, solved by IK from standing"},
-          reach);
+    write(model, start, wall, wall_view_caption(wall, output), reach);
   }
 
   void draw_run(ExperimentConfig& config) {
@@ -73,10 +72,8 @@ struct ViewCommand {
       throw InputError("--step", fmt::format("must be from 0 to {}, the postures of the climb, got {}",
                                              climb.postures.size() - 1, step));
     }
-    const ViewCaption caption{output, fmt::format("{} on '{}'", folder.name, folder.wall.name),
-                              fmt::format("step {} of {} ({} postures, the start is step 0)", step,
-                                          climb_description(climb), climb.postures.size())};
-    write(model, climb.postures[step], folder.wall, caption, climbing.reachability);
+    write(model, climb.postures[step], folder.wall, run_view_caption(folder, climb, step, output),
+          climbing.reachability);
   }
 
   void write(const BodyModel& model, const Posture& posture, const Wall& wall, const ViewCaption& caption,

@@ -114,7 +114,7 @@ void add_wall_command(CLI::App& app) {
   g->callback([generate] { generate->run(); });
 
   auto show = std::make_shared<ShowCommand>();
-  auto* s = wall->add_subcommand("show", "Summarise a wall file; draw it (--svg), with the moving grid on a limb (--limb)");
+  auto* s = wall->add_subcommand("show", "Summarise a wall file; draw it (-o FILE.svg), with the moving grid on a limb (--limb)");
   s->add_flag("--json", show->json, "Print JSON instead of text");
   s->add_option("-o,--output", show->svg, "Write an SVG front view to this file");
   s->add_option("--limb", show->grid_limb, "Place the moving grid on this free limb (right_hand, left_hand, ...)");

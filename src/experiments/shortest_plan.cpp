@@ -3,7 +3,6 @@
 #include <deque>
 #include <unordered_map>
 
-
 namespace crux {
 
 namespace {

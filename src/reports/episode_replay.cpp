@@ -20,8 +20,14 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
   for (int h = 0; h < folder.wall.hold_count(); ++h) hold_of_id.emplace(folder.wall.holds[h].id, h);
   const std::string iterations_file = (folder.directory / "iterations.csv").string();
   ClimbingMdp mdp(model, folder.wall, parameters);
-  RecordedClimb climb{"episode", episode, {}, {}};
+  RecordedClimb climb{"episode", episode, false, {}, {}};
+  int due_episode = 0;  // the MDP's: one more after each finishing move
   for (const RunStep& step : folder.steps) {
+    if (step.episode != due_episode) {
+      throw InputError(iterations_file, fmt::format("iteration {}: episode {} where the MDP is in episode {}; the "
+                                                    "run was not written with this folder's body and config",
+                                                    step.iteration, step.episode, due_episode));
+    }
     if (step.episode > episode) break;
     if (step.episode == episode && climb.postures.empty()) climb.postures.push_back(mdp.posture());
     const auto hold = hold_of_id.find(step.hold_id);
@@ -41,9 +47,11 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
                                                     step.iteration, outcome.reached ? "reaches" : "fails",
                                                     step.success ? "reached" : "failed"));
     }
+    if (outcome.finished) ++due_episode;
     if (step.episode != episode) continue;
     climb.steps.push_back(step);
     if (outcome.reached) climb.postures.push_back(*outcome.posture);
+    climb.finished = outcome.finished;
   }
   return climb;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // A sequence of postures as CSV: one row per posture, one column per joint of the body
 // (the URDF's names), values to 17 significant digits so that they read back exactly.
-// climb.csv and greedy_climb.csv of a run and the IK path of `crux ik --path-out` share it.
+// climb.csv and greedy_climb.csv of a run and the IK path of `crux ik -o` share it.
 
 #include <span>
 #include <string>

@@ -56,6 +56,19 @@ std::vector<std::filesystem::path> write_paper_figure_files(const std::filesyste
   return written;
 }
 
+nlohmann::ordered_json figure_files_json(const std::vector<std::filesystem::path>& written) {
+  nlohmann::ordered_json out;
+  out["figures"] = nlohmann::ordered_json::array();
+  for (const auto& file : written) out["figures"].push_back(file.string());
+  return out;
+}
+
+std::string figure_files_text(const std::vector<std::filesystem::path>& written) {
+  std::string out;
+  for (const auto& file : written) out += "wrote " + file.string() + "\n";
+  return out;
+}
+
 std::vector<ReportFigure> report_figures(const std::filesystem::path& experiment_folder, const BodyModel& model,
                                          const RunFolder& run, const ReachabilityParameters& reach) {
   std::vector<ReportFigure> figures;

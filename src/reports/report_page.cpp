@@ -26,4 +26,35 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
   return page;
 }
 
+namespace {
+
+int replay_frames(const ReportPage& page) {
+  return page.replay.is_null() ? 0 : page.replay["frames"]["count"].get<int>();
+}
+
+std::size_t replay_moves(const ReportPage& page) { return page.replay.is_null() ? 0 : page.replay["moves"].size(); }
+
+}  // namespace
+
+nlohmann::ordered_json written_report_json(const ReportPage& page, const std::string& run_name,
+                                           const std::string& file, std::size_t bytes, double seconds) {
+  nlohmann::ordered_json out;
+  out["report"] = file;
+  out["bytes"] = bytes;
+  out["figures"] = page.figures.size();
+  out["replay_run"] = run_name;
+  out["replay_climb"] = page.replay.is_null() ? nlohmann::ordered_json() : nlohmann::ordered_json(page.replay_climb);
+  out["replay_episode"] = page.replay_episode;
+  out["replay_moves"] = replay_moves(page);
+  out["replay_frames"] = replay_frames(page);
+  out["seconds"] = seconds;
+  return out;
+}
+
+std::string written_report_text(const ReportPage& page, const std::string& run_name, const std::string& file,
+                                std::size_t bytes, double seconds) {
+  return fmt::format("wrote {} ({:.1f} MB, {} figures, a replay of {} with {} moves) in {:.2f} s\n", file,
+                     static_cast<double>(bytes) / 1e6, page.figures.size(), run_name, replay_moves(page), seconds);
+}
+
 }  // namespace crux

@@ -11,9 +11,16 @@
 namespace crux {
 
 // The page's style and script are left to the caller (crux_web_assets, which only the
-// binary embeds). `run` is the replayed run of `reported`, its climb read with `model`; `recorded` the
-// parameters the run was written with (read_run_config). `climb_choice` as climb_to_show.
+// binary embeds). `run` is the replayed run of `reported`, its climb read with `model`
+// (its summary is moved into the page); `recorded` the parameters the run was written
+// with (read_run_config). `climb_choice` as climb_to_show.
 ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& reported, RunFolder& run,
                        const BodyModel& model, const ExperimentConfig& recorded, const std::string& climb_choice);
+
+// What crux report says once `page` is written to `file`: its size, figures and replay.
+nlohmann::ordered_json written_report_json(const ReportPage& page, const std::string& run_name,
+                                           const std::string& file, std::size_t bytes, double seconds);
+std::string written_report_text(const ReportPage& page, const std::string& run_name, const std::string& file,
+                                std::size_t bytes, double seconds);
 
 }  // namespace crux

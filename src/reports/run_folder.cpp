@@ -50,6 +50,12 @@ T number(std::string_view cell, const fs::path& file, std::size_t line) {
   return value;
 }
 
+// runs/<condition>_<i> of a crux paper folder.
+const std::regex& run_name_pattern() {
+  static const std::regex pattern("(training|transfer|control)_([0-9]{1,9})");
+  return pattern;
+}
+
 Regime regime_of(std::string_view name, const fs::path& file, std::size_t line) {
   for (int r = 0; r < kRegimeCount; ++r) {
     if (name == regime_name(static_cast<Regime>(r))) return static_cast<Regime>(r);
@@ -74,7 +80,8 @@ nlohmann::json read_summary(const fs::path& folder) {
 
 std::string climb_description(const RecordedClimb& climb) {
   return climb.kind == "greedy" ? std::string("the greedy policy's climb after learning")
-                                : fmt::format("the climb of episode {}", climb.episode);
+                                : fmt::format("the climb of episode {}{}", climb.episode,
+                                              climb.finished ? "" : " (unfinished)");
 }
 
 const RecordedClimb& chosen_climb(const RunFolder& folder, std::string_view kind) {
@@ -93,10 +100,9 @@ RunFolder locate_run_folder(const fs::path& directory) {
     folder.summary_file = folder.directory / "summary.json";
     folder.config_file = folder.directory / "config.toml";
   } else {
-    static const std::regex run_name("(training|transfer|control)_([0-9]{1,9})");
     std::smatch match;
     const fs::path experiment = folder.directory.parent_path().parent_path();
-    if (!std::regex_match(folder.name, match, run_name) || folder.directory.parent_path().filename() != "runs") {
+    if (!std::regex_match(folder.name, match, run_name_pattern()) || folder.directory.parent_path().filename() != "runs") {
       throw InputError(directory.string(),
                        "not a run folder: it holds no wall.json (crux train, crux transfer) and is not "
                        "runs/<condition>_<i> of a crux paper folder");
@@ -126,7 +132,8 @@ RunFolder locate_run_folder(const fs::path& directory) {
 }
 
 ExperimentConfig read_run_config(const RunFolder& folder) {
-  static const ParameterSet kEveryKey{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"}, {}};
+  static const ParameterSet kEveryKey{{"experiment", "learning", "reward", "ik", "compare", "filter", "grid", "wall"},
+                                      {}};
   ExperimentConfig config;
   const std::string file = folder.config_file.string();
   const ConfigLines lines = apply_config_file(file, config, kEveryKey, "the run's config");
@@ -155,8 +162,7 @@ ReportedRun locate_reported_run(const fs::path& folder, const std::string& run_n
     out.run_directory = folder;
     return out;
   }
-  static const std::regex run_pattern("(training|transfer|control)_[0-9]{1,9}");
-  if (!std::regex_match(run_name, run_pattern)) {
+  if (!std::regex_match(run_name, run_name_pattern())) {
     throw InputError(flag, fmt::format("'{}' is not a run name: <condition>_<i>, condition training, transfer or "
                                        "control",
                                        run_name.substr(0, 200)));
@@ -213,7 +219,7 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
   const std::vector<std::string_view> episodes = csv_rows(episodes_text, episodes_file, "episode,length");
   RecordedClimb& last = folder.last;
   folder.steps.clear();
-  last = {"last", -1, {}, {}};
+  last = {"last", -1, true, {}, {}};
   if (!episodes.empty()) {
     last.episode = number<int>(split(episodes.back(), ',').front(), episodes_file, episodes.size() + 1);
     if (last.episode < 0) throw InputError(episodes_file.string(), "episodes count from 0");
@@ -237,6 +243,15 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
                        cells[4] == "1",                              number<double>(cells[5], iterations_file, line),
                        number<double>(cells[6], iterations_file, line)};
     if (step.episode < 0) throw InputError(iterations_file.string(), fmt::format("line {}: episodes count from 0", line));
+    if (step.iteration != static_cast<int>(i) + 1) {
+      throw InputError(iterations_file.string(), fmt::format("line {}: iteration {} where {} was due", line,
+                                                             step.iteration, i + 1));
+    }
+    const int previous_episode = folder.steps.empty() ? 0 : folder.steps.back().episode;
+    if (step.episode != previous_episode && step.episode != previous_episode + 1) {
+      throw InputError(iterations_file.string(), fmt::format("line {}: episode {} after episode {}", line,
+                                                             step.episode, previous_episode));
+    }
     folder.steps.push_back(step);
     if (step.episode != last.episode) continue;
     last.steps.push_back(step);
@@ -259,7 +274,7 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
   std::string greedy_text;
   std::vector<std::vector<std::string_view>> cells;
   RecordedClimb& greedy = folder.greedy;
-  greedy = {"greedy", -1, {}, {}};
+  greedy = {"greedy", -1, true, {}, {}};
   greedy.postures = read_postures(greedy_file, model, {"hold", "reward"}, cells, greedy_text);
   for (std::size_t i = 1; i < greedy.postures.size(); ++i) {
     const double rise_cm = 100 * (greedy.postures[i][2] - greedy.postures[i - 1][2]);

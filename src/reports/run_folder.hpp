@@ -33,6 +33,7 @@ struct RunStep {
 struct RecordedClimb {
   std::string kind;  // "last": the last completed episode; "greedy": the learnt policy's climb
   int episode = -1;  // of the last climb; -1 for the greedy climb, or when no episode ended
+  bool finished = true;  // false for a replayed episode that the run's iterations cut off
   std::vector<RunStep> steps;     // every move; a greedy move has iteration 0
   std::vector<Posture> postures;  // the start, then one per reached move
 };
@@ -76,7 +77,8 @@ ReportedRun locate_reported_run(const std::filesystem::path& folder, const std::
 // iterations.csv into `folder`; InputError naming the file and the problem.
 void read_run_climb(RunFolder& folder, const BodyModel& model);
 
-// "the greedy policy's climb after learning" or "the climb of episode N".
+// "the greedy policy's climb after learning" or "the climb of episode N" (with
+// "unfinished" when the run ended during it).
 std::string climb_description(const RecordedClimb& climb);
 
 // The climb to show: "greedy" is the greedy climb when it finishes, else the last

@@ -6,6 +6,16 @@
 
 namespace crux {
 
+ViewCaption run_view_caption(const RunFolder& folder, const RecordedClimb& climb, int step, const std::string& svg) {
+  return {svg, fmt::format("{} on '{}'", folder.name, folder.wall.name),
+          fmt::format("step {} of {} ({} postures, the start is step 0)", step, climb_description(climb),
+                      climb.postures.size())};
+}
+
+ViewCaption wall_view_caption(const Wall& wall, const std::string& svg) {
+  return {svg, fmt::format("'{}'", wall.name), "the start posture, solved by IK from standing"};
+}
+
 nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption) {
   BodyData data(model);
   forward_kinematics(model, data, posture);

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "body/body_model.hpp"
+#include "reports/run_folder.hpp"
 
 namespace crux {
 
@@ -15,6 +16,10 @@ struct ViewCaption {
   std::string title;
   std::string subtitle;
 };
+
+// Step `step` of a run's climb, or a wall's start posture.
+ViewCaption run_view_caption(const RunFolder& folder, const RecordedClimb& climb, int step, const std::string& svg);
+ViewCaption wall_view_caption(const Wall& wall, const std::string& svg);
 
 nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption);
 std::string view_text(const ViewCaption& caption);

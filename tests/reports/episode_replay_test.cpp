@@ -44,19 +44,22 @@ TEST(EpisodeReplay, TheLastEpisodeReplayedIsTheRecordedClimb) {
   for (std::size_t i = 0; i < replayed.postures.size(); ++i) EXPECT_EQ(replayed.postures[i], folder.last.postures[i]) << i;
 }
 
-// An earlier episode starts at the start posture and has a posture per reached move.
-TEST(EpisodeReplay, AnEarlierEpisodeHasAPosturePerReachedMove) {
+// Episode 0 ends with the finishing move; the run's last episode, cut off by its
+// iterations, is replayed as unfinished.
+TEST(EpisodeReplay, EpisodesEndWhereTheRunFinishedThem) {
   const RunFolder folder = read_folder(testing::trained_run_folder());
-  const RecordedClimb first = climb_to_show(folder, testing::human_model(), run_parameters(folder), "0", "--climb");
-  ASSERT_FALSE(first.steps.empty());
-  std::size_t reached = 0;
-  for (const RunStep& step : first.steps) {
-    EXPECT_EQ(step.episode, 0);
-    reached += step.success ? 1 : 0;
-  }
-  EXPECT_EQ(first.postures.size(), reached + 1);
-  EXPECT_EQ(first.postures.front(), folder.last.postures.front());
-  EXPECT_EQ(first.steps.front().iteration, 1);
+  const ClimbingParameters parameters = run_parameters(folder);
+  const RecordedClimb first = climb_to_show(folder, testing::human_model(), parameters, "0", "--climb");
+  std::size_t rows = 0;
+  for (const RunStep& step : folder.steps) rows += step.episode == 0 ? 1 : 0;
+  ASSERT_EQ(first.steps.size(), rows);
+  EXPECT_TRUE(first.finished);
+  EXPECT_GT(first.steps.back().reward, 0) << "the finishing reward";
+  const int unfinished = folder.steps.back().episode;
+  ASSERT_EQ(unfinished, folder.last.episode + 1);
+  const RecordedClimb cut = replay_episode(folder, testing::human_model(), parameters, unfinished, "--climb");
+  EXPECT_FALSE(cut.finished);
+  EXPECT_EQ(cut.steps.back().iteration, 8000);
 }
 
 TEST(EpisodeReplay, NamedClimbsAndBadChoicesNameTheFlag) {
@@ -96,6 +99,30 @@ TEST(EpisodeReplay, ActionsThatDoNotReplayAreRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(e.source().find("iterations.csv"), std::string::npos) << e.what();
     EXPECT_NE(e.problem().find("iteration 1:"), std::string::npos) << e.what();
+  }
+}
+
+// An episode boundary moved by one row no longer matches the MDP's finishes.
+TEST(EpisodeReplay, AShiftedEpisodeBoundaryIsRefused) {
+  const fs::path copy = testing::temporary_path("replay_shifted_" + std::to_string(::getpid()));
+  fs::copy(testing::trained_run_folder(), copy, fs::copy_options::recursive);
+  std::string text;
+  {
+    std::ifstream in(copy / "iterations.csv");
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  // iteration,episode,...: the first row whose episode cell is 1 now claims episode 0.
+  std::size_t line = text.find('\n') + 1;
+  while (line < text.size() && text.compare(text.find(',', line), 3, ",1,") != 0) line = text.find('\n', line) + 1;
+  ASSERT_LT(line, text.size());
+  text[text.find(',', line) + 1] = '0';
+  std::ofstream(copy / "iterations.csv", std::ios::trunc) << text;
+  const RunFolder folder = read_folder(copy);
+  try {
+    replay_episode(folder, testing::human_model(), run_parameters(folder), 1, "--climb");
+    FAIL() << "replayed across a moved episode boundary";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.problem().find("episode 0 where the MDP is in episode 1"), std::string::npos) << e.what();
   }
 }
 

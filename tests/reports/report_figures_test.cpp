@@ -28,5 +28,11 @@ TEST(ReportFigures, OnlyAPaperFolderHasPaperFiguresToWrite) {
   }
 }
 
+TEST(ReportFigures, TheFilesWrittenAreListed) {
+  const std::vector<std::filesystem::path> written{"p/figures/a.svg", "p/figures/b.svg"};
+  EXPECT_EQ(figure_files_json(written)["figures"], nlohmann::json({"p/figures/a.svg", "p/figures/b.svg"}));
+  EXPECT_EQ(figure_files_text(written), "wrote p/figures/a.svg\nwrote p/figures/b.svg\n");
+}
+
 }  // namespace
 }  // namespace crux

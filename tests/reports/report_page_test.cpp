@@ -32,5 +32,24 @@ TEST(ReportPage, ARunFolderPageReplaysTheChosenClimb) {
   }
 }
 
+TEST(ReportPage, WhatIsWrittenIsSummarised) {
+  ReportPage page;
+  page.figures.resize(5);
+  page.replay_climb = "last";
+  page.replay_episode = 4;
+  page.replay = {{"frames", {{"count", 977}}}, {"moves", nlohmann::json::array({1, 2, 3})}};
+  const auto json = written_report_json(page, "training_0", "r.html", 1150000, 0.25);
+  EXPECT_EQ(json["bytes"], 1150000);
+  EXPECT_EQ(json["figures"], 5);
+  EXPECT_EQ(json["replay_climb"], "last");
+  EXPECT_EQ(json["replay_episode"], 4);
+  EXPECT_EQ(json["replay_moves"], 3);
+  EXPECT_EQ(json["replay_frames"], 977);
+  EXPECT_EQ(written_report_text(page, "training_0", "r.html", 1150000, 0.25),
+            "wrote r.html (1.1 MB, 5 figures, a replay of training_0 with 3 moves) in 0.25 s\n");
+  page.replay = nullptr;
+  EXPECT_TRUE(written_report_json(page, "training_0", "r.html", 10, 0.1)["replay_climb"].is_null());
+}
+
 }  // namespace
 }  // namespace crux

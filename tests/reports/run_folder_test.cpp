@@ -140,9 +140,10 @@ TEST(RunFolder, AReportedRunIsTheFolderOrARunOfAPaperFolder) {
 }
 
 TEST(RunFolder, AClimbIsDescribedByItsKind) {
-  EXPECT_EQ(climb_description({"greedy", -1, {}, {}}), "the greedy policy's climb after learning");
-  EXPECT_EQ(climb_description({"last", 7, {}, {}}), "the climb of episode 7");
-  EXPECT_EQ(climb_description({"episode", 2, {}, {}}), "the climb of episode 2");
+  EXPECT_EQ(climb_description({"greedy", -1, true, {}, {}}), "the greedy policy's climb after learning");
+  EXPECT_EQ(climb_description({"last", 7, true, {}, {}}), "the climb of episode 7");
+  EXPECT_EQ(climb_description({"episode", 2, true, {}, {}}), "the climb of episode 2");
+  EXPECT_EQ(climb_description({"episode", 9, false, {}, {}}), "the climb of episode 9 (unfinished)");
 }
 
 }  // namespace

@@ -24,5 +24,18 @@ TEST(ViewDescription, ThePostureIsPlacedAndCaptioned) {
   EXPECT_EQ(view_text(caption), "wrote v.svg: title, subtitle\n");
 }
 
+TEST(ViewDescription, CaptionsNameTheRunItsClimbAndStep) {
+  RunFolder folder;
+  folder.name = "training_2";
+  folder.wall.name = "w";
+  RecordedClimb climb{"episode", 3, false, {}, {Posture::Zero(), Posture::Zero()}};
+  const ViewCaption run = run_view_caption(folder, climb, 1, "a.svg");
+  EXPECT_EQ(run.title, "training_2 on 'w'");
+  EXPECT_EQ(run.subtitle, "step 1 of the climb of episode 3 (unfinished) (2 postures, the start is step 0)");
+  const ViewCaption wall = wall_view_caption(folder.wall, "b.svg");
+  EXPECT_EQ(wall.title, "'w'");
+  EXPECT_EQ(wall.svg, "b.svg");
+}
+
 }  // namespace
 }  // namespace crux

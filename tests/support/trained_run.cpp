@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <string>
+#include <system_error>
 
 #include <gtest/gtest.h>
 
@@ -11,14 +12,27 @@
 
 namespace crux::testing {
 
+namespace {
+
+// Removes the process's run folder when the process ends.
+struct RemovedAtExit {
+  std::filesystem::path path;
+  ~RemovedAtExit() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
+}  // namespace
+
 const std::filesystem::path& trained_run_folder() {
-  static const std::filesystem::path folder = [] {
+  static const RemovedAtExit folder = [] {
     const std::filesystem::path path = temporary_path("trained_run_" + std::to_string(::getpid()));
     const Outcome outcome = run_crux("train --wall-seed 3 --seed 5 --overwrite -o " + path.string());
     EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
-    return path;
+    return RemovedAtExit{path};
   }();
-  return folder;
+  return folder.path;
 }
 
 }  // namespace crux::testing
