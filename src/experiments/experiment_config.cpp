@@ -61,6 +61,13 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"ik.alpha", "Step size of the paper's gradient descent", &ik.paper.step_size},
       {"ik.time_step", "Simulated seconds per IK iteration (both solvers)", &ik.time_step_s},
       {"ik.timeout", "Delta_t: simulated seconds before the paper's solver gives up", &ik.paper.timeout_s},
+      {"ik.paper_stall_iterations",
+       "Steps over which the paper's solver looks for a stall (0: it never gives up before Delta_t, as Algorithm 1)",
+       &ik.paper.stall_iterations},
+      {"ik.paper_stall_decrease", "It has stalled when f fell by less than this share of f over those steps...",
+       &ik.paper.stall_decrease},
+      {"ik.paper_stall_margin", "...while a point is more than this outside its sphere (m); it then gives up",
+       &ik.paper.stall_margin_m},
       {"ik.fast_max_iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations},
       {"ik.fast_stall_decrease", "The fast solver gives up when f drops by less than this share per step...",
        &ik.fast.stall_relative_decrease},
@@ -337,6 +344,10 @@ void finalize_config(ExperimentConfig& config) {
   require(ik.paper.step_size > 0, "ik.alpha", "must be positive");
   require(ik.time_step_s > 0, "ik.time_step", "must be positive");
   require(ik.paper.timeout_s > 0, "ik.timeout", "must be positive");
+  require(ik.paper.stall_iterations >= 0 && ik.paper.stall_iterations <= 64, "ik.paper_stall_iterations",
+          "must be in [0, 64]");
+  require(ik.paper.stall_decrease >= 0, "ik.paper_stall_decrease", "must be 0 or positive");
+  require(ik.paper.stall_margin_m >= 0, "ik.paper_stall_margin", "must be 0 or positive");
   require(ik.fast.max_iterations > 0, "ik.fast_max_iterations", "must be positive");
   require(ik.fast.stall_relative_decrease >= 0, "ik.fast_stall_decrease", "must be 0 or positive");
   require(ik.fast.stall_iterations > 0, "ik.fast_stall_iterations", "must be positive");

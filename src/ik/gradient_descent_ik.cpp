@@ -1,5 +1,7 @@
 #include "ik/gradient_descent_ik.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "body/kinematics.hpp"
@@ -34,6 +36,11 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
   recorder.start(g);
   int iteration = 0;
   bool reached = target_reached(data.points, target, tolerances);
+  // f of the last stall_iterations + 1 iterates, for the stall exit.
+  constexpr int kMaxStallWindow = 64;
+  std::array<double, kMaxStallWindow + 1> recent_costs;
+  const int window = std::clamp(settings.stall_iterations, 0, kMaxStallWindow);  // the config caps it at 64
+  recent_costs[0] = reach_cost(data.points, target);
   while (!reached && iteration < max_iterations) {
     ++iteration;
     operational_jacobians(model, data);
@@ -46,6 +53,13 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
     forward_kinematics(model, data, g);
     recorder.sample(iteration, g);
     reached = target_reached(data.points, target, tolerances);
+    if (window == 0 || reached) continue;
+    const double cost = reach_cost(data.points, target);
+    recent_costs[iteration % (window + 1)] = cost;
+    if (iteration >= window && recent_costs[(iteration - window) % (window + 1)] - cost < settings.stall_decrease * cost &&
+        tolerance_excess(data.points, target, tolerances) > settings.stall_margin_m) {
+      break;
+    }
   }
   recorder.finish(iteration, g);
   IkResult result;

@@ -24,6 +24,16 @@ bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& p
   return true;
 }
 
+double tolerance_excess(const std::array<Eigen::Vector3d, kOperationalPointCount>& points, const ReachTarget& target,
+                        const ReachTolerances& tolerances) {
+  double worst = (points[0] - target.root).norm() - tolerances.root_radius;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    worst = std::max(worst, (points[operational_point(limb)] - target.hold_centres[limb]).norm() -
+                                tolerances.grasp_radius - target.hold_radii[limb]);
+  }
+  return worst;
+}
+
 double reach_cost(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
                   const ReachTarget& target) {
   double cost = 0.5 * (points[0] - target.root).squaredNorm();

@@ -30,6 +30,11 @@ double grasp_residual(const std::array<Eigen::Vector3d, kOperationalPointCount>&
 bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
                     const ReachTarget& target, const ReachTolerances& tolerances);
 
+// How far the worst operational point lies outside its sphere (the root's tolerance
+// sphere, or its hold's sphere grown by the grasp radius); negative when all are inside.
+double tolerance_excess(const std::array<Eigen::Vector3d, kOperationalPointCount>& points, const ReachTarget& target,
+                        const ReachTolerances& tolerances);
+
 // f(E) = sum over the 5 operational points of 1/2 |e_i - e_i_des|^2 (paper, III-B).
 double reach_cost(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
                   const ReachTarget& target);

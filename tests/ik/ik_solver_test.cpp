@@ -74,8 +74,13 @@ TEST_P(EachSolver, GivesUpWithinItsTimeOutWhenHoldsAreThreeMetresApart) {
   EXPECT_FALSE(result.reached);
   EXPECT_EQ(result.posture, start) << "Algorithm 1 returns G_init when it gives up";
   if (GetParam() == IkSolverKind::Paper) {
-    EXPECT_EQ(result.iterations, settings.paper.max_iterations(settings.time_step_s));
-    EXPECT_NEAR(result.simulated_time_s, settings.paper.timeout_s, 1e-9);
+    EXPECT_LT(result.iterations, settings.paper.max_iterations(settings.time_step_s) / 10) << "the stall exit";
+    IkSettings as_written = settings;
+    as_written.paper.stall_iterations = 0;
+    const IkResult timed_out = solve_ik(model, data, start, target, as_written);
+    EXPECT_FALSE(timed_out.reached);
+    EXPECT_EQ(timed_out.iterations, settings.paper.max_iterations(settings.time_step_s));
+    EXPECT_NEAR(timed_out.simulated_time_s, settings.paper.timeout_s, 1e-9);
   } else {
     EXPECT_LE(result.iterations, settings.fast.max_iterations);
   }
@@ -117,6 +122,37 @@ TEST_P(EachSolver, RecordsThePathEveryKIterations) {
 
 INSTANTIATE_TEST_SUITE_P(Solvers, EachSolver, ::testing::ValuesIn(kSolvers),
                          [](const auto& info) { return std::string(ik_solver_name(info.param)); });
+
+// The paper's solver with its stall exit against Algorithm 1 as written (no exit) on
+// 2000 climbing-like queries of a seed that played no part in choosing the exit's
+// parameters (docs/DESIGN.md): the same verdict on at least 99.9 % of them, the same
+// posture where both reach, and at most 60 % of the iterations.
+TEST(PaperSolver, TheStallExitKeepsTheVerdictsAndPostures) {
+  const BodyModel& model = human_model();
+  constexpr std::uint64_t seed = 4242;
+  const auto queries = climbing_reach_queries(model, IkSettings{}, 2000, seed);
+  IkSettings with_exit = settings_for(IkSolverKind::Paper), as_written = with_exit;
+  as_written.paper.stall_iterations = 0;
+  BodyData data(model);
+  int differing = 0, reached = 0;
+  long iterations_with_exit = 0, iterations_as_written = 0;
+  for (std::size_t n = 0; n < queries.size(); ++n) {
+    const IkResult fast_exit = solve_ik(model, data, queries[n].start, queries[n].target, with_exit);
+    const IkResult written = solve_ik(model, data, queries[n].start, queries[n].target, as_written);
+    iterations_with_exit += fast_exit.iterations;
+    iterations_as_written += written.iterations;
+    if (fast_exit.reached != written.reached) {
+      ++differing;
+      continue;
+    }
+    if (!written.reached) continue;
+    ++reached;
+    EXPECT_LE((fast_exit.posture - written.posture).cwiseAbs().maxCoeff(), 1e-9) << "seed " << seed << " query " << n;
+  }
+  EXPECT_LE(differing, 2) << "seed " << seed;
+  EXPECT_GT(reached, 500) << "seed " << seed;
+  EXPECT_LT(iterations_with_exit, 0.6 * iterations_as_written) << "seed " << seed;
+}
 
 TEST(IkSolver, ParsesSolverNames) {
   EXPECT_EQ(parse_ik_solver("paper"), IkSolverKind::Paper);

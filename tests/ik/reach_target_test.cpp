@@ -48,6 +48,20 @@ TEST(ReachTarget, ResidualPairsEachLimbWithItsOwnHold) {
   EXPECT_FALSE(target_reached(points, target, ReachTolerances{}));
 }
 
+TEST(ReachTarget, ExcessIsHowFarTheWorstPointLiesOutsideItsSphere) {
+  const ReachTarget target = sample_target();  // hold radii 0.04
+  ReachTolerances tolerances;                  // grasp 0.04, root 0.10
+  // Root 9 cm off (1 cm inside its 10 cm), left foot 7 cm off (1 cm inside 8 cm).
+  EXPECT_NEAR(tolerance_excess(sample_points(target), target, tolerances), -0.01, 1e-12);
+  Points points = sample_points(target);
+  points[operational_point(Limb::RightFoot)].y() += 0.5;  // 50 cm off: 42 cm outside
+  EXPECT_NEAR(tolerance_excess(points, target, tolerances), 0.42, 1e-12);
+  tolerances.root_radius = 0.01;  // the root 8 cm outside now, still less than the foot
+  EXPECT_NEAR(tolerance_excess(points, target, tolerances), 0.42, 1e-12);
+  points[0].x() += 1.0;
+  EXPECT_NEAR(tolerance_excess(points, target, tolerances), std::sqrt(1.0 + 0.09 * 0.09) - 0.01, 1e-12);
+}
+
 TEST(ReachTarget, CostIsHalfTheSumOfSquaredDistancesOfAllFivePoints) {
   const ReachTarget target = sample_target();
   // 1/2 (0.09^2 + 0.05^2 + 0.05^2 + 0 + 0.07^2) = 1/2 (0.0081 + 0.0025 + 0.0025 + 0.0049) = 0.009
