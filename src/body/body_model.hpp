@@ -60,6 +60,9 @@ struct BodyModel {
   // For each operational point, the coordinates whose motion moves it; Jacobian
   // columns outside this list are always zero.
   std::array<std::vector<int>, kOperationalPointCount> chains;
+  // The union of the chains in increasing order: the joints IK has to place (the neck,
+  // for one, moves no operational point).
+  std::vector<int> operational_joints;
   Posture lower_limits, upper_limits;  // root limits are +-infinity: the root is free
   double total_mass = 0.0;
   // Measured on the zero (natural standing) posture with the root at the origin.

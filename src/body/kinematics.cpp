@@ -28,41 +28,44 @@ Eigen::Matrix3d axis_rotation(const Eigen::Vector3d& axis, double angle) {
 
 }  // namespace
 
-void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g) {
-  const int n = static_cast<int>(model.joints.size());
-  for (int i = 0; i < n; ++i) {
-    const BodyJoint& joint = model.joints[i];
-    JointPlacement& out = data.placements[i];
-    Eigen::Matrix3d frame;
-    if (joint.parent < 0) {
-      frame = joint.origin_rotation;
-      out.origin = joint.origin_translation;
+namespace {
+
+// Places joint i from its parent's placement (already placed) and coordinate g[i].
+void place_joint(const BodyModel& model, BodyData& data, const Posture& g, int i) {
+  const BodyJoint& joint = model.joints[i];
+  JointPlacement& out = data.placements[i];
+  Eigen::Matrix3d frame;
+  if (joint.parent < 0) {
+    frame = joint.origin_rotation;
+    out.origin = joint.origin_translation;
+  } else {
+    const JointPlacement& parent = data.placements[joint.parent];
+    if (joint.origin_rotation_is_identity) {
+      frame = parent.rotation;
     } else {
-      const JointPlacement& parent = data.placements[joint.parent];
-      if (joint.origin_rotation_is_identity) {
-        frame = parent.rotation;
-      } else {
-        frame.noalias() = parent.rotation * joint.origin_rotation;
-      }
-      out.origin = parent.origin;
-      out.origin.noalias() += parent.rotation * joint.origin_translation;
+      frame.noalias() = parent.rotation * joint.origin_rotation;
     }
-    out.axis.noalias() = frame * joint.axis;
-    if (joint.prismatic) {
-      out.rotation = frame;
-      out.origin += g[i] * out.axis;
-    } else if (joint.principal_axis >= 0) {
-      // Rotating about a coordinate axis k mixes only the two other columns.
-      const int k = joint.principal_axis, a = (k + 1) % 3, b = (k + 2) % 3;
-      const double s = joint.principal_sign * std::sin(g[i]);
-      const double c = std::cos(g[i]);
-      out.rotation.col(k) = frame.col(k);
-      out.rotation.col(a) = c * frame.col(a) + s * frame.col(b);
-      out.rotation.col(b) = c * frame.col(b) - s * frame.col(a);
-    } else {
-      out.rotation.noalias() = frame * axis_rotation(joint.axis, g[i]);
-    }
+    out.origin = parent.origin;
+    out.origin.noalias() += parent.rotation * joint.origin_translation;
   }
+  out.axis.noalias() = frame * joint.axis;
+  if (joint.prismatic) {
+    out.rotation = frame;
+    out.origin += g[i] * out.axis;
+  } else if (joint.principal_axis >= 0) {
+    // Rotating about a coordinate axis k mixes only the two other columns.
+    const int k = joint.principal_axis, a = (k + 1) % 3, b = (k + 2) % 3;
+    const double s = joint.principal_sign * std::sin(g[i]);
+    const double c = std::cos(g[i]);
+    out.rotation.col(k) = frame.col(k);
+    out.rotation.col(a) = c * frame.col(a) + s * frame.col(b);
+    out.rotation.col(b) = c * frame.col(b) - s * frame.col(a);
+  } else {
+    out.rotation.noalias() = frame * axis_rotation(joint.axis, g[i]);
+  }
+}
+
+void place_operational_points(const BodyModel& model, BodyData& data) {
   data.points[0] = data.placements[kRootDof - 1].origin;
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const AttachedPoint& grasp = model.grasp_points[limb];
@@ -70,6 +73,19 @@ void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g
     data.points[operational_point(limb)] = carrier.origin;
     data.points[operational_point(limb)].noalias() += carrier.rotation * grasp.offset;
   }
+}
+
+}  // namespace
+
+void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g) {
+  const int n = static_cast<int>(model.joints.size());
+  for (int i = 0; i < n; ++i) place_joint(model, data, g, i);
+  place_operational_points(model, data);
+}
+
+void operational_forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g) {
+  for (const int i : model.operational_joints) place_joint(model, data, g, i);
+  place_operational_points(model, data);
 }
 
 void operational_jacobians(const BodyModel& model, BodyData& data) {

@@ -10,6 +10,11 @@ namespace crux {
 // Places every joint frame and the operational points e0..e4 for posture g.
 void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g);
 
+// The same for the joints that move an operational point only (model.operational_joints),
+// the same numbers for e0..e4 and their Jacobians; the other joints' placements are left
+// as they were. What IK iterates on.
+void operational_forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g);
+
 // The five 3 x 35 Jacobians d e_i / d G at the posture of the last forward_kinematics.
 void operational_jacobians(const BodyModel& model, BodyData& data);
 

@@ -271,6 +271,14 @@ class ModelBuilder {
       std::vector<int>& chain = model_.chains[k];
       for (; joint >= 0; joint = model_.joints[joint].parent) chain.insert(chain.begin(), joint);
     }
+    for (int i = 0; i < static_cast<int>(model_.joints.size()); ++i) {
+      for (const auto& chain : model_.chains) {
+        if (std::find(chain.begin(), chain.end(), i) != chain.end()) {
+          model_.operational_joints.push_back(i);
+          break;
+        }
+      }
+    }
     for (int i = 0; i < kConfigurationDof; ++i) {
       model_.lower_limits[i] = model_.joints[i].lower;
       model_.upper_limits[i] = model_.joints[i].upper;

@@ -42,7 +42,7 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
   Eigen::LLT<TaskMatrix> factor;
   Posture g = g_init, trial, gradient;
 
-  forward_kinematics(model, data, g);
+  operational_forward_kinematics(model, data, g);
   recorder.start(g);
   task_error(data, target, tolerances, settings.aim_fraction, error);
   double cost = 0.5 * error.squaredNorm();
@@ -72,7 +72,7 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
       factor.compute(damped);
       trial.noalias() = g - jacobian.transpose() * factor.solve(error);
       trial = trial.cwiseMax(model.lower_limits).cwiseMin(model.upper_limits);
-      forward_kinematics(model, data, trial);
+      operational_forward_kinematics(model, data, trial);
       task_error(data, target, tolerances, settings.aim_fraction, trial_error);
       trial_cost = 0.5 * trial_error.squaredNorm();
       if (trial_cost < cost) {
@@ -83,7 +83,7 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
       damping *= 4.0;
     }
     if (!improved) {
-      forward_kinematics(model, data, g);
+      operational_forward_kinematics(model, data, g);
       break;
     }
     stalled = (cost - trial_cost) < settings.stall_relative_decrease * cost ? stalled + 1 : 0;
@@ -100,7 +100,7 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
   result.simulated_time_s = iteration * time_step_s;
   result.residual_m = grasp_residual(data.points, target);
   result.posture = reached ? g : g_init;
-  if (!reached) forward_kinematics(model, data, g_init);
+  forward_kinematics(model, data, result.posture);
   return result;
 }
 

@@ -32,7 +32,7 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
   const int max_iterations = settings.max_iterations(time_step_s);
   Posture g = g_init;
   Posture gradient;
-  forward_kinematics(model, data, g);
+  operational_forward_kinematics(model, data, g);
   recorder.start(g);
   int iteration = 0;
   bool reached = target_reached(data.points, target, tolerances);
@@ -50,7 +50,7 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
       // "Modify descent direction": a joint whose step would cross its limit stays put.
       if (next >= model.lower_limits[i] && next <= model.upper_limits[i]) g[i] = next;
     }
-    forward_kinematics(model, data, g);
+    operational_forward_kinematics(model, data, g);
     recorder.sample(iteration, g);
     reached = target_reached(data.points, target, tolerances);
     if (window == 0 || reached) continue;
@@ -68,7 +68,7 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
   result.simulated_time_s = iteration * time_step_s;
   result.residual_m = grasp_residual(data.points, target);
   result.posture = reached ? g : g_init;
-  if (!reached) forward_kinematics(model, data, g_init);  // data describes the returned posture
+  forward_kinematics(model, data, result.posture);  // data describes the returned posture, every joint
   return result;
 }
 

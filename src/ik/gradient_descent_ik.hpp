@@ -24,7 +24,7 @@ struct GradientDescentSettings {
   // `stall_iterations` steps while a point is more than `stall_margin_m` outside its sphere.
   int stall_iterations = 10;
   double stall_decrease = 3e-4;
-  double stall_margin_m = 0.05;
+  double stall_margin_m = 0.10;
   // Iterations that fit in Delta_t at `time_step_s` simulated seconds each.
   int max_iterations(double time_step_s) const;
 };

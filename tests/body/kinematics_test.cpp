@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "support/allocation_counter.hpp"
 #include "support/test_models.hpp"
 
@@ -64,10 +66,40 @@ TEST(Kinematics, HotPathDoesNotAllocate) {
   const long before = testing::allocation_count();
   for (int n = 0; n < 10; ++n) {
     forward_kinematics(model, data, g);
+    operational_forward_kinematics(model, data, g);
     operational_jacobians(model, data);
     centre_of_mass(model, data);
   }
   EXPECT_EQ(testing::allocation_count(), before);
+}
+
+// IK's forward kinematics places the operational points and their chains exactly as the
+// whole-body one, and leaves the other joints (the neck) where they were.
+TEST(Kinematics, OperationalForwardKinematicsIsTheWholeOnesOnTheChains) {
+  const BodyModel& model = human_model();
+  ASSERT_LT(model.operational_joints.size(), model.joints.size());
+  for (const int i : model.operational_joints) EXPECT_EQ(model.joints[i].name.rfind("neck", 0), std::string::npos);
+  BodyData whole(model), operational(model);
+  Random random(kSeed);
+  const Posture first = random_posture(model, random);
+  forward_kinematics(model, operational, first);
+  const BodyData before = operational;
+  for (int sample = 0; sample < 100; ++sample) {
+    const Posture g = random_posture(model, random);
+    forward_kinematics(model, whole, g);
+    operational_forward_kinematics(model, operational, g);
+    for (int k = 0; k < kOperationalPointCount; ++k) EXPECT_EQ(operational.points[k], whole.points[k]) << k;
+    operational_jacobians(model, whole);
+    operational_jacobians(model, operational);
+    for (int k = 0; k < kOperationalPointCount; ++k) EXPECT_EQ(operational.jacobians[k], whole.jacobians[k]) << k;
+  }
+  for (int i = 0; i < static_cast<int>(model.joints.size()); ++i) {
+    if (std::find(model.operational_joints.begin(), model.operational_joints.end(), i) !=
+        model.operational_joints.end()) {
+      continue;
+    }
+    EXPECT_EQ(operational.placements[i].origin, before.placements[i].origin) << model.joints[i].name;
+  }
 }
 
 }  // namespace

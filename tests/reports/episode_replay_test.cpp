@@ -1,10 +1,7 @@
 #include "reports/episode_replay.hpp"
 
-#include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include <gtest/gtest.h>
 
@@ -80,18 +77,12 @@ TEST(EpisodeReplay, NamedClimbsAndBadChoicesNameTheFlag) {
 // A folder whose actions the MDP does not reproduce (here a move's verdict flipped) is
 // refused, naming its iterations.csv and the iteration.
 TEST(EpisodeReplay, ActionsThatDoNotReplayAreRefused) {
-  const fs::path copy = testing::temporary_path("replay_flipped_" + std::to_string(::getpid()));
-  fs::copy(testing::trained_run_folder(), copy, fs::copy_options::recursive);
-  std::string text;
-  {
-    std::ifstream in(copy / "iterations.csv");
-    text.assign(std::istreambuf_iterator<char>(in), {});
-  }
-  // iteration,episode,regime,hold,success,...: flip the first row's success.
-  std::size_t cell = text.find('\n');
-  for (int comma = 0; comma < 4; ++comma) cell = text.find(',', cell + 1);
-  text[cell + 1] = text[cell + 1] == '0' ? '1' : '0';
-  std::ofstream(copy / "iterations.csv", std::ios::trunc) << text;
+  const fs::path copy = testing::edited_trained_run("replay_flipped", "iterations.csv", [](std::string& text) {
+    // iteration,episode,regime,hold,success,...: flip the first row's success.
+    std::size_t cell = text.find('\n');
+    for (int comma = 0; comma < 4; ++comma) cell = text.find(',', cell + 1);
+    text[cell + 1] = text[cell + 1] == '0' ? '1' : '0';
+  });
   const RunFolder folder = read_folder(copy);
   try {
     replay_episode(folder, testing::human_model(), run_parameters(folder), 0, "--climb");
@@ -104,19 +95,13 @@ TEST(EpisodeReplay, ActionsThatDoNotReplayAreRefused) {
 
 // An episode boundary moved by one row no longer matches the MDP's finishes.
 TEST(EpisodeReplay, AShiftedEpisodeBoundaryIsRefused) {
-  const fs::path copy = testing::temporary_path("replay_shifted_" + std::to_string(::getpid()));
-  fs::copy(testing::trained_run_folder(), copy, fs::copy_options::recursive);
-  std::string text;
-  {
-    std::ifstream in(copy / "iterations.csv");
-    text.assign(std::istreambuf_iterator<char>(in), {});
-  }
-  // iteration,episode,...: the first row whose episode cell is 1 now claims episode 0.
-  std::size_t line = text.find('\n') + 1;
-  while (line < text.size() && text.compare(text.find(',', line), 3, ",1,") != 0) line = text.find('\n', line) + 1;
-  ASSERT_LT(line, text.size());
-  text[text.find(',', line) + 1] = '0';
-  std::ofstream(copy / "iterations.csv", std::ios::trunc) << text;
+  const fs::path copy = testing::edited_trained_run("replay_shifted", "iterations.csv", [](std::string& text) {
+    // iteration,episode,...: the first row whose episode cell is 1 now claims episode 0.
+    std::size_t line = text.find('\n') + 1;
+    while (line < text.size() && text.compare(text.find(',', line), 3, ",1,") != 0) line = text.find('\n', line) + 1;
+    ASSERT_LT(line, text.size());
+    text[text.find(',', line) + 1] = '0';
+  });
   const RunFolder folder = read_folder(copy);
   try {
     replay_episode(folder, testing::human_model(), run_parameters(folder), 1, "--climb");

@@ -22,12 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-RunFolder read_trained_folder() {
-  RunFolder folder = locate_run_folder(testing::trained_run_folder());
-  read_run_climb(folder, testing::human_model());
-  return folder;
-}
-
 Posture frame(const nlohmann::ordered_json& replay, int index) {
   Posture posture;
   for (int i = 0; i < kConfigurationDof; ++i) posture[i] = replay["frames"]["postures"][index * kConfigurationDof + i];
@@ -37,7 +31,7 @@ Posture frame(const nlohmann::ordered_json& replay, int index) {
 // Every move takes its frames in order; a reached move ends exactly on the recorded
 // posture (as rounded), an unreachable one keeps the body still.
 TEST(ReplayData, MovesCoverTheFramesAndEndOnTheRecordedPostures) {
-  const RunFolder folder = read_trained_folder();
+  const RunFolder folder = testing::read_trained_run();
   const ReplaySettings settings;
   const RecordedClimb& climb = folder.last;
   const auto replay = replay_data(testing::human_model(), folder.wall, climb, {}, "test", "test", settings);
@@ -66,7 +60,7 @@ TEST(ReplayData, MovesCoverTheFramesAndEndOnTheRecordedPostures) {
 // postures are those of one climb.
 TEST(ReplayData, EachReachedPostureGraspsTheConfigurationShown) {
   const BodyModel& model = testing::human_model();
-  const RunFolder folder = read_trained_folder();
+  const RunFolder folder = testing::read_trained_run();
   const ReachabilityParameters reach;
   BodyData data(model);
   for (const RecordedClimb* climb : {&folder.last, &folder.greedy}) {
@@ -93,7 +87,7 @@ void expect_continuous(const RecordedClimb& climb, const nlohmann::ordered_json&
 // in-between frames would make the whole move in one frame, no frame here moves any
 // joint by more than a quarter of the move's largest joint change.
 TEST(ReplayData, InBetweenFramesAreContinuous) {
-  const RunFolder folder = read_trained_folder();
+  const RunFolder folder = testing::read_trained_run();
   for (const RecordedClimb* climb : {&folder.last, &folder.greedy}) {
     expect_continuous(*climb, replay_data(testing::human_model(), folder.wall, *climb, {}, "test", "test"));
   }
@@ -120,7 +114,7 @@ void expect_continuous(const RecordedClimb& climb, const nlohmann::ordered_json&
 
 TEST(ReplayData, TheCheckPointsAreTheForwardKinematicsOfTheirFrame) {
   const BodyModel& model = testing::human_model();
-  const RunFolder folder = read_trained_folder();
+  const RunFolder folder = testing::read_trained_run();
   const auto replay = replay_data(model, folder.wall, folder.greedy, {}, "test", "test");
   const int check = replay["check"]["frame"];
   BodyData data(model);

@@ -17,14 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-RunFolder read_trained_folder() {
-  RunFolder folder = locate_run_folder(testing::trained_run_folder());
-  read_run_climb(folder, testing::human_model());
-  return folder;
-}
-
 TEST(RunFolder, ReadsTheLastCompletedClimbWithItsEpisode) {
-  const RunFolder folder = read_trained_folder();
+  const RunFolder folder = testing::read_trained_run();
   ASSERT_GE(folder.last.episode, 1);
   std::size_t reached = 0;
   for (const RunStep& step : folder.last.steps) {
@@ -39,7 +33,7 @@ TEST(RunFolder, ReadsTheLastCompletedClimbWithItsEpisode) {
 // A greedy climb: a reached move per posture after the start, its rise from the
 // postures, and as many moves as summary.json's greedy_length.
 TEST(RunFolder, ReadsTheGreedyClimb) {
-  const RunFolder folder = read_trained_folder();
+  const RunFolder folder = testing::read_trained_run();
   std::ifstream in(folder.summary_file);
   const auto summary = nlohmann::json::parse(in);
   const int length = summary["run_facts"]["training"][0]["greedy_length"];
@@ -70,22 +64,16 @@ TEST(RunFolder, AFolderThatIsNoRunIsNamed) {
 }
 
 TEST(RunFolder, AClimbThatDoesNotMatchItsIterationsIsRefused) {
-  const fs::path copy = testing::temporary_path("replay_train_cut_" + std::to_string(::getpid()));
-  fs::copy(testing::trained_run_folder(), copy, fs::copy_options::recursive);
-  std::string climb;
-  {
-    std::ifstream in(copy / "climb.csv");
-    climb.assign(std::istreambuf_iterator<char>(in), {});
-  }
-  climb.erase(climb.rfind('\n', climb.size() - 2) + 1);  // drop the finishing posture
-  std::ofstream(copy / "climb.csv") << climb;
+  const fs::path copy = testing::edited_trained_run("run_cut", "climb.csv", [](std::string& climb) {
+    climb.erase(climb.rfind('\n', climb.size() - 2) + 1);  // drop the finishing posture
+  });
   RunFolder folder = locate_run_folder(copy);
   EXPECT_THROW(read_run_climb(folder, testing::human_model()), InputError);
 }
 
 // Every row of iterations.csv is kept, and the config it was written with reads back.
 TEST(RunFolder, KeepsEveryIterationAndReadsItsOwnConfig) {
-  const RunFolder folder = read_trained_folder();
+  const RunFolder folder = testing::read_trained_run();
   ASSERT_EQ(folder.steps.size(), 8000u);
   for (std::size_t i = 0; i < folder.steps.size(); ++i) EXPECT_EQ(folder.steps[i].iteration, static_cast<int>(i) + 1);
   EXPECT_EQ(folder.steps.back().episode, folder.last.episode + 1) << "the last episode is unfinished";
@@ -96,17 +84,11 @@ TEST(RunFolder, KeepsEveryIterationAndReadsItsOwnConfig) {
 }
 
 TEST(RunFolder, ABadConfigIsNamedWithItsLineAndKey) {
-  const fs::path copy = testing::temporary_path("run_bad_config_" + std::to_string(::getpid()));
-  fs::copy(testing::trained_run_folder(), copy, fs::copy_options::recursive);
-  std::string text;
-  {
-    std::ifstream in(copy / "config.toml");
-    text.assign(std::istreambuf_iterator<char>(in), {});
-  }
-  const std::size_t gamma = text.find("gamma = 0.9");
-  ASSERT_NE(gamma, std::string::npos);
-  text.replace(gamma, 11, "gamma = 2.0");
-  std::ofstream(copy / "config.toml", std::ios::trunc) << text;
+  const fs::path copy = testing::edited_trained_run("run_bad_config", "config.toml", [](std::string& text) {
+    const std::size_t gamma = text.find("gamma = 0.9");
+    ASSERT_NE(gamma, std::string::npos);
+    text.replace(gamma, 11, "gamma = 2.0");
+  });
   const RunFolder folder = locate_run_folder(copy);
   try {
     read_run_config(folder);

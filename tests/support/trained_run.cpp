@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <system_error>
 
@@ -33,6 +35,26 @@ const std::filesystem::path& trained_run_folder() {
     return RemovedAtExit{path};
   }();
   return folder.path;
+}
+
+RunFolder read_trained_run() {
+  RunFolder folder = locate_run_folder(trained_run_folder());
+  read_run_climb(folder, human_model());
+  return folder;
+}
+
+std::filesystem::path edited_trained_run(const std::string& name, const std::string& file,
+                                         const std::function<void(std::string&)>& edit) {
+  const std::filesystem::path copy = temporary_path(name + "_" + std::to_string(::getpid()));
+  std::filesystem::copy(trained_run_folder(), copy, std::filesystem::copy_options::recursive);
+  std::string text;
+  {
+    std::ifstream in(copy / file, std::ios::binary);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  edit(text);
+  std::ofstream(copy / file, std::ios::binary | std::ios::trunc) << text;
+  return copy;
 }
 
 }  // namespace crux::testing

@@ -4,9 +4,21 @@
 // climb. Trained once per test process (ctest runs test cases in parallel processes).
 
 #include <filesystem>
+#include <functional>
+#include <string>
+
+#include "reports/run_folder.hpp"
 
 namespace crux::testing {
 
 const std::filesystem::path& trained_run_folder();
+
+// The trained run folder read back, its climb read with the human body.
+RunFolder read_trained_run();
+
+// A copy of the trained run folder (named `name`, per process) in which `edit` has
+// changed the text of one file.
+std::filesystem::path edited_trained_run(const std::string& name, const std::string& file,
+                                         const std::function<void(std::string&)>& edit);
 
 }  // namespace crux::testing
