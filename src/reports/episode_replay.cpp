@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <charconv>
-#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -16,8 +15,6 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
   if (episode < 0 || episode >= episodes) {
     throw InputError(flag, fmt::format("the run has episodes 0 to {}, not {}", episodes - 1, episode));
   }
-  std::unordered_map<int, ActionCode> hold_of_id;
-  for (int h = 0; h < folder.wall.hold_count(); ++h) hold_of_id.emplace(folder.wall.holds[h].id, h);
   const std::string iterations_file = (folder.directory / "iterations.csv").string();
   ClimbingMdp mdp(model, folder.wall, parameters);
   RecordedClimb climb{"episode", episode, false, {}, {}};
@@ -30,17 +27,16 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
     }
     if (step.episode > episode) break;
     if (step.episode == episode && climb.postures.empty()) climb.postures.push_back(mdp.posture());
-    const auto hold = hold_of_id.find(step.hold_id);
+    const ActionCode hold = folder.wall.index_of(step.hold_id);
     const auto candidates = mdp.candidates();
-    const bool possible = hold != hold_of_id.end() &&
-                          std::any_of(candidates.begin(), candidates.end(),
-                                      [&](const ActionCandidate& c) { return c.wall == hold->second; });
+    const bool possible = hold >= 0 && std::any_of(candidates.begin(), candidates.end(),
+                                                   [&](const ActionCandidate& c) { return c.wall == hold; });
     if (!possible) {
       throw InputError(iterations_file, fmt::format("iteration {}: hold {} is not a possible action there; the "
                                                     "run was not written with this folder's wall and config",
                                                     step.iteration, step.hold_id));
     }
-    const StepOutcome outcome = mdp.step(hold->second);
+    const StepOutcome outcome = mdp.step(hold);
     if (outcome.reached != step.success) {
       throw InputError(iterations_file, fmt::format("iteration {}: the move {} where the run's {}; the run was not "
                                                     "written with this folder's body and config",
