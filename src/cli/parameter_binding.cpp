@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
+#include "common/input_file.hpp"
 
 namespace crux::cli {
 
@@ -71,9 +72,25 @@ bool ParameterBinding::is_set(const std::string& key) const {
   return (given != nullptr && given->count() > 0) || lines_.contains(key);
 }
 
-ExperimentConfig ParameterBinding::resolve() {
+std::vector<ListedKey> ParameterBinding::listed_keys() const {
+  if (config_path_.empty()) return {};
+  std::vector<ListedKey> listed =
+      crux::listed_keys(read_input_file(config_path_, "config file"), config_path_, accepted_);
+  std::erase_if(listed, [&](const ListedKey& k) {
+    const CLI::Option* given = option(k.key);
+    return given != nullptr && given->count() > 0;
+  });
+  return listed;
+}
+
+ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
   ExperimentConfig config = defaults_;
-  if (!config_path_.empty()) lines_ = apply_config_file(config_path_, config, accepted_, command_);
+  // A flag replaces a key's list as it replaces a value.
+  ListChoice effective = choice;
+  for (const auto& [key, given] : options_) {
+    if (given->count() > 0) effective.emplace(key, 0);
+  }
+  if (!config_path_.empty()) lines_ = apply_config_file(config_path_, config, accepted_, command_, effective);
   const auto flags = config_fields(from_flags_);
   const auto fields = config_fields(config);
   for (std::size_t i = 0; i < fields.size(); ++i) {

@@ -21,8 +21,11 @@ class ParameterBinding {
   void bind(CLI::App* command);
   CLI::Option* option(const std::string& key) const;
 
-  // The effective parameters, finalized (finalize_config).
-  ExperimentConfig resolve();
+  // The effective parameters, finalized (finalize_config); a list in the config file
+  // (crux sweep) takes the value `choice` names.
+  ExperimentConfig resolve(const ListChoice& choice = {});
+  // The config file's keys given a list of values, minus those a flag sets to one value.
+  std::vector<ListedKey> listed_keys() const;
 
   const ParameterSet& accepted() const { return accepted_; }
   const std::string& config_path() const { return config_path_; }

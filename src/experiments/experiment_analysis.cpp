@@ -18,11 +18,11 @@ double median(std::vector<double> values) {
   return percentile(values, 0.5);
 }
 
+}  // namespace
+
 MetricWindows metric_windows(const ExperimentSettings& settings) {
   return {settings.learning.iterations, settings.analysis.beginning, settings.analysis.threshold_length};
 }
-
-}  // namespace
 
 ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const ExperimentSettings& settings) {
   ExperimentAnalysis out;

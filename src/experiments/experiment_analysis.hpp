@@ -14,6 +14,9 @@ namespace crux {
 // The seed of the cluster bootstrap: its own named stream of the experiment seed.
 std::uint64_t bootstrap_seed(const ExperimentSettings& settings);
 
+// The windows of the transfer metrics under `settings`.
+MetricWindows metric_windows(const ExperimentSettings& settings);
+
 // What summary.json reports of the transfer metrics, take-off and paired divergence,
 // computed once for the file and the printed report.
 struct ExperimentAnalysis {

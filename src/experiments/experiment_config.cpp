@@ -192,21 +192,53 @@ void assign(const std::string& path, const ConfigField& field, const toml::node&
 }  // namespace
 
 ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config, const ParameterSet& accepted,
-                              const std::string& command) {
-  return apply_config_text(read_input_file(path, "config file"), path, config, accepted, command);
+                              const std::string& command, const ListChoice& choice) {
+  return apply_config_text(read_input_file(path, "config file"), path, config, accepted, command, choice);
 }
 
-ConfigLines apply_config_text(const std::string& text, const std::string& path, ExperimentConfig& config,
-                              const ParameterSet& accepted, const std::string& command) {
-  toml::table table;
+namespace {
+
+toml::table parse_config(const std::string& text, const std::string& path) {
   try {
-    table = toml::parse(text, path);
+    return toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     const std::string description(e.description());
     if (e.source().begin.line == 0) throw InputError(path, "cannot read the config file: " + description);
     throw InputError(path, fmt::format("TOML syntax error at line {}, column {}: {}", e.source().begin.line,
                                        e.source().begin.column, description));
   }
+}
+
+// Keys whose list would not make a sweep: the body is loaded once, threads change no result.
+bool may_be_listed(const std::string& key) { return key != "experiment.urdf" && key != "experiment.threads"; }
+
+}  // namespace
+
+std::vector<ListedKey> listed_keys(const std::string& text, const std::string& path, const ParameterSet& accepted) {
+  const toml::table table = parse_config(text, path);
+  std::vector<ListedKey> listed;
+  ExperimentConfig probe;
+  for (const ConfigField& field : config_fields(probe)) {
+    if (!accepted.accepts(field.key)) continue;
+    const std::size_t dot = field.key.find('.');
+    const toml::node* node = table.at_path(toml::path(field.key.substr(0, dot))).node();
+    const toml::table* section = node != nullptr ? node->as_table() : nullptr;
+    const toml::node* value = section != nullptr ? section->get(field.key.substr(dot + 1)) : nullptr;
+    const toml::array* list = value != nullptr ? value->as_array() : nullptr;
+    if (list == nullptr) continue;
+    const int line = static_cast<int>(value->source().begin.line);
+    if (!may_be_listed(field.key)) {
+      throw InputError(path, fmt::format("line {}: {} takes one value, not a list", line, field.key));
+    }
+    if (list->empty()) throw InputError(path, fmt::format("line {}: {} lists no value", line, field.key));
+    listed.push_back({field.key, list->size(), line});
+  }
+  return listed;
+}
+
+ConfigLines apply_config_text(const std::string& text, const std::string& path, ExperimentConfig& config,
+                              const ParameterSet& accepted, const std::string& command, const ListChoice& choice) {
+  const toml::table table = parse_config(text, path);
   const std::vector<ConfigField> fields = config_fields(config);
   ConfigLines lines;
   for (const auto& [section, section_node] : table) {
@@ -240,7 +272,15 @@ ConfigLines apply_config_text(const std::string& text, const std::string& path, 
       if (!accepted.accepts(key)) {
         throw InputError(path, fmt::format("line {}: crux {} does not take {}", line, command, key));
       }
-      assign(path, *field, node);
+      if (const toml::array* list = node.as_array(); list != nullptr) {
+        const auto chosen = choice.find(key);
+        if (chosen == choice.end()) {
+          throw InputError(path, fmt::format("line {}: {} must be one value; only crux sweep takes lists", line, key));
+        }
+        assign(path, *field, *list->get(chosen->second));
+      } else {
+        assign(path, *field, node);
+      }
       lines[key] = line;
     }
   }
@@ -372,41 +412,59 @@ std::string toml_quoted(const std::string& value) {
   return out + "\"";
 }
 
-std::string config_to_toml(ExperimentConfig& config, const ParameterSet& accepted) {
+namespace {
+
+std::string value_text(const ConfigField& field, bool toml) {
+  std::string value;
+  std::visit(
+      [&](auto* target) {
+        using T = std::remove_pointer_t<decltype(target)>;
+        const auto seed_text = [&](std::uint64_t seed) {
+          return toml && seed > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())
+                     ? fmt::format("\"{}\"", seed)
+                     : fmt::format("{}", seed);
+        };
+        if constexpr (std::is_same_v<T, double>) {
+          value = toml_double(*target);
+        } else if constexpr (std::is_same_v<T, bool>) {
+          value = *target ? "true" : "false";
+        } else if constexpr (std::is_same_v<T, std::string>) {
+          if (target->empty()) return;
+          const std::string text =
+              is_file_key(field.key) ? std::filesystem::absolute(*target).lexically_normal().string() : *target;
+          value = toml ? toml_quoted(text) : text;
+        } else if constexpr (std::is_same_v<T, std::uint64_t>) {
+          value = seed_text(*target);
+        } else if constexpr (std::is_same_v<T, std::optional<std::uint64_t>>) {
+          if (*target) value = seed_text(**target);
+        } else if constexpr (std::is_same_v<T, std::optional<int>>) {
+          if (*target) value = fmt::format("{}", **target);
+        } else {
+          value = fmt::format("{}", *target);
+        }
+      },
+      field.target);
+  return value;
+}
+
+}  // namespace
+
+std::string config_value_text(ExperimentConfig& config, const std::string& key, bool toml) {
+  for (const ConfigField& field : config_fields(config)) {
+    if (field.key == key) return value_text(field, toml);
+  }
+  return {};
+}
+
+std::string config_to_toml(ExperimentConfig& config, const ParameterSet& accepted,
+                           const std::map<std::string, std::string>& lists) {
   std::ostringstream out;
   out << "# crux effective configuration: every parameter of this run (docs/OUTPUTS.md)\n";
   std::string section;
   for (const ConfigField& field : config_fields(config)) {
     if (!accepted.accepts(field.key)) continue;
-    std::string value;
-    std::visit(
-        [&](auto* target) {
-          using T = std::remove_pointer_t<decltype(target)>;
-          const auto seed_text = [](std::uint64_t seed) {
-            return seed > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())
-                       ? fmt::format("\"{}\"", seed)
-                       : fmt::format("{}", seed);
-          };
-          if constexpr (std::is_same_v<T, double>) {
-            value = toml_double(*target);
-          } else if constexpr (std::is_same_v<T, bool>) {
-            value = *target ? "true" : "false";
-          } else if constexpr (std::is_same_v<T, std::string>) {
-            if (target->empty()) return;
-            value = toml_quoted(is_file_key(field.key)
-                                    ? std::filesystem::absolute(*target).lexically_normal().string()
-                                    : *target);
-          } else if constexpr (std::is_same_v<T, std::uint64_t>) {
-            value = seed_text(*target);
-          } else if constexpr (std::is_same_v<T, std::optional<std::uint64_t>>) {
-            if (*target) value = seed_text(**target);
-          } else if constexpr (std::is_same_v<T, std::optional<int>>) {
-            if (*target) value = fmt::format("{}", **target);
-          } else {
-            value = fmt::format("{}", *target);
-          }
-        },
-        field.target);
+    const auto listed = lists.find(field.key);
+    const std::string value = listed != lists.end() ? listed->second : value_text(field, true);
     if (value.empty()) continue;
     const std::string field_section = field.key.substr(0, field.key.find('.'));
     if (field_section != section) {

@@ -69,22 +69,43 @@ struct ParameterSet {
 // Where each key of a config file was set: key -> line.
 using ConfigLines = std::map<std::string, int>;
 
+// A sweep's file may give a key a list of values (crux sweep): which value of each
+// listed key to apply, by key.
+using ListChoice = std::map<std::string, std::size_t>;
+
 // Applies a TOML file over `config`. Throws InputError(path, problem) for syntax errors
 // (with the line), keys this command does not take (`command` names it), and values of
-// the wrong type. The [provenance] table goes to config.recorded_provenance.
+// the wrong type. A list takes its `choice`th value; a list without a choice is an
+// error. The [provenance] table goes to config.recorded_provenance.
 ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config, const ParameterSet& accepted,
-                              const std::string& command);
+                              const std::string& command, const ListChoice& choice = {});
 // The same for TOML text already read; `source` names it in errors.
 ConfigLines apply_config_text(const std::string& text, const std::string& source, ExperimentConfig& config,
-                              const ParameterSet& accepted, const std::string& command);
+                              const ParameterSet& accepted, const std::string& command,
+                              const ListChoice& choice = {});
+
+// The accepted keys given a list of values in TOML `text`, in the order of
+// config_fields: InputError(source, ...) for an empty list or a key that takes one value.
+struct ListedKey {
+  std::string key;
+  std::size_t values = 0;
+  int line = 0;
+};
+std::vector<ListedKey> listed_keys(const std::string& text, const std::string& source, const ParameterSet& accepted);
 
 // Parses the textual choices into the settings and checks ranges. Throws
 // InputError(key, problem), `key` being the config key at fault ("experiment.runs").
 void finalize_config(ExperimentConfig& config);
 
 // The accepted keys of `config` as TOML, sections in table order; unset optional values
-// and empty file names are left out.
-std::string config_to_toml(ExperimentConfig& config, const ParameterSet& accepted);
+// and empty file names are left out. A key of `lists` is written with that value text
+// (a sweep's list) instead of config's.
+std::string config_to_toml(ExperimentConfig& config, const ParameterSet& accepted,
+                           const std::map<std::string, std::string>& lists = {});
+
+// `key`'s value in `config` as config_to_toml writes it ("" when unset), or, with
+// `toml` false, as plain text (a string without quotes).
+std::string config_value_text(ExperimentConfig& config, const std::string& key, bool toml = true);
 
 // `value` as a TOML basic string (quotes, backslashes and control characters escaped).
 std::string toml_quoted(const std::string& value);

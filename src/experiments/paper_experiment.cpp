@@ -27,8 +27,9 @@ const char* condition_name(Condition condition) {
 
 namespace {
 
-constexpr int kTrainingRole = 0, kTransferRole = 1;
 constexpr int kWallAttempts = 100;
+
+}  // namespace
 
 // Every (3-configuration, possible action) pair is one freed limb of a 4-configuration
 // that passes the filter (each rule only compares held holds, so freeing a limb keeps a
@@ -41,14 +42,11 @@ std::uint64_t filtered_pairs(const Wall& wall, const FilterParameters& filter) {
   return 0;
 }
 
-// With one seed per wall, run r's seed is what it was before walls had several seeds.
 std::uint64_t learning_seed(std::uint64_t seed, Condition condition, int run) {
   // Transfer and control share run i's seed: common random numbers for the paired test.
   const int stream = condition == Condition::Training ? 0 : 1;
   return derive_seed(derive_seed(seed, 1000 + stream), static_cast<std::uint64_t>(run));
 }
-
-}  // namespace
 
 ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& settings, int role, int run) {
   ExperimentWall out;
@@ -61,7 +59,7 @@ ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& setti
       out.rejected_seeds.push_back(seed);
       continue;
     }
-    wall.name = fmt::format("{} wall {} (seed {})", role == kTrainingRole ? "training" : "transfer", run, seed);
+    wall.name = fmt::format("{} wall {} (seed {})", role == kTrainingWalls ? "training" : "transfer", run, seed);
     out.wall = std::move(wall);
     out.seed = seed;
     return out;
@@ -87,7 +85,7 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSe
   tbb::parallel_for(0, 2 * walls, [&](int w) {
     interruptible(w);
     ExperimentWall& wall = result.walls[w];
-    wall = draw_wall(model, settings, w < walls ? kTrainingRole : kTransferRole, w % walls);
+    wall = draw_wall(model, settings, w < walls ? kTrainingWalls : kTransferWalls, w % walls);
     wall.filtered_pairs = filtered_pairs(wall.wall, settings.learning.climbing.filter);
     if (settings.plan) wall.plan = shortest_plan(model, wall.wall, settings.learning.climbing, settings.plan_search);
   });

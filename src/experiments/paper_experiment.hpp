@@ -76,8 +76,18 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSe
                                       const std::function<void(int runs_done)>& progress = {},
                                       const std::function<void()>& interruption_point = {});
 
-// Draws the wall of (role, run) from the experiment seed, skipping candidates whose
-// start configuration is unreachable (they are recorded, never used).
-ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& settings, int role, int run);
+// The roles of draw_wall.
+inline constexpr int kTrainingWalls = 0, kTransferWalls = 1;
+
+// Draws the wall of (role, wall pair) from the experiment seed, skipping candidates
+// whose start configuration is unreachable (they are recorded, never used).
+ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& settings, int role, int pair);
+
+// The learning seed of run `run` of `condition`: its own stream of the experiment seed.
+// Transfer and control share run r's seed (common random numbers for the paired test).
+std::uint64_t learning_seed(std::uint64_t seed, Condition condition, int run);
+
+// The (3-configuration, possible action) pairs of `wall` that pass the filter.
+std::uint64_t filtered_pairs(const Wall& wall, const FilterParameters& filter);
 
 }  // namespace crux

@@ -1,6 +1,7 @@
 #include "experiments/statistics.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -231,6 +232,20 @@ int clusters_for_power(double effect, double standard_deviation, double power, d
     if (n >= required(student_t_quantile(1.0 - alpha / 2.0, dof) + student_t_quantile(power, dof))) return n;
   }
   return -1;
+}
+
+std::vector<double> holm_adjusted(const std::vector<double>& p_values) {
+  const std::size_t m = p_values.size();
+  std::vector<std::size_t> order(m);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p_values[a] < p_values[b]; });
+  std::vector<double> adjusted(m);
+  double running = 0.0;
+  for (std::size_t rank = 0; rank < m; ++rank) {
+    running = std::max(running, std::min(1.0, static_cast<double>(m - rank) * p_values[order[rank]]));
+    adjusted[order[rank]] = running;
+  }
+  return adjusted;
 }
 
 }  // namespace crux

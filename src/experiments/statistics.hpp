@@ -83,4 +83,9 @@ ClusteredDifference clustered_paired_difference(const std::vector<double>& a, co
 int clusters_for_power(double effect, double standard_deviation, double power = 0.8, double alpha = 0.05,
                        int max_clusters = 100000);
 
+// Holm's step-down adjustment of p-values for m comparisons (Holm 1979): the i-th
+// smallest becomes max over j <= i of min(1, (m - j + 1) p_(j)), in the input's order.
+// Rejecting where the adjusted p < alpha keeps the family-wise error rate at alpha.
+std::vector<double> holm_adjusted(const std::vector<double>& p_values);
+
 }  // namespace crux

@@ -213,23 +213,30 @@ std::vector<Posture> read_postures(const fs::path& file, const BodyModel& model,
 
 }  // namespace
 
-void read_run_climb(RunFolder& folder, const BodyModel& model) {
-  const fs::path episodes_file = folder.directory / "episodes.csv";
+std::vector<int> read_episode_lengths(const fs::path& directory) {
+  const fs::path episodes_file = directory / "episodes.csv";
   const std::string episodes_text = read_input_file(episodes_file.string(), "episodes file");
-  const std::vector<std::string_view> episodes = csv_rows(episodes_text, episodes_file, "episode,length");
-  RecordedClimb& last = folder.last;
-  folder.steps.clear();
-  last = {"last", -1, true, {}, {}};
-  if (!episodes.empty()) {
-    last.episode = number<int>(split(episodes.back(), ',').front(), episodes_file, episodes.size() + 1);
-    if (last.episode < 0) throw InputError(episodes_file.string(), "episodes count from 0");
+  const std::vector<std::string_view> rows = csv_rows(episodes_text, episodes_file, "episode,length");
+  std::vector<int> lengths;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::vector<std::string_view> cells = split(rows[i], ',');
+    if (cells.size() != 2) throw InputError(episodes_file.string(), fmt::format("line {}: expected 2 columns", i + 2));
+    if (number<int>(cells[0], episodes_file, i + 2) != static_cast<int>(i)) {
+      throw InputError(episodes_file.string(), fmt::format("line {}: episode {} was due", i + 2, i));
+    }
+    lengths.push_back(number<int>(cells[1], episodes_file, i + 2));
+    if (lengths.back() <= 0) throw InputError(episodes_file.string(), fmt::format("line {}: length must be positive", i + 2));
   }
+  return lengths;
+}
 
-  const fs::path iterations_file = folder.directory / "iterations.csv";
+std::vector<RunStep> read_run_steps(const fs::path& directory) {
+  const fs::path iterations_file = directory / "iterations.csv";
   const std::string iterations_text = read_input_file(iterations_file.string(), "iterations file");
   const std::vector<std::string_view> rows =
       csv_rows(iterations_text, iterations_file, "iteration,episode,regime,hold,success,root_rise_cm,reward");
-  std::size_t reached = 0;
+  std::vector<RunStep> steps;
+  steps.reserve(rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const std::size_t line = i + 2;
     const std::vector<std::string_view> cells = split(rows[i], ',');
@@ -247,12 +254,24 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
       throw InputError(iterations_file.string(), fmt::format("line {}: iteration {} where {} was due", line,
                                                              step.iteration, i + 1));
     }
-    const int previous_episode = folder.steps.empty() ? 0 : folder.steps.back().episode;
+    const int previous_episode = steps.empty() ? 0 : steps.back().episode;
     if (step.episode != previous_episode && step.episode != previous_episode + 1) {
       throw InputError(iterations_file.string(), fmt::format("line {}: episode {} after episode {}", line,
                                                              step.episode, previous_episode));
     }
-    folder.steps.push_back(step);
+    steps.push_back(step);
+  }
+  return steps;
+}
+
+void read_run_climb(RunFolder& folder, const BodyModel& model) {
+  const std::vector<int> episodes = read_episode_lengths(folder.directory);
+  RecordedClimb& last = folder.last;
+  last = {"last", -1, true, {}, {}};
+  if (!episodes.empty()) last.episode = static_cast<int>(episodes.size()) - 1;
+  folder.steps = read_run_steps(folder.directory);
+  std::size_t reached = 0;
+  for (const RunStep& step : folder.steps) {
     if (step.episode != last.episode) continue;
     last.steps.push_back(step);
     reached += step.success ? 1 : 0;

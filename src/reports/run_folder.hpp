@@ -73,6 +73,11 @@ struct ReportedRun {
 ReportedRun locate_reported_run(const std::filesystem::path& folder, const std::string& run_name,
                                 const std::string& flag);
 
+// episodes.csv's lengths and iterations.csv's rows, each checked (numbered in order,
+// episodes rising by 0 or 1); InputError naming the file and the problem.
+std::vector<int> read_episode_lengths(const std::filesystem::path& directory);
+std::vector<RunStep> read_run_steps(const std::filesystem::path& directory);
+
 // Reads climb.csv and greedy_climb.csv (whose columns must be `model`'s joints) and
 // iterations.csv into `folder`; InputError naming the file and the problem.
 void read_run_climb(RunFolder& folder, const BodyModel& model);

@@ -92,6 +92,31 @@ nlohmann::ordered_json table_one_over_runs_json(const ExperimentResult& result, 
   return intervals;
 }
 
+nlohmann::ordered_json transfer_choices_json(const ExperimentAnalysis& analysis) {
+  nlohmann::ordered_json choices;
+  for (int r = 0; r < kRegimeCount; ++r) {
+    const ChoiceProfile& p = analysis.transfer_choices[r];
+    choices[regime_name(static_cast<Regime>(r))] = {
+        {"actions", p.actions},
+        {"successes", p.successes},
+        {"mean_root_rise_cm", p.mean_root_rise_cm},
+        {"back_to_left_hold", p.back_to_left_hold},
+        {"back_to_left_hold_successes", p.back_to_left_hold_successes},
+        {"repeats_of_failure", p.repeats_of_failure},
+        {"repeats_of_failure_successes", p.repeats_of_failure_successes},
+        {"with_evidence", p.with_evidence},
+        {"evidence_success_rate", p.evidence_success_rate},
+        {"median_distance_from_evidence_cm", p.median_distance_cm >= 0 ? nlohmann::json(p.median_distance_cm) : nullptr},
+        {"far_from_evidence", p.far},
+        {"far_successes", p.far_successes},
+        {"near_evidence", p.near},
+        {"near_successes", p.near_successes}};
+  }
+  return choices;
+}
+
+}  // namespace
+
 nlohmann::ordered_json transfer_vs_control_json(const ExperimentAnalysis& analysis) {
   nlohmann::ordered_json comparison;
   for (const MetricComparison& m : analysis.metrics) {
@@ -131,30 +156,10 @@ nlohmann::ordered_json take_off_json(const ExperimentAnalysis& analysis) {
   return take_off;
 }
 
-nlohmann::ordered_json transfer_choices_json(const ExperimentAnalysis& analysis) {
-  nlohmann::ordered_json choices;
-  for (int r = 0; r < kRegimeCount; ++r) {
-    const ChoiceProfile& p = analysis.transfer_choices[r];
-    choices[regime_name(static_cast<Regime>(r))] = {
-        {"actions", p.actions},
-        {"successes", p.successes},
-        {"mean_root_rise_cm", p.mean_root_rise_cm},
-        {"back_to_left_hold", p.back_to_left_hold},
-        {"back_to_left_hold_successes", p.back_to_left_hold_successes},
-        {"repeats_of_failure", p.repeats_of_failure},
-        {"repeats_of_failure_successes", p.repeats_of_failure_successes},
-        {"with_evidence", p.with_evidence},
-        {"evidence_success_rate", p.evidence_success_rate},
-        {"median_distance_from_evidence_cm", p.median_distance_cm >= 0 ? nlohmann::json(p.median_distance_cm) : nullptr},
-        {"far_from_evidence", p.far},
-        {"far_successes", p.far_successes},
-        {"near_evidence", p.near},
-        {"near_successes", p.near_successes}};
-  }
-  return choices;
+nlohmann::ordered_json divergence_json(const ExperimentAnalysis& analysis) {
+  return {{"median_first_divergence", analysis.median_first_divergence},
+          {"first_divergence", analysis.first_divergence}};
 }
-
-}  // namespace
 
 nlohmann::ordered_json summary_json(const ExperimentResult& result, const ExperimentAnalysis* analysis,
                                     const ExperimentSettings& settings, const Provenance& provenance) {
@@ -183,8 +188,7 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
     out["transfer_vs_control"] = transfer_vs_control_json(*analysis);
     out["take_off"] = take_off_json(*analysis);
     out["transfer_choices"] = transfer_choices_json(*analysis);
-    out["transfer_control_divergence"] = {{"median_first_divergence", analysis->median_first_divergence},
-                                          {"first_divergence", analysis->first_divergence}};
+    out["transfer_control_divergence"] = divergence_json(*analysis);
   }
   nlohmann::ordered_json lengths, runs, maps;
   const GridParameters& grid = settings.learning.climbing.grid;

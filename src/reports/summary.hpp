@@ -23,4 +23,10 @@ ExperimentResult single_run_result(RunResult run, const Wall& wall, std::optiona
 nlohmann::ordered_json summary_json(const ExperimentResult& result, const ExperimentAnalysis* analysis,
                                     const ExperimentSettings& settings, const Provenance& provenance);
 
+// Parts of an experiment's summary, also written per cell of a sweep: the transfer
+// metrics with their clustered statistics, take-off, and where paired runs part ways.
+nlohmann::ordered_json transfer_vs_control_json(const ExperimentAnalysis& analysis);
+nlohmann::ordered_json take_off_json(const ExperimentAnalysis& analysis);
+nlohmann::ordered_json divergence_json(const ExperimentAnalysis& analysis);
+
 }  // namespace crux

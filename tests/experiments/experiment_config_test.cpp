@@ -219,5 +219,56 @@ TEST(ExperimentConfig, RangesThatWouldBreakWallsOrCodesAreRefusedNamingTheKey) {
   EXPECT_EQ(refused_key(bad_anchor), "grid.right_hand_anchor_column");
 }
 
+TEST(ExperimentConfig, AListTakesTheChosenValueAndOnlyWhenChosen) {
+  const std::string text = "[experiment]\nwalls = 2\n[learning]\nepsilon = [0.1, 0.2, 0.4]\nplanner = [\"uniform\", \"prioritized\"]\n";
+  const std::vector<ListedKey> listed = listed_keys(text, "sweep.toml", kEverything);
+  ASSERT_EQ(listed.size(), 2u);
+  EXPECT_EQ(listed[0].key, "learning.epsilon");
+  EXPECT_EQ(listed[0].values, 3u);
+  EXPECT_EQ(listed[0].line, 4);
+  EXPECT_EQ(listed[1].key, "learning.planner");
+  EXPECT_EQ(listed[1].values, 2u);
+  ExperimentConfig config;
+  apply_config_text(text, "sweep.toml", config, kEverything, "sweep", {{"learning.epsilon", 2}, {"learning.planner", 1}});
+  finalize_config(config);
+  EXPECT_DOUBLE_EQ(config.settings.learning.dyna.epsilon, 0.4);
+  EXPECT_EQ(config.planner, "prioritized");
+  EXPECT_EQ(config_value_text(config, "learning.planner"), "\"prioritized\"");
+  EXPECT_EQ(config_value_text(config, "learning.planner", false), "prioritized");
+  EXPECT_EQ(config_value_text(config, "learning.epsilon"), "0.4");
+  try {
+    ExperimentConfig other;
+    apply_config_text(text, "sweep.toml", other, kEverything, "paper");
+    FAIL() << "a list without a choice must be refused";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "sweep.toml: line 4: learning.epsilon must be one value; only crux sweep takes lists");
+  }
+}
+
+TEST(ExperimentConfig, ListsThatMakeNoSweepAreRefused) {
+  const auto problem = [](const std::string& text) {
+    try {
+      listed_keys(text, "sweep.toml", kEverything);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(problem("[experiment]\nthreads = [1, 2]\n"), "sweep.toml: line 2: experiment.threads takes one value, not a list");
+  EXPECT_EQ(problem("[learning]\nepsilon = []\n"), "sweep.toml: line 2: learning.epsilon lists no value");
+  ExperimentConfig config;
+  EXPECT_THROW(apply_config_text("[learning]\nepsilon = [\"a\"]\n", "sweep.toml", config, kEverything, "sweep",
+                                 {{"learning.epsilon", 0}}),
+               InputError)
+      << "each value is checked as a single value would be";
+}
+
+TEST(ExperimentConfig, ConfigToTomlWritesAListInPlaceOfItsValue) {
+  ExperimentConfig config;
+  const std::string text = config_to_toml(config, kEverything, {{"learning.epsilon", "[0.1, 0.2]"}});
+  EXPECT_NE(text.find("epsilon = [0.1, 0.2]  #"), std::string::npos) << text;
+  EXPECT_EQ(text.find("epsilon = 0.1"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace crux

@@ -277,5 +277,19 @@ TEST(Statistics, ClustersForPowerImpossibleRequests) {
   EXPECT_EQ(clusters_for_power(0.001, 1.0, 0.8, 0.05, 1000), -1);
 }
 
+// Holm (1979) by hand: p = (0.01, 0.04, 0.03, 0.5) sorted 0.01, 0.03, 0.04, 0.5 gives
+// 4 x 0.01 = 0.04, 3 x 0.03 = 0.09, 2 x 0.04 = 0.08 -> 0.09 (monotone), 1 x 0.5 = 0.5.
+TEST(Statistics, HolmAdjustmentByHand) {
+  const std::vector<double> adjusted = holm_adjusted({0.01, 0.04, 0.03, 0.5});
+  ASSERT_EQ(adjusted.size(), 4u);
+  EXPECT_DOUBLE_EQ(adjusted[0], 0.04);
+  EXPECT_DOUBLE_EQ(adjusted[1], 0.09);
+  EXPECT_DOUBLE_EQ(adjusted[2], 0.09);
+  EXPECT_DOUBLE_EQ(adjusted[3], 0.5);
+  EXPECT_EQ(holm_adjusted({0.6, 0.7}), (std::vector<double>{1.0, 1.0})) << "capped at 1";
+  EXPECT_EQ(holm_adjusted({0.02}), (std::vector<double>{0.02})) << "one comparison is not adjusted";
+  EXPECT_TRUE(holm_adjusted({}).empty());
+}
+
 }  // namespace
 }  // namespace crux

@@ -1,0 +1,113 @@
+// crux sweep: crux paper's experiment over every combination of listed parameter values,
+// on threads or across MPI processes (mpirun -n N crux sweep ...), resumable.
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/parameter_binding.hpp"
+#include "cli/progress_bar.hpp"
+#include "common/input_error.hpp"
+#include "common/input_file.hpp"
+#include "experiments/run_inputs.hpp"
+#include "reports/sweep_description.hpp"
+#include "sweeps/mpi_cluster.hpp"
+#include "sweeps/sweep_definition.hpp"
+#include "sweeps/sweep_run.hpp"
+
+namespace crux::cli {
+
+namespace {
+
+struct SweepCommand {
+  ParameterBinding binding{"sweep", kSweepParameters};
+  std::string output = "out/sweep";
+  bool json = false;
+  bool overwrite = false;
+
+  void run() {
+    std::optional<MpiCluster> cluster;
+    if (launched_by_mpi()) cluster.emplace(nullptr, nullptr);
+    const bool coordinator = !cluster || cluster->rank() == 0;
+    try {
+      run_here(cluster ? &*cluster : nullptr, coordinator);
+    } catch (const InputError&) {
+      // Every process meets the same bad input; process 0 alone reports it.
+      if (!coordinator) throw CLI::RuntimeError(2);
+      throw;
+    }
+  }
+
+  void run_here(MpiCluster* cluster, bool coordinator) {
+    const SweepGrid grid{binding.listed_keys()};
+    SweepDefinition definition = define_sweep(grid, [&](const ListChoice& choice) { return binding.resolve(choice); });
+    const ExperimentConfig& first = definition.plan.cells.front().config;
+    if (!binding.config_path().empty()) {
+      check_recorded_provenance(first, definition.provenance, binding.config_path());
+    }
+    const BodyModel model = load_configured_body(first);
+    SweepJob job{std::move(definition.plan),
+                 std::filesystem::absolute(output).lexically_normal(),
+                 std::move(definition.sweep_toml),
+                 {first.urdf, binding.config_path()},
+                 provenance_json(definition.provenance),
+                 overwrite,
+                 first.settings.threads};
+    if (job.threads == 0) {
+      job.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / local_processes());
+    }
+    std::optional<ProgressBar> progress;
+    if (coordinator) {
+      progress.emplace(fmt::format("sweep: {} cells, {} tasks", job.plan.cells.size(), job.plan.tasks.size()),
+                       static_cast<long>(job.plan.tasks.size()), true);
+    }
+    bool started = false;
+    SweepOutcome outcome;
+    try {
+      outcome = run_sweep(job, model, cluster, [&](std::size_t done, std::size_t) {
+        if (!started) progress->start_at(static_cast<long>(done));
+        started = true;
+        progress->update(static_cast<long>(done));
+      });
+    } catch (const std::exception& e) {
+      // A rank that fails after the others started must end them too.
+      if (cluster != nullptr && started) {
+        std::fprintf(stderr, "crux: %s\n", e.what());
+        cluster->abort(dynamic_cast<const InputError*>(&e) != nullptr ? 2 : 1);
+      }
+      throw;
+    }
+    if (!outcome.coordinator) return;
+    progress->finish();
+    const nlohmann::json summary = nlohmann::json::parse(read_input_file((job.folder / "summary.json").string(), "summary"));
+    std::cout << (json ? summary.dump(2) + "\n"
+                       : sweep_text(summary, output, outcome.tasks, outcome.already_finished, outcome.seconds));
+  }
+};
+
+}  // namespace
+
+void add_sweep_command(CLI::App& app) {
+  auto sweep = std::make_shared<SweepCommand>();
+  auto* s = app.add_subcommand(
+      "sweep",
+      "Run crux paper's experiment for every combination of the values listed in --config (key = [a, b]); "
+      "resumable, and across processes under mpirun");
+  s->add_option("-o,--output", sweep->output,
+                "Output folder; the same command started again there resumes the sweep")
+      ->capture_default_str();
+  s->add_flag("--json", sweep->json, "Print summary.json's contents instead of text");
+  s->add_flag("--overwrite", sweep->overwrite, "Replace a different sweep's outputs in the output folder");
+  sweep->binding.bind(s);
+  sweep->binding.option("experiment.runs")
+      ->excludes(sweep->binding.option("experiment.walls"))
+      ->excludes(sweep->binding.option("experiment.seeds_per_wall"));
+  s->callback([sweep] { sweep->run(); });
+}
+
+}  // namespace crux::cli

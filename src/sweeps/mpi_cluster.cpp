@@ -1,0 +1,109 @@
+#include "sweeps/mpi_cluster.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace crux {
+
+namespace {
+
+constexpr int kRequestTag = 1, kOrderTag = 2;
+
+class MpiCoordinatorLink final : public CoordinatorLink {
+ public:
+  explicit MpiCoordinatorLink(std::size_t slots) : slots_(slots) {}
+  std::size_t slots() const override { return slots_; }
+  void poll(std::vector<Request>& requests) override {
+    for (;;) {
+      int arrived = 0;
+      MPI_Status status;
+      MPI_Iprobe(MPI_ANY_SOURCE, kRequestTag, MPI_COMM_WORLD, &arrived, &status);
+      if (!arrived) return;
+      long long finished = -1;
+      MPI_Recv(&finished, 1, MPI_LONG_LONG, status.MPI_SOURCE, kRequestTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      requests.push_back({status.MPI_SOURCE, finished});
+    }
+  }
+  void assign(int worker, std::size_t task) override { send(worker, static_cast<long long>(task)); }
+  void stop(int worker) override { send(worker, -1); }
+
+ private:
+  static void send(int worker, long long order) {
+    MPI_Send(&order, 1, MPI_LONG_LONG, worker, kOrderTag, MPI_COMM_WORLD);
+  }
+  std::size_t slots_;
+};
+
+class MpiWorkerLink final : public WorkerLink {
+ public:
+  void request(long long finished) override {
+    MPI_Send(&finished, 1, MPI_LONG_LONG, 0, kRequestTag, MPI_COMM_WORLD);
+  }
+  void poll(std::vector<long long>& orders) override {
+    for (;;) {
+      int arrived = 0;
+      MPI_Iprobe(0, kOrderTag, MPI_COMM_WORLD, &arrived, MPI_STATUS_IGNORE);
+      if (!arrived) return;
+      long long order = -1;
+      MPI_Recv(&order, 1, MPI_LONG_LONG, 0, kOrderTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      orders.push_back(order);
+    }
+  }
+};
+
+int environment_int(const char* name, int fallback) {
+  const char* value = std::getenv(name);
+  return value != nullptr && *value != '\0' ? std::atoi(value) : fallback;
+}
+
+}  // namespace
+
+bool launched_by_mpi() {
+  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMIX_RANK") != nullptr ||
+         std::getenv("PMI_SIZE") != nullptr;
+}
+
+int local_processes() { return std::max(1, environment_int("OMPI_COMM_WORLD_LOCAL_SIZE", 1)); }
+
+MpiCluster::MpiCluster(int* argc, char*** argv) {
+  int provided = 0;
+  MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+  if (provided < MPI_THREAD_FUNNELED) {
+    MPI_Finalize();
+    throw std::runtime_error("MPI does not support threads that leave MPI calls to the main thread");
+  }
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiCluster::~MpiCluster() { MPI_Finalize(); }
+
+bool MpiCluster::share_readiness(bool ready) {
+  int value = ready ? 1 : 0;
+  MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return value == 1;
+}
+
+std::unique_ptr<CoordinatorLink> MpiCluster::coordinator_link() {
+  std::vector<int> slots(static_cast<std::size_t>(size_));
+  int mine = 0;
+  MPI_Gather(&mine, 1, MPI_INT, slots.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::size_t total = 0;
+  for (const int s : slots) total += static_cast<std::size_t>(s);
+  return std::make_unique<MpiCoordinatorLink>(total);
+}
+
+std::unique_ptr<WorkerLink> MpiCluster::worker_link(int threads) {
+  MPI_Gather(&threads, 1, MPI_INT, nullptr, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return std::make_unique<MpiWorkerLink>();
+}
+
+void MpiCluster::abort(int exit_code) {
+  MPI_Abort(MPI_COMM_WORLD, exit_code);
+  std::abort();
+}
+
+}  // namespace crux

@@ -1,0 +1,44 @@
+#include "sweeps/sweep_definition.hpp"
+
+#include <map>
+
+#include "experiments/learning_parameters.hpp"
+
+namespace crux {
+
+const ParameterSet kSweepParameters = kPaperParameters;
+
+SweepDefinition define_sweep(const SweepGrid& grid, const std::function<ExperimentConfig(const ListChoice&)>& resolve) {
+  std::vector<std::string> keys;
+  for (const ListedKey& k : grid.keys) keys.push_back(k.key);
+  std::vector<SweepCell> cells;
+  // Each listed key's values as TOML, by position in its list.
+  std::vector<std::vector<std::string>> listed(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k) listed[k].resize(grid.keys[k].values);
+  for (std::size_t c = 0; c < grid.cells(); ++c) {
+    const ListChoice choice = grid.choice(c);
+    SweepCell cell;
+    cell.config = resolve(choice);
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      cell.values.push_back(config_value_text(cell.config, keys[k], false));
+      listed[k][choice.at(keys[k])] = config_value_text(cell.config, keys[k], true);
+    }
+    cells.push_back(std::move(cell));
+  }
+  SweepDefinition out;
+  std::map<std::string, std::string> lists;
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    std::string text = "[";
+    for (std::size_t i = 0; i < listed[k].size(); ++i) text += (i > 0 ? ", " : "") + listed[k][i];
+    lists[keys[k]] = text + "]";
+  }
+  ExperimentConfig& first = cells.front().config;
+  out.provenance = record_provenance(first);
+  ParameterSet written = kSweepParameters;
+  written.exclude.push_back("experiment.threads");
+  out.sweep_toml = config_to_toml(first, written, lists) + provenance_toml(out.provenance);
+  out.plan = plan_sweep(std::move(keys), std::move(cells));
+  return out;
+}
+
+}  // namespace crux

@@ -1,0 +1,28 @@
+#pragma once
+// From a sweep file to what crux sweep runs: each cell's finalized config, the tasks and
+// the effective sweep.toml that the output folder keeps (lists written back as lists,
+// experiment.threads left out since results do not depend on it) with its provenance.
+
+#include <functional>
+#include <string>
+
+#include "reports/provenance.hpp"
+#include "sweeps/sweep_grid.hpp"
+#include "sweeps/sweep_plan.hpp"
+
+namespace crux {
+
+// The keys crux sweep takes: crux paper's.
+extern const ParameterSet kSweepParameters;
+
+struct SweepDefinition {
+  SweepPlan plan;
+  std::string sweep_toml;
+  Provenance provenance;
+};
+
+// `resolve` gives the finalized config of a choice of list values (flags over file over
+// defaults); InputError as it throws them.
+SweepDefinition define_sweep(const SweepGrid& grid, const std::function<ExperimentConfig(const ListChoice&)>& resolve);
+
+}  // namespace crux

@@ -1,0 +1,28 @@
+#pragma once
+// A sweep's output folder (docs/OUTPUTS.md): sweep.toml, walls/, runs/, results.csv and
+// summary.json. Starting a sweep again in its folder resumes it: the folder must hold
+// the same sweep.toml (the same parameters and the same crux build), every finished
+// task folder is kept, and only the others run.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sweeps/sweep_plan.hpp"
+
+namespace crux {
+
+// Checks `folder` before any work (InputError naming it): empty or missing, or holding
+// a sweep with the same `sweep_toml` (a resume); with `overwrite`, a different sweep's
+// or other crux outputs are removed first. Then clears .partial/, marks the folder
+// INCOMPLETE and writes sweep.toml. `inputs` may not lie inside the folder.
+void prepare_sweep_folder(const std::filesystem::path& folder, const std::string& sweep_toml,
+                          const std::vector<std::string>& inputs, bool overwrite);
+
+// One flag per task of `plan`: whether its folder is in place.
+std::vector<bool> finished_tasks(const SweepPlan& plan, const std::filesystem::path& folder);
+
+// Removes the INCOMPLETE marker once results.csv and summary.json are written.
+void mark_sweep_complete(const std::filesystem::path& folder);
+
+}  // namespace crux

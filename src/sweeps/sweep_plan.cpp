@@ -1,0 +1,86 @@
+#include "sweeps/sweep_plan.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "common/input_error.hpp"
+
+namespace crux {
+
+bool shapes_walls(const std::string& key) {
+  // The walls derive from the experiment seed and the wall and reachability keys; the
+  // plan adds its budget and the filter (crux plan's keys).
+  static const ParameterSet kWallKeys{{"experiment.seed", "experiment.urdf", "experiment.plan",
+                                       "experiment.plan_max_solves", "ik", "filter", "wall"},
+                                      {}};
+  return kWallKeys.accepts(key);
+}
+
+std::size_t SweepPlan::run_tasks() const {
+  return static_cast<std::size_t>(std::count_if(tasks.begin(), tasks.end(),
+                                                [](const SweepTask& t) { return t.kind == SweepTaskKind::Run; }));
+}
+
+SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells, std::size_t max_tasks) {
+  SweepPlan plan;
+  plan.keys = std::move(keys);
+  // Wall groups: cells with equal values of every listed key that shapes walls.
+  std::map<std::vector<std::string>, std::size_t> groups;
+  std::vector<std::size_t> first_cell, group_walls;
+  std::size_t total = 0;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    std::vector<std::string> identity;
+    for (std::size_t k = 0; k < plan.keys.size(); ++k) {
+      if (shapes_walls(plan.keys[k])) identity.push_back(cells[c].values[k]);
+    }
+    const auto [group, inserted] = groups.emplace(identity, groups.size());
+    cells[c].wall_group = group->second;
+    const ExperimentSettings& s = cells[c].config.settings;
+    if (inserted) {
+      first_cell.push_back(c);
+      group_walls.push_back(0);
+    }
+    group_walls[group->second] = std::max<std::size_t>(group_walls[group->second], s.wall_pairs);
+    total += 3 * static_cast<std::size_t>(s.runs());
+  }
+  for (const std::size_t walls : group_walls) total += 2 * walls;
+  if (total > max_tasks) {
+    throw InputError("experiment.walls", fmt::format("the sweep has {} walls and runs; at most {} are allowed", total,
+                                                     max_tasks));
+  }
+  plan.wall_groups = groups.size();
+  plan.tasks.reserve(total);
+  for (std::size_t g = 0; g < plan.wall_groups; ++g) {
+    for (const Condition role : {Condition::Training, Condition::Transfer}) {
+      for (std::size_t w = 0; w < group_walls[g]; ++w) {
+        plan.tasks.push_back({SweepTaskKind::Wall, first_cell[g], role, static_cast<int>(w), -1,
+                              std::filesystem::path("walls") / fmt::format("g{}", g) /
+                                  fmt::format("{}_{}", condition_name(role), w)});
+      }
+    }
+  }
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const int runs = cells[c].config.settings.runs();
+    const std::size_t first = plan.tasks.size();
+    plan.first_run_task.push_back(first);
+    for (const Condition condition : kConditions) {
+      for (int r = 0; r < runs; ++r) {
+        const int training = condition == Condition::Transfer ? static_cast<int>(first) + r : -1;
+        plan.tasks.push_back({SweepTaskKind::Run, c, condition, r, training,
+                              std::filesystem::path("runs") / fmt::format("c{}", c) /
+                                  fmt::format("{}_{}", condition_name(condition), r)});
+      }
+    }
+  }
+  plan.cells = std::move(cells);
+  return plan;
+}
+
+std::size_t run_task_index(const SweepPlan& plan, std::size_t cell, Condition condition, int run) {
+  return plan.first_run_task[cell] + static_cast<std::size_t>(condition) * plan.cells[cell].config.settings.runs() +
+         static_cast<std::size_t>(run);
+}
+
+}  // namespace crux

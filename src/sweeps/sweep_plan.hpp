@@ -1,0 +1,59 @@
+#pragma once
+// What a sweep computes (docs/OUTPUTS.md), as independent tasks in a fixed order:
+//   a wall task per wall of each wall group: draws it, counts its filtered pairs and,
+//     with experiment.plan, finds its exact shortest climb (walls/g<G>/<role>_<w>/);
+//   a run task per cell, condition and run, as in crux paper (runs/c<C>/<condition>_<r>/).
+// Cells that agree on every listed key that shapes walls or plans form one wall group
+// and share its walls. A transfer run starts from its training run's Q_grid, so it
+// depends on that task; every other task can start at once. Runs draw their walls
+// themselves (draw_wall is deterministic), so no run waits for a wall task.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "experiments/experiment_config.hpp"
+#include "experiments/paper_experiment.hpp"
+
+namespace crux {
+
+// Whether a key changes the walls a cell draws or their plans.
+bool shapes_walls(const std::string& key);
+
+struct SweepCell {
+  ExperimentConfig config;          // finalized
+  std::vector<std::string> values;  // each listed key's value in this cell, as plain text
+  std::size_t wall_group = 0;
+};
+
+enum class SweepTaskKind { Wall, Run };
+
+struct SweepTask {
+  SweepTaskKind kind = SweepTaskKind::Run;
+  std::size_t cell = 0;  // a run's cell; for a wall, the first cell of its group
+  Condition condition = Condition::Training;  // a wall: Training for a training wall, else Transfer
+  int index = 0;         // a run's r, a wall's pair w
+  int depends_on = -1;   // the task that must finish first (a transfer run's training run)
+  std::filesystem::path folder;  // relative to the sweep folder
+};
+
+struct SweepPlan {
+  std::vector<std::string> keys;  // the listed keys
+  std::vector<SweepCell> cells;
+  std::size_t wall_groups = 0;
+  std::vector<SweepTask> tasks;
+  std::vector<std::size_t> first_run_task;  // per cell: its runs, by condition then r
+
+  std::size_t run_tasks() const;
+};
+
+// The tasks of `cells` (their wall_group set here); InputError("experiment.walls") when
+// the sweep exceeds `max_tasks`.
+SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells,
+                     std::size_t max_tasks = 10000000);
+
+// The task of run r of `condition` in `cell`.
+std::size_t run_task_index(const SweepPlan& plan, std::size_t cell, Condition condition, int run);
+
+}  // namespace crux

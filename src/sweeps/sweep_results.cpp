@@ -1,0 +1,165 @@
+#include "sweeps/sweep_results.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
+#include "common/input_file.hpp"
+#include "experiments/experiment_analysis.hpp"
+#include "experiments/statistics.hpp"
+#include "reports/run_folder.hpp"
+#include "reports/summary.hpp"
+#include "sweeps/sweep_task.hpp"
+
+namespace crux {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A run as the analysis needs it: its iterations (problem-space columns of
+// iterations.csv) and episode lengths; the agent-space columns are not in the folder.
+RunResult read_run(const fs::path& directory) {
+  RunResult run;
+  for (const RunStep& step : read_run_steps(directory)) {
+    IterationRecord record;
+    record.episode = step.episode;
+    record.regime = step.regime;
+    record.hold_id = step.hold_id;
+    record.success = step.success;
+    record.root_rise_m = step.root_rise_cm / 100.0;
+    record.reward = step.reward;
+    run.iterations.push_back(record);
+  }
+  run.episode_lengths = read_episode_lengths(directory);
+  return run;
+}
+
+nlohmann::json read_json_file(const fs::path& file) {
+  const std::string text = read_input_file(file.string(), "JSON file");
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file.string(), std::string("not valid JSON: ") + e.what());
+  }
+}
+
+std::string csv_cell(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
+}
+
+std::string number_cell(const nlohmann::json& value) {
+  if (value.is_null()) return "";
+  if (value.is_number_float()) return fmt::format("{:.17g}", value.get<double>());
+  return value.dump();
+}
+
+// The facts results.csv copies from a run's summary.json, in column order.
+constexpr const char* kRunFacts[] = {"episodes",        "take_off_iteration",     "greedy_length",
+                                     "explored_pairs",  "ik_solves",              "reached_configurations",
+                                     "unreachable_configurations", "planning_updates_per_step"};
+
+}  // namespace
+
+void write_sweep_results(const SweepPlan& plan, const fs::path& folder, const nlohmann::ordered_json& provenance) {
+  // Metric columns: every metric any cell's windows define, in order of appearance.
+  std::vector<std::string> metric_names;
+  for (const SweepCell& cell : plan.cells) {
+    for (const EpisodeMetric& m : episode_metrics(metric_windows(cell.config.settings))) {
+      if (std::find(metric_names.begin(), metric_names.end(), m.name) == metric_names.end()) {
+        metric_names.push_back(m.name);
+      }
+    }
+  }
+  std::string csv = "cell";
+  for (const std::string& key : plan.keys) csv += fmt::format(",{}", csv_cell(key));
+  csv += ",condition,run,wall_pair,seed_index,wall_seed,learning_seed";
+  for (const std::string& name : metric_names) csv += fmt::format(",{}", name);
+  for (const char* fact : kRunFacts) csv += fmt::format(",{}", fact);
+  csv += ",plan_length,filtered_pairs\n";
+
+  nlohmann::ordered_json cells = nlohmann::json::array();
+  for (std::size_t c = 0; c < plan.cells.size(); ++c) {
+    const SweepCell& cell = plan.cells[c];
+    const ExperimentSettings& settings = cell.config.settings;
+    const MetricWindows windows = metric_windows(settings);
+    const std::vector<EpisodeMetric> metrics = episode_metrics(windows);
+    ExperimentResult result;
+    for (const Condition condition : kConditions) {
+      ConditionResult& runs = result.conditions[static_cast<int>(condition)];
+      for (int r = 0; r < settings.runs(); ++r) {
+        const SweepTask& task = plan.tasks[run_task_index(plan, c, condition, r)];
+        const fs::path directory = folder / task.folder;
+        runs.runs.push_back(read_run(directory));
+        const int pair = r / settings.seeds_per_wall;
+        runs.cluster_of_run.push_back(static_cast<std::size_t>(pair));
+        runs.wall_of_run.push_back(static_cast<std::size_t>(pair));
+        const std::string name = condition_name(condition);
+        const nlohmann::json summary = read_summary(directory);
+        const nlohmann::json& facts = summary.at("run_facts").at(name).at(0);
+        runs.learning_seeds.push_back(facts.at("learning_seed").get<std::uint64_t>());
+        const fs::path wall_folder = folder / "walls" / fmt::format("g{}", cell.wall_group) /
+                                     fmt::format("{}_{}", condition == Condition::Training ? "training" : "transfer", pair);
+        const nlohmann::json wall = read_json_file(wall_folder / kWallFactsFile);
+
+        csv += fmt::format("{}", c);
+        for (const std::string& value : cell.values) csv += fmt::format(",{}", csv_cell(value));
+        csv += fmt::format(",{},{},{},{},{},{}", name, r, pair, r % settings.seeds_per_wall, facts.at("wall_seed").dump(),
+                           runs.learning_seeds.back());
+        for (const std::string& metric : metric_names) {
+          const auto m = std::find_if(metrics.begin(), metrics.end(), [&](const EpisodeMetric& e) { return e.name == metric; });
+          csv += m == metrics.end() ? std::string(",") : fmt::format(",{:.17g}", m->of_run(runs.runs.back(), windows));
+        }
+        for (const char* fact : kRunFacts) csv += fmt::format(",{}", number_cell(facts.at(fact)));
+        const nlohmann::json& wall_plan = wall.at("plan");
+        csv += fmt::format(",{},{}\n", wall_plan.is_null() ? std::string() : number_cell(wall_plan.at("length")),
+                           number_cell(wall.at("filtered_pairs")));
+      }
+    }
+    const ExperimentAnalysis analysis = analyse_experiment(result, settings);
+    nlohmann::ordered_json entry;
+    entry["cell"] = c;
+    nlohmann::ordered_json parameters = nlohmann::ordered_json::object();
+    for (std::size_t k = 0; k < plan.keys.size(); ++k) parameters[plan.keys[k]] = cell.values[k];
+    entry["parameters"] = parameters;
+    entry["wall_group"] = cell.wall_group;
+    entry["seed"] = settings.seed;
+    entry["wall_pairs"] = settings.wall_pairs;
+    entry["seeds_per_wall"] = settings.seeds_per_wall;
+    entry["iterations"] = settings.learning.iterations;
+    entry["transfer_vs_control"] = transfer_vs_control_json(analysis);
+    entry["take_off"] = take_off_json(analysis);
+    entry["transfer_control_divergence"] = divergence_json(analysis);
+    cells.push_back(entry);
+  }
+  // Holm over the cells, one family per metric: "which cells show an effect" stays at 5 %.
+  for (const std::string& metric : metric_names) {
+    std::vector<double> p_values;
+    std::vector<std::size_t> holders;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const auto& comparison = cells[c]["transfer_vs_control"];
+      if (!comparison.contains(metric)) continue;
+      p_values.push_back(comparison[metric]["transfer_minus_control"]["p_value"].get<double>());
+      holders.push_back(c);
+    }
+    const std::vector<double> adjusted = holm_adjusted(p_values);
+    for (std::size_t i = 0; i < holders.size(); ++i) {
+      cells[holders[i]]["transfer_vs_control"][metric]["transfer_minus_control"]["p_value_holm_over_cells"] = adjusted[i];
+    }
+  }
+  nlohmann::ordered_json summary;
+  summary["format"] = "crux-sweep-summary";
+  summary["version"] = 1;
+  summary["provenance"] = provenance;
+  summary["listed_keys"] = plan.keys;
+  summary["cells"] = cells;
+  write_file_atomically(folder / "results.csv", csv);
+  write_file_atomically(folder / "summary.json", summary.dump(2) + "\n");
+}
+
+}  // namespace crux

@@ -1,0 +1,94 @@
+#include "sweeps/sweep_task.hpp"
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
+#include "experiments/learning_parameters.hpp"
+#include "experiments/run_inputs.hpp"
+#include "reports/output_folder.hpp"
+#include "reports/plan_description.hpp"
+#include "reports/provenance.hpp"
+#include "reports/summary.hpp"
+#include "wall/wall_file.hpp"
+
+namespace crux {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void write_wall_task(const SweepTask& task, const SweepCell& cell, const BodyModel& model, const fs::path& folder) {
+  const ExperimentSettings& settings = cell.config.settings;
+  const int role = task.condition == Condition::Training ? kTrainingWalls : kTransferWalls;
+  const ExperimentWall drawn = draw_wall(model, settings, role, task.index);
+  nlohmann::ordered_json facts;
+  facts["format"] = "crux-sweep-wall";
+  facts["version"] = 1;
+  facts["name"] = drawn.wall.name;
+  facts["seed"] = drawn.seed;
+  facts["rejected_seeds"] = drawn.rejected_seeds;
+  facts["filtered_pairs"] = filtered_pairs(drawn.wall, settings.learning.climbing.filter);
+  facts["plan"] = nullptr;
+  if (settings.plan) {
+    facts["plan"] = plan_json(drawn.wall, shortest_plan(model, drawn.wall, settings.learning.climbing,
+                                                         settings.plan_search));
+  }
+  save_wall((folder / "wall.json").string(), drawn.wall);
+  write_file_atomically(folder / kWallFactsFile, facts.dump(2) + "\n");
+}
+
+void write_run_task(const SweepPlan& plan, const SweepTask& task, const BodyModel& model, const fs::path& sweep_folder,
+                    const fs::path& folder) {
+  const SweepCell& cell = plan.cells[task.cell];
+  const ExperimentSettings& settings = cell.config.settings;
+  const int pair = task.index / settings.seeds_per_wall;
+  const bool training_wall = task.condition == Condition::Training;
+  const ExperimentWall wall = draw_wall(model, settings, training_wall ? kTrainingWalls : kTransferWalls, pair);
+  // The run's own config.toml replays it with crux train or crux transfer.
+  ExperimentConfig config = cell.config;
+  config.settings.seed = learning_seed(settings.seed, task.condition, task.index);
+  config.wall_seed = wall.seed;
+  std::optional<QTable> initial;
+  if (task.condition == Condition::Transfer) {
+    const SweepTask& training = plan.tasks[static_cast<std::size_t>(task.depends_on)];
+    config.q_grid = fs::absolute(sweep_folder / training.folder / "q_grid.bin").lexically_normal().string();
+    initial = load_q_grid(config.q_grid, settings.learning.climbing.grid);
+  }
+  RunResult run = run_learning(model, wall.wall, settings.learning, config.settings.seed, initial ? &*initial : nullptr);
+  const ExperimentResult result =
+      single_run_result(std::move(run), wall.wall, wall.seed, config.settings.seed, task.condition, 0.0);
+  const Provenance provenance = record_provenance(config);
+  const ParameterSet& accepted = task.condition == Condition::Transfer ? kTransferParameters : kTrainParameters;
+  const std::string config_toml = config_file_text(config, accepted, provenance);
+  nlohmann::ordered_json summary = summary_json(result, nullptr, config.settings, provenance);
+  // The same bytes from any worker: the run's time is not part of its results.
+  summary.erase("seconds");
+  write_run_folder(folder, result, model, settings.learning.climbing.grid, config_toml, summary);
+}
+
+}  // namespace
+
+void run_sweep_task(const SweepPlan& plan, std::size_t index, const BodyModel& model, const fs::path& sweep_folder) {
+  const SweepTask& task = plan.tasks.at(index);
+  char host[256] = {};
+  ::gethostname(host, sizeof host - 1);
+  const fs::path partial = sweep_folder / kPartialFolder / fmt::format("{}.{}.{}", index, host, ::getpid());
+  std::error_code error;
+  fs::remove_all(partial, error);
+  make_output_directory(partial);
+  if (task.kind == SweepTaskKind::Wall) {
+    write_wall_task(task, plan.cells[task.cell], model, partial);
+  } else {
+    write_run_task(plan, task, model, sweep_folder, partial);
+  }
+  const fs::path destination = sweep_folder / task.folder;
+  make_output_directory(destination.parent_path());
+  fs::rename(partial, destination, error);
+  if (error) throw InputError(destination.string(), "cannot move the finished task here: " + error.message());
+}
+
+}  // namespace crux

@@ -1,0 +1,145 @@
+// crux sweep end to end: the folder, resume after SIGKILL, and two MPI ranks.
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run_crux.hpp"
+#include "support/sweep_cells.hpp"
+#include "support/test_models.hpp"
+
+namespace crux {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::folder_contents;
+using testing::run_crux;
+
+// Two cells of three wall pairs, 1500 iterations: 12 wall tasks... 6, and 18 runs.
+fs::path sweep_file() {
+  return testing::write_temporary("sweep-" + std::to_string(::getpid()) + ".toml",
+                                  "[experiment]\nwalls = 3\niterations = 1500\nplan = false\nbootstrap_resamples = 200\n"
+                                  "[learning]\nepsilon = [0.1, 0.3]\n");
+}
+
+std::string sweep_arguments(const fs::path& out, int threads) {
+  return "sweep --config " + sweep_file().string() + " --threads " + std::to_string(threads) + " -o " + out.string();
+}
+
+// Runs `arguments` and returns the folder's bytes, the folder moved away after (a sweep
+// records the absolute path of the Q_grid its transfer runs start from, so sweeps are
+// compared in the same place).
+std::map<std::string, std::string> bytes_after(const std::string& command, const fs::path& out) {
+  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  auto contents = folder_contents(out);
+  fs::remove_all(out);
+  return contents;
+}
+
+void expect_same(const std::map<std::string, std::string>& a, const std::map<std::string, std::string>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (const auto& [file, bytes] : a) EXPECT_TRUE(b.contains(file) && b.at(file) == bytes) << file;
+}
+
+TEST(CliSweep, WritesEachRunAndTheResultsAndPrintsEachCell) {
+  const fs::path out = testing::sweep_scratch("cli");
+  const auto outcome = run_crux(sweep_arguments(out, 2));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("crux sweep: 2 cells (learning.epsilon)"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("cell 1 (learning.epsilon = 0.3): 3 walls x 1 seeds"), std::string::npos);
+  EXPECT_NE(outcome.out.find("0 of 24 tasks kept from an earlier start"), std::string::npos);
+  for (const char* file : {"sweep.toml", "results.csv", "summary.json", "runs/c1/transfer_2/q_grid.bin",
+                           "runs/c0/control_0/config.toml", "walls/g0/transfer_2/wall_facts.json"}) {
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  }
+  EXPECT_FALSE(fs::exists(out / "INCOMPLETE"));
+  // The same command again resumes a finished sweep: nothing to run, the same results.
+  const auto results = folder_contents(out);
+  const auto again = run_crux(sweep_arguments(out, 1) + " --json");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(nlohmann::json::parse(again.out).at("format"), "crux-sweep-summary");
+  expect_same(results, folder_contents(out));
+  // A run folder replays with crux transfer from its own config.toml.
+  const fs::path replay = testing::sweep_scratch("replay");
+  const auto replayed = run_crux("transfer --config " + (out / "runs/c1/transfer_2/config.toml").string() + " -o " +
+                                 replay.string());
+  ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
+  for (const char* file : {"iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv"}) {
+    EXPECT_TRUE(folder_contents(replay).at(file) == results.at(std::string("runs/c1/transfer_2/") + file)) << file;
+  }
+}
+
+TEST(CliSweep, BadListsAndAnotherSweepsFolderAreOneLineErrors) {
+  const fs::path threads = testing::write_temporary("threads.toml", "[experiment]\nthreads = [1, 2]\n");
+  auto outcome = run_crux("sweep --config " + threads.string() + " -o " + testing::sweep_scratch("bad").string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.err, "crux: " + threads.string() + ": line 2: experiment.threads takes one value, not a list\n");
+  outcome = run_crux("paper --config " + sweep_file().string() + " -o " + testing::sweep_scratch("paper").string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_NE(outcome.err.find("learning.epsilon must be one value; only crux sweep takes lists"), std::string::npos)
+      << outcome.err;
+  const fs::path out = testing::sweep_scratch("taken");
+  ASSERT_EQ(run_crux(sweep_arguments(out, 2)).exit_code, 0);
+  outcome = run_crux(sweep_arguments(out, 2) + " --learning-alpha 0.2");
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
+  EXPECT_NE(outcome.err.find("already holds files"), std::string::npos) << outcome.err;
+}
+
+TEST(CliSweep, ASweepKilledAtAnyMomentResumesToTheSameBytes) {
+  const fs::path out = testing::sweep_scratch("killed");
+  const std::string command = std::string(CRUX_BINARY) + " " + sweep_arguments(out, 2) + " > /dev/null 2>&1";
+  const auto whole = bytes_after(command, out);
+  for (const int finished_runs : {2, 9}) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      ::execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    // SIGKILL once some runs are in place: others are half-written in .partial/.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    const auto runs_done = [&] {
+      int n = 0;
+      for (const char* cell : {"c0", "c1"}) {
+        std::error_code error;
+        for (auto it = fs::directory_iterator(out / "runs" / cell, error); !error && it != fs::directory_iterator(); ++it) ++n;
+      }
+      return n;
+    };
+    while (runs_done() < finished_runs && std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ::kill(pid, SIGKILL);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "the sweep ended before it was killed; status " << status;
+    EXPECT_TRUE(fs::exists(out / "INCOMPLETE"));
+    EXPECT_FALSE(fs::exists(out / "results.csv"));
+    expect_same(whole, bytes_after(command, out));
+  }
+}
+
+TEST(CliSweep, TwoMpiRanksWriteTheSingleProcessBytes) {
+  const fs::path out = testing::sweep_scratch("mpi");
+  const auto single = bytes_after(std::string(CRUX_BINARY) + " " + sweep_arguments(out, 2) + " > /dev/null", out);
+  // Open MPI's own allocations are not crux's leaks.
+  ::setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
+  const std::string mpirun = std::string(CRUX_MPIEXEC) + " -n 2 --oversubscribe --allow-run-as-root " + CRUX_BINARY +
+                             " " + sweep_arguments(out, 1);
+  const auto ranks = bytes_after(mpirun + " > " + (out.string() + ".log") + " 2>&1", out);
+  expect_same(single, ranks);
+  std::ifstream log(out.string() + ".log");
+  const std::string printed((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(printed.find("crux sweep: 2 cells"), printed.rfind("crux sweep: 2 cells")) << "rank 0 alone prints";
+}
+
+}  // namespace
+}  // namespace crux

@@ -1,0 +1,100 @@
+#include "sweeps/sweep_results.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "experiments/experiment_analysis.hpp"
+#include "experiments/statistics.hpp"
+#include "reports/summary.hpp"
+#include "support/sweep_cells.hpp"
+#include "support/test_models.hpp"
+#include "sweeps/sweep_run.hpp"
+
+namespace crux {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::small_sweep_config;
+using testing::sweep_cell;
+
+nlohmann::json as_json(const nlohmann::ordered_json& value) { return nlohmann::json::parse(value.dump()); }
+
+nlohmann::json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+std::vector<std::string> lines_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// A cell read back from its run folders is analysed as crux paper analyses the same
+// runs held in memory: the sweep adds no statistics of its own.
+TEST(SweepResults, ACellsAnalysisIsCruxPapersOnTheSameRuns) {
+  const ExperimentConfig config = small_sweep_config(3, 1500);
+  SweepJob job;
+  job.plan = plan_sweep({}, {sweep_cell(config)});
+  job.folder = fs::absolute(testing::sweep_scratch("paper"));
+  job.threads = 2;
+  run_sweep(job, testing::human_model(), nullptr);
+
+  const ExperimentResult paper = run_paper_experiment(testing::human_model(), config.settings);
+  const ExperimentAnalysis analysis = analyse_experiment(paper, config.settings);
+  nlohmann::json cell = read_json(job.folder / "summary.json").at("cells").at(0);
+  for (auto& [name, metric] : cell.at("transfer_vs_control").items()) {
+    EXPECT_EQ(metric.at("transfer_minus_control").at("p_value_holm_over_cells"),
+              metric.at("transfer_minus_control").at("p_value"))
+        << "one cell: nothing to adjust";
+    metric.at("transfer_minus_control").erase("p_value_holm_over_cells");
+  }
+  EXPECT_EQ(cell.at("transfer_vs_control"), as_json(transfer_vs_control_json(analysis)));
+  EXPECT_EQ(cell.at("take_off"), as_json(take_off_json(analysis)));
+  EXPECT_EQ(cell.at("transfer_control_divergence"), as_json(divergence_json(analysis)));
+
+  const std::vector<std::string> rows = lines_of(job.folder / "results.csv");
+  ASSERT_EQ(rows.size(), 1u + 9);
+  EXPECT_EQ(rows[0].rfind("cell,condition,run,wall_pair,seed_index,wall_seed,learning_seed,", 0), 0u) << rows[0];
+  // Row 4 is transfer run 0: its seeds are crux paper's.
+  const ConditionResult& transfer = paper.conditions[static_cast<int>(Condition::Transfer)];
+  EXPECT_EQ(rows[4].rfind(fmt::format("0,transfer,0,0,0,{},{},", paper.walls[3].seed, transfer.learning_seeds[0]), 0), 0u)
+      << rows[4];
+}
+
+TEST(SweepResults, PValuesAreHolmAdjustedOverTheCells) {
+  std::vector<SweepCell> cells;
+  for (const char* epsilon : {"0.05", "0.3", "0.6"}) {
+    cells.push_back(sweep_cell(small_sweep_config(2, 800, fmt::format("[learning]\nepsilon = {}\n", epsilon)),
+                               {epsilon}));
+  }
+  SweepJob job;
+  job.plan = plan_sweep({"learning.epsilon"}, std::move(cells));
+  job.folder = fs::absolute(testing::sweep_scratch("holm"));
+  job.threads = 2;
+  run_sweep(job, testing::human_model(), nullptr);
+  const nlohmann::json summary = read_json(job.folder / "summary.json");
+  EXPECT_EQ(summary.at("listed_keys"), nlohmann::json::array({"learning.epsilon"}));
+  ASSERT_EQ(summary.at("cells").size(), 3u);
+  EXPECT_EQ(summary.at("cells").at(1).at("parameters").at("learning.epsilon"), "0.3");
+  for (const auto& [name, unused] : summary.at("cells").at(0).at("transfer_vs_control").items()) {
+    std::vector<double> p, holm;
+    for (const auto& cell : summary.at("cells")) {
+      const auto& d = cell.at("transfer_vs_control").at(name).at("transfer_minus_control");
+      p.push_back(d.at("p_value").get<double>());
+      holm.push_back(d.at("p_value_holm_over_cells").get<double>());
+    }
+    EXPECT_EQ(holm, holm_adjusted(p)) << name;
+  }
+  const std::vector<std::string> rows = lines_of(job.folder / "results.csv");
+  ASSERT_EQ(rows.size(), 1u + 3 * 6);
+  EXPECT_EQ(rows[0].rfind("cell,learning.epsilon,condition,", 0), 0u);
+  EXPECT_EQ(rows[7].rfind("1,0.3,training,0,", 0), 0u) << rows[7];
+}
+
+}  // namespace
+}  // namespace crux
