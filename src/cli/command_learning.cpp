@@ -12,6 +12,7 @@
 #include "cli/progress_bar.hpp"
 #include "common/input_error.hpp"
 #include "experiments/learning_parameters.hpp"
+#include "experiments/run_checkpoint.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/output_folder.hpp"
 #include "reports/plan_description.hpp"
@@ -91,11 +92,22 @@ struct SingleRunCommand {
     std::optional<QTable> initial;
     if (condition == Condition::Transfer) initial = load_q_grid(config.q_grid, config.settings.learning.climbing.grid);
     const std::string config_toml = config_file_text(config, binding.accepted(), provenance);
-    check_output_folder(output, inputs_of(config, binding), overwrite);
+    // A checkpoint resumes the run whose parameters and inputs it records, whatever
+    // its checkpoint interval.
+    ParameterSet identity_keys = binding.accepted();
+    identity_keys.exclude.push_back("experiment.checkpoint_every");
+    const std::string identity = config_file_text(config, identity_keys, provenance);
+    const std::filesystem::path checkpoint_file = std::filesystem::path(output) / kCheckpointFile;
+    RunCheckpoints checkpoints{config.checkpoint_every, {}, {}, checkpoint_file.string()};
+    if (!overwrite) checkpoints.resume = read_checkpoint(checkpoint_file, identity).value_or("");
+    check_output_folder(output, inputs_of(config, binding), overwrite || !checkpoints.resume.empty());
+    checkpoints.save = [&](std::string state, int) {
+      write_checkpoint(output, checkpoint_file_bytes(identity, state));
+    };
     ProgressBar progress(condition_name(condition), config.settings.learning.iterations);
     const auto start = std::chrono::steady_clock::now();
     RunResult run = run_learning(model, wall, config.settings.learning, config.settings.seed,
-                                 initial ? &*initial : nullptr, [&](int done) { progress.update(done); });
+                                 initial ? &*initial : nullptr, [&](int done) { progress.update(done); }, &checkpoints);
     progress.finish();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const ExperimentResult result =

@@ -64,6 +64,11 @@ class ClimbingMdp {
   int wall_action_count() const { return wall_.hold_count(); }
   int grid_action_count() const { return parameters_.grid.tile_count(); }
 
+  // Where the climber is (configuration, posture, the hold just left) and the reacher's
+  // cache, for a run's checkpoint; load_state describes the state again from them.
+  void save_state(CheckpointWriter& out) const;
+  void load_state(CheckpointReader& in);
+
  private:
   // The state couple and candidates of configuration_, with `body` placed at posture_.
   void describe(const BodyData& body);

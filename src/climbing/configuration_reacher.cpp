@@ -1,6 +1,7 @@
 #include "climbing/configuration_reacher.hpp"
 
 #include "body/kinematics.hpp"
+#include "common/checkpoint_stream.hpp"
 #include "common/input_error.hpp"
 
 namespace crux {
@@ -39,6 +40,16 @@ const BodyData& ConfigurationReacher::place(const Posture& posture) {
   forward_kinematics(model_, data_, posture);
   centre_of_mass(model_, data_);
   return data_;
+}
+
+void ConfigurationReacher::save_state(CheckpointWriter& out) const {
+  cache_.save_state(out);
+  out.value<std::uint64_t>(solves_);
+}
+
+void ConfigurationReacher::load_state(CheckpointReader& in) {
+  cache_.load_state(in);
+  solves_ = in.value<std::uint64_t>();
 }
 
 }  // namespace crux

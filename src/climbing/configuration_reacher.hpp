@@ -31,6 +31,10 @@ class ConfigurationReacher {
   const PostureCache& cache() const { return cache_; }
   std::size_t solves() const { return solves_; }
 
+  // The cache and the solve count, for a run's checkpoint.
+  void save_state(CheckpointWriter& out) const;
+  void load_state(CheckpointReader& in);
+
  private:
   const BodyModel& model_;
   const Wall& wall_;

@@ -13,6 +13,9 @@
 
 namespace crux {
 
+class CheckpointWriter;
+class CheckpointReader;
+
 class PostureCache {
  public:
   const Posture* reached(std::uint64_t configuration) const {
@@ -26,6 +29,10 @@ class PostureCache {
 
   std::size_t reached_count() const { return reached_.size(); }
   std::size_t unreachable_count() const { return unreachable_.size(); }
+
+  // Every verdict, for a run's checkpoint (load_state replaces them).
+  void save_state(CheckpointWriter& out) const;
+  void load_state(CheckpointReader& in);
 
  private:
   std::unordered_map<std::uint64_t, Posture> reached_;

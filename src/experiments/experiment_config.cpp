@@ -44,6 +44,9 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        "IK solves the exact planner may spend on a wall; it stops there without a plan (65-230 us each)",
        &s.plan_search.max_ik_solves},
       {"experiment.greedy_cap", "Actions allowed to the greedy policy's evaluation climb", &l.greedy_cap},
+      {"experiment.checkpoint_every",
+       "Iterations between checkpoints of a run (0: none); the same command started again resumes from the last",
+       &c.checkpoint_every},
       {"experiment.q_grid", "Q_grid file (q_grid.bin of a training run) that transfer starts from", &c.q_grid},
       {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha},
       {"learning.gamma", "Discount factor gamma", &l.dyna.rates.gamma},
@@ -346,6 +349,7 @@ void finalize_config(ExperimentConfig& config) {
           "experiment.bootstrap_resamples", "must be in [100, 10000000]");
   require(s.plan_search.max_ik_solves > 0, "experiment.plan_max_solves", "must be positive");
   require(s.learning.greedy_cap > 0, "experiment.greedy_cap", "must be positive");
+  require(config.checkpoint_every >= 0, "experiment.checkpoint_every", "must be 0 (none) or positive");
   require(config.wall_count > 0, "wall.count", "must be positive");
   const DynaSettings& dyna = s.learning.dyna;
   require(dyna.rates.alpha > 0 && dyna.rates.alpha <= 1, "learning.alpha", "must be in (0, 1]");

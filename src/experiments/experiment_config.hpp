@@ -22,6 +22,7 @@ struct ExperimentConfig {
   std::string q_grid;  // transfer: the Q_grid learnt by a training run
   std::string wall_file;
   std::optional<std::uint64_t> wall_seed;
+  int checkpoint_every = 0;  // train, transfer: iterations between checkpoints (run_checkpoint.hpp)
   std::string wall_name;  // wall generate: the name stored in the file
   int wall_count = 20;    // filter-stats: random walls counted
   // N walls with one seed each, the paper's design, when given: finalize_config turns it

@@ -1,5 +1,7 @@
 #include "experiments/learning_run.hpp"
 
+#include "common/checkpoint_stream.hpp"
+
 namespace crux {
 
 namespace {
@@ -31,20 +33,120 @@ void greedy_climb(ClimbingMdp& mdp, const QTable& q_wall, int cap, RunResult& re
   }
 }
 
+constexpr std::uint64_t kStateVersion = 1;
+
+void save_postures(CheckpointWriter& out, const std::vector<Posture>& postures) {
+  out.value<std::uint64_t>(postures.size());
+  for (const Posture& p : postures) out.values(p.data(), static_cast<std::size_t>(p.size()));
+}
+
+std::vector<Posture> load_postures(CheckpointReader& in) {
+  const std::uint64_t count = in.value<std::uint64_t>();
+  std::vector<Posture> postures;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const std::vector<double> values = in.vector<double>();
+    if (values.size() != static_cast<std::size_t>(Posture::SizeAtCompileTime)) in.fail();
+    postures.emplace_back(Eigen::Map<const Posture>(values.data()));
+  }
+  return postures;
+}
+
+// The loop's own state besides the agent and the MDP.
+struct LoopState {
+  int iteration = 0, episode = 0, episode_start = 0;
+};
+
+// Records field by field: no padding bytes reach the file.
+void save_records(CheckpointWriter& out, const std::vector<IterationRecord>& records) {
+  out.value<std::uint64_t>(records.size());
+  for (const IterationRecord& r : records) {
+    out.value(r.episode);
+    out.value(static_cast<std::int32_t>(r.regime));
+    out.value(r.hold_id);
+    out.value(r.success);
+    out.value(r.root_rise_m);
+    out.value(r.reward);
+    out.value(r.grid_state);
+    out.value(r.tile);
+    out.value(r.tile_offset_y);
+    out.value(r.tile_offset_z);
+    out.value(r.back_to_left_hold);
+  }
+}
+
+void load_records(CheckpointReader& in, std::vector<IterationRecord>& records) {
+  const std::uint64_t count = in.value<std::uint64_t>();
+  if (count > records.capacity()) in.fail();
+  for (std::uint64_t i = 0; i < count; ++i) {
+    IterationRecord r;
+    r.episode = in.value<int>();
+    const std::int32_t regime = in.value<std::int32_t>();
+    if (regime < 0 || regime >= kRegimeCount) in.fail();
+    r.regime = static_cast<Regime>(regime);
+    r.hold_id = in.value<int>();
+    r.success = in.value<bool>();
+    r.root_rise_m = in.value<double>();
+    r.reward = in.value<double>();
+    r.grid_state = in.value<std::uint32_t>();
+    r.tile = in.value<ActionCode>();
+    r.tile_offset_y = in.value<float>();
+    r.tile_offset_z = in.value<float>();
+    r.back_to_left_hold = in.value<bool>();
+    records.push_back(r);
+  }
+}
+
+std::string save_state(const LoopState& loop, const RunResult& result, const std::vector<Posture>& climb,
+                       const DynaQAgent& agent, const ClimbingMdp& mdp) {
+  CheckpointWriter out;
+  out.value(kStateVersion);
+  out.value(loop);
+  save_records(out, result.iterations);
+  out.vector(result.episode_lengths);
+  save_postures(out, result.last_climb);
+  save_postures(out, climb);
+  agent.save_state(out);
+  mdp.save_state(out);
+  return out.take();
+}
+
+LoopState load_state(const RunCheckpoints& checkpoints, int iterations, RunResult& result, std::vector<Posture>& climb,
+                     DynaQAgent& agent, ClimbingMdp& mdp) {
+  CheckpointReader in(checkpoints.resume, checkpoints.source);
+  if (in.value<std::uint64_t>() != kStateVersion) in.fail();
+  const LoopState loop = in.value<LoopState>();
+  if (loop.iteration < 0 || loop.iteration > iterations || loop.episode_start > loop.iteration) in.fail();
+  load_records(in, result.iterations);
+  if (result.iterations.size() != static_cast<std::size_t>(loop.iteration)) in.fail();
+  result.episode_lengths = in.vector<int>();
+  result.last_climb = load_postures(in);
+  climb = load_postures(in);
+  agent.load_state(in);
+  mdp.load_state(in);
+  if (!in.at_end()) in.fail();
+  return loop;
+}
+
 }  // namespace
 
 RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningParameters& parameters,
                        std::uint64_t seed, const QTable* initial_q_grid,
-                       const std::function<void(int)>& progress) {
+                       const std::function<void(int)>& progress, const RunCheckpoints* checkpoints) {
   ClimbingMdp mdp(model, wall, parameters.climbing);
   DynaQAgent agent(mdp.wall_action_count(), mdp.grid_action_count(), parameters.dyna, seed);
   if (initial_q_grid != nullptr) agent.set_q_grid(*initial_q_grid);
   RunResult result;
   result.iterations.reserve(parameters.iterations);
   std::vector<Posture> climb{mdp.posture()};
-  int episode = 0, episode_start = 0;
-  agent.observe(mdp.state(), mdp.candidates());
-  for (int iteration = 0; iteration < parameters.iterations; ++iteration) {
+  LoopState loop;
+  if (checkpoints != nullptr && !checkpoints->resume.empty()) {
+    loop = load_state(*checkpoints, parameters.iterations, result, climb, agent, mdp);
+  } else {
+    agent.observe(mdp.state(), mdp.candidates());
+  }
+  int& episode = loop.episode;
+  int& episode_start = loop.episode_start;
+  for (int& iteration = loop.iteration; iteration < parameters.iterations;) {
     const StateCouple state = mdp.state();
     const std::span<const ActionCandidate> candidates = mdp.candidates();
     const ActionChoice choice = agent.choose(state, candidates);
@@ -73,7 +175,12 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
       result.last_climb = std::move(climb);
       climb.assign(1, mdp.posture());
     }
-    if (progress) progress(iteration + 1);
+    ++iteration;
+    if (progress) progress(iteration);
+    if (checkpoints != nullptr && checkpoints->every > 0 && iteration % checkpoints->every == 0 &&
+        iteration < parameters.iterations) {
+      checkpoints->save(save_state(loop, result, climb, agent, mdp), iteration);
+    }
   }
   result.reached_configurations = mdp.reacher().cache().reached_count();
   result.unreachable_configurations = mdp.reacher().cache().unreachable_count();

@@ -62,10 +62,23 @@ struct RunResult {
   std::vector<ClimbMove> greedy_moves;
 };
 
+// Checkpoints of a long run (experiments/run_checkpoint.hpp): every `every` iterations
+// (0: never) the run's whole state (tables, model, cache, counters, records so far) is
+// handed to `save`. A run given a saved `resume` state continues from it and ends with
+// the same result as a run never stopped. The random streams are addressed by the
+// iteration, so the counters are all they need.
+struct RunCheckpoints {
+  int every = 0;
+  std::function<void(std::string state, int iterations_done)> save;
+  std::string resume;  // empty: from the start
+  std::string source;  // names the resumed state in errors
+};
+
 // Deterministic in `seed`. `initial_q_grid` starts the grid table from transferred
 // knowledge; Q_wall always starts empty.
 RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningParameters& parameters,
                        std::uint64_t seed, const QTable* initial_q_grid = nullptr,
-                       const std::function<void(int iterations_done)>& progress = {});
+                       const std::function<void(int iterations_done)>& progress = {},
+                       const RunCheckpoints* checkpoints = nullptr);
 
 }  // namespace crux

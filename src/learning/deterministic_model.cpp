@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "common/checkpoint_stream.hpp"
+
 namespace crux {
 
 std::size_t DeterministicModel::record(const Experience& experience) {
@@ -31,6 +33,34 @@ std::size_t DeterministicModel::record(const Experience& experience) {
 std::span<const std::size_t> DeterministicModel::predecessors(StateCode wall_state) const {
   const auto it = predecessors_.find(wall_state);
   return it == predecessors_.end() ? std::span<const std::size_t>() : std::span<const std::size_t>(it->second);
+}
+
+void DeterministicModel::save_state(CheckpointWriter& out) const {
+  out.value(track_predecessors_);
+  out.vector(entries_);
+  // Predecessor lists in state order: the file does not depend on the hash map's.
+  std::vector<StateCode> states;
+  for (const auto& [state, unused] : predecessors_) states.push_back(state);
+  std::sort(states.begin(), states.end());
+  out.vector(states);
+  for (const StateCode state : states) out.vector(predecessors_.at(state));
+}
+
+void DeterministicModel::load_state(CheckpointReader& in) {
+  if (in.value<bool>() != track_predecessors_) in.fail();
+  entries_ = in.vector<Experience>();
+  index_.clear();
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    if (!index_.emplace(PairKey{entries_[i].wall_state, entries_[i].wall_action}, i).second) in.fail();
+  }
+  predecessors_.clear();
+  for (const StateCode state : in.vector<StateCode>()) {
+    std::vector<std::size_t> list = in.vector<std::size_t>();
+    for (const std::size_t entry : list) {
+      if (entry >= entries_.size()) in.fail();
+    }
+    predecessors_[state] = std::move(list);
+  }
 }
 
 }  // namespace crux

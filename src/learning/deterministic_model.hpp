@@ -13,6 +13,9 @@
 
 namespace crux {
 
+class CheckpointWriter;
+class CheckpointReader;
+
 // A transition in both representations; grid_action is kNoAction when the action's
 // hold lies outside the grid.
 struct Experience {
@@ -33,6 +36,10 @@ class DeterministicModel {
   // Indices of the pairs whose last recorded next state is `wall_state` (empty unless
   // predecessors are tracked).
   std::span<const std::size_t> predecessors(StateCode wall_state) const;
+
+  // Every pair and predecessor list, for a run's checkpoint (load_state replaces them).
+  void save_state(CheckpointWriter& out) const;
+  void load_state(CheckpointReader& in);
 
  private:
   struct PairKey {

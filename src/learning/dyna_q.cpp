@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/checkpoint_stream.hpp"
+
 namespace crux {
 
 const char* planner_name(Planner planner) { return planner == Planner::Uniform ? "uniform" : "prioritized"; }
@@ -97,6 +99,46 @@ void DynaQAgent::sweep(StateCode real_state, std::size_t real_entry) {
     prioritize(entry, true);
     for (const std::size_t p : model_.predecessors(e.wall_state)) prioritize(p, false);
   }
+}
+
+namespace {
+
+// A state -> actions map in state order, so that the file does not depend on hashing.
+void save_actions(CheckpointWriter& out, const std::unordered_map<StateCode, std::vector<ActionCode>>& known) {
+  std::vector<StateCode> states;
+  for (const auto& [state, unused] : known) states.push_back(state);
+  std::sort(states.begin(), states.end());
+  out.vector(states);
+  for (const StateCode state : states) out.vector(known.at(state));
+}
+
+void load_actions(CheckpointReader& in, std::unordered_map<StateCode, std::vector<ActionCode>>& known) {
+  known.clear();
+  for (const StateCode state : in.vector<StateCode>()) known[state] = in.vector<ActionCode>();
+}
+
+}  // namespace
+
+void DynaQAgent::save_state(CheckpointWriter& out) const {
+  out.value(steps_);
+  out.value(planning_updates_);
+  q_wall_.save_state(out);
+  q_grid_.save_state(out);
+  model_.save_state(out);
+  queue_.save_state(out);
+  save_actions(out, wall_actions_);
+  save_actions(out, grid_actions_);
+}
+
+void DynaQAgent::load_state(CheckpointReader& in) {
+  steps_ = in.value<std::uint64_t>();
+  planning_updates_ = in.value<std::uint64_t>();
+  q_wall_.load_state(in);
+  q_grid_.load_state(in);
+  model_.load_state(in);
+  queue_.load_state(in);
+  load_actions(in, wall_actions_);
+  load_actions(in, grid_actions_);
 }
 
 }  // namespace crux

@@ -62,6 +62,11 @@ class DynaQAgent {
   const QTable& q_grid() const { return q_grid_; }
   const DeterministicModel& model() const { return model_; }
 
+  // Everything learnt and the step counters that address the random streams, for a
+  // run's checkpoint: an agent that loads it continues as the saved one would have.
+  void save_state(CheckpointWriter& out) const;
+  void load_state(CheckpointReader& in);
+
  private:
   void update_both(const Experience& e);
   void plan_uniformly();

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cassert>
 
+#include "common/checkpoint_stream.hpp"
+
 namespace crux {
 
 void PriorityQueue::push(std::size_t entry, double priority) {
@@ -49,6 +51,21 @@ std::size_t PriorityQueue::pop() {
     priority_of_[top.entry] = -1.0;
     --queued_;
     return top.entry;
+  }
+}
+
+void PriorityQueue::save_state(CheckpointWriter& out) const {
+  out.vector(heap_);
+  out.vector(priority_of_);
+  out.value<std::uint64_t>(queued_);
+}
+
+void PriorityQueue::load_state(CheckpointReader& in) {
+  heap_ = in.vector<Item>();
+  priority_of_ = in.vector<double>();
+  queued_ = in.value<std::uint64_t>();
+  for (const Item& item : heap_) {
+    if (item.entry >= priority_of_.size()) in.fail();
   }
 }
 

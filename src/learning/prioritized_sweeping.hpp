@@ -9,6 +9,9 @@
 
 namespace crux {
 
+class CheckpointWriter;
+class CheckpointReader;
+
 class PriorityQueue {
  public:
   // Queues model entry `entry`, or raises its priority if it is queued lower.
@@ -20,6 +23,11 @@ class PriorityQueue {
   std::size_t size() const { return queued_; }
   // The entry of highest priority, removed from the queue. Precondition: !empty().
   std::size_t pop();
+
+  // The heap as it is (stale items included, since they decide later rebuilds), for a
+  // run's checkpoint; load_state replaces this queue.
+  void save_state(CheckpointWriter& out) const;
+  void load_state(CheckpointReader& in);
 
  private:
   struct Item {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cassert>
 
+#include "common/checkpoint_stream.hpp"
+
 namespace crux {
 
 QTable::QTable(int action_count) : action_count_(action_count) { assert(action_count > 0); }
@@ -46,6 +48,29 @@ double QTable::best_value(StateCode s, std::span<const ActionCode> available) co
   double best = row[available[0]];
   for (const ActionCode a : available.subspan(1)) best = std::max(best, row[a]);
   return best;
+}
+
+void QTable::save_state(CheckpointWriter& out) const {
+  out.value<std::int64_t>(action_count_);
+  std::vector<StateCode> states(rows_.size());
+  for (const auto& [state, row] : rows_) states[row] = state;
+  out.vector(states);
+  out.vector(values_);
+  out.vector(visits_);
+}
+
+void QTable::load_state(CheckpointReader& in) {
+  if (in.value<std::int64_t>() != action_count_) in.fail();
+  const std::vector<StateCode> states = in.vector<StateCode>();
+  std::vector<double> values = in.vector<double>();
+  std::vector<std::uint32_t> visits = in.vector<std::uint32_t>();
+  if (values.size() != states.size() * action_count_ || visits.size() != values.size()) in.fail();
+  rows_.clear();
+  for (std::size_t row = 0; row < states.size(); ++row) {
+    if (!rows_.emplace(states[row], row).second) in.fail();
+  }
+  values_ = std::move(values);
+  visits_ = std::move(visits);
 }
 
 void QTable::for_each_row(

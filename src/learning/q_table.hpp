@@ -12,6 +12,9 @@
 
 namespace crux {
 
+class CheckpointWriter;
+class CheckpointReader;
+
 using StateCode = std::uint64_t;
 using ActionCode = std::int32_t;
 inline constexpr ActionCode kNoAction = -1;
@@ -33,6 +36,11 @@ class QTable {
 
   // max over `available` of Q(s, a); 0 when nothing is available.
   double best_value(StateCode s, std::span<const ActionCode> available) const;
+
+  // The whole table, rows in creation order, for a run's checkpoint; load_state
+  // replaces this table's contents (same action count, or the reader fails).
+  void save_state(CheckpointWriter& out) const;
+  void load_state(CheckpointReader& in);
 
   // Every stored row, in increasing state order (for files and maps).
   void for_each_row(const std::function<void(StateCode, std::span<const double>, std::span<const std::uint32_t>)>&

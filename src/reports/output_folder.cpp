@@ -6,6 +6,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
+#include "experiments/run_checkpoint.hpp"
 #include "reports/figure_tables.hpp"
 #include "reports/report_figures.hpp"
 #include "reports/run_files.hpp"
@@ -20,7 +21,7 @@ namespace {
 // Everything a crux command writes into an output folder.
 constexpr const char* kOutputNames[] = {"config.toml", "summary.json", "runs",      "walls",    "figures",
                                         "iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv", "wall.json",
-                                        kIncompleteMarker};
+                                        kCheckpointFile, kIncompleteMarker};
 
 void begin_output_folder(const fs::path& directory) {
   std::error_code error;
@@ -108,6 +109,17 @@ void write_experiment_folder(const fs::path& directory, const ExperimentResult& 
   // Drawn from the files just written, as `crux figures` redraws them.
   write_paper_figure_files(directory);
   mark_complete(directory);
+}
+
+void write_checkpoint(const fs::path& directory, const std::string& bytes) {
+  make_output_directory(directory);
+  std::error_code error;
+  if (!fs::exists(directory / kIncompleteMarker, error)) {
+    write_file_atomically(directory / kIncompleteMarker,
+                          "crux is running the run of this folder; the same command started again resumes it from "
+                          "checkpoint.bin.\n");
+  }
+  write_file_atomically(directory / kCheckpointFile, bytes);
 }
 
 void write_run_folder(const fs::path& directory, const ExperimentResult& result, const BodyModel& model,

@@ -34,6 +34,10 @@ void write_experiment_folder(const std::filesystem::path& directory, const Exper
                              const ExperimentSettings& settings, const BodyModel& model, const std::string& config_toml,
                              const nlohmann::ordered_json& summary);
 
+// Writes a long run's checkpoint file (run_checkpoint.hpp) atomically into `directory`,
+// which it marks incomplete until write_run_folder completes it (and removes the file).
+void write_checkpoint(const std::filesystem::path& directory, const std::string& bytes);
+
 // A `crux train` or `crux transfer` folder: the run's files, wall.json, config.toml and
 // summary.json. `result` holds the one run (single_run_result).
 void write_run_folder(const std::filesystem::path& directory, const ExperimentResult& result, const BodyModel& model,

@@ -2,10 +2,14 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <sys/wait.h>
+#include <signal.h>
 
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <thread>
+#include <chrono>
 #include <map>
 
 #include "support/run_crux.hpp"
@@ -373,6 +377,43 @@ TEST(CliLearning, EveryCommandPrintsOneJsonDocument) {
     const auto outcome = run_crux(command + " --json");
     ASSERT_EQ(outcome.exit_code, 0) << command << ": " << outcome.err;
     EXPECT_TRUE(nlohmann::json::accept(outcome.out)) << command << ": " << outcome.out;
+  }
+}
+
+// crux train killed after a checkpoint and started again with the same command ends
+// with the files of a run never stopped; another run's parameters refuse the checkpoint.
+TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
+  const std::string arguments = "train --wall-seed 3 --seed 5 --iterations 6000 --checkpoint-every 500 -o ";
+  const fs::path whole = scratch("long-whole"), killed = scratch("long-killed");
+  ASSERT_EQ(run_crux(arguments + whole.string()).exit_code, 0);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const std::string command = std::string("exec ") + CRUX_BINARY + " " + arguments + killed.string() + " > /dev/null 2>&1";
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(killed / "checkpoint.bin") && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
+  ASSERT_TRUE(fs::exists(killed / "INCOMPLETE"));
+  const auto other = run_crux(arguments + killed.string() + " --learning-epsilon 0.2");
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("checkpoint.bin: is the checkpoint of a run with other parameters"), std::string::npos)
+      << other.err;
+  const auto resumed = run_crux(arguments + killed.string());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_FALSE(fs::exists(killed / "checkpoint.bin")) << "a complete folder keeps no checkpoint";
+  EXPECT_FALSE(fs::exists(killed / "INCOMPLETE"));
+  for (const char* file : {"iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv", "wall.json",
+                           "config.toml"}) {
+    std::ifstream a(whole / file, std::ios::binary), b(killed / file, std::ios::binary);
+    const std::string x((std::istreambuf_iterator<char>(a)), {}), y((std::istreambuf_iterator<char>(b)), {});
+    EXPECT_TRUE(!x.empty() && x == y) << file;
   }
 }
 

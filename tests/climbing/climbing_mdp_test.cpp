@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/checkpoint_stream.hpp"
+
 #include <map>
 
 #include "common/input_error.hpp"
@@ -109,6 +111,48 @@ TEST(ClimbingMdp, EveryGridActionHasExactlyOneRepresentative) {
     }
   }
   for (const auto& [tile, count] : representatives) EXPECT_EQ(count, 1) << "tile " << tile;
+}
+
+// An MDP restored mid-climb offers the same state and candidates, answers the same
+// steps with the same postures, and keeps the reacher's cache and solve count.
+TEST(ClimbingMdp, ARestoredMdpContinuesAsTheSavedOne) {
+  Fixture f;
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  const auto first_reachable = [](ClimbingMdp& m) {
+    for (const ActionCandidate& c : std::vector<ActionCandidate>(m.candidates().begin(), m.candidates().end())) {
+      if (m.step(c.wall).reached) return;
+    }
+  };
+  first_reachable(mdp);
+  first_reachable(mdp);
+  CheckpointWriter out;
+  mdp.save_state(out);
+  const std::string bytes = out.take();
+  ClimbingMdp restored(f.model, f.wall, f.parameters);
+  CheckpointReader in(bytes, "test");
+  restored.load_state(in);
+  EXPECT_TRUE(in.at_end());
+  EXPECT_EQ(restored.state().wall, mdp.state().wall);
+  EXPECT_EQ(restored.state().grid, mdp.state().grid);
+  EXPECT_EQ(restored.posture(), mdp.posture());
+  EXPECT_EQ(restored.left_hold(), mdp.left_hold());
+  EXPECT_EQ(restored.reacher().solves(), mdp.reacher().solves());
+  ASSERT_EQ(restored.candidates().size(), mdp.candidates().size());
+  for (std::size_t i = 0; i < mdp.candidates().size(); ++i) {
+    EXPECT_EQ(restored.candidates()[i].wall, mdp.candidates()[i].wall);
+    EXPECT_EQ(restored.candidates()[i].grid, mdp.candidates()[i].grid);
+    EXPECT_EQ(restored.candidates()[i].represents_grid_action, mdp.candidates()[i].represents_grid_action);
+  }
+  for (int step = 0; step < 6 && !mdp.candidates().empty(); ++step) {
+    const ActionCode hold = mdp.candidates()[static_cast<std::size_t>(step) % mdp.candidates().size()].wall;
+    const StepOutcome a = mdp.step(hold), b = restored.step(hold);
+    ASSERT_EQ(a.reached, b.reached) << "step " << step;
+    if (a.reached) {
+      EXPECT_EQ(*a.posture, *b.posture);
+    }
+    EXPECT_EQ(restored.state().wall, mdp.state().wall);
+  }
+  EXPECT_EQ(restored.reacher().solves(), mdp.reacher().solves());
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/checkpoint_stream.hpp"
+
 namespace crux {
 namespace {
 
@@ -75,6 +77,29 @@ TEST(PostureCache, PointersStayValidAsTheCacheGrows) {
   EXPECT_EQ(cache.reached(0), kept);
   EXPECT_EQ(*kept, posture_at(0.5));
   EXPECT_EQ(cache.reached_count(), 2000u);
+}
+
+TEST(PostureCache, ACheckpointRestoresEveryVerdict) {
+  PostureCache cache;
+  Posture p = Posture::Zero();
+  p[5] = 0.125;
+  cache.store_reached(12, p);
+  cache.store_reached(~0ULL, Posture::Constant(-2.0));
+  cache.store_unreachable(7);
+  CheckpointWriter out;
+  cache.save_state(out);
+  const std::string bytes = out.take();
+  PostureCache restored;
+  restored.store_unreachable(99);  // replaced
+  CheckpointReader in(bytes, "test");
+  restored.load_state(in);
+  EXPECT_TRUE(in.at_end());
+  ASSERT_NE(restored.reached(12), nullptr);
+  EXPECT_EQ(*restored.reached(12), p);
+  EXPECT_EQ(*restored.reached(~0ULL), Posture::Constant(-2.0));
+  EXPECT_TRUE(restored.known_unreachable(7));
+  EXPECT_FALSE(restored.known_unreachable(99));
+  EXPECT_EQ(restored.reached_count(), 2u);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include "body/kinematics.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
@@ -69,6 +71,65 @@ TEST(LearningRun, PrioritizedSweepingSpendsAtMostTheBudget) {
   EXPECT_LE(run.planning_updates, 300u * 50u);
   parameters.dyna.planner = Planner::Uniform;
   EXPECT_EQ(run_learning(model, generate_random_wall(3), parameters, 5).planning_updates, 300u * 50u);
+}
+
+void expect_same_run(const RunResult& a, const RunResult& b, const std::string& label) {
+  ASSERT_EQ(a.iterations.size(), b.iterations.size()) << label;
+  for (std::size_t i = 0; i < a.iterations.size(); ++i) {
+    const IterationRecord &x = a.iterations[i], &y = b.iterations[i];
+    ASSERT_TRUE(x.episode == y.episode && x.regime == y.regime && x.hold_id == y.hold_id && x.success == y.success &&
+                x.root_rise_m == y.root_rise_m && x.reward == y.reward && x.grid_state == y.grid_state &&
+                x.tile == y.tile && x.tile_offset_y == y.tile_offset_y && x.back_to_left_hold == y.back_to_left_hold)
+        << label << ", iteration " << i + 1;
+  }
+  EXPECT_EQ(a.episode_lengths, b.episode_lengths) << label;
+  EXPECT_EQ(a.last_climb, b.last_climb) << label;
+  EXPECT_EQ(a.greedy_climb, b.greedy_climb) << label;
+  EXPECT_EQ(a.greedy_length, b.greedy_length) << label;
+  EXPECT_EQ(a.ik_solves, b.ik_solves) << label;
+  EXPECT_EQ(a.reached_configurations, b.reached_configurations) << label;
+  EXPECT_EQ(a.unreachable_configurations, b.unreachable_configurations) << label;
+  EXPECT_EQ(a.explored_pairs, b.explored_pairs) << label;
+  EXPECT_EQ(a.planning_updates, b.planning_updates) << label;
+  std::vector<double> qa, qb;
+  a.q_grid.for_each_row([&](StateCode s, std::span<const double> v, std::span<const std::uint32_t> n) {
+    qa.push_back(static_cast<double>(s));
+    qa.insert(qa.end(), v.begin(), v.end());
+    qa.insert(qa.end(), n.begin(), n.end());
+  });
+  b.q_grid.for_each_row([&](StateCode s, std::span<const double> v, std::span<const std::uint32_t> n) {
+    qb.push_back(static_cast<double>(s));
+    qb.insert(qb.end(), v.begin(), v.end());
+    qb.insert(qb.end(), n.begin(), n.end());
+  });
+  EXPECT_EQ(qa, qb) << label;
+}
+
+// A run resumed from any of its checkpoints ends as the run never stopped, with either
+// planner and from a transferred Q_grid: every record, table, climb and counter.
+TEST(LearningRun, ARunResumedFromAnyCheckpointEndsAsTheUnbrokenRun) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = generate_random_wall(3);
+  for (const Planner planner : {Planner::Uniform, Planner::Prioritized}) {
+    LearningParameters parameters;
+    parameters.iterations = 2400;
+    parameters.dyna.planner = planner;
+    const RunResult trained = run_learning(model, generate_random_wall(4), parameters, 9);
+    for (const QTable* initial : {static_cast<const QTable*>(nullptr), &trained.q_grid}) {
+      std::vector<std::pair<int, std::string>> states;
+      RunCheckpoints checkpoints{700, [&](std::string state, int done) { states.emplace_back(done, std::move(state)); }, {}, {}};
+      const RunResult unbroken = run_learning(model, wall, parameters, 5, initial, {}, &checkpoints);
+      ASSERT_EQ(states.size(), 3u) << "at 700, 1400 and 2100; none at the end";
+      EXPECT_EQ(states.back().first, 2100);
+      for (const auto& [done, state] : states) {
+        const RunCheckpoints resume{0, {}, state, "test"};
+        const RunResult resumed = run_learning(model, wall, parameters, 5, initial, {}, &resume);
+        expect_same_run(unbroken, resumed,
+                        fmt::format("{} planner, {}, resumed at {}", planner_name(planner),
+                                    initial != nullptr ? "transfer" : "training", done));
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/checkpoint_stream.hpp"
+
 #include <algorithm>
 #include <vector>
 
@@ -134,6 +136,30 @@ TEST(DeterministicModel, TrackingPredecessorsStoresTheSameEntries) {
   for (const Experience& e : stream) EXPECT_EQ(plain.record(e), tracked.record(e));
   ASSERT_EQ(plain.size(), tracked.size());
   for (std::size_t i = 0; i < plain.size(); ++i) expect_same(tracked.at(i), plain.at(i));
+}
+
+TEST(DeterministicModel, ACheckpointRestoresPairsIndicesAndPredecessors) {
+  DeterministicModel model(true);
+  model.record({1, 1, 0, 0, -1.0, 2, 2});
+  model.record({2, 2, 1, 1, -1.0, 3, 3});
+  model.record({1, 1, 0, 0, -1.0, 3, 3});  // moves pair 0's next state
+  CheckpointWriter out;
+  model.save_state(out);
+  const std::string bytes = out.take();
+  DeterministicModel restored(true);
+  CheckpointReader in(bytes, "test");
+  restored.load_state(in);
+  EXPECT_TRUE(in.at_end());
+  ASSERT_EQ(restored.size(), 2u);
+  EXPECT_EQ(restored.at(0).next_wall_state, 3u);
+  EXPECT_EQ(std::vector<std::size_t>(restored.predecessors(3).begin(), restored.predecessors(3).end()),
+            (std::vector<std::size_t>{1, 0}));
+  EXPECT_TRUE(restored.predecessors(2).empty());
+  EXPECT_EQ(restored.record({2, 2, 1, 1, -1.0, 3, 3}), 1u) << "a known pair keeps its index";
+  EXPECT_EQ(restored.record({5, 5, 0, 0, -1.0, 1, 1}), 2u);
+  DeterministicModel untracked(false);
+  CheckpointReader other(bytes, "test");
+  EXPECT_ANY_THROW(untracked.load_state(other));
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/checkpoint_stream.hpp"
+
 #include <vector>
 
 namespace crux {
@@ -63,6 +65,45 @@ TEST(DynaQ, AGridActionOutsideTheGridUpdatesOnlyTheWallTable) {
   agent.learn({A, A, 1, kNoAction, -1000.0, A, A});
   EXPECT_DOUBLE_EQ(agent.q_wall().value(A, 1), -100.0);
   EXPECT_EQ(agent.q_grid().state_count(), 0u);
+}
+
+// An agent restored from a checkpoint continues as the saved one does: the same choices
+// and the same tables after more steps, with either planner.
+TEST(DynaQ, ARestoredAgentContinuesAsTheSavedOne) {
+  for (const Planner planner : {Planner::Uniform, Planner::Prioritized}) {
+    DynaSettings settings;
+    settings.planner = planner;
+    settings.epsilon = 0.3;
+    DynaQAgent agent(2, 2, settings, 11);
+    const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
+    agent.observe({A, A}, both);
+    agent.observe({B, B}, both);
+    StateCode s = A;
+    const auto step = [&](DynaQAgent& a, StateCode& state) {
+      const ActionChoice choice = a.choose({state, state}, both);
+      const Experience e = transition(state, static_cast<ActionCode>(choice.candidate));
+      a.learn(e);
+      state = e.next_wall_state;
+      return choice.candidate;
+    };
+    for (int i = 0; i < 30; ++i) step(agent, s);
+    CheckpointWriter out;
+    agent.save_state(out);
+    const std::string bytes = out.take();
+    DynaQAgent restored(2, 2, settings, 11);
+    CheckpointReader in(bytes, "test");
+    restored.load_state(in);
+    EXPECT_TRUE(in.at_end());
+    StateCode r = s;
+    for (int i = 0; i < 60; ++i) ASSERT_EQ(step(restored, r), step(agent, s)) << "step " << i;
+    EXPECT_EQ(restored.planning_updates(), agent.planning_updates());
+    for (const StateCode state : {A, B}) {
+      for (const ActionCode action : {0, 1}) {
+        EXPECT_EQ(restored.q_wall().value(state, action), agent.q_wall().value(state, action));
+        EXPECT_EQ(restored.q_grid().visits(state, action), agent.q_grid().visits(state, action));
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/checkpoint_stream.hpp"
+
 #include "learning/dyna_q.hpp"
 
 namespace crux {
@@ -109,6 +111,24 @@ TEST(PrioritizedSweeping, ModelKnowsEachStatesPredecessorsAfterAChangedTransitio
 TEST(PrioritizedSweeping, PlannerNamesRoundTrip) {
   for (const Planner p : {Planner::Uniform, Planner::Prioritized}) EXPECT_EQ(parse_planner(planner_name(p)), p);
   EXPECT_FALSE(parse_planner("sweeping"));
+}
+
+TEST(PrioritizedSweeping, ACheckpointedQueuePopsInTheSameOrder) {
+  PriorityQueue queue;
+  for (std::size_t e = 0; e < 40; ++e) queue.push(e, static_cast<double>((e * 7) % 11));
+  for (std::size_t e = 0; e < 40; e += 3) queue.set(e, 0.5);  // leaves stale items
+  CheckpointWriter out;
+  queue.save_state(out);
+  const std::string bytes = out.take();
+  PriorityQueue restored;
+  CheckpointReader in(bytes, "test");
+  restored.load_state(in);
+  EXPECT_TRUE(in.at_end());
+  ASSERT_EQ(restored.size(), queue.size());
+  queue.push(99, 0.25);
+  restored.push(99, 0.25);
+  while (!queue.empty()) ASSERT_EQ(restored.pop(), queue.pop());
+  EXPECT_TRUE(restored.empty());
 }
 
 }  // namespace

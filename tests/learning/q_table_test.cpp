@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/checkpoint_stream.hpp"
+
 #include <vector>
 
 namespace crux {
@@ -139,6 +141,33 @@ TEST(QTable, CopiesAreIndependent) {
   EXPECT_EQ(original.value(1, 0), 3.0);
   EXPECT_EQ(original.state_count(), 1u);
   EXPECT_EQ(copy.state_count(), 2u);
+}
+
+TEST(QTable, ACheckpointRestoresValuesVisitsAndRowOrder) {
+  QTable table(3);
+  table.set_value(9, 1, 2.5);
+  table.add_visit(4, 2);
+  table.set_value(7, 0, -1.0 / 3.0);
+  CheckpointWriter out;
+  table.save_state(out);
+  const std::string bytes = out.take();
+  QTable restored(3);
+  restored.set_value(1, 1, 8.0);  // replaced
+  CheckpointReader in(bytes, "test");
+  restored.load_state(in);
+  EXPECT_TRUE(in.at_end());
+  EXPECT_EQ(restored.state_count(), 3u);
+  EXPECT_EQ(restored.value(9, 1), 2.5);
+  EXPECT_EQ(restored.value(7, 0), -1.0 / 3.0);
+  EXPECT_EQ(restored.visits(4, 2), 1u);
+  EXPECT_EQ(restored.value(1, 1), 0.0);
+  // Saved again, the restored table gives the same bytes: rows keep their order.
+  CheckpointWriter again;
+  restored.save_state(again);
+  EXPECT_EQ(again.bytes(), bytes);
+  QTable other_width(4);
+  CheckpointReader wrong(bytes, "test");
+  EXPECT_ANY_THROW(other_width.load_state(wrong));
 }
 
 }  // namespace
