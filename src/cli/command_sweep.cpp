@@ -5,6 +5,9 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
 #include <thread>
 
 #include <fmt/format.h>
@@ -14,6 +17,7 @@
 #include "cli/progress_bar.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
+#include "common/sha256.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/sweep_description.hpp"
 #include "sweeps/mpi_cluster.hpp"
@@ -23,6 +27,10 @@
 namespace crux::cli {
 
 namespace {
+
+// The first 64 bits of the sweep file's SHA-256: processes that hold different sweeps
+// (config files, flags or crux builds) are told apart.
+std::uint64_t job_digest(const std::string& sweep_toml) { return std::stoull(sha256_hex(sweep_toml).substr(0, 16), nullptr, 16); }
 
 struct SweepCommand {
   ParameterBinding binding{"sweep", kSweepParameters};
@@ -34,23 +42,39 @@ struct SweepCommand {
     std::optional<MpiCluster> cluster;
     if (launched_by_mpi()) cluster.emplace(nullptr, nullptr);
     const bool coordinator = !cluster || cluster->rank() == 0;
+    std::optional<SweepJob> job;
+    std::optional<BodyModel> model;
+    std::exception_ptr failure;
     try {
-      run_here(cluster ? &*cluster : nullptr, coordinator);
-    } catch (const InputError&) {
-      // Every process meets the same bad input; process 0 alone reports it.
-      if (!coordinator) throw CLI::RuntimeError(2);
-      throw;
+      std::tie(job, model) = prepare();
+    } catch (...) {
+      failure = std::current_exception();
     }
+    if (cluster) {
+      const SweepCluster::Agreement agreed = cluster->agree(!failure, failure ? 0 : job_digest(job->sweep_toml));
+      // Every process meets the same bad input: process 0 alone reports it.
+      if (failure && (coordinator || agreed.coordinator_ok)) std::rethrow_exception(failure);
+      if (failure) throw CLI::RuntimeError(2);
+      if (!agreed.every_ok || !agreed.same_job) {
+        if (!coordinator) throw CLI::RuntimeError(2);
+        throw InputError("mpirun", "another process of this sweep failed to read it, or was given another sweep (its "
+                                   "config file, flags or crux build differ)");
+      }
+    } else if (failure) {
+      std::rethrow_exception(failure);
+    }
+    run_job(*job, *model, cluster ? &*cluster : nullptr, coordinator);
   }
 
-  void run_here(MpiCluster* cluster, bool coordinator) {
+  std::pair<SweepJob, BodyModel> prepare() {
+    if (output.empty()) throw InputError("--output", "the output folder name is empty");
     const SweepGrid grid{binding.listed_keys()};
     SweepDefinition definition = define_sweep(grid, [&](const ListChoice& choice) { return binding.resolve(choice); });
     const ExperimentConfig& first = definition.plan.cells.front().config;
     if (!binding.config_path().empty()) {
       check_recorded_provenance(first, definition.provenance, binding.config_path());
     }
-    const BodyModel model = load_configured_body(first);
+    BodyModel model = load_configured_body(first);
     SweepJob job{std::move(definition.plan),
                  std::filesystem::absolute(output).lexically_normal(),
                  std::move(definition.sweep_toml),
@@ -61,30 +85,25 @@ struct SweepCommand {
     if (job.threads == 0) {
       job.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / local_processes());
     }
+    return {std::move(job), std::move(model)};
+  }
+
+  void run_job(const SweepJob& job, const BodyModel& model, MpiCluster* cluster, bool coordinator) {
     std::optional<ProgressBar> progress;
     if (coordinator) {
       progress.emplace(fmt::format("sweep: {} cells, {} tasks", job.plan.cells.size(), job.plan.tasks.size()),
                        static_cast<long>(job.plan.tasks.size()), true);
     }
     bool started = false;
-    SweepOutcome outcome;
-    try {
-      outcome = run_sweep(job, model, cluster, [&](std::size_t done, std::size_t) {
-        if (!started) progress->start_at(static_cast<long>(done));
-        started = true;
-        progress->update(static_cast<long>(done));
-      });
-    } catch (const std::exception& e) {
-      // A rank that fails after the others started must end them too.
-      if (cluster != nullptr && started) {
-        std::fprintf(stderr, "crux: %s\n", e.what());
-        cluster->abort(dynamic_cast<const InputError*>(&e) != nullptr ? 2 : 1);
-      }
-      throw;
-    }
+    const SweepOutcome outcome = run_sweep(job, model, cluster, [&](std::size_t done, std::size_t) {
+      if (!started) progress->start_at(static_cast<long>(done));
+      started = true;
+      progress->update(static_cast<long>(done));
+    });
     if (!outcome.coordinator) return;
     progress->finish();
-    const nlohmann::json summary = nlohmann::json::parse(read_input_file((job.folder / "summary.json").string(), "summary"));
+    const nlohmann::json summary =
+        nlohmann::json::parse(read_input_file((job.folder / "summary.json").string(), "summary"));
     std::cout << (json ? summary.dump(2) + "\n"
                        : sweep_text(summary, output, outcome.tasks, outcome.already_finished, outcome.seconds));
   }

@@ -212,8 +212,11 @@ toml::table parse_config(const std::string& text, const std::string& path) {
   }
 }
 
-// Keys whose list would not make a sweep: the body is loaded once, threads change no result.
-bool may_be_listed(const std::string& key) { return key != "experiment.urdf" && key != "experiment.threads"; }
+// Keys whose list would not make a sweep: the body is loaded once, threads change no
+// result, and runs is shorthand for walls and seeds_per_wall (list those).
+bool may_be_listed(const std::string& key) {
+  return key != "experiment.urdf" && key != "experiment.threads" && key != "experiment.runs";
+}
 
 }  // namespace
 
@@ -234,7 +237,7 @@ std::vector<ListedKey> listed_keys(const std::string& text, const std::string& p
       throw InputError(path, fmt::format("line {}: {} takes one value, not a list", line, field.key));
     }
     if (list->empty()) throw InputError(path, fmt::format("line {}: {} lists no value", line, field.key));
-    listed.push_back({field.key, list->size(), line});
+    listed.push_back({field.key, list->size()});
   }
   return listed;
 }

@@ -90,7 +90,6 @@ ConfigLines apply_config_text(const std::string& text, const std::string& source
 struct ListedKey {
   std::string key;
   std::size_t values = 0;
-  int line = 0;
 };
 std::vector<ListedKey> listed_keys(const std::string& text, const std::string& source, const ParameterSet& accepted);
 

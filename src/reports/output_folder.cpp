@@ -24,16 +24,30 @@ constexpr const char* kOutputNames[] = {"config.toml", "summary.json", "runs",  
                                         kCheckpointFile, kIncompleteMarker};
 
 void begin_output_folder(const fs::path& directory) {
+  remove_outputs(directory, kOutputNames);
+  make_output_directory(directory);
+  write_file_atomically(directory / kIncompleteMarker,
+                        "crux is writing this folder; if this file remains, the command was interrupted and the "
+                        "folder's outputs are incomplete.\n");
+}
+
+}  // namespace
+
+void remove_outputs(const fs::path& directory, std::span<const char* const> names) {
   std::error_code error;
-  for (const char* name : kOutputNames) {
+  for (const char* name : names) {
     fs::remove_all(directory / name, error);
     if (error) throw InputError((directory / name).string(), "cannot remove the earlier output: " + error.message());
   }
-  // Temporaries of a run killed by SIGKILL (other signals remove their own).
+  remove_temporaries(directory, names);
+}
+
+void remove_temporaries(const fs::path& directory, std::span<const char* const> names) {
+  std::error_code error;
   if (fs::is_directory(directory, error)) {
     for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
       const std::string name = entry.path().filename().string();
-      const bool temporary = std::any_of(std::begin(kOutputNames), std::end(kOutputNames), [&](const char* output) {
+      const bool temporary = std::any_of(names.begin(), names.end(), [&](const char* output) {
         const std::string prefix = std::string(output) + ".tmp.";
         return name.size() == prefix.size() + kTemporarySuffixDigits && name.rfind(prefix, 0) == 0 &&
                name.find_first_not_of("0123456789abcdef", prefix.size()) == std::string::npos;
@@ -41,18 +55,15 @@ void begin_output_folder(const fs::path& directory) {
       if (temporary) fs::remove(entry.path(), error);
     }
   }
-  make_output_directory(directory);
-  write_file_atomically(directory / kIncompleteMarker,
-                        "crux is writing this folder; if this file remains, the command was interrupted and the "
-                        "folder's outputs are incomplete.\n");
 }
+
+void remove_crux_outputs(const fs::path& directory) { remove_outputs(directory, kOutputNames); }
 
 void mark_complete(const fs::path& directory) {
   std::error_code error;
   fs::remove(directory / kIncompleteMarker, error);
 }
 
-}  // namespace
 
 void check_output_folder(const fs::path& directory, const std::vector<std::string>& inputs, bool overwrite) {
   if (directory.empty()) throw InputError("--output", "the output folder name is empty");

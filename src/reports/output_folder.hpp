@@ -3,6 +3,7 @@
 // so that an interrupted run leaves no half-written file.
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,17 @@ void check_output_folder(const std::filesystem::path& directory, const std::vect
 // else) and mark it incomplete with this file, which they remove once every output is
 // written: a folder that keeps it was interrupted.
 inline constexpr const char* kIncompleteMarker = "INCOMPLETE";
+
+// Removes the outputs `names` from `directory`, and their temporaries (a command killed
+// by SIGKILL leaves them); InputError naming an output that cannot be removed.
+void remove_outputs(const std::filesystem::path& directory, std::span<const char* const> names);
+// Only the temporaries of `names`: what a command killed by SIGKILL leaves (other
+// signals remove their own).
+void remove_temporaries(const std::filesystem::path& directory, std::span<const char* const> names);
+// ... every output of every crux command but crux sweep.
+void remove_crux_outputs(const std::filesystem::path& directory);
+// Removes the INCOMPLETE marker.
+void mark_complete(const std::filesystem::path& directory);
 
 // config.toml's text: the command's parameters, then the [provenance] table.
 std::string config_file_text(ExperimentConfig& config, const ParameterSet& accepted, const Provenance& provenance);

@@ -3,8 +3,11 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
+
+#include "common/input_error.hpp"
 
 namespace crux {
 
@@ -101,8 +104,20 @@ std::unique_ptr<WorkerLink> MpiCluster::worker_link(int threads) {
   return std::make_unique<MpiWorkerLink>();
 }
 
-void MpiCluster::abort(int exit_code) {
-  MPI_Abort(MPI_COMM_WORLD, exit_code);
+SweepCluster::Agreement MpiCluster::agree(bool ok, std::uint64_t job) {
+  int mine = ok ? 1 : 0, every = 0, coordinator = mine;
+  MPI_Allreduce(&mine, &every, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Bcast(&coordinator, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  unsigned long long low = job, high = job;
+  MPI_Allreduce(MPI_IN_PLACE, &low, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &high, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, MPI_COMM_WORLD);
+  return {every == 1, coordinator == 1, low == high};
+}
+
+void MpiCluster::fail(const std::exception& failure) {
+  std::fprintf(stderr, "crux: %s\n", failure.what());
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, dynamic_cast<const InputError*>(&failure) != nullptr ? 2 : 1);
   std::abort();
 }
 

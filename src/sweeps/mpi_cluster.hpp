@@ -23,12 +23,11 @@ class MpiCluster final : public SweepCluster {
 
   int rank() const override { return rank_; }
   int size() const override { return size_; }
+  Agreement agree(bool ok, std::uint64_t job) override;
   bool share_readiness(bool ready) override;
+  [[noreturn]] void fail(const std::exception& failure) override;
   std::unique_ptr<CoordinatorLink> coordinator_link() override;
   std::unique_ptr<WorkerLink> worker_link(int threads) override;
-
-  // Ends every process of the job (a failed task on any rank).
-  [[noreturn]] void abort(int exit_code);
 
  private:
   int rank_ = 0, size_ = 1;

@@ -17,35 +17,33 @@ namespace {
 constexpr const char* kSweepOutputs[] = {"sweep.toml", "walls", "runs", "results.csv", "summary.json", kPartialFolder,
                                          kIncompleteMarker};
 
-void remove_outputs(const fs::path& folder, bool every_output) {
-  std::error_code error;
-  for (const char* name : kSweepOutputs) {
-    if (!every_output && std::string(name) != kPartialFolder) continue;
-    fs::remove_all(folder / name, error);
-    if (error) throw InputError((folder / name).string(), "cannot remove the earlier output: " + error.message());
-  }
-}
-
 }  // namespace
 
 void prepare_sweep_folder(const fs::path& folder, const std::string& sweep_toml, const std::vector<std::string>& inputs,
                           bool overwrite) {
+  if (folder.empty()) throw InputError("--output", "the output folder name is empty");
   const fs::path recorded = folder / "sweep.toml";
   std::error_code error;
-  const bool resume = fs::is_regular_file(recorded, error) &&
-                      read_input_file(recorded.string(), "sweep file") == sweep_toml;
-  if (!resume) {
-    // The checks of every other output folder: not an input's, empty unless --overwrite.
-    check_output_folder(folder, inputs, overwrite);
-    if (fs::exists(folder, error)) remove_outputs(folder, true);
-  } else {
-    check_output_folder(folder, inputs, true);
+  // What a SIGKILL may have left half-written: temporaries of the sweep's own files.
+  remove_temporaries(folder, kSweepOutputs);
+  const bool recorded_exists = fs::is_regular_file(recorded, error);
+  const bool resume = recorded_exists && read_input_file(recorded.string(), "sweep file") == sweep_toml;
+  if (recorded_exists && !resume && !overwrite) {
+    throw InputError(folder.string(), "holds another sweep (its sweep.toml differs: other parameters, or another crux "
+                                      "build); choose another folder, or pass --overwrite to replace it");
   }
-  remove_outputs(folder, false);
+  check_output_folder(folder, inputs, overwrite || resume);
   make_output_directory(folder);
+  if (!resume) {
+    remove_crux_outputs(folder);
+    remove_outputs(folder, kSweepOutputs);
+    // sweep.toml first: a folder killed from then on resumes.
+    write_file_atomically(recorded, sweep_toml);
+  }
+  fs::remove_all(folder / kPartialFolder, error);
+  if (error) throw InputError((folder / kPartialFolder).string(), "cannot remove the half-written tasks: " + error.message());
   write_file_atomically(folder / kIncompleteMarker,
                         "crux is running the sweep of this folder; start the same command again to resume it.\n");
-  if (!resume) write_file_atomically(recorded, sweep_toml);
 }
 
 std::vector<bool> finished_tasks(const SweepPlan& plan, const fs::path& folder) {
@@ -57,7 +55,8 @@ std::vector<bool> finished_tasks(const SweepPlan& plan, const fs::path& folder) 
 
 void mark_sweep_complete(const fs::path& folder) {
   std::error_code error;
-  fs::remove(folder / kIncompleteMarker, error);
+  fs::remove_all(folder / kPartialFolder, error);
+  mark_complete(folder);
 }
 
 }  // namespace crux

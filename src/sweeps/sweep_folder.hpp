@@ -13,16 +13,18 @@
 namespace crux {
 
 // Checks `folder` before any work (InputError naming it): empty or missing, or holding
-// a sweep with the same `sweep_toml` (a resume); with `overwrite`, a different sweep's
-// or other crux outputs are removed first. Then clears .partial/, marks the folder
-// INCOMPLETE and writes sweep.toml. `inputs` may not lie inside the folder.
+// a sweep with the same `sweep_toml` (a resume); with `overwrite`, another sweep's or
+// another crux command's outputs are removed first. Then writes sweep.toml, clears
+// .partial/ and the temporaries a SIGKILL leaves, and marks the folder INCOMPLETE.
+// `inputs` may not lie inside the folder.
 void prepare_sweep_folder(const std::filesystem::path& folder, const std::string& sweep_toml,
                           const std::vector<std::string>& inputs, bool overwrite);
 
 // One flag per task of `plan`: whether its folder is in place.
 std::vector<bool> finished_tasks(const SweepPlan& plan, const std::filesystem::path& folder);
 
-// Removes the INCOMPLETE marker once results.csv and summary.json are written.
+// Removes .partial/ and the INCOMPLETE marker once results.csv and summary.json are
+// written.
 void mark_sweep_complete(const std::filesystem::path& folder);
 
 }  // namespace crux

@@ -14,11 +14,14 @@ SweepOutcome run_sweep(const SweepJob& job, const BodyModel& model, SweepCluster
   const auto started = std::chrono::steady_clock::now();
   SweepOutcome outcome;
   outcome.tasks = job.plan.tasks.size();
-  outcome.runs = job.plan.run_tasks();
   const TaskRunner run = [&](std::size_t task) { run_sweep_task(job.plan, task, model, job.folder); };
   if (cluster != nullptr && cluster->rank() != 0) {
     if (!cluster->share_readiness(false)) return outcome;
-    serve_sweep(job.threads, run, *cluster->worker_link(job.threads));
+    try {
+      serve_sweep(job.threads, run, *cluster->worker_link(job.threads));
+    } catch (const std::exception& e) {
+      cluster->fail(e);
+    }
     return outcome;
   }
   outcome.coordinator = true;
@@ -38,11 +41,16 @@ SweepOutcome run_sweep(const SweepJob& job, const BodyModel& model, SweepCluster
   SweepSchedule schedule(job.plan.tasks, finished);
   outcome.already_finished = schedule.finished_count();
   if (progress) progress(schedule.finished_count(), outcome.tasks);
-  coordinate_sweep(schedule, job.threads, run, others.get(),
-                   [&](std::size_t done) {
-                     if (progress) progress(done, outcome.tasks);
-                   });
-  write_sweep_results(job.plan, job.folder, job.provenance);
+  try {
+    coordinate_sweep(schedule, job.threads, run, others.get(),
+                     [&](std::size_t done) {
+                       if (progress) progress(done, outcome.tasks);
+                     });
+    write_sweep_results(job.plan, job.folder, job.provenance);
+  } catch (const std::exception& e) {
+    if (cluster != nullptr) cluster->fail(e);
+    throw;
+  }
   mark_sweep_complete(job.folder);
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return outcome;

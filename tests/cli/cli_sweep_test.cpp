@@ -91,7 +91,7 @@ TEST(CliSweep, BadListsAndAnotherSweepsFolderAreOneLineErrors) {
   outcome = run_crux(sweep_arguments(out, 2) + " --learning-alpha 0.2");
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
-  EXPECT_NE(outcome.err.find("already holds files"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("holds another sweep (its sweep.toml differs"), std::string::npos) << outcome.err;
 }
 
 TEST(CliSweep, ASweepKilledAtAnyMomentResumesToTheSameBytes) {
@@ -139,6 +139,40 @@ TEST(CliSweep, TwoMpiRanksWriteTheSingleProcessBytes) {
   std::ifstream log(out.string() + ".log");
   const std::string printed((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
   EXPECT_EQ(printed.find("crux sweep: 2 cells"), printed.rfind("crux sweep: 2 cells")) << "rank 0 alone prints";
+}
+
+// A task that fails on any rank ends the whole job with its error (no rank waits for it
+// forever), and ranks given different sweeps refuse to start.
+TEST(CliSweep, UnderMpirunAFailureEndsEveryRankAndDifferentSweepsAreRefused) {
+  ::setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
+  const fs::path out = testing::sweep_scratch("mpi-failure");
+  ASSERT_EQ(std::system((std::string(CRUX_BINARY) + " " + sweep_arguments(out, 2) + " > /dev/null 2>&1").c_str()), 0);
+  fs::remove_all(out / "runs/c0/control_1");
+  std::ofstream(out / "runs/c0/control_1") << "not a folder";
+  const std::string mpirun = "timeout 300 " + std::string(CRUX_MPIEXEC) + " --oversubscribe --allow-run-as-root ";
+  const std::string log = out.string() + ".log";
+  int status = std::system((mpirun + "-n 2 " + CRUX_BINARY + " " + sweep_arguments(out, 1) + " > " + log + " 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2) << "124: a rank hung";
+  std::ifstream failed(log);
+  const std::string failure((std::istreambuf_iterator<char>(failed)), std::istreambuf_iterator<char>());
+  EXPECT_NE(failure.find("control_1: cannot move the finished task here"), std::string::npos) << failure;
+
+  const fs::path other_file = testing::write_temporary("other-sweep.toml", "[experiment]\nwalls = 3\niterations = 1500\n"
+                                                       "plan = false\n[learning]\nepsilon = [0.1, 0.5]\n");
+  const fs::path fresh = testing::sweep_scratch("mpi-mismatch");
+  status = std::system((mpirun + "-n 1 " + CRUX_BINARY + " " + sweep_arguments(fresh, 1) + " : -n 1 " + CRUX_BINARY +
+                        " sweep --config " + other_file.string() + " --threads 1 -o " + fresh.string() + " > " + log +
+                        " 2>&1")
+                           .c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::ifstream refused(log);
+  const std::string mismatch((std::istreambuf_iterator<char>(refused)), std::istreambuf_iterator<char>());
+  EXPECT_NE(mismatch.find("crux: mpirun: another process of this sweep failed to read it, or was given another sweep"),
+            std::string::npos)
+      << mismatch;
+  EXPECT_FALSE(fs::exists(fresh)) << "nothing written";
 }
 
 }  // namespace

@@ -41,11 +41,40 @@ TEST(SweepFolder, TheSameSweepResumesAndADifferentOneIsRefusedUnlessOverwritten)
     FAIL() << "another sweep's folder was taken";
   } catch (const InputError& e) {
     EXPECT_EQ(e.source(), folder.string());
+    EXPECT_NE(std::string(e.what()).find("holds another sweep"), std::string::npos) << e.what();
   }
   touch(folder / "notes.txt");
   prepare_sweep_folder(folder, "# another sweep\n", {}, true);
   EXPECT_FALSE(fs::exists(folder / "runs")) << "the other sweep's outputs are replaced";
   EXPECT_TRUE(fs::exists(folder / "notes.txt")) << "what crux did not write stays";
+}
+
+// A SIGKILL can leave temporaries of the sweep's files: a resume removes them, and a
+// folder killed before its sweep.toml was in place starts afresh.
+TEST(SweepFolder, TemporariesOfAKilledSweepAreRemoved) {
+  const fs::path folder = testing::sweep_scratch("temporaries");
+  touch(folder / "sweep.toml.tmp.0123456789abcdef");
+  prepare_sweep_folder(folder, "# sweep\n", {}, false);
+  EXPECT_FALSE(fs::exists(folder / "sweep.toml.tmp.0123456789abcdef"));
+  touch(folder / "results.csv.tmp.00000000deadbeef");
+  touch(folder / kPartialFolder / "1.host.2/iterations.csv");
+  prepare_sweep_folder(folder, "# sweep\n", {}, false);
+  EXPECT_FALSE(fs::exists(folder / "results.csv.tmp.00000000deadbeef"));
+  mark_sweep_complete(folder);
+  EXPECT_EQ(testing::folder_contents(folder).size(), 1u) << "sweep.toml alone: no marker, no .partial/";
+  EXPECT_FALSE(fs::exists(folder / kPartialFolder));
+}
+
+TEST(SweepFolder, OverwritingReplacesAnotherCruxCommandsOutputs) {
+  const fs::path folder = testing::sweep_scratch("paper-folder");
+  touch(folder / "config.toml");
+  touch(folder / "figures/fig3.svg");
+  touch(folder / "notes.txt");
+  EXPECT_THROW(prepare_sweep_folder(folder, "# sweep\n", {}, false), InputError);
+  prepare_sweep_folder(folder, "# sweep\n", {}, true);
+  EXPECT_FALSE(fs::exists(folder / "config.toml"));
+  EXPECT_FALSE(fs::exists(folder / "figures"));
+  EXPECT_TRUE(fs::exists(folder / "notes.txt"));
 }
 
 TEST(SweepFolder, AFolderThatHoldsOtherFilesOrAnInputIsRefused) {

@@ -6,7 +6,7 @@ namespace crux {
 namespace {
 
 TEST(SweepGrid, CellsAreTheProductReadAsNestedLoops) {
-  const SweepGrid grid{{{"learning.alpha", 2, 3}, {"learning.epsilon", 3, 4}}};
+  const SweepGrid grid{{{"learning.alpha", 2}, {"learning.epsilon", 3}}};
   ASSERT_EQ(grid.cells(), 6u);
   // The first listed key varies slowest.
   const std::vector<std::pair<std::size_t, std::size_t>> expected{{0, 0}, {0, 1}, {0, 2}, {1, 0}, {1, 1}, {1, 2}};
