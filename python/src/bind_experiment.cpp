@@ -71,6 +71,10 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
                             const py::handle& seed_handle, const py::handle& q_grid_handle,
                             const py::handle& model_handle) {
   ExperimentConfig config = config_from_python(config_handle, kTransferParameters, "run_learning");
+  // The key is accepted so that a crux train folder's config.toml replays here.
+  if (config.checkpoint_every != 0) {
+    throw InputError("experiment.checkpoint_every", "crux.run_learning keeps no checkpoint (crux train does); leave it 0");
+  }
   const bool wall_given = !wall_handle.is_none();
   if (wall_given && (!config.wall_file.empty() || config.wall_seed)) {
     throw InputError("wall", "give the wall as wall or as config's wall.file or wall.seed, not both");

@@ -36,6 +36,9 @@ void assign(const ConfigField& field, const py::handle& value) {
   };
   const bool is_bool = py::isinstance<py::bool_>(value) || is_numpy_bool(value);
   const bool is_text = py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value);
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    fail("one value; only crux sweep takes lists");
+  }
   std::visit(
       [&](auto* target) {
         using T = std::remove_pointer_t<decltype(target)>;

@@ -88,6 +88,10 @@ def test_config_errors_name_the_key():
         crux.Wall.random(2**64)
     with pytest.raises(ValueError, match="^wall: give the wall as wall or as config's wall.file or wall.seed"):
         crux.run_learning(crux.Wall.random(8), {"wall.seed": 3})
+    with pytest.raises(ValueError, match="^experiment.checkpoint_every: crux.run_learning keeps no checkpoint"):
+        crux.run_learning(crux.Wall.random(1), {"experiment.checkpoint_every": 100})
+    with pytest.raises(ValueError, match="^config: learning.epsilon must be one value; only crux sweep takes lists$"):
+        crux.run_experiment({"learning": {"epsilon": [0.1, 0.2]}})
 
 
 def test_numpy_numbers_are_config_values(wall7):

@@ -121,7 +121,7 @@ void add_sweep_command(CLI::App& app) {
                 "Output folder; the same command started again there resumes the sweep")
       ->capture_default_str();
   s->add_flag("--json", sweep->json, "Print summary.json's contents instead of text");
-  s->add_flag("--overwrite", sweep->overwrite, "Replace a different sweep's outputs in the output folder");
+  s->add_flag("--overwrite", sweep->overwrite, "Replace another sweep's, or another crux command's, outputs in the output folder");
   sweep->binding.bind(s);
   sweep->binding.option("experiment.runs")
       ->excludes(sweep->binding.option("experiment.walls"))
