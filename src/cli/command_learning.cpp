@@ -99,6 +99,9 @@ struct SingleRunCommand {
     const std::string identity = config_file_text(config, identity_keys, provenance);
     const std::filesystem::path checkpoint_file = std::filesystem::path(output) / kCheckpointFile;
     RunCheckpoints checkpoints{config.checkpoint_every, {}, {}, checkpoint_file.string()};
+    // What a SIGKILL left half-written is no output: a folder killed while it wrote its
+    // first checkpoint starts again.
+    remove_crux_temporaries(output);
     if (!overwrite) checkpoints.resume = read_checkpoint(checkpoint_file, identity).value_or("");
     check_output_folder(output, inputs_of(config, binding), overwrite || !checkpoints.resume.empty());
     checkpoints.save = [&](std::string state, int) {

@@ -67,7 +67,6 @@ struct SweepCommand {
   }
 
   std::pair<SweepJob, BodyModel> prepare() {
-    if (output.empty()) throw InputError("--output", "the output folder name is empty");
     const SweepGrid grid{binding.listed_keys()};
     SweepDefinition definition = define_sweep(grid, [&](const ListChoice& choice) { return binding.resolve(choice); });
     const ExperimentConfig& first = definition.plan.cells.front().config;
@@ -76,7 +75,7 @@ struct SweepCommand {
     }
     BodyModel model = load_configured_body(first);
     SweepJob job{std::move(definition.plan),
-                 std::filesystem::absolute(output).lexically_normal(),
+                 output.empty() ? std::filesystem::path() : std::filesystem::absolute(output).lexically_normal(),
                  std::move(definition.sweep_toml),
                  {first.urdf, binding.config_path()},
                  provenance_json(definition.provenance),

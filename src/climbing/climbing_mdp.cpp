@@ -92,24 +92,27 @@ void ClimbingMdp::save_state(CheckpointWriter& out) const {
   reacher_.save_state(out);
   out.value(configuration_.holds);
   out.value<std::int64_t>(left_hold_);
-  out.values(posture_.data(), static_cast<std::size_t>(posture_.size()));
+  save_posture(out, posture_);
 }
 
 void ClimbingMdp::load_state(CheckpointReader& in) {
   reacher_.load_state(in);
   configuration_.holds = in.value<decltype(configuration_.holds)>();
-  for (const int hold : configuration_.holds) {
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const int hold = configuration_.holds[limb];
     if (hold != kFree && (hold < 0 || hold >= wall_.hold_count())) in.fail();
+    for (int other = 0; other < limb; ++other) {
+      if (hold != kFree && configuration_.holds[other] == hold) in.fail();
+    }
   }
   if (configuration_.free_count() != 1) in.fail();
   const std::int64_t left = in.value<std::int64_t>();
   if (left != kFree && (left < 0 || left >= wall_.hold_count())) in.fail();
   left_hold_ = static_cast<int>(left);
-  const std::vector<double> posture = in.vector<double>();
-  if (posture.size() != static_cast<std::size_t>(Posture::SizeAtCompileTime)) in.fail();
-  posture_ = Eigen::Map<const Posture>(posture.data());
+  posture_ = load_posture(in);
   // A step describes the state with the body placed at the posture it moved to.
   describe(reacher_.place(posture_));
+  if (candidate_count_ == 0) in.fail();  // every state a run reaches offers a hold
 }
 
 }  // namespace crux

@@ -39,4 +39,8 @@ class PostureCache {
   std::unordered_set<std::uint64_t> unreachable_;
 };
 
+// A posture's doubles in a checkpoint; load_posture fails the reader on another size.
+void save_posture(CheckpointWriter& out, const Posture& posture);
+Posture load_posture(CheckpointReader& in);
+
 }  // namespace crux

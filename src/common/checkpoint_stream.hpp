@@ -4,6 +4,7 @@
 // so a resumed run continues from bit-identical state. Each class that a run carries
 // writes and reads its own state with these.
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -32,7 +33,6 @@ class CheckpointWriter {
   }
   void text(std::string_view s) { values(s.data(), s.size()); }
 
-  const std::string& bytes() const { return bytes_; }
   std::string take() { return std::move(bytes_); }
 
  private:
@@ -56,7 +56,7 @@ class CheckpointReader {
     requires std::is_trivially_copyable_v<T>
   std::vector<T> vector() {
     const std::uint64_t count = value<std::uint64_t>();
-    if (count > (bytes_.size() - at_) / (sizeof(T) == 0 ? 1 : sizeof(T))) fail();
+    if (count > (bytes_.size() - at_) / sizeof(T)) fail();
     std::vector<T> v(count);
     if (count > 0) std::memcpy(v.data(), take(count * sizeof(T)), count * sizeof(T));
     return v;
@@ -65,8 +65,13 @@ class CheckpointReader {
     const std::vector<char> chars = vector<char>();
     return {chars.begin(), chars.end()};
   }
+  // A bool written as one byte: anything but 0 or 1 is not crux's.
+  bool flag() {
+    const auto byte = value<std::uint8_t>();
+    if (byte > 1) fail();
+    return byte == 1;
+  }
   bool at_end() const { return at_ == bytes_.size(); }
-  const std::string& source() const { return source_; }
   [[noreturn]] void fail() const;
 
  private:
@@ -80,5 +85,15 @@ class CheckpointReader {
   std::size_t at_ = 0;
   std::string source_;
 };
+
+// The keys of a hash map in increasing order: a checkpoint does not depend on hashing.
+template <typename Map>
+std::vector<typename Map::key_type> sorted_keys(const Map& map) {
+  std::vector<typename Map::key_type> keys;
+  keys.reserve(map.size());
+  for (const auto& entry : map) keys.push_back(entry.first);
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
 
 }  // namespace crux

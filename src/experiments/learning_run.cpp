@@ -37,17 +37,13 @@ constexpr std::uint64_t kStateVersion = 1;
 
 void save_postures(CheckpointWriter& out, const std::vector<Posture>& postures) {
   out.value<std::uint64_t>(postures.size());
-  for (const Posture& p : postures) out.values(p.data(), static_cast<std::size_t>(p.size()));
+  for (const Posture& p : postures) save_posture(out, p);
 }
 
 std::vector<Posture> load_postures(CheckpointReader& in) {
   const std::uint64_t count = in.value<std::uint64_t>();
   std::vector<Posture> postures;
-  for (std::uint64_t i = 0; i < count; ++i) {
-    const std::vector<double> values = in.vector<double>();
-    if (values.size() != static_cast<std::size_t>(Posture::SizeAtCompileTime)) in.fail();
-    postures.emplace_back(Eigen::Map<const Posture>(values.data()));
-  }
+  for (std::uint64_t i = 0; i < count; ++i) postures.push_back(load_posture(in));
   return postures;
 }
 
@@ -63,14 +59,14 @@ void save_records(CheckpointWriter& out, const std::vector<IterationRecord>& rec
     out.value(r.episode);
     out.value(static_cast<std::int32_t>(r.regime));
     out.value(r.hold_id);
-    out.value(r.success);
+    out.value<std::uint8_t>(r.success ? 1 : 0);
     out.value(r.root_rise_m);
     out.value(r.reward);
     out.value(r.grid_state);
     out.value(r.tile);
     out.value(r.tile_offset_y);
     out.value(r.tile_offset_z);
-    out.value(r.back_to_left_hold);
+    out.value<std::uint8_t>(r.back_to_left_hold ? 1 : 0);
   }
 }
 
@@ -84,14 +80,14 @@ void load_records(CheckpointReader& in, std::vector<IterationRecord>& records) {
     if (regime < 0 || regime >= kRegimeCount) in.fail();
     r.regime = static_cast<Regime>(regime);
     r.hold_id = in.value<int>();
-    r.success = in.value<bool>();
+    r.success = in.flag();
     r.root_rise_m = in.value<double>();
     r.reward = in.value<double>();
     r.grid_state = in.value<std::uint32_t>();
     r.tile = in.value<ActionCode>();
     r.tile_offset_y = in.value<float>();
     r.tile_offset_z = in.value<float>();
-    r.back_to_left_hold = in.value<bool>();
+    r.back_to_left_hold = in.flag();
     records.push_back(r);
   }
 }
@@ -115,10 +111,14 @@ LoopState load_state(const RunCheckpoints& checkpoints, int iterations, RunResul
   CheckpointReader in(checkpoints.resume, checkpoints.source);
   if (in.value<std::uint64_t>() != kStateVersion) in.fail();
   const LoopState loop = in.value<LoopState>();
-  if (loop.iteration < 0 || loop.iteration > iterations || loop.episode_start > loop.iteration) in.fail();
+  if (loop.iteration < 0 || loop.iteration > iterations || loop.episode < 0 || loop.episode_start < 0 ||
+      loop.episode_start > loop.iteration) {
+    in.fail();
+  }
   load_records(in, result.iterations);
   if (result.iterations.size() != static_cast<std::size_t>(loop.iteration)) in.fail();
   result.episode_lengths = in.vector<int>();
+  if (result.episode_lengths.size() != static_cast<std::size_t>(loop.episode)) in.fail();
   result.last_climb = load_postures(in);
   climb = load_postures(in);
   agent.load_state(in);

@@ -36,21 +36,24 @@ std::span<const std::size_t> DeterministicModel::predecessors(StateCode wall_sta
 }
 
 void DeterministicModel::save_state(CheckpointWriter& out) const {
-  out.value(track_predecessors_);
+  out.value<std::uint8_t>(track_predecessors_ ? 1 : 0);
   out.vector(entries_);
   // Predecessor lists in state order: the file does not depend on the hash map's.
-  std::vector<StateCode> states;
-  for (const auto& [state, unused] : predecessors_) states.push_back(state);
-  std::sort(states.begin(), states.end());
+  const std::vector<StateCode> states = sorted_keys(predecessors_);
   out.vector(states);
   for (const StateCode state : states) out.vector(predecessors_.at(state));
 }
 
-void DeterministicModel::load_state(CheckpointReader& in) {
-  if (in.value<bool>() != track_predecessors_) in.fail();
+void DeterministicModel::load_state(CheckpointReader& in, int wall_actions, int grid_actions) {
+  if (in.flag() != track_predecessors_) in.fail();
   entries_ = in.vector<Experience>();
   index_.clear();
   for (std::size_t i = 0; i < entries_.size(); ++i) {
+    const Experience& e = entries_[i];
+    if (e.wall_action < 0 || e.wall_action >= wall_actions || e.grid_action < kNoAction ||
+        e.grid_action >= grid_actions) {
+      in.fail();
+    }
     if (!index_.emplace(PairKey{entries_[i].wall_state, entries_[i].wall_action}, i).second) in.fail();
   }
   predecessors_.clear();

@@ -39,7 +39,8 @@ class DeterministicModel {
 
   // Every pair and predecessor list, for a run's checkpoint (load_state replaces them).
   void save_state(CheckpointWriter& out) const;
-  void load_state(CheckpointReader& in);
+  // Actions outside [0, wall_actions) or [kNoAction, grid_actions) fail the reader.
+  void load_state(CheckpointReader& in, int wall_actions, int grid_actions);
 
  private:
   struct PairKey {

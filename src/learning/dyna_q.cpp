@@ -105,16 +105,21 @@ namespace {
 
 // A state -> actions map in state order, so that the file does not depend on hashing.
 void save_actions(CheckpointWriter& out, const std::unordered_map<StateCode, std::vector<ActionCode>>& known) {
-  std::vector<StateCode> states;
-  for (const auto& [state, unused] : known) states.push_back(state);
-  std::sort(states.begin(), states.end());
+  const std::vector<StateCode> states = sorted_keys(known);
   out.vector(states);
   for (const StateCode state : states) out.vector(known.at(state));
 }
 
-void load_actions(CheckpointReader& in, std::unordered_map<StateCode, std::vector<ActionCode>>& known) {
+void load_actions(CheckpointReader& in, std::unordered_map<StateCode, std::vector<ActionCode>>& known,
+                  int action_count) {
   known.clear();
-  for (const StateCode state : in.vector<StateCode>()) known[state] = in.vector<ActionCode>();
+  for (const StateCode state : in.vector<StateCode>()) {
+    std::vector<ActionCode> actions = in.vector<ActionCode>();
+    for (const ActionCode a : actions) {
+      if (a < 0 || a >= action_count) in.fail();
+    }
+    known[state] = std::move(actions);
+  }
 }
 
 }  // namespace
@@ -135,10 +140,10 @@ void DynaQAgent::load_state(CheckpointReader& in) {
   planning_updates_ = in.value<std::uint64_t>();
   q_wall_.load_state(in);
   q_grid_.load_state(in);
-  model_.load_state(in);
-  queue_.load_state(in);
-  load_actions(in, wall_actions_);
-  load_actions(in, grid_actions_);
+  model_.load_state(in, q_wall_.action_count(), q_grid_.action_count());
+  queue_.load_state(in, model_.size());
+  load_actions(in, wall_actions_, q_wall_.action_count());
+  load_actions(in, grid_actions_, q_grid_.action_count());
 }
 
 }  // namespace crux

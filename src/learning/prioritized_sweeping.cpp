@@ -60,13 +60,26 @@ void PriorityQueue::save_state(CheckpointWriter& out) const {
   out.value<std::uint64_t>(queued_);
 }
 
-void PriorityQueue::load_state(CheckpointReader& in) {
+void PriorityQueue::load_state(CheckpointReader& in, std::size_t entries) {
   heap_ = in.vector<Item>();
   priority_of_ = in.vector<double>();
   queued_ = in.value<std::uint64_t>();
+  if (priority_of_.size() > entries) in.fail();
   for (const Item& item : heap_) {
     if (item.entry >= priority_of_.size()) in.fail();
   }
+  const auto live = static_cast<std::size_t>(
+      std::count_if(priority_of_.begin(), priority_of_.end(), [](double p) { return p >= 0.0; }));
+  if (live != queued_) in.fail();
+  // Every live priority must be in the heap, or pop() would run past its end.
+  std::vector<bool> in_heap(priority_of_.size(), false);
+  for (const Item& item : heap_) {
+    if (item.priority == priority_of_[item.entry]) in_heap[item.entry] = true;
+  }
+  for (std::size_t e = 0; e < priority_of_.size(); ++e) {
+    if (priority_of_[e] >= 0.0 && !in_heap[e]) in.fail();
+  }
+  if (!std::is_heap(heap_.begin(), heap_.end(), lower)) in.fail();
 }
 
 }  // namespace crux

@@ -27,7 +27,8 @@ class PriorityQueue {
   // The heap as it is (stale items included, since they decide later rebuilds), for a
   // run's checkpoint; load_state replaces this queue.
   void save_state(CheckpointWriter& out) const;
-  void load_state(CheckpointReader& in);
+  // Entries must be below `entries` (the model's size), or the reader fails.
+  void load_state(CheckpointReader& in, std::size_t entries);
 
  private:
   struct Item {

@@ -18,10 +18,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Everything a crux command writes into an output folder.
+// Everything a crux command writes into an output folder but a long run's checkpoint,
+// which stays until the folder is complete: a kill while the folder is written leaves
+// it to resume from.
 constexpr const char* kOutputNames[] = {"config.toml", "summary.json", "runs",      "walls",    "figures",
                                         "iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv", "wall.json",
-                                        kCheckpointFile, kIncompleteMarker};
+                                        kIncompleteMarker};
+constexpr const char* kCheckpointOnly[] = {kCheckpointFile};
+
+// Complete, then without a checkpoint: a kill between the two resumes from it again.
+void finish_output_folder(const fs::path& directory) {
+  mark_complete(directory);
+  remove_outputs(directory, kCheckpointOnly);
+}
 
 void begin_output_folder(const fs::path& directory) {
   remove_outputs(directory, kOutputNames);
@@ -57,7 +66,15 @@ void remove_temporaries(const fs::path& directory, std::span<const char* const> 
   }
 }
 
-void remove_crux_outputs(const fs::path& directory) { remove_outputs(directory, kOutputNames); }
+void remove_crux_outputs(const fs::path& directory) {
+  remove_outputs(directory, kOutputNames);
+  remove_outputs(directory, kCheckpointOnly);
+}
+
+void remove_crux_temporaries(const fs::path& directory) {
+  remove_temporaries(directory, kOutputNames);
+  remove_temporaries(directory, kCheckpointOnly);
+}
 
 void mark_complete(const fs::path& directory) {
   std::error_code error;
@@ -119,18 +136,19 @@ void write_experiment_folder(const fs::path& directory, const ExperimentResult& 
   write_file_atomically(directory / "summary.json", summary.dump(2) + "\n");
   // Drawn from the files just written, as `crux figures` redraws them.
   write_paper_figure_files(directory);
-  mark_complete(directory);
+  finish_output_folder(directory);
 }
 
 void write_checkpoint(const fs::path& directory, const std::string& bytes) {
   make_output_directory(directory);
+  // The checkpoint first: a folder holds the marker only once it can resume.
+  write_file_atomically(directory / kCheckpointFile, bytes);
   std::error_code error;
   if (!fs::exists(directory / kIncompleteMarker, error)) {
     write_file_atomically(directory / kIncompleteMarker,
                           "crux is running the run of this folder; the same command started again resumes it from "
                           "checkpoint.bin.\n");
   }
-  write_file_atomically(directory / kCheckpointFile, bytes);
 }
 
 void write_run_folder(const fs::path& directory, const ExperimentResult& result, const BodyModel& model,
@@ -143,7 +161,7 @@ void write_run_folder(const fs::path& directory, const ExperimentResult& result,
   write_file_atomically(directory / "config.toml", config_toml);
   save_wall((directory / "wall.json").string(), result.walls.front().wall);
   write_file_atomically(directory / "summary.json", summary.dump(2) + "\n");
-  mark_complete(directory);
+  finish_output_folder(directory);
 }
 
 }  // namespace crux

@@ -32,8 +32,9 @@ void remove_outputs(const std::filesystem::path& directory, std::span<const char
 // Only the temporaries of `names`: what a command killed by SIGKILL leaves (other
 // signals remove their own).
 void remove_temporaries(const std::filesystem::path& directory, std::span<const char* const> names);
-// ... every output of every crux command but crux sweep.
+// ... every output of every crux command but crux sweep, or only their temporaries.
 void remove_crux_outputs(const std::filesystem::path& directory);
+void remove_crux_temporaries(const std::filesystem::path& directory);
 // Removes the INCOMPLETE marker.
 void mark_complete(const std::filesystem::path& directory);
 

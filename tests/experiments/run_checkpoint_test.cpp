@@ -28,6 +28,18 @@ TEST(RunCheckpoint, AForeignOrTruncatedFileIsRefused) {
   EXPECT_THROW(read_checkpoint(foreign, "identity"), InputError);
   const auto truncated = testing::write_temporary("truncated.bin", whole.substr(0, whole.size() - 2));
   EXPECT_THROW(read_checkpoint(truncated, "identity"), InputError);
+  // Any flipped byte of the state is caught by the digest before the state is read.
+  for (std::size_t at = whole.size() - 5; at < whole.size(); ++at) {
+    std::string damaged = whole;
+    damaged[at] = static_cast<char>(damaged[at] ^ 0x10);
+    const auto file = testing::write_temporary("damaged.bin", damaged);
+    try {
+      read_checkpoint(file, "identity");
+      FAIL() << "a flipped byte at " << at << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("damaged"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -148,7 +148,7 @@ TEST(DeterministicModel, ACheckpointRestoresPairsIndicesAndPredecessors) {
   const std::string bytes = out.take();
   DeterministicModel restored(true);
   CheckpointReader in(bytes, "test");
-  restored.load_state(in);
+  restored.load_state(in, 2, 2);
   EXPECT_TRUE(in.at_end());
   ASSERT_EQ(restored.size(), 2u);
   EXPECT_EQ(restored.at(0).next_wall_state, 3u);
@@ -159,7 +159,10 @@ TEST(DeterministicModel, ACheckpointRestoresPairsIndicesAndPredecessors) {
   EXPECT_EQ(restored.record({5, 5, 0, 0, -1.0, 1, 1}), 2u);
   DeterministicModel untracked(false);
   CheckpointReader other(bytes, "test");
-  EXPECT_ANY_THROW(untracked.load_state(other));
+  EXPECT_ANY_THROW(untracked.load_state(other, 2, 2));
+  DeterministicModel narrower(true);
+  CheckpointReader narrow(bytes, "test");
+  EXPECT_ANY_THROW(narrower.load_state(narrow, 1, 2)) << "wall action 1 of a 1-action wall";
 }
 
 }  // namespace

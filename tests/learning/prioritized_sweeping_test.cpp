@@ -122,7 +122,7 @@ TEST(PrioritizedSweeping, ACheckpointedQueuePopsInTheSameOrder) {
   const std::string bytes = out.take();
   PriorityQueue restored;
   CheckpointReader in(bytes, "test");
-  restored.load_state(in);
+  restored.load_state(in, 40);
   EXPECT_TRUE(in.at_end());
   ASSERT_EQ(restored.size(), queue.size());
   queue.push(99, 0.25);
