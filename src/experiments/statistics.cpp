@@ -238,7 +238,11 @@ std::vector<double> holm_adjusted(const std::vector<double>& p_values) {
   const std::size_t m = p_values.size();
   std::vector<std::size_t> order(m);
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p_values[a] < p_values[b]; });
+  // Ties keep their input order (a plain sort with the index as tie-break: libstdc++'s
+  // stable_sort buffer trips AddressSanitizer's alloc-dealloc check).
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return p_values[a] < p_values[b] || (p_values[a] == p_values[b] && a < b);
+  });
   std::vector<double> adjusted(m);
   double running = 0.0;
   for (std::size_t rank = 0; rank < m; ++rank) {
