@@ -1,6 +1,8 @@
 // crux sweep: crux paper's experiment over every combination of listed parameter values,
 // on threads or across MPI processes (mpirun -n N crux sweep ...), resumable.
 
+#include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -28,6 +30,19 @@ namespace crux::cli {
 
 namespace {
 
+// Writes `failure` as main would, and returns its exit code.
+int report(const std::exception_ptr& failure) {
+  try {
+    std::rethrow_exception(failure);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "crux: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "crux: internal error: %s\n", e.what());
+    return 1;
+  }
+}
+
 // The first 64 bits of the sweep file's SHA-256: processes that hold different sweeps
 // (config files, flags or crux builds) are told apart.
 std::uint64_t job_digest(const std::string& sweep_toml) { return std::stoull(sha256_hex(sweep_toml).substr(0, 16), nullptr, 16); }
@@ -52,13 +67,20 @@ struct SweepCommand {
     }
     if (cluster) {
       const SweepCluster::Agreement agreed = cluster->agree(!failure, failure ? 0 : job_digest(job->sweep_toml));
-      // Every process meets the same bad input: process 0 alone reports it.
-      if (failure && (coordinator || agreed.coordinator_ok)) std::rethrow_exception(failure);
-      if (failure) throw CLI::RuntimeError(2);
       if (!agreed.every_ok || !agreed.same_job) {
-        if (!coordinator) throw CLI::RuntimeError(2);
-        throw InputError("mpirun", "another process of this sweep failed to read it, or was given another sweep (its "
-                                   "config file, flags or crux build differ)");
+        // Every process meets the same bad input: process 0 alone reports it, or the
+        // processes that failed where it did not. All wait until it is written: mpirun
+        // ends the job at the first process that exits with an error.
+        int code = 2;
+        if (failure && (coordinator || agreed.coordinator_ok)) {
+          code = report(failure);
+        } else if (!failure && coordinator) {
+          report(std::make_exception_ptr(
+              InputError("mpirun", "another process of this sweep failed to read it, or was given another sweep (its "
+                                   "config file, flags or crux build differ)")));
+        }
+        cluster->barrier();
+        throw CLI::RuntimeError(code);
       }
     } else if (failure) {
       std::rethrow_exception(failure);

@@ -90,6 +90,8 @@ bool MpiCluster::share_readiness(bool ready) {
   return value == 1;
 }
 
+void MpiCluster::barrier() { MPI_Barrier(MPI_COMM_WORLD); }
+
 std::unique_ptr<CoordinatorLink> MpiCluster::coordinator_link() {
   std::vector<int> slots(static_cast<std::size_t>(size_));
   int mine = 0;

@@ -25,6 +25,7 @@ class MpiCluster final : public SweepCluster {
   int size() const override { return size_; }
   Agreement agree(bool ok, std::uint64_t job) override;
   bool share_readiness(bool ready) override;
+  void barrier() override;
   [[noreturn]] void fail(const std::exception& failure) override;
   std::unique_ptr<CoordinatorLink> coordinator_link() override;
   std::unique_ptr<WorkerLink> worker_link(int threads) override;

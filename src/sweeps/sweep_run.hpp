@@ -35,6 +35,8 @@ class SweepCluster {
   virtual Agreement agree(bool ok, std::uint64_t job) = 0;
   // Process 0's `ready`, on every process.
   virtual bool share_readiness(bool ready) = 0;
+  // Returns once every process has called it.
+  virtual void barrier() = 0;
   // Ends every process of the job once one has failed after the work started (the
   // others would wait for it forever), reporting `failure` on stderr.
   [[noreturn]] virtual void fail(const std::exception& failure) = 0;
