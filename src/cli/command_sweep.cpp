@@ -18,7 +18,6 @@
 #include "cli/parameter_binding.hpp"
 #include "cli/progress_bar.hpp"
 #include "common/input_error.hpp"
-#include "common/input_file.hpp"
 #include "common/sha256.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/sweep_description.hpp"
@@ -123,10 +122,9 @@ struct SweepCommand {
     });
     if (!outcome.coordinator) return;
     progress->finish();
-    const nlohmann::json summary =
-        nlohmann::json::parse(read_input_file((job.folder / "summary.json").string(), "summary"));
-    std::cout << (json ? summary.dump(2) + "\n"
-                       : sweep_text(summary, output, outcome.tasks, outcome.already_finished, outcome.seconds));
+    std::cout << (json ? outcome.summary.dump(2) + "\n"
+                       : sweep_text(nlohmann::json(outcome.summary), output, outcome.tasks, outcome.already_finished,
+                                    outcome.seconds));
   }
 };
 

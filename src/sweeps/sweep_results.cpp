@@ -66,7 +66,8 @@ constexpr const char* kRunFacts[] = {"episodes",        "take_off_iteration",   
 
 }  // namespace
 
-void write_sweep_results(const SweepPlan& plan, const fs::path& folder, const nlohmann::ordered_json& provenance) {
+nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path& folder,
+                                           const nlohmann::ordered_json& provenance) {
   // Metric columns: every metric any cell's windows define, in order of appearance.
   std::vector<std::string> metric_names;
   for (const SweepCell& cell : plan.cells) {
@@ -160,6 +161,7 @@ void write_sweep_results(const SweepPlan& plan, const fs::path& folder, const nl
   summary["cells"] = cells;
   write_file_atomically(folder / "results.csv", csv);
   write_file_atomically(folder / "summary.json", summary.dump(2) + "\n");
+  return summary;
 }
 
 }  // namespace crux

@@ -16,7 +16,8 @@ namespace crux {
 
 // Writes results.csv and summary.json into `folder`, whose task folders must all be in
 // place; `provenance` is summary.json's (the sweep's inputs and crux build).
-void write_sweep_results(const SweepPlan& plan, const std::filesystem::path& folder,
-                         const nlohmann::ordered_json& provenance);
+// Returns summary.json's contents.
+nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const std::filesystem::path& folder,
+                                           const nlohmann::ordered_json& provenance);
 
 }  // namespace crux

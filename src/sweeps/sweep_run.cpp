@@ -46,7 +46,7 @@ SweepOutcome run_sweep(const SweepJob& job, const BodyModel& model, SweepCluster
                      [&](std::size_t done) {
                        if (progress) progress(done, outcome.tasks);
                      });
-    write_sweep_results(job.plan, job.folder, job.provenance);
+    outcome.summary = write_sweep_results(job.plan, job.folder, job.provenance);
   } catch (const std::exception& e) {
     if (cluster != nullptr) cluster->fail(e);
     throw;

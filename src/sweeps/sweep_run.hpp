@@ -59,6 +59,7 @@ struct SweepOutcome {
   bool coordinator = false;  // this process wrote the results
   std::size_t tasks = 0, already_finished = 0;  // of the plan; kept from an earlier start
   double seconds = 0.0;
+  nlohmann::ordered_json summary;  // summary.json's contents (the coordinator's)
 };
 
 // Progress: finished tasks out of all of them (process 0 only).
