@@ -46,7 +46,7 @@ void ClimbingMdp::describe(const BodyData& body) {
   for (std::size_t i = 0; i < candidate_count_; ++i) {
     const Eigen::Vector3d& position = wall_.holds[possible_[i]].position;
     const int tile = placement_.tile_of(position);
-    candidates_[i] = {possible_[i], tile == kOutsideGrid ? kNoAction : tile, false};
+    candidates_[i] = {possible_[i], tile == kOutsideGrid ? kNoAction : tile, false, possible_[i] == left_hold_};
     if (tile == kOutsideGrid) continue;
     // Grid -> wall: the possible hold nearest the tile's centre (first listed on ties).
     const double distance = placement_.squared_distance_to_centre(tile, position);

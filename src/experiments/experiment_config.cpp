@@ -48,6 +48,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        "Iterations between checkpoints of a run (0: none); the same command started again resumes from the last",
        &c.checkpoint_every},
       {"experiment.q_grid", "Q_grid file (q_grid.bin of a training run) that transfer starts from", &c.q_grid},
+      {"experiment.transfer",
+       "How transfer uses its Q_grid (docs/TRANSFER.md): paper (Algorithm 3), informed, prior, seeded or shaping; control "
+       "follows the same rule from an empty Q_grid",
+       &c.transfer},
       {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha},
       {"learning.gamma", "Discount factor gamma", &l.dyna.rates.gamma},
       {"learning.epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon},
@@ -327,6 +331,12 @@ void finalize_config(ExperimentConfig& config) {
                      fmt::format("unknown planner '{}' (expected uniform or prioritized)", config.planner));
   }
   s.learning.dyna.planner = *planner;
+  const auto transfer = parse_transfer_mode(config.transfer);
+  if (!transfer) {
+    throw InputError("experiment.transfer",
+                     fmt::format("unknown transfer mode '{}' (expected {})", config.transfer, transfer_mode_names()));
+  }
+  s.learning.dyna.transfer = *transfer;
   const auto reading = parse_reading(config.reading);
   if (!reading) throw InputError("filter.reading", fmt::format("unknown reading '{}'", config.reading));
   s.learning.climbing.filter.feet_above_hands = *reading;

@@ -33,6 +33,7 @@ struct ExperimentConfig {
   int beginning = 0;
   std::string solver = "fast";
   std::string planner = planner_name(Planner::Uniform);
+  std::string transfer = transfer_mode_name(TransferMode::Paper);
   std::string reading = reading_name(FilterParameters{}.feet_above_hands);
   // ik-compare: its climbing-like queries, and the solver whose reached postures start
   // the walk's next queries (parsed into compare_walk_solver_kind).

@@ -9,13 +9,13 @@ namespace crux {
 // One learning run on one wall (crux train); transfer adds the Q_grid it starts from.
 inline const ParameterSet kTrainParameters{{"experiment.urdf", "experiment.seed", "experiment.iterations",
                                             "experiment.beginning", "experiment.threshold_length",
-                                            "experiment.greedy_cap", "experiment.checkpoint_every", "learning", "reward",
-                                            "ik", "filter", "grid", "wall"},
+                                            "experiment.greedy_cap", "experiment.checkpoint_every", "experiment.transfer",
+                                            "learning", "reward", "ik", "filter", "grid", "wall"},
                                            {"wall.name", "wall.count"}};
 inline const ParameterSet kTransferParameters{{"experiment.urdf", "experiment.seed", "experiment.iterations",
                                                "experiment.beginning", "experiment.threshold_length",
                                                "experiment.greedy_cap", "experiment.checkpoint_every", "experiment.q_grid",
-                                               "learning", "reward", "ik", "filter", "grid", "wall"},
+                                               "experiment.transfer", "learning", "reward", "ik", "filter", "grid", "wall"},
                                               {"wall.name", "wall.count"}};
 // The paper's experiment (crux paper): its walls are drawn from the experiment seed.
 inline const ParameterSet kPaperParameters{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"},

@@ -49,21 +49,28 @@ long best_candidate(std::span<const ActionCandidate> candidates, Value value, Co
 
 ActionChoice select_action(const QTable& q_wall, const QTable& q_grid, const StateCouple& state,
                            std::span<const ActionCandidate> candidates, double epsilon,
-                           const SelectionStreams& streams, std::uint64_t iteration) {
+                           const SelectionStreams& streams, std::uint64_t iteration, const SelectionRule& rule) {
   if (candidates.empty()) throw std::invalid_argument("select_action: a state without possible actions");
   const long w = best_candidate(
       candidates, [&](const ActionCandidate& c) { return q_wall.value(state.wall, c.wall); },
       [](const ActionCandidate& c) { return c.wall; }, [](const ActionCandidate&) { return true; },
       streams.tie_break, iteration, kWallTable);
-  if (streams.epsilon.uniform(iteration, 0) > epsilon && q_wall.taken(state.wall, candidates[w].wall)) {
+  if (streams.epsilon.uniform(iteration, 0) > epsilon &&
+      (!rule.wall_requires_taken || q_wall.taken(state.wall, candidates[w].wall))) {
     return {static_cast<std::size_t>(w), Regime::WGreedy};
   }
-  const long g = best_candidate(
-      candidates, [&](const ActionCandidate& c) { return q_grid.value(state.grid, c.grid); },
-      [](const ActionCandidate& c) { return c.grid; }, [](const ActionCandidate& c) { return c.represents_grid_action; },
-      streams.tie_break, iteration, kGridTable);
-  if (g >= 0 && streams.epsilon.uniform(iteration, 1) > epsilon && q_grid.taken(state.grid, candidates[g].grid)) {
-    return {static_cast<std::size_t>(g), Regime::GGreedy};
+  if (rule.grid_greedy) {
+    const auto eligible = [&](const ActionCandidate& c) {
+      return c.represents_grid_action &&
+             (rule.grid_excluded.empty() || rule.grid_excluded[&c - candidates.data()] == 0) &&
+             (!rule.grid_taken_only || q_grid.taken(state.grid, c.grid));
+    };
+    const long g = best_candidate(
+        candidates, [&](const ActionCandidate& c) { return q_grid.value(state.grid, c.grid); },
+        [](const ActionCandidate& c) { return c.grid; }, eligible, streams.tie_break, iteration, kGridTable);
+    if (g >= 0 && streams.epsilon.uniform(iteration, 1) > epsilon && q_grid.taken(state.grid, candidates[g].grid)) {
+      return {static_cast<std::size_t>(g), Regime::GGreedy};
+    }
   }
   std::size_t chosen = 0;
   std::uint64_t chosen_priority = UINT64_MAX;

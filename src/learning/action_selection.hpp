@@ -2,7 +2,8 @@
 // Action selection, Algorithm 3: w-greedy (the best action for Q_wall, if it has
 // already been taken in this state), else g-greedy (the best action for Q_grid, if
 // already taken in this agent-space state), else a random possible action; each of the
-// first two also gives way to exploration with probability epsilon.
+// first two also gives way to exploration with probability epsilon. A SelectionRule
+// varies it for the transfer modes (learning/transfer_mode.hpp).
 
 #include <cstdint>
 #include <span>
@@ -23,6 +24,9 @@ struct ActionCandidate {
   ActionCode wall = kNoAction;
   ActionCode grid = kNoAction;
   bool represents_grid_action = false;
+  // It puts the free limb back on the hold it has just left: always reachable, and it
+  // returns the 4-configuration of the step before (the informed and prior modes skip it).
+  bool returns_to_left_hold = false;
 };
 
 struct StateCouple {
@@ -50,9 +54,20 @@ struct SelectionStreams {
   RandomStream epsilon, tie_break, random_action;
 };
 
+// Algorithm 3 by default.
+struct SelectionRule {
+  bool wall_requires_taken = true;  // w-greedy only when its best action was taken before
+  bool grid_greedy = true;          // the g-greedy regime; without it, w-greedy's refusal is random
+  std::span<const char> grid_excluded;  // per candidate, non-zero: g-greedy may not choose it
+  // g-greedy's best among the agent-space actions already taken, instead of its best
+  // action being required to have been taken.
+  bool grid_taken_only = false;
+};
+
 // Throws std::invalid_argument when there is no candidate.
 ActionChoice select_action(const QTable& q_wall, const QTable& q_grid, const StateCouple& state,
                            std::span<const ActionCandidate> candidates, double epsilon,
-                           const SelectionStreams& streams, std::uint64_t iteration);
+                           const SelectionStreams& streams, std::uint64_t iteration,
+                           const SelectionRule& rule = {});
 
 }  // namespace crux

@@ -6,6 +6,11 @@
 
 namespace crux {
 
+const Experience* DeterministicModel::find(StateCode wall_state, ActionCode wall_action) const {
+  const auto it = index_.find(PairKey{wall_state, wall_action});
+  return it == index_.end() ? nullptr : &entries_[it->second];
+}
+
 std::size_t DeterministicModel::record(const Experience& experience) {
   const auto [it, inserted] = index_.try_emplace(PairKey{experience.wall_state, experience.wall_action}, entries_.size());
   const std::size_t index = it->second;

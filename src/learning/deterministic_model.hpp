@@ -33,6 +33,8 @@ class DeterministicModel {
   std::size_t record(const Experience& experience);
   std::size_t size() const { return entries_.size(); }
   const Experience& at(std::size_t index) const { return entries_[index]; }
+  // The last recorded experience of (wall_state, wall_action), or nullptr.
+  const Experience* find(StateCode wall_state, ActionCode wall_action) const;
   // Indices of the pairs whose last recorded next state is `wall_state` (empty unless
   // predecessors are tracked).
   std::span<const std::size_t> predecessors(StateCode wall_state) const;

@@ -23,10 +23,22 @@ DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaS
       q_grid_(grid_action_count),
       model_(settings.planner == Planner::Prioritized) {}
 
-void DynaQAgent::set_q_grid(QTable q_grid) { q_grid_ = std::move(q_grid); }
+void DynaQAgent::set_q_grid(QTable q_grid) {
+  if (settings_.transfer == TransferMode::Seeded) seeds_ = q_grid;
+  if (settings_.transfer == TransferMode::Shaping) potential_ = GridPotential(q_grid);
+  q_grid_ = std::move(q_grid);
+}
 
 void DynaQAgent::observe(const StateCouple& state, std::span<const ActionCandidate> candidates) {
-  std::vector<ActionCode>& wall = wall_actions_[state.wall];
+  const auto [known, first_seen] = wall_actions_.try_emplace(state.wall);
+  if (first_seen && seeds_) {
+    for (const ActionCandidate& c : candidates) {
+      if (c.grid != kNoAction && seeds_->taken(state.grid, c.grid)) {
+        q_wall_.set_value(state.wall, c.wall, seeds_->value(state.grid, c.grid));
+      }
+    }
+  }
+  std::vector<ActionCode>& wall = known->second;
   wall.clear();
   for (const ActionCandidate& c : candidates) wall.push_back(c.wall);
   std::vector<ActionCode>& grid = grid_actions_[state.grid];
@@ -36,14 +48,37 @@ void DynaQAgent::observe(const StateCouple& state, std::span<const ActionCandida
   }
 }
 
+ActionChoice DynaQAgent::choose(const StateCouple& state, std::span<const ActionCandidate> candidates) {
+  SelectionRule rule;
+  if (settings_.transfer == TransferMode::Informed || settings_.transfer == TransferMode::Prior) {
+    grid_excluded_.assign(candidates.size(), 0);
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      // The deterministic model's outcome of the pair; a failed move leaves the state.
+      const Experience* known = model_.find(state.wall, candidates[i].wall);
+      grid_excluded_[i] = (known != nullptr && known->next_wall_state == state.wall) || candidates[i].returns_to_left_hold;
+    }
+    rule.grid_excluded = grid_excluded_;
+    rule.grid_taken_only = settings_.transfer == TransferMode::Prior;
+  } else if (settings_.transfer == TransferMode::Seeded) {
+    rule.wall_requires_taken = false;
+    rule.grid_greedy = false;
+  }
+  return select_action(q_wall_, q_grid_, state, candidates, settings_.epsilon, selection_streams_, steps_, rule);
+}
+
 std::span<const ActionCode> DynaQAgent::available(const std::unordered_map<StateCode, std::vector<ActionCode>>& known,
                                                   StateCode state) const {
   const auto it = known.find(state);
   return it == known.end() ? std::span<const ActionCode>() : std::span<const ActionCode>(it->second);
 }
 
+double DynaQAgent::wall_reward(const Experience& e) const {
+  if (settings_.transfer != TransferMode::Shaping) return e.reward;
+  return e.reward + potential_.shaping(e.grid_state, e.next_grid_state, settings_.rates.gamma);
+}
+
 void DynaQAgent::update_both(const Experience& e) {
-  q_learning_update(q_wall_, e.wall_state, e.wall_action, e.reward, e.next_wall_state,
+  q_learning_update(q_wall_, e.wall_state, e.wall_action, wall_reward(e), e.next_wall_state,
                     available(wall_actions_, e.next_wall_state), settings_.rates);
   if (e.grid_action != kNoAction) {
     q_learning_update(q_grid_, e.grid_state, e.grid_action, e.reward, e.next_grid_state,
@@ -74,7 +109,7 @@ void DynaQAgent::plan_uniformly() {
 void DynaQAgent::prioritize(std::size_t entry, bool exact) {
   const Experience& e = model_.at(entry);
   const double target =
-      e.reward + settings_.rates.gamma * q_wall_.best_value(e.next_wall_state, available(wall_actions_, e.next_wall_state));
+      wall_reward(e) + settings_.rates.gamma * q_wall_.best_value(e.next_wall_state, available(wall_actions_, e.next_wall_state));
   const double priority = std::abs(target - q_wall_.value(e.wall_state, e.wall_action));
   if (priority > settings_.priority_threshold) {
     exact ? queue_.set(entry, priority) : queue_.push(entry, priority);

@@ -15,8 +15,10 @@
 
 #include "learning/action_selection.hpp"
 #include "learning/deterministic_model.hpp"
+#include "learning/grid_potential.hpp"
 #include "learning/prioritized_sweeping.hpp"
 #include "learning/q_learning.hpp"
+#include "learning/transfer_mode.hpp"
 
 namespace crux {
 
@@ -30,6 +32,7 @@ struct DynaSettings {
   double epsilon = 0.1;     // Algorithm 3; the paper gives no value (spec item 19)
   Planner planner = Planner::Uniform;
   double priority_threshold = 1e-6;  // prioritized sweeping queues larger |TD errors| only
+  TransferMode transfer = TransferMode::Paper;
 };
 
 // Randomness comes from named streams of `seed` (action selection's, and "planning"),
@@ -40,16 +43,17 @@ class DynaQAgent {
   DynaQAgent(int wall_action_count, int grid_action_count, const DynaSettings& settings, std::uint64_t seed);
 
   // Starts from a Q_grid learnt elsewhere (transfer); its visit counts say what has
-  // "already been taken" in agent space.
+  // "already been taken" in agent space. The seeded and shaping modes also keep it
+  // unchanged, as the source of seeds or of the potential.
   void set_q_grid(QTable q_grid);
 
   // Remembers which actions a state offers, for the max of the updates that lead to it:
   // every candidate's wall action, and the grid actions that map back to a candidate.
+  // In the seeded mode, a state seen for the first time has its Q_wall pairs seeded.
   void observe(const StateCouple& state, std::span<const ActionCandidate> candidates);
 
-  ActionChoice choose(const StateCouple& state, std::span<const ActionCandidate> candidates) const {
-    return select_action(q_wall_, q_grid_, state, candidates, settings_.epsilon, selection_streams_, steps_);
-  }
+  // Algorithm 3, or the rule of the transfer mode.
+  ActionChoice choose(const StateCouple& state, std::span<const ActionCandidate> candidates);
 
   // Algorithm 2, lines 22-29. The next state must have been observed.
   void learn(const Experience& experience);
@@ -69,6 +73,8 @@ class DynaQAgent {
 
  private:
   void update_both(const Experience& e);
+  // The reward Q_wall learns from: e's, plus the shaping term in the shaping mode.
+  double wall_reward(const Experience& e) const;
   void plan_uniformly();
   void sweep(StateCode real_state, std::size_t real_entry);
   // Queues `entry` at its Q_wall |TD error| if that passes the threshold. `exact`: the
@@ -85,6 +91,9 @@ class DynaQAgent {
   DeterministicModel model_;  // tracks predecessors for prioritized sweeping only
   PriorityQueue queue_;
   std::unordered_map<StateCode, std::vector<ActionCode>> wall_actions_, grid_actions_;
+  std::optional<QTable> seeds_;  // seeded mode: the transferred Q_grid
+  GridPotential potential_;      // shaping mode: of the transferred Q_grid (0 without one)
+  std::vector<char> grid_excluded_;  // informed mode: choose()'s per-candidate buffer
 };
 
 }  // namespace crux

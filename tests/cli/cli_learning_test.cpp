@@ -426,5 +426,42 @@ TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
   EXPECT_EQ(afresh.exit_code, 0) << afresh.err;
 }
 
+TEST(CliLearning, TheTransferModeIsOneFlagWrittenToTheConfigAndAnUnknownOneIsRefused) {
+  const fs::path train = scratch("mode_train"), transfer = scratch("mode_transfer"), again = scratch("mode_again");
+  ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 200 --transfer prior -o " + train.string()).exit_code, 0);
+  EXPECT_NE(read_text(train / "config.toml").find("transfer = \"prior\""), std::string::npos);
+  ASSERT_EQ(run_crux("transfer --q-grid " + (train / "q_grid.bin").string() +
+                     " --wall-seed 4 --iterations 200 --transfer seeded -o " + transfer.string())
+                .exit_code,
+            0);
+  const auto replayed = run_crux("transfer --config " + (transfer / "config.toml").string() + " -o " + again.string());
+  ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
+  expect_same_folder(transfer, again);
+  const auto unknown = run_crux("transfer --q-grid " + (train / "q_grid.bin").string() +
+                                " --wall-seed 4 --transfer best -o " + scratch("mode_unknown").string());
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("--transfer"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("unknown transfer mode 'best'"), std::string::npos) << unknown.err;
+  EXPECT_EQ(testing::count_lines(unknown.err), 1) << unknown.err;
+  EXPECT_FALSE(fs::exists(scratch("mode_unknown")));
+}
+
+// With an empty Q_grid the shaping potential is 0 everywhere, so the shaping mode's
+// training and control runs are the paper's, iteration by iteration, while transfer
+// differs.
+TEST(CliLearning, ShapingWithoutATransferredTableIsThePaperRule) {
+  const fs::path paper = scratch("mode_paper"), shaping = scratch("mode_shaping");
+  const std::string common = "paper --walls 1 --seeds-per-wall 2 --iterations 2000 --plan false --seed 3 ";
+  ASSERT_EQ(run_crux(common + "-o " + paper.string()).exit_code, 0);
+  ASSERT_EQ(run_crux(common + "--transfer shaping -o " + shaping.string()).exit_code, 0);
+  for (const char* run : {"training_0", "training_1", "control_0", "control_1"}) {
+    EXPECT_EQ(read_text(paper / "runs" / run / "iterations.csv"), read_text(shaping / "runs" / run / "iterations.csv"))
+        << run;
+  }
+  EXPECT_TRUE(read_text(paper / "runs/transfer_0/iterations.csv") + read_text(paper / "runs/transfer_1/iterations.csv") !=
+              read_text(shaping / "runs/transfer_0/iterations.csv") + read_text(shaping / "runs/transfer_1/iterations.csv"))
+      << "the transferred potential changes transfer's runs";
+}
+
 }  // namespace
 }  // namespace crux

@@ -155,5 +155,26 @@ TEST(ClimbingMdp, ARestoredMdpContinuesAsTheSavedOne) {
   EXPECT_EQ(restored.reacher().solves(), mdp.reacher().solves());
 }
 
+// The flag marks exactly the candidate that puts the free limb back where it was,
+// before and after reached moves.
+TEST(ClimbingMdp, OnlyTheReturnToTheHoldJustLeftIsMarkedAsSuch) {
+  Fixture f;
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  int checked_after_moves = 0;
+  for (int step = 0; step < 60 && checked_after_moves < 5; ++step) {
+    int marked = 0;
+    for (const ActionCandidate& c : mdp.candidates()) {
+      EXPECT_EQ(c.returns_to_left_hold, c.wall == mdp.left_hold()) << "step " << step << ", hold " << c.wall;
+      marked += c.returns_to_left_hold;
+    }
+    EXPECT_LE(marked, 1);
+    // Walk by the candidates in turn; count the states entered by a reached move.
+    const auto candidates = mdp.candidates();
+    const StepOutcome outcome = mdp.step(candidates[static_cast<std::size_t>(step) % candidates.size()].wall);
+    checked_after_moves += outcome.reached && !outcome.finished;
+  }
+  EXPECT_EQ(checked_after_moves, 5);
+}
+
 }  // namespace
 }  // namespace crux

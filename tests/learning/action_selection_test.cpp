@@ -129,5 +129,61 @@ TEST(ActionSelection, ATieBetweenTheSameActionsGoesTheSameWayWhateverElseIsOffer
   }
 }
 
+TEST(ActionSelection, AnExcludedCandidateIsPassedOverByGGreedyOnly) {
+  QTable wall(4), grid(40);
+  wall.set_value(5, 0, 1.0);  // best for Q_wall, never taken
+  grid.set_value(50, 10, 7.0);
+  grid.add_visit(50, 10);
+  grid.set_value(50, 11, 2.0);
+  grid.add_visit(50, 11);
+  const SelectionStreams streams(1);
+  const char excluded[4] = {0, 1, 0, 0};  // tile 10's representative
+  const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, streams, 0, {true, true, excluded});
+  EXPECT_EQ(c.regime, Regime::GGreedy);
+  EXPECT_EQ(c.candidate, 2u) << "the next best tile, 11, through its representative";
+  wall.add_visit(5, 1);
+  wall.set_value(5, 1, 5.0);
+  const ActionChoice w = select_action(wall, grid, kState, kCandidates, 0.0, streams, 0, {true, true, excluded});
+  EXPECT_EQ(w.regime, Regime::WGreedy) << "w-greedy ignores the exclusion";
+  EXPECT_EQ(w.candidate, 1u);
+}
+
+TEST(ActionSelection, WithoutTheTakenTestAndGGreedyItIsEpsilonGreedyOnQWall) {
+  QTable wall(4), grid(40);
+  wall.set_value(5, 3, 2.0);  // never taken
+  grid.set_value(50, 10, 7.0);
+  grid.add_visit(50, 10);
+  const SelectionStreams streams(4);
+  const SelectionRule rule{false, false, {}};
+  int greedy = 0, random = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.25, streams, i, rule);
+    ASSERT_NE(c.regime, Regime::GGreedy) << "iteration " << i;
+    if (c.regime == Regime::WGreedy) {
+      EXPECT_EQ(c.candidate, 3u);
+      ++greedy;
+    } else {
+      ++random;
+    }
+  }
+  EXPECT_NEAR(random / 2000.0, 0.25, 0.03) << "stream seed 4";
+  EXPECT_EQ(greedy + random, 2000);
+}
+
+TEST(ActionSelection, GridTakenOnlyPicksTheBestTakenTileOverABetterUntakenOne) {
+  QTable wall(4), grid(40);
+  grid.set_value(50, 10, 7.0);  // the best value, but never taken
+  grid.set_value(50, 11, -3.0);
+  grid.add_visit(50, 11);
+  const SelectionStreams streams(1);
+  EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 0.0, streams, 0).regime, Regime::Random)
+      << "Algorithm 3: the best tile was never taken";
+  SelectionRule rule;
+  rule.grid_taken_only = true;
+  const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, streams, 0, rule);
+  EXPECT_EQ(c.regime, Regime::GGreedy);
+  EXPECT_EQ(c.candidate, 2u) << "tile 11, the only one taken";
+}
+
 }  // namespace
 }  // namespace crux

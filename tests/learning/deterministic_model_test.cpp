@@ -165,5 +165,16 @@ TEST(DeterministicModel, ACheckpointRestoresPairsIndicesAndPredecessors) {
   EXPECT_ANY_THROW(narrower.load_state(narrow, 1, 2)) << "wall action 1 of a 1-action wall";
 }
 
+TEST(DeterministicModel, FindGivesThePairsLastExperience) {
+  DeterministicModel model;
+  model.record(experience(3, 1, 4));
+  model.record(experience(3, 1, 3, -1000.0));
+  ASSERT_NE(model.find(3, 1), nullptr);
+  EXPECT_EQ(model.find(3, 1)->next_wall_state, 3u);
+  EXPECT_EQ(model.find(3, 1)->reward, -1000.0);
+  EXPECT_EQ(model.find(3, 2), nullptr);
+  EXPECT_EQ(model.find(4, 1), nullptr);
+}
+
 }  // namespace
 }  // namespace crux

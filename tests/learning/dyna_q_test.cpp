@@ -4,6 +4,7 @@
 
 #include "common/checkpoint_stream.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace crux {
@@ -104,6 +105,85 @@ TEST(DynaQ, ARestoredAgentContinuesAsTheSavedOne) {
       }
     }
   }
+}
+
+// A table transferred to the agent: in agent-space state A, action 1 taken at 30.
+QTable transferred_table() {
+  QTable q(2);
+  q.set_value(A, 1, 30.0);
+  q.add_visit(A, 1);
+  return q;
+}
+
+TEST(DynaQ, SeededModeStartsANewStatesUntriedPairsAtTheTransferredValues) {
+  DynaSettings settings;
+  settings.transfer = TransferMode::Seeded;
+  DynaQAgent agent(2, 2, settings, 3);
+  agent.set_q_grid(transferred_table());
+  const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
+  agent.observe({A, A}, both);
+  EXPECT_EQ(agent.q_wall().value(A, 1), 30.0);
+  EXPECT_EQ(agent.q_wall().value(A, 0), 0.0) << "an untaken agent-space pair seeds nothing";
+  EXPECT_EQ(agent.q_wall().visits(A, 1), 0u) << "a seed is not an experience";
+  const ActionChoice c = agent.choose({A, A}, both);
+  EXPECT_EQ(c.candidate, 1u);
+  EXPECT_EQ(c.regime, Regime::WGreedy) << "the seeded value is chosen although never taken";
+  agent.learn({A, A, 1, 1, -1000.0, A, A});
+  agent.observe({A, A}, both);
+  // One real update and 50 planning updates of Q(A,1), each from the latest value: a
+  // state seen again is not seeded again.
+  double q = 30.0;
+  for (int i = 0; i < 51; ++i) q += 0.1 * (-1000.0 + 0.9 * std::max(q, 0.0) - q);
+  EXPECT_NEAR(agent.q_wall().value(A, 1), q, 1e-9);
+}
+
+TEST(DynaQ, ShapingModeAddsGammaPhiNextMinusPhiToQWallRewardsOnly) {
+  DynaSettings settings;
+  settings.transfer = TransferMode::Shaping;
+  settings.planning_steps = 0;
+  DynaQAgent agent(2, 2, settings, 3);
+  agent.set_q_grid(transferred_table());  // phi(A) = 30, phi(B) = 0
+  const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
+  agent.observe({A, A}, both);
+  agent.observe({B, B}, both);
+  agent.learn({A, A, 0, 0, -1.0, B, B});
+  EXPECT_DOUBLE_EQ(agent.q_wall().value(A, 0), 0.1 * (-1.0 + 0.9 * 0.0 - 30.0));
+  EXPECT_DOUBLE_EQ(agent.q_grid().value(A, 0), 0.1 * (-1.0 + 0.9 * 0.0)) << "Q_grid learns the raw reward";
+  agent.learn({B, B, 1, 1, -1.0, A, A});
+  EXPECT_DOUBLE_EQ(agent.q_wall().value(B, 1), 0.1 * (-1.0 + 0.9 * 30.0 - 0.0 + 0.9 * 0.0));
+}
+
+TEST(DynaQ, InformedModeKeepsGGreedyOffAPairThatFailedHere) {
+  DynaSettings settings;
+  settings.transfer = TransferMode::Informed;
+  settings.epsilon = 0.0;
+  settings.planning_steps = 0;
+  QTable grid(2);  // tile 1 is the best agent-space action, tile 0 second
+  grid.set_value(A, 1, 5000.0);
+  grid.add_visit(A, 1);
+  grid.set_value(A, 0, 10.0);
+  grid.add_visit(A, 0);
+  DynaQAgent informed(2, 2, settings, 5);
+  settings.transfer = TransferMode::Paper;
+  DynaQAgent paper(2, 2, settings, 5);
+  const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
+  for (DynaQAgent* agent : {&informed, &paper}) {
+    agent->set_q_grid(grid);
+    agent->observe({A, A}, both);
+    agent->learn({A, A, 1, 1, -1000.0, A, A});  // action 1 failed: a self-loop
+  }
+  // Tile 1 keeps the best Q_grid value, 5000 + 0.1 (-1000 + 0.9 * 5000 - 5000) = 4850,
+  // and Q_wall's best action (0, never taken) sends the choice to g-greedy.
+  EXPECT_DOUBLE_EQ(paper.q_grid().value(A, 1), 4850.0);
+  const ActionChoice by_paper = paper.choose({A, A}, both);
+  EXPECT_EQ(by_paper.regime, Regime::GGreedy);
+  EXPECT_EQ(by_paper.candidate, 1u) << "Algorithm 3 retries the failed move";
+  const ActionChoice by_informed = informed.choose({A, A}, both);
+  EXPECT_EQ(by_informed.regime, Regime::GGreedy);
+  EXPECT_EQ(by_informed.candidate, 0u) << "the failed pair is passed over";
+  const ActionCandidate returning[2] = {{0, 0, true, true}, {1, 1, true}};
+  EXPECT_EQ(informed.choose({A, A}, returning).regime, Regime::Random)
+      << "nor a return to the hold just left: nothing is left for g-greedy";
 }
 
 }  // namespace

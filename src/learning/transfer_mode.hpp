@@ -1,0 +1,34 @@
+#pragma once
+// How a run uses the Q_grid it starts from (docs/TRANSFER.md). Each mode is also the rule
+// of that run's control, which starts from an empty Q_grid, so that transfer against
+// control measures the transferred values alone.
+//   paper:    Algorithm 3: w-greedy on an already taken best Q_wall action, else
+//             g-greedy on an already taken best Q_grid action, else a random action.
+//   informed: Algorithm 3, but g-greedy passes over the actions Q_wall's own experience
+//             in this state has seen fail, and the return of the free limb to the hold
+//             it has just left, which changes nothing (action elimination, Zahavy et
+//             al. 2018).
+//   prior:    informed, and g-greedy takes the best agent-space action already taken
+//             whenever Algorithm 3 would act at random: the transferred policy guides
+//             exploration (policy reuse, Fernandez and Veloso 2006).
+//   seeded:   an untried Q_wall pair starts at the transferred Q_grid value of its
+//             agent-space pair, and the agent is epsilon-greedy on Q_wall (value-function
+//             transfer, Taylor, Stone and Liu 2007).
+//   shaping:  Algorithm 3, with Q_wall learning from rewards shaped by the potential
+//             phi(s) = max_a Q_grid(grid(s), a) of the transferred table (potential-based
+//             shaping, Ng, Harada and Russell 1999; learnt in agent space as Konidaris
+//             and Barto's autonomous shaping, 2006).
+
+#include <optional>
+#include <string_view>
+
+namespace crux {
+
+enum class TransferMode { Paper, Informed, Prior, Seeded, Shaping };
+
+const char* transfer_mode_name(TransferMode mode);
+std::optional<TransferMode> parse_transfer_mode(std::string_view name);
+// The names, comma-separated, for messages and --help.
+const char* transfer_mode_names();
+
+}  // namespace crux
