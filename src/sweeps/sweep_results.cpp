@@ -11,6 +11,7 @@
 #include "experiments/statistics.hpp"
 #include "reports/run_folder.hpp"
 #include "reports/summary.hpp"
+#include "reports/sweep_report.hpp"
 #include "sweeps/sweep_task.hpp"
 
 namespace crux {
@@ -162,6 +163,37 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
   write_file_atomically(folder / "results.csv", csv);
   write_file_atomically(folder / "summary.json", summary.dump(2) + "\n");
   return summary;
+}
+
+std::vector<fs::path> write_sweep_report(const SweepPlan& plan, const fs::path& folder,
+                                         const nlohmann::ordered_json& summary) {
+  std::vector<fs::path> written;
+  std::vector<std::string> figures;
+  fs::create_directories(folder / "figures");
+  for (std::size_t c = 0; c < plan.cells.size(); ++c) {
+    const ExperimentSettings& settings = plan.cells[c].config.settings;
+    PaperFigureData data;
+    data.grid = settings.learning.climbing.grid;
+    data.iterations = settings.learning.iterations;
+    data.seeds_per_wall = settings.seeds_per_wall;
+    for (const Condition condition : {Condition::Transfer, Condition::Control}) {
+      PaperConditionData runs;
+      runs.condition = condition;
+      for (int r = 0; r < settings.runs(); ++r) {
+        PaperRunData run;
+        run.wall_pair = r / settings.seeds_per_wall;
+        run.episode_lengths = read_episode_lengths(folder / plan.tasks[run_task_index(plan, c, condition, r)].folder);
+        runs.runs.push_back(std::move(run));
+      }
+      data.conditions.push_back(std::move(runs));
+    }
+    figures.push_back(fig4_svg(data, sweep_cell_title(summary.at("cells").at(c))));
+    written.push_back(folder / "figures" / fmt::format("c{}_episode_lengths.svg", c));
+    write_file_atomically(written.back(), figures.back());
+  }
+  written.push_back(folder / "report.html");
+  write_file_atomically(written.back(), sweep_report_html(summary, figures));
+  return written;
 }
 
 }  // namespace crux

@@ -47,6 +47,7 @@ SweepOutcome run_sweep(const SweepJob& job, const BodyModel& model, SweepCluster
                        if (progress) progress(done, outcome.tasks);
                      });
     outcome.summary = write_sweep_results(job.plan, job.folder, job.provenance);
+    write_sweep_report(job.plan, job.folder, outcome.summary);
   } catch (const std::exception& e) {
     if (cluster != nullptr) cluster->fail(e);
     throw;

@@ -557,9 +557,9 @@ std::string fig3_svg(const PaperFigureData& data) {
 
 // Paper, Fig. 4: episode length against episode, on a log scale, with the walls' shortest
 // climb for reference (the paper quotes about 10 actions for the optimal policy).
-std::string fig4_svg(const PaperFigureData& data) {
+std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
   const Header header{
-      "Fig. 4: episode lengths",
+      std::string(title),
       {band_phrase(data) + " (cut at the axis)",
        "episode n counts only the runs that completed it, so later episodes rest on fewer runs",
        "dashed: the shortest climb of the condition's walls (exact plan), mean over the walls where it is known"}};

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -74,7 +75,8 @@ WallBandSeries episode_length_series(const PaperConditionData& condition);
 // Throws std::invalid_argument when a map does not hold one value per tile of the grid.
 std::string fig2b_svg(const PaperFigureData& data);
 std::string fig3_svg(const PaperFigureData& data);
-std::string fig4_svg(const PaperFigureData& data);
+// `title` replaces Fig. 4's (a sweep draws one per cell).
+std::string fig4_svg(const PaperFigureData& data, std::string_view title = "Fig. 4: episode lengths");
 std::string transfer_metrics_svg(const PaperFigureData& data);
 
 // (file name, SVG) of fig2b_qgrid_maps.svg, fig3_regimes.svg, fig4_episode_lengths.svg

@@ -57,12 +57,17 @@ TEST(CliSweep, WritesEachRunAndTheResultsAndPrintsEachCell) {
   EXPECT_NE(outcome.out.find("cell 1 (learning.epsilon = 0.3): 3 walls x 1 seeds"), std::string::npos);
   EXPECT_NE(outcome.out.find("0 of 24 tasks kept from an earlier start"), std::string::npos);
   for (const char* file : {"sweep.toml", "results.csv", "summary.json", "runs/c1/transfer_2/q_grid.bin",
-                           "runs/c0/control_0/config.toml", "walls/g0/transfer_2/wall_facts.json"}) {
+                           "runs/c0/control_0/config.toml", "walls/g0/transfer_2/wall_facts.json",
+                           "figures/c0_episode_lengths.svg", "figures/c1_episode_lengths.svg", "report.html"}) {
     EXPECT_TRUE(fs::exists(out / file)) << file;
   }
   EXPECT_FALSE(fs::exists(out / "INCOMPLETE"));
   // The same command again resumes a finished sweep: nothing to run, the same results.
   const auto results = folder_contents(out);
+  const std::string& report = results.at("report.html");
+  ASSERT_NE(report.find("cell 1: learning.epsilon = 0.3"), std::string::npos);
+  EXPECT_LT(report.find("cell 0: learning.epsilon = 0.1"), report.find("cell 1: learning.epsilon = 0.3"));
+  EXPECT_NE(report.find("<svg"), std::string::npos) << "the cells' figures are inside the page";
   const auto again = run_crux(sweep_arguments(out, 1) + " --json");
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(nlohmann::json::parse(again.out).at("format"), "crux-sweep-summary");

@@ -1,0 +1,74 @@
+#!/usr/bin/python3
+"""How each cell of a `crux sweep` folder chose its actions early on (docs/TRANSFER.md).
+
+  transfer_modes.py SWEEP_DIR [--iterations 2000]
+
+For every cell (a transfer mode, when experiment.transfer is the listed key) and for its
+transfer and control runs, over their first N iterations: the share of actions each
+regime of Algorithm 3 took, how often those actions reached, the mean rise of the root
+per action, and how often an action retried the hold that failed at the iteration
+before. Markdown on standard output. Only the standard library of Debian's
+/usr/bin/python3 is used.
+"""
+import argparse
+import csv
+import json
+import os
+
+REGIMES = ("w_greedy", "g_greedy", "random")
+
+
+def profile(run_folders, iterations):
+    counts = {r: {"actions": 0, "reached": 0, "rise_cm": 0.0, "retries": 0} for r in REGIMES}
+    for folder in run_folders:
+        previous = None  # (hold, success) at the iteration before
+        with open(os.path.join(folder, "iterations.csv"), newline="") as f:
+            for row in csv.DictReader(f):
+                if int(row["iteration"]) > iterations:
+                    break
+                c = counts[row["regime"]]
+                c["actions"] += 1
+                c["reached"] += int(row["success"])
+                c["rise_cm"] += float(row["root_rise_cm"])
+                if previous is not None and previous == (row["hold"], "0"):
+                    c["retries"] += 1
+                previous = (row["hold"], row["success"])
+    return counts
+
+
+def percent(part, whole):
+    return f"{100.0 * part / whole:.0f} %" if whole else "-"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("sweep")
+    parser.add_argument("--iterations", type=int, default=2000)
+    args = parser.parse_args()
+    with open(os.path.join(args.sweep, "summary.json")) as f:
+        summary = json.load(f)
+    print(f"First {args.iterations} iterations; per regime: share of actions, reached, mean root rise per action, "
+          "retries of the hold that failed just before.\n")
+    print("| cell | condition | " + " | ".join(REGIMES) + " | all actions reached |")
+    print("|---|---|---|---|---|---|")
+    for cell in summary["cells"]:
+        name = ", ".join(f"{v}" for v in cell["parameters"].values()) or str(cell["cell"])
+        runs = cell["wall_pairs"] * cell["seeds_per_wall"]
+        for condition in ("transfer", "control"):
+            folders = [os.path.join(args.sweep, "runs", f"c{cell['cell']}", f"{condition}_{r}") for r in range(runs)]
+            counts = profile(folders, args.iterations)
+            total = sum(c["actions"] for c in counts.values())
+            cells = []
+            for r in REGIMES:
+                c = counts[r]
+                if c["actions"] == 0:
+                    cells.append("0 %")
+                    continue
+                cells.append(f"{percent(c['actions'], total)}: reached {percent(c['reached'], c['actions'])}, "
+                             f"{c['rise_cm'] / c['actions']:+.2f} cm, retries {percent(c['retries'], c['actions'])}")
+            reached = sum(c["reached"] for c in counts.values())
+            print(f"| {name} | {condition} | " + " | ".join(cells) + f" | {percent(reached, total)} |")
+
+
+if __name__ == "__main__":
+    main()

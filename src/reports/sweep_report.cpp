@@ -1,0 +1,73 @@
+#include "reports/sweep_report.hpp"
+
+#include <fmt/format.h>
+
+#include "views/svg_text.hpp"
+
+namespace crux {
+
+std::string sweep_cell_title(const nlohmann::ordered_json& cell) {
+  std::string title = fmt::format("cell {}", cell.at("cell").get<int>());
+  const char* separator = ": ";
+  for (const auto& [key, value] : cell.at("parameters").items()) {
+    title += fmt::format("{}{} = {}", separator, key, value.get<std::string>());
+    separator = ", ";
+  }
+  return title;
+}
+
+namespace {
+
+// "-110 [-264, +43], p = 0.15 (Holm 0.15)"
+std::string difference_cell(const nlohmann::ordered_json& comparison) {
+  const auto& d = comparison.at("transfer_minus_control");
+  std::string text = fmt::format("{:+.4g}", d.at("mean").get<double>());
+  if (d.at("ci95_t_over_walls").is_array()) {
+    text += fmt::format(" [{:+.4g}, {:+.4g}]", d.at("ci95_t_over_walls")[0].get<double>(),
+                        d.at("ci95_t_over_walls")[1].get<double>());
+  }
+  return text + fmt::format("<br>p = {:.3g} (Holm {:.3g})", d.at("p_value").get<double>(),
+                            d.at("p_value_holm_over_cells").get<double>());
+}
+
+}  // namespace
+
+std::string sweep_report_html(const nlohmann::ordered_json& summary, const std::vector<std::string>& cell_figures) {
+  const auto& cells = summary.at("cells");
+  std::vector<std::string> metrics;
+  for (const auto& [name, comparison] : cells.at(0).at("transfer_vs_control").items()) metrics.push_back(name);
+  std::string html =
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>crux sweep</title>\n<style>\n"
+      "body{font-family:sans-serif;margin:1.5em;color:#222}table{border-collapse:collapse;font-size:13px}"
+      "td,th{border:1px solid #ccc;padding:4px 6px;vertical-align:top}th{background:#f4f4f4}"
+      ".figures{display:flex;flex-wrap:wrap;gap:12px}.figures figure{margin:0;flex:1 1 480px;max-width:760px}"
+      ".figures svg{width:100%;height:auto}\n</style>\n</head>\n<body>\n<h1>crux sweep</h1>\n";
+  std::string keys;
+  for (const auto& key : summary.at("listed_keys")) keys += (keys.empty() ? "" : ", ") + key.get<std::string>();
+  html += fmt::format("<p>{} cells over {}. Transfer minus control per metric: mean over walls, Student-t 95 % "
+                      "interval over walls, p-value, and the p-value Holm-adjusted over the cells.</p>\n",
+                      cells.size(), xml_escaped(keys.empty() ? std::string("no listed key") : keys));
+  html += "<table>\n<tr><th>cell</th>";
+  for (const std::string& metric : metrics) {
+    html += fmt::format("<th title=\"{}\">{}</th>",
+                        xml_escaped(cells.at(0).at("transfer_vs_control").at(metric).at("description").get<std::string>()),
+                        xml_escaped(metric));
+  }
+  html += "</tr>\n";
+  for (const auto& cell : cells) {
+    html += fmt::format("<tr><td>{}</td>", xml_escaped(sweep_cell_title(cell)));
+    for (const std::string& metric : metrics) {
+      const auto& comparisons = cell.at("transfer_vs_control");
+      html += "<td>" + (comparisons.contains(metric) ? difference_cell(comparisons.at(metric)) : std::string()) + "</td>";
+    }
+    html += "</tr>\n";
+  }
+  html += "</table>\n<h2>Episode lengths per cell</h2>\n<div class=\"figures\">\n";
+  for (std::string_view svg : cell_figures) {
+    if (svg.starts_with("<?xml")) svg.remove_prefix(svg.find("?>") + 2);  // a declaration has no place in HTML
+    html += fmt::format("<figure>{}</figure>\n", svg);
+  }
+  return html + "</div>\n</body>\n</html>\n";
+}
+
+}  // namespace crux
