@@ -1,9 +1,12 @@
 #!/usr/bin/python3
-"""How each cell of a `crux sweep` folder chose its actions early on (docs/TRANSFER.md).
+"""The tables of docs/TRANSFER.md from a `crux sweep` folder.
 
   transfer_modes.py SWEEP_DIR [--iterations 2000]
 
-For every cell (a transfer mode, when experiment.transfer is the listed key) and for its
+First, per cell (a transfer mode, when experiment.transfer is the listed key), transfer
+minus control for each metric of summary.json: the mean over walls, its Student-t 95 %
+interval, the p-value and the p-value Holm-adjusted over the cells; for total reward,
+the difference relative to control's total. Then, per cell and for its
 transfer and control runs, over their first N iterations: the share of actions each
 regime of Algorithm 3 took, how often those actions reached, the mean rise of the root
 per action, and how often an action retried the hold that failed at the iteration
@@ -16,6 +19,36 @@ import json
 import os
 
 REGIMES = ("w_greedy", "g_greedy", "random")
+METRICS = ("jumpstart", "early_episodes", "first_5_iterations", "time_to_threshold", "total_reward", "late_episodes",
+           "last_10_length")
+
+
+def cell_name(cell):
+    return ", ".join(str(v) for v in cell["parameters"].values()) or str(cell["cell"])
+
+
+def metric_table(summary):
+    print("| cell | " + " | ".join(METRICS) + " |")
+    print("|---" * (len(METRICS) + 1) + "|")
+    for cell in summary["cells"]:
+        cells = []
+        for metric in METRICS:
+            comparison = cell["transfer_vs_control"].get(metric)
+            if comparison is None:
+                cells.append("-")
+                continue
+            d = comparison["transfer_minus_control"]
+            scale = 1e6 if metric == "total_reward" else 1.0
+            text = f"{d['mean'] / scale:+.3g}"
+            if d["ci95_t_over_walls"]:
+                low, high = d["ci95_t_over_walls"]
+                text += f" [{low / scale:+.3g}, {high / scale:+.3g}]"
+            if metric == "total_reward" and comparison.get("relative_difference") is not None:
+                text += f" ({100 * comparison['relative_difference']:+.0f} %)"
+            text += f", p = {d['p_value']:.2g} (Holm {d['p_value_holm_over_cells']:.2g})"
+            cells.append(text)
+        print(f"| {cell_name(cell)} | " + " | ".join(cells) + " |")
+    print("\nTotal reward in millions, its difference relative to control's total in brackets.\n")
 
 
 def profile(run_folders, iterations):
@@ -47,12 +80,13 @@ def main():
     args = parser.parse_args()
     with open(os.path.join(args.sweep, "summary.json")) as f:
         summary = json.load(f)
+    metric_table(summary)
     print(f"First {args.iterations} iterations; per regime: share of actions, reached, mean root rise per action, "
           "retries of the hold that failed just before.\n")
     print("| cell | condition | " + " | ".join(REGIMES) + " | all actions reached |")
     print("|---|---|---|---|---|---|")
     for cell in summary["cells"]:
-        name = ", ".join(f"{v}" for v in cell["parameters"].values()) or str(cell["cell"])
+        name = cell_name(cell)
         runs = cell["wall_pairs"] * cell["seeds_per_wall"]
         for condition in ("transfer", "control"):
             folders = [os.path.join(args.sweep, "runs", f"c{cell['cell']}", f"{condition}_{r}") for r in range(runs)]

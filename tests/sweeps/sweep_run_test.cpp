@@ -42,7 +42,8 @@ TEST(SweepRun, TheBytesDoNotDependOnTheThreads) {
   const fs::path folder = testing::sweep_scratch("threads");
   const auto one = sweep_bytes(folder, 1);
   const auto three = sweep_bytes(folder, 3);
-  EXPECT_EQ(one.size(), 1u + 2 + 4 * 2 + 12 * 8) << "sweep.toml, results, 4 walls of 2 files, 12 runs of 8 files";
+  EXPECT_EQ(one.size(), 1u + 2 + 4 * 2 + 12 * 8 + 3)
+      << "sweep.toml, results, 4 walls of 2 files, 12 runs of 8 files, and the report: a figure per cell and the page";
   ASSERT_EQ(one.size(), three.size());
   for (const auto& [file, bytes] : one) EXPECT_TRUE(three.at(file) == bytes) << file;
   EXPECT_FALSE(one.contains("INCOMPLETE"));
