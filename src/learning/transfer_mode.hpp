@@ -6,16 +6,16 @@
 //             g-greedy on an already taken best Q_grid action, else a random action.
 //   informed: Algorithm 3, but g-greedy passes over the actions Q_wall's own experience
 //             in this state has seen fail, and the return of the free limb to the hold
-//             it has just left, which changes nothing (action elimination, Zahavy et
-//             al. 2018).
-//   prior:    informed, and g-greedy takes the best agent-space action already taken
-//             whenever Algorithm 3 would act at random: the transferred policy guides
-//             exploration (policy reuse, Fernandez and Veloso 2006).
+//             it has just left, which goes back to the 4-configuration of the step
+//             before (action elimination, Zahavy et al. 2018).
+//   prior:    informed, and g-greedy's best is taken among the agent-space actions
+//             already taken, so the transferred policy acts in place of many of
+//             Algorithm 3's random choices (policy reuse, Fernandez and Veloso 2006).
 //   seeded:   an untried Q_wall pair starts at the transferred Q_grid value of its
 //             agent-space pair, and the agent is epsilon-greedy on Q_wall (value-function
 //             transfer, Taylor, Stone and Liu 2007).
 //   shaping:  Algorithm 3, with Q_wall learning from rewards shaped by the potential
-//             phi(s) = max_a Q_grid(grid(s), a) of the transferred table (potential-based
+//             phi(s) = the best taken value of the transferred Q_grid in grid(s) (potential-based
 //             shaping, Ng, Harada and Russell 1999; learnt in agent space as Konidaris
 //             and Barto's autonomous shaping, 2006).
 

@@ -183,6 +183,9 @@ std::vector<fs::path> write_sweep_report(const SweepPlan& plan, const fs::path& 
         PaperRunData run;
         run.wall_pair = r / settings.seeds_per_wall;
         run.episode_lengths = read_episode_lengths(folder / plan.tasks[run_task_index(plan, c, condition, r)].folder);
+        const nlohmann::json wall = read_json_file(folder / "walls" / fmt::format("g{}", plan.cells[c].wall_group) /
+                                                   fmt::format("transfer_{}", run.wall_pair) / kWallFactsFile);
+        if (!wall.at("plan").is_null()) run.plan_length = wall.at("plan").at("length").get<int>();
         runs.runs.push_back(std::move(run));
       }
       data.conditions.push_back(std::move(runs));

@@ -22,7 +22,7 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const std::fil
                                            const nlohmann::ordered_json& provenance);
 
 // Writes figures/c<C>_episode_lengths.svg per cell (Fig. 4 of its transfer and control
-// runs, read from their episodes.csv) and report.html (reports/sweep_report.hpp);
+// runs, read from their episodes.csv, with their walls' plans when known) and report.html (reports/sweep_report.hpp);
 // `summary` is write_sweep_results' return. Returns the files written.
 std::vector<std::filesystem::path> write_sweep_report(const SweepPlan& plan, const std::filesystem::path& folder,
                                                       const nlohmann::ordered_json& summary);

@@ -82,6 +82,22 @@ TEST(CliSweep, WritesEachRunAndTheResultsAndPrintsEachCell) {
   }
 }
 
+// docs/TRANSFER.md's sweep, cut down by flags to one wall pair and a short run: one
+// cell per mode, each analysed, and the report's table names every mode.
+TEST(CliSweep, TheTransferModesExampleRunsACellPerMode) {
+  const fs::path out = testing::sweep_scratch("modes");
+  const auto outcome = run_crux("sweep --config " CRUX_SOURCE_DIR "/examples/sweeps/transfer_modes.toml --walls 2 "
+                                "--seeds-per-wall 1 --iterations 300 --json -o " + out.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const auto summary = nlohmann::json::parse(outcome.out);
+  ASSERT_EQ(summary.at("cells").size(), 5u);
+  const std::string report = folder_contents(out).at("report.html");
+  for (const char* mode : {"paper", "informed", "prior", "seeded", "shaping"}) {
+    EXPECT_NE(report.find(std::string("experiment.transfer = ") + mode), std::string::npos) << mode;
+  }
+  EXPECT_EQ(summary["cells"][4]["parameters"]["experiment.transfer"], "shaping");
+}
+
 TEST(CliSweep, BadListsAndAnotherSweepsFolderAreOneLineErrors) {
   const fs::path threads = testing::write_temporary("threads.toml", "[experiment]\nthreads = [1, 2]\n");
   auto outcome = run_crux("sweep --config " + threads.string() + " -o " + testing::sweep_scratch("bad").string());

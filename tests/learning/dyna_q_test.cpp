@@ -68,14 +68,28 @@ TEST(DynaQ, AGridActionOutsideTheGridUpdatesOnlyTheWallTable) {
   EXPECT_EQ(agent.q_grid().state_count(), 0u);
 }
 
+// A table transferred to the agent: in agent-space state A, action 1 taken at 30.
+QTable transferred_table() {
+  QTable q(2);
+  q.set_value(A, 1, 30.0);
+  q.add_visit(A, 1);
+  return q;
+}
+
 // An agent restored from a checkpoint continues as the saved one does: the same choices
 // and the same tables after more steps, with either planner.
 TEST(DynaQ, ARestoredAgentContinuesAsTheSavedOne) {
+  for (const TransferMode mode : {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior,
+                                  TransferMode::Seeded, TransferMode::Shaping})
   for (const Planner planner : {Planner::Uniform, Planner::Prioritized}) {
+    SCOPED_TRACE(transfer_mode_name(mode));
     DynaSettings settings;
     settings.planner = planner;
     settings.epsilon = 0.3;
+    settings.transfer = mode;
+    // A transferred table, given again to the restored agent as a run's resume does.
     DynaQAgent agent(2, 2, settings, 11);
+    agent.set_q_grid(transferred_table());
     const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
     agent.observe({A, A}, both);
     agent.observe({B, B}, both);
@@ -92,6 +106,7 @@ TEST(DynaQ, ARestoredAgentContinuesAsTheSavedOne) {
     agent.save_state(out);
     const std::string bytes = out.take();
     DynaQAgent restored(2, 2, settings, 11);
+    restored.set_q_grid(transferred_table());
     CheckpointReader in(bytes, "test");
     restored.load_state(in);
     EXPECT_TRUE(in.at_end());
@@ -105,14 +120,6 @@ TEST(DynaQ, ARestoredAgentContinuesAsTheSavedOne) {
       }
     }
   }
-}
-
-// A table transferred to the agent: in agent-space state A, action 1 taken at 30.
-QTable transferred_table() {
-  QTable q(2);
-  q.set_value(A, 1, 30.0);
-  q.add_visit(A, 1);
-  return q;
 }
 
 TEST(DynaQ, SeededModeStartsANewStatesUntriedPairsAtTheTransferredValues) {
@@ -151,6 +158,22 @@ TEST(DynaQ, ShapingModeAddsGammaPhiNextMinusPhiToQWallRewardsOnly) {
   EXPECT_DOUBLE_EQ(agent.q_grid().value(A, 0), 0.1 * (-1.0 + 0.9 * 0.0)) << "Q_grid learns the raw reward";
   agent.learn({B, B, 1, 1, -1.0, A, A});
   EXPECT_DOUBLE_EQ(agent.q_wall().value(B, 1), 0.1 * (-1.0 + 0.9 * 30.0 - 0.0 + 0.9 * 0.0));
+}
+
+TEST(DynaQ, ShapingAlsoShapesThePlanningUpdates) {
+  DynaSettings settings;
+  settings.transfer = TransferMode::Shaping;
+  settings.planning_steps = 3;
+  DynaQAgent agent(2, 2, settings, 3);
+  agent.set_q_grid(transferred_table());  // phi(A) = 30, phi(B) = 0
+  const ActionCandidate one[1] = {{0, 0, true}};
+  agent.observe({A, A}, one);
+  agent.observe({B, B}, one);
+  agent.learn({A, A, 0, 0, -1.0, B, B});
+  // The one experience, updated four times (real + 3 replays) with r + 0.9 phi(B) - phi(A).
+  double q = 0.0;
+  for (int i = 0; i < 4; ++i) q += 0.1 * (-1.0 - 30.0 - q);
+  EXPECT_DOUBLE_EQ(agent.q_wall().value(A, 0), q);
 }
 
 TEST(DynaQ, InformedModeKeepsGGreedyOffAPairThatFailedHere) {

@@ -280,6 +280,20 @@ TEST(PaperFiguresTest, OneWallDrawsNoBand) {
   EXPECT_NE(figures[1].second.find("one wall, so no interval"), std::string::npos);
 }
 
+TEST(PaperFiguresTest, Fig4ExplainsTheDashedLineOnlyWhenAPlanIsKnownAndTakesATitle) {
+  PaperFigureData data = read_paper_figure_data(write_folder("paper_figures_plans"));
+  const std::string with_plans = fig4_svg(data, "cell 2: experiment.transfer = prior");
+  EXPECT_NE(with_plans.find("dashed: the shortest climb"), std::string::npos);
+  EXPECT_NE(with_plans.find("cell 2: experiment.transfer = prior"), std::string::npos);
+  for (PaperConditionData& condition : data.conditions) {
+    for (PaperRunData& run : condition.runs) run.plan_length = -1;
+  }
+  const std::string without = fig4_svg(data);
+  EXPECT_EQ(without.find("dashed"), std::string::npos);
+  EXPECT_EQ(without.find("shortest climb"), std::string::npos);
+  EXPECT_NE(without.find("Fig. 4: episode lengths"), std::string::npos);
+}
+
 TEST(PaperFiguresTest, MissingKeysAndFilesAreNamed) {
   Json summary = summary_json();
   summary.erase("iterations");
