@@ -53,6 +53,8 @@ ActionChoice DynaQAgent::choose(const StateCouple& state, std::span<const Action
   if (settings_.transfer == TransferMode::Informed || settings_.transfer == TransferMode::Prior) {
     grid_excluded_.assign(candidates.size(), 0);
     for (std::size_t i = 0; i < candidates.size(); ++i) {
+      // Only representatives can be g-greedy's choice: the others need no model look-up.
+      if (!candidates[i].represents_grid_action) continue;
       // The deterministic model's outcome of the pair; a failed move leaves the state.
       const Experience* known = model_.find(state.wall, candidates[i].wall);
       grid_excluded_[i] = (known != nullptr && known->next_wall_state == state.wall) || candidates[i].returns_to_left_hold;

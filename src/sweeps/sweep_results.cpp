@@ -176,6 +176,13 @@ std::vector<fs::path> write_sweep_report(const SweepPlan& plan, const fs::path& 
     data.grid = settings.learning.climbing.grid;
     data.iterations = settings.learning.iterations;
     data.seeds_per_wall = settings.seeds_per_wall;
+    // Transfer and control share the transfer walls: each wall's plan is read once.
+    std::vector<int> plan_lengths;
+    for (int pair = 0; pair < settings.wall_pairs; ++pair) {
+      const nlohmann::json wall = read_json_file(folder / "walls" / fmt::format("g{}", plan.cells[c].wall_group) /
+                                                 fmt::format("transfer_{}", pair) / kWallFactsFile);
+      plan_lengths.push_back(wall.at("plan").is_null() ? -1 : wall.at("plan").at("length").get<int>());
+    }
     for (const Condition condition : {Condition::Transfer, Condition::Control}) {
       PaperConditionData runs;
       runs.condition = condition;
@@ -183,9 +190,7 @@ std::vector<fs::path> write_sweep_report(const SweepPlan& plan, const fs::path& 
         PaperRunData run;
         run.wall_pair = r / settings.seeds_per_wall;
         run.episode_lengths = read_episode_lengths(folder / plan.tasks[run_task_index(plan, c, condition, r)].folder);
-        const nlohmann::json wall = read_json_file(folder / "walls" / fmt::format("g{}", plan.cells[c].wall_group) /
-                                                   fmt::format("transfer_{}", run.wall_pair) / kWallFactsFile);
-        if (!wall.at("plan").is_null()) run.plan_length = wall.at("plan").at("length").get<int>();
+        run.plan_length = plan_lengths[static_cast<std::size_t>(run.wall_pair)];
         runs.runs.push_back(std::move(run));
       }
       data.conditions.push_back(std::move(runs));

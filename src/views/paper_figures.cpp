@@ -558,17 +558,6 @@ std::string fig3_svg(const PaperFigureData& data) {
 // Paper, Fig. 4: episode length against episode, on a log scale, with the walls' shortest
 // climb for reference (the paper quotes about 10 actions for the optimal policy).
 std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
-  Header header{std::string(title),
-                {band_phrase(data) + " (cut at the axis)",
-                 "episode n counts only the runs that completed it, so later episodes rest on fewer runs"}};
-  const bool any_plan = std::any_of(data.conditions.begin(), data.conditions.end(), [](const PaperConditionData& c) {
-    return std::any_of(c.runs.begin(), c.runs.end(), [](const PaperRunData& r) { return r.plan_length >= 0; });
-  });
-  if (any_plan) {
-    header.subtitles.push_back(
-        "dashed: the shortest climb of the condition's walls (exact plan), mean over the walls where it is known");
-  }
-
   std::vector<WallBandSeries> series;
   double low = std::numeric_limits<double>::infinity(), high = 0, episodes = 1;
   for (const PaperConditionData& c : data.conditions) {
@@ -600,6 +589,13 @@ std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
   }
   if (!std::isfinite(low)) low = high = 1;  // no episode at all
   low = std::max(low, 1.0);
+  Header header{std::string(title),
+                {band_phrase(data) + " (cut at the axis)",
+                 "episode n counts only the runs that completed it, so later episodes rest on fewer runs"}};
+  if (!plans.empty()) {
+    header.subtitles.push_back(
+        "dashed: the shortest climb of the condition's walls (exact plan), mean over the walls where it is known");
+  }
   const Axis x = linear_axis(0, episodes, "episode (from 1)");
   const Axis y = log10_axis(low, std::max(high, low), "episode length (actions, log scale)");
   const Panel panel{kMargin + y_axis_room(y), kMargin + header.height() + 6, 640, 360, x, y};
