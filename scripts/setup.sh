@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build git
   libeigen3-dev liburdfdom-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
-  libfmt-dev libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libfmt-dev libtbb-dev libabsl-dev libgtest-dev libgmock-dev libbenchmark-dev
   # crux sweep across processes and machines (mpirun).
   libopenmpi-dev openmpi-bin
   # SHA-256 of the inputs a run records (libcrypto).

@@ -43,6 +43,18 @@ struct BodyJoint {
   Eigen::Vector3d centre_of_mass_local = Eigen::Vector3d::Zero();  // in the joint frame
 };
 
+// How far each limb can reach, whatever its angles: the root does not rotate (section
+// III-A), so a limb's chain starts at a point fixed relative to the root, and its grasp
+// point stays within the sum of the chain's link lengths of that point. A bound for
+// ruling out IK targets without iterating (beyond_reach in ik/reach_target.hpp).
+struct ReachEnvelope {
+  // Where each limb's chain starts (its first joint past the root), relative to the root.
+  std::array<Eigen::Vector3d, kLimbCount> chain_base;
+  // The farthest its grasp point can be from chain_base: infinite when the chain slides
+  // (a prismatic joint past the root).
+  std::array<double, kLimbCount> radius;
+};
+
 // A fixed frame, expressed in the frame of the moving joint that carries it.
 struct AttachedPoint {
   int joint = -1;
@@ -68,6 +80,7 @@ struct BodyModel {
   // Measured on the zero (natural standing) posture with the root at the origin.
   double root_height_above_soles = 0.0;  // used by the root heuristic H(C4)
   double stature = 0.0;                  // top of the head above the soles, if framed
+  ReachEnvelope reach_envelope;
   std::string head_top_frame = "head_top";
   // The box, cylinder and sphere <visual> elements, for drawing; mesh visuals are skipped.
   std::vector<BodyVisual> visuals;

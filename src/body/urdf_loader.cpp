@@ -17,6 +17,7 @@
 
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
+#include "body/reach_envelope.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
 
@@ -291,6 +292,7 @@ class ModelBuilder {
     const double soles = std::min(data.points[operational_point(Limb::RightFoot)].z(),
                                   data.points[operational_point(Limb::LeftFoot)].z());
     model_.root_height_above_soles = -soles;
+    model_.reach_envelope = compute_reach_envelope(model_);
     if (const auto head = find_frame(model_.head_top_frame)) {
       const JointPlacement& carrier = data.placements[head->joint];
       model_.stature = (carrier.origin + carrier.rotation * head->offset).z() - soles;

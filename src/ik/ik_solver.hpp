@@ -21,10 +21,14 @@ struct IkSettings {
   // (spec item 9; the paper's time-out is counted in it).
   ReachTolerances tolerances;
   double time_step_s = 0.002;
+  // Give up before the first iteration when a hold is beyond its limb's reach envelope
+  // (beyond_reach): the verdict cannot change, only the time spent reaching it.
+  bool rule_out_beyond_reach = true;
   GradientDescentSettings paper;
   DampedLeastSquaresSettings fast;
 };
 
+// Dispatches to the chosen solver, after the reach envelope's check.
 IkResult solve_ik(const BodyModel& model, BodyData& data, const Posture& g_init, const ReachTarget& target,
                   const IkSettings& settings, const PathRecorder& recorder = {});
 

@@ -24,6 +24,18 @@ bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& p
   return true;
 }
 
+bool beyond_reach(const ReachEnvelope& envelope, const ReachTarget& target, const ReachTolerances& tolerances) {
+  // Rounding slack, so that a target the termination test accepts is never ruled out.
+  constexpr double kSlack = 1e-9;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const double farthest =
+        tolerances.root_radius + envelope.radius[limb] + tolerances.grasp_radius + target.hold_radii[limb] + kSlack;
+    const Eigen::Vector3d from_base = target.hold_centres[limb] - (target.root + envelope.chain_base[limb]);
+    if (from_base.squaredNorm() > farthest * farthest) return true;
+  }
+  return false;
+}
+
 double tolerance_excess(const std::array<Eigen::Vector3d, kOperationalPointCount>& points, const ReachTarget& target,
                         const ReachTolerances& tolerances) {
   double worst = (points[0] - target.root).norm() - tolerances.root_radius;

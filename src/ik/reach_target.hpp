@@ -30,6 +30,10 @@ double grasp_residual(const std::array<Eigen::Vector3d, kOperationalPointCount>&
 bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
                     const ReachTarget& target, const ReachTolerances& tolerances);
 
+// True when some hold lies beyond its limb's reach envelope from every root inside the
+// root's tolerance sphere: then no posture passes target_reached, and IK need not run.
+bool beyond_reach(const ReachEnvelope& envelope, const ReachTarget& target, const ReachTolerances& tolerances);
+
 // How far the worst operational point lies outside its sphere (the root's tolerance
 // sphere, or its hold's sphere grown by the grasp radius); negative when all are inside.
 double tolerance_excess(const std::array<Eigen::Vector3d, kOperationalPointCount>& points, const ReachTarget& target,

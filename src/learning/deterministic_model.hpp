@@ -6,8 +6,9 @@
 // prioritized sweeping.
 
 #include <span>
-#include <unordered_map>
 #include <vector>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "learning/q_table.hpp"
 
@@ -55,10 +56,10 @@ class DeterministicModel {
       return std::hash<StateCode>()(k.state * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(k.action));
     }
   };
-  std::unordered_map<PairKey, std::size_t, PairHash> index_;
+  absl::flat_hash_map<PairKey, std::size_t, PairHash> index_;
   std::vector<Experience> entries_;
   bool track_predecessors_;
-  std::unordered_map<StateCode, std::vector<std::size_t>> predecessors_;
+  absl::flat_hash_map<StateCode, std::vector<std::size_t>> predecessors_;
 };
 
 }  // namespace crux

@@ -68,7 +68,7 @@ ActionChoice DynaQAgent::choose(const StateCouple& state, std::span<const Action
   return select_action(q_wall_, q_grid_, state, candidates, settings_.epsilon, selection_streams_, steps_, rule);
 }
 
-std::span<const ActionCode> DynaQAgent::available(const std::unordered_map<StateCode, std::vector<ActionCode>>& known,
+std::span<const ActionCode> DynaQAgent::available(const absl::flat_hash_map<StateCode, std::vector<ActionCode>>& known,
                                                   StateCode state) const {
   const auto it = known.find(state);
   return it == known.end() ? std::span<const ActionCode>() : std::span<const ActionCode>(it->second);
@@ -141,13 +141,13 @@ void DynaQAgent::sweep(StateCode real_state, std::size_t real_entry) {
 namespace {
 
 // A state -> actions map in state order, so that the file does not depend on hashing.
-void save_actions(CheckpointWriter& out, const std::unordered_map<StateCode, std::vector<ActionCode>>& known) {
+void save_actions(CheckpointWriter& out, const absl::flat_hash_map<StateCode, std::vector<ActionCode>>& known) {
   const std::vector<StateCode> states = sorted_keys(known);
   out.vector(states);
   for (const StateCode state : states) out.vector(known.at(state));
 }
 
-void load_actions(CheckpointReader& in, std::unordered_map<StateCode, std::vector<ActionCode>>& known,
+void load_actions(CheckpointReader& in, absl::flat_hash_map<StateCode, std::vector<ActionCode>>& known,
                   int action_count) {
   known.clear();
   for (const StateCode state : in.vector<StateCode>()) {

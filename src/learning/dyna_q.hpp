@@ -10,8 +10,9 @@
 #include <optional>
 #include <span>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "learning/action_selection.hpp"
 #include "learning/deterministic_model.hpp"
@@ -80,7 +81,7 @@ class DynaQAgent {
   // Queues `entry` at its Q_wall |TD error| if that passes the threshold. `exact`: the
   // pair was just updated, so its error replaces what was queued (and may drop it).
   void prioritize(std::size_t entry, bool exact);
-  std::span<const ActionCode> available(const std::unordered_map<StateCode, std::vector<ActionCode>>& known,
+  std::span<const ActionCode> available(const absl::flat_hash_map<StateCode, std::vector<ActionCode>>& known,
                                         StateCode state) const;
 
   DynaSettings settings_;
@@ -90,7 +91,7 @@ class DynaQAgent {
   QTable q_wall_, q_grid_;
   DeterministicModel model_;  // tracks predecessors for prioritized sweeping only
   PriorityQueue queue_;
-  std::unordered_map<StateCode, std::vector<ActionCode>> wall_actions_, grid_actions_;
+  absl::flat_hash_map<StateCode, std::vector<ActionCode>> wall_actions_, grid_actions_;
   std::optional<QTable> seeds_;  // seeded mode: the transferred Q_grid
   GridPotential potential_;      // shaping mode: of the transferred Q_grid (0 without one)
   std::vector<char> grid_excluded_;  // informed mode: choose()'s per-candidate buffer

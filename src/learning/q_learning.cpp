@@ -4,11 +4,10 @@ namespace crux {
 
 double q_learning_update(QTable& q, StateCode s, ActionCode a, double reward, StateCode next,
                          std::span<const ActionCode> next_available, const QLearningRates& rates) {
-  const double current = q.value(s, a);
   const double target = reward + rates.gamma * q.best_value(next, next_available);
-  const double updated = current + rates.alpha * (target - current);
-  q.set_value(s, a, updated);
-  return updated;
+  double& value = q.value_slot(s, a);  // after best_value: it may create a row
+  value += rates.alpha * (target - value);
+  return value;
 }
 
 }  // namespace crux

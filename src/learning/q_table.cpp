@@ -18,16 +18,6 @@ std::size_t QTable::row_of(StateCode s) {
   return it->second;
 }
 
-const double* QTable::row_values(StateCode s) const {
-  const auto it = rows_.find(s);
-  return it == rows_.end() ? nullptr : values_.data() + it->second * action_count_;
-}
-
-double QTable::value(StateCode s, ActionCode a) const {
-  const double* row = row_values(s);
-  return row == nullptr ? 0.0 : row[a];
-}
-
 std::uint32_t QTable::visits(StateCode s, ActionCode a) const {
   const auto it = rows_.find(s);
   return it == rows_.end() ? 0 : visits_[it->second * action_count_ + a];
@@ -39,15 +29,6 @@ void QTable::add_visit(StateCode s, ActionCode a) { ++visits_[row_of(s) * action
 
 void QTable::set_visits(StateCode s, ActionCode a, std::uint32_t visits) {
   visits_[row_of(s) * action_count_ + a] = visits;
-}
-
-double QTable::best_value(StateCode s, std::span<const ActionCode> available) const {
-  if (available.empty()) return 0.0;
-  const double* row = row_values(s);
-  if (row == nullptr) return 0.0;
-  double best = row[available[0]];
-  for (const ActionCode a : available.subspan(1)) best = std::max(best, row[a]);
-  return best;
 }
 
 void QTable::save_state(CheckpointWriter& out) const {

@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include "common/input_error.hpp"
+#include "common/random.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
 namespace crux {
 namespace {
+
+constexpr std::uint64_t kSeed = 20261124;
 
 // crux wall's start check (solve_start) and the learning's (reach_start) are one test:
 // the same verdict and the same posture, for any settings.
@@ -46,6 +49,45 @@ TEST(ConfigurationReacher, StartIsSolveStartAnsweredThroughTheCache) {
   }
   EXPECT_GT(reached, 0);
   EXPECT_GT(refused, 0) << "the strict settings refuse some starts";
+}
+
+// The reach envelope only saves time: on 4-configurations of a wall that move one
+// limb of the start to any hold, or put every limb on any hold, every verdict and
+// posture equals a solve that iterates whatever the target.
+TEST(ConfigurationReacher, ReachEnvelopeChangesNoVerdict) {
+  const BodyModel& model = testing::human_model();
+  ReachabilityParameters paper;
+  paper.ik.solver = IkSolverKind::Paper;
+  for (const auto& [parameters, samples] : {std::pair{ReachabilityParameters{}, 300}, std::pair{paper, 60}}) {
+    const Wall wall = generate_random_wall(kSeed);
+    ConfigurationReacher reacher(model, wall, parameters);
+    const Posture from = *reacher.reach_start();
+    IkSettings iterating = parameters.ik;
+    iterating.rule_out_beyond_reach = false;
+    BodyData data(model);
+    Random random(kSeed);
+    int reached = 0, ruled_out = 0;
+    for (int sample = 0; sample < samples; ++sample) {
+      const auto any_hold = [&] { return static_cast<int>(random.below(static_cast<std::uint64_t>(wall.hold_count()))); };
+      HoldConfiguration complete = start_configuration(wall);
+      if (sample % 3 == 0) {
+        for (int& hold : complete.holds) hold = any_hold();
+      } else {
+        complete.holds[random.below(kLimbCount)] = any_hold();
+      }
+      const ReachTarget target = reach_target(model, wall, complete, parameters.root);
+      const IkResult direct = solve_ik(model, data, from, target, iterating);
+      const Posture* posture = reacher.reach(from, complete);
+      ASSERT_EQ(posture != nullptr, direct.reached) << "seed " << kSeed << " sample " << sample;
+      if (posture != nullptr) {
+        EXPECT_EQ(*posture, direct.posture) << "seed " << kSeed << " sample " << sample;
+      }
+      reached += direct.reached;
+      ruled_out += beyond_reach(model.reach_envelope, target, parameters.ik.tolerances);
+    }
+    EXPECT_GT(reached, samples / 20);
+    EXPECT_GT(ruled_out, samples / 2) << "most holds are out of reach";
+  }
 }
 
 }  // namespace

@@ -5,8 +5,13 @@
 #include <cmath>
 #include <limits>
 
+#include "ik/reach_queries.hpp"
+#include "support/test_models.hpp"
+
 namespace crux {
 namespace {
+
+constexpr std::uint64_t kQuerySeed = 20261124;
 
 using Points = std::array<Eigen::Vector3d, kOperationalPointCount>;
 
@@ -125,6 +130,56 @@ TEST(ReachTarget, ANanPostureIsNeverReached) {
     points[point].y() = nan;
     EXPECT_FALSE(target_reached(points, target, ReachTolerances{})) << "point " << point;
   }
+}
+
+// A hold exactly at the limit of the termination test is kept, one millimetre beyond is not.
+TEST(ReachEnvelope, RulesOutOnlyBeyondTheLimit) {
+  ReachEnvelope envelope;
+  envelope.chain_base = {Eigen::Vector3d(0, -0.2, 0.4), Eigen::Vector3d(0, 0.2, 0.4), Eigen::Vector3d(0, -0.1, 0),
+                         Eigen::Vector3d(0, 0.1, 0)};
+  envelope.radius = {0.7, 0.7, 1.0, 1.0};
+  ReachTarget target;
+  target.root = Eigen::Vector3d(0.3, 0.5, 1.0);
+  for (int limb = 0; limb < kLimbCount; ++limb) target.hold_centres[limb] = target.root + envelope.chain_base[limb];
+  const ReachTolerances tolerances;  // root 0.10, grasp 0.04; holds 0.04
+  EXPECT_FALSE(beyond_reach(envelope, target, tolerances));
+  // Left hand: 0.10 + 0.7 + 0.04 + 0.04 = 0.88 m from its chain base, straight up.
+  target.hold_centres[1].z() += 0.88;
+  EXPECT_FALSE(beyond_reach(envelope, target, tolerances));
+  target.hold_centres[1].z() += 0.001;
+  EXPECT_TRUE(beyond_reach(envelope, target, tolerances));
+  target.hold_radii[1] = 0.05;  // a larger hold is grasped farther away
+  EXPECT_FALSE(beyond_reach(envelope, target, tolerances));
+  envelope.radius[1] = std::numeric_limits<double>::infinity();
+  target.hold_centres[1].z() += 100.0;
+  EXPECT_FALSE(beyond_reach(envelope, target, tolerances)) << "an unbounded chain rules nothing out";
+}
+
+// On climbing-like queries: no query a solver reaches is ruled out, and every query
+// generated as clearly unreachable is.
+TEST(ReachEnvelope, KeepsEveryReachedQueryAndRulesOutTheFarOnes) {
+  const BodyModel& model = testing::human_model();
+  const ReachEnvelope& envelope = model.reach_envelope;
+  IkSettings settings;
+  settings.rule_out_beyond_reach = false;  // the solver iterates on every query
+  const auto queries = climbing_reach_queries(model, settings, 400, kQuerySeed);
+  BodyData data(model);
+  int reached = 0, far = 0, ruled_out = 0;
+  for (const ReachQuery& query : queries) {
+    const bool beyond = beyond_reach(envelope, query.target, settings.tolerances);
+    ruled_out += beyond;
+    if (query.far_move) {
+      ++far;
+      EXPECT_TRUE(beyond) << "seed " << kQuerySeed;
+    }
+    if (solve_ik(model, data, query.start, query.target, settings).reached) {
+      ++reached;
+      EXPECT_FALSE(beyond) << "seed " << kQuerySeed;
+    }
+  }
+  EXPECT_GT(reached, 100);
+  EXPECT_GT(far, 20);
+  EXPECT_GE(ruled_out, far);
 }
 
 }  // namespace
