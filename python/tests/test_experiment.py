@@ -190,8 +190,8 @@ print('thread call finished', len(lengths))
 caught = []
 signal.signal(signal.SIGINT, lambda *args: caught.append(1))
 threading.Timer(0.3, lambda: signal.raise_signal(signal.SIGINT)).start()
-run = crux.run_learning(wall, {'experiment.iterations': 20000})
+run = crux.run_learning(wall, {'experiment.iterations': 200000})  # far longer than the timer's 0.3 s
 print('own handler', len(caught), len(run.iterations['reward']))
 """
     out, err, _ = run_interrupted(script)
-    assert out.split("\n")[:3] == ["interrupted", "thread call finished 1", "own handler 1 20000"], (out, err)
+    assert out.split("\n")[:3] == ["interrupted", "thread call finished 1", "own handler 1 200000"], (out, err)
