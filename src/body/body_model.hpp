@@ -5,6 +5,7 @@
 // workspace is BodyData.
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -49,10 +50,13 @@ struct BodyJoint {
 // ruling out IK targets without iterating (beyond_reach in ik/reach_target.hpp).
 struct ReachEnvelope {
   // Where each limb's chain starts (its first joint past the root), relative to the root.
-  std::array<Eigen::Vector3d, kLimbCount> chain_base;
+  std::array<Eigen::Vector3d, kLimbCount> chain_base{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                                     Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   // The farthest its grasp point can be from chain_base: infinite when the chain slides
   // (a prismatic joint past the root).
-  std::array<double, kLimbCount> radius;
+  // Until computed, nothing is ruled out.
+  std::array<double, kLimbCount> radius{kUnbounded, kUnbounded, kUnbounded, kUnbounded};
+  static constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 };
 
 // A fixed frame, expressed in the frame of the moving joint that carries it.

@@ -14,24 +14,22 @@ ReachEnvelope compute_reach_envelope(const BodyModel& model) {
   forward_kinematics(model, data, Posture::Zero());
   ReachEnvelope envelope;
   for (int limb = 0; limb < kLimbCount; ++limb) {
-    const AttachedPoint& grasp = model.grasp_points[limb];
-    std::vector<int> chain;  // grasp joint back to the first joint past the root
-    for (int joint = grasp.joint; joint >= kRootDof; joint = model.joints[joint].parent) chain.push_back(joint);
-    double radius = grasp.offset.norm();
-    if (chain.empty()) {
+    // The limb's chain from the root to its grasp joint, past the three root axes.
+    const std::vector<int>& chain = model.chains[operational_point(limb)];
+    const auto first = std::find_if(chain.begin(), chain.end(), [](int joint) { return joint >= kRootDof; });
+    double radius = model.grasp_points[limb].offset.norm();
+    if (first == chain.end()) {
       // The grasp frame rides on the root: it keeps a fixed offset.
       envelope.chain_base[limb] = data.points[operational_point(limb)] - data.points[0];
+      radius = 0.0;
     } else {
       // The first joint's origin follows the root's translation only; every later origin
       // and the grasp point sit at fixed distances along rotated links.
-      envelope.chain_base[limb] = data.placements[chain.back()].origin - data.points[0];
-      for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
-        const BodyJoint& joint = model.joints[chain[k]];
-        radius += joint.origin_translation.norm();
-      }
+      envelope.chain_base[limb] = data.placements[*first].origin - data.points[0];
+      for (auto joint = first + 1; joint != chain.end(); ++joint) radius += model.joints[*joint].origin_translation.norm();
       // A sliding joint, or a chain hanging off an intermediate root axis, has no such bound.
-      const bool bounded = model.joints[chain.back()].parent == kRootDof - 1 &&
-                           std::none_of(chain.begin(), chain.end(), [&](int joint) { return model.joints[joint].prismatic; });
+      const bool bounded = model.joints[*first].parent == kRootDof - 1 &&
+                           std::none_of(first, chain.end(), [&](int joint) { return model.joints[joint].prismatic; });
       if (!bounded) radius = std::numeric_limits<double>::infinity();
     }
     envelope.radius[limb] = radius;

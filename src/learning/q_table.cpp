@@ -23,7 +23,7 @@ std::uint32_t QTable::visits(StateCode s, ActionCode a) const {
   return it == rows_.end() ? 0 : visits_[it->second * action_count_ + a];
 }
 
-void QTable::set_value(StateCode s, ActionCode a, double value) { values_[row_of(s) * action_count_ + a] = value; }
+void QTable::set_value(StateCode s, ActionCode a, double value) { value_slot(s, a) = value; }
 
 void QTable::add_visit(StateCode s, ActionCode a) { ++visits_[row_of(s) * action_count_ + a]; }
 
