@@ -3,15 +3,11 @@
 #include <Eigen/Cholesky>
 
 #include "body/kinematics.hpp"
+#include "ik/task_jacobian.hpp"
 
 namespace crux {
 
 namespace {
-
-constexpr int kTaskSize = 3 * kOperationalPointCount;
-using TaskJacobian = Eigen::Matrix<double, kTaskSize, kConfigurationDof>;
-using TaskVector = Eigen::Matrix<double, kTaskSize, 1>;
-using TaskMatrix = Eigen::Matrix<double, kTaskSize, kTaskSize>;
 
 // Each operational point aims at the nearest point of a sphere around its target whose
 // radius is `aim_fraction` of the termination test's radius: a point already inside
@@ -36,11 +32,11 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
                                        const ReachTarget& target, const ReachTolerances& tolerances,
                                        double time_step_s, const DampedLeastSquaresSettings& settings,
                                        const PathRecorder& recorder) {
-  TaskJacobian jacobian;
   TaskVector error;
   TaskMatrix normal;
   Eigen::LLT<TaskMatrix> factor;
-  Posture g = g_init, trial, gradient;
+  Posture g = g_init, trial, gradient, step;
+  const ChainCoordinates chains = chain_coordinates(model);
 
   operational_forward_kinematics(model, data, g);
   recorder.start(g);
@@ -52,17 +48,17 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
   while (!reached && iteration < settings.max_iterations && stalled < settings.stall_iterations) {
     ++iteration;
     operational_jacobians(model, data);
-    for (int k = 0; k < kOperationalPointCount; ++k) jacobian.middleRows<3>(3 * k) = data.jacobians[k];
-    gradient.noalias() = jacobian.transpose() * error;
+    task_transpose_product(data, chains, 0, error, gradient);
     // Active set: a joint at a limit whose descent direction points out of range is
     // frozen for this step, so the remaining joints absorb the motion.
+    CoordinateSet frozen = 0;
     for (int i = kRootDof; i < kConfigurationDof; ++i) {
       if ((g[i] <= model.lower_limits[i] && gradient[i] > 0.0) ||
           (g[i] >= model.upper_limits[i] && gradient[i] < 0.0)) {
-        jacobian.col(i).setZero();
+        frozen |= CoordinateSet{1} << i;
       }
     }
-    normal.noalias() = jacobian * jacobian.transpose();
+    task_normal_matrix(data, chains, frozen, normal);
     bool improved = false;
     double trial_cost = cost;
     TaskVector trial_error;
@@ -70,7 +66,8 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
       TaskMatrix damped = normal;
       damped.diagonal().array() += damping;
       factor.compute(damped);
-      trial.noalias() = g - jacobian.transpose() * factor.solve(error);
+      task_transpose_product(data, chains, frozen, factor.solve(error), step);
+      trial = g - step;
       trial = trial.cwiseMax(model.lower_limits).cwiseMin(model.upper_limits);
       operational_forward_kinematics(model, data, trial);
       task_error(data, target, tolerances, settings.aim_fraction, trial_error);

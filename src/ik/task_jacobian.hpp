@@ -1,0 +1,44 @@
+#pragma once
+// The stacked Jacobian J of the five operational points (the root, then the grasp points)
+// and the two products the fast solver needs, J J^T and J^T v, computed over J's block
+// sparsity: point k moves only with the coordinates of its chain (model.chains[k]), so a
+// block of J J^T sums over the few coordinates two chains share, not all 35.
+//
+// Every entry is summed in the order Eigen 3.4's dense kernels use for these fixed sizes
+// (GEBP for J J^T, the row-major GEMV for J^T v); terms that are exactly zero are skipped,
+// which leaves each sum unchanged. So the solver's postures, and every result built on
+// them, are bit for bit those of the dense products. The test
+// TaskJacobian.ProductsEqualEigensBitForBit fails if a compiler or Eigen version sums in
+// another order.
+
+#include <array>
+#include <cstdint>
+
+#include <Eigen/Core>
+
+#include "body/body_data.hpp"
+
+namespace crux {
+
+inline constexpr int kTaskSize = 3 * kOperationalPointCount;
+using TaskJacobian = Eigen::Matrix<double, kTaskSize, kConfigurationDof>;
+using TaskVector = Eigen::Matrix<double, kTaskSize, 1>;
+using TaskMatrix = Eigen::Matrix<double, kTaskSize, kTaskSize>;
+
+// A set of coordinates, bit i for coordinate i.
+using CoordinateSet = std::uint64_t;
+static_assert(kConfigurationDof <= 64, "a CoordinateSet holds one bit per coordinate");
+
+// chain_coordinates(model)[k]: the coordinates that move operational point k.
+using ChainCoordinates = std::array<CoordinateSet, kOperationalPointCount>;
+ChainCoordinates chain_coordinates(const BodyModel& model);
+
+// J J^T, with J stacked from data.jacobians and the `frozen` coordinates' columns taken as 0.
+void task_normal_matrix(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
+                        TaskMatrix& normal);
+
+// J^T v, with the `frozen` coordinates' columns taken as 0.
+void task_transpose_product(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
+                            const TaskVector& v, Posture& out);
+
+}  // namespace crux

@@ -1,0 +1,90 @@
+#include "ik/task_jacobian.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <string>
+
+#include "body/kinematics.hpp"
+#include "body/urdf_loader.hpp"
+#include "support/test_models.hpp"
+
+namespace crux {
+namespace {
+
+constexpr std::uint64_t kSeed = 20261124;
+
+// The dense J the solver used to stack, with the frozen coordinates' columns zeroed.
+TaskJacobian dense_jacobian(const BodyData& data, CoordinateSet frozen) {
+  TaskJacobian jacobian;
+  for (int k = 0; k < kOperationalPointCount; ++k) jacobian.middleRows<3>(3 * k) = data.jacobians[k];
+  for (int i = 0; i < kConfigurationDof; ++i) {
+    if ((frozen >> i) & 1) jacobian.col(i).setZero();
+  }
+  return jacobian;
+}
+
+void expect_same_bits(double expected, double actual, const std::string& where) {
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(expected), std::bit_cast<std::uint64_t>(actual))
+      << where << ": Eigen " << expected << ", block-sparse " << actual;
+}
+
+// Both products against Eigen's dense ones at `postures` random postures, each with a
+// random set of frozen joints (never the root, as in the solver).
+void expect_eigens_bits(const BodyModel& model, std::uint64_t seed, int postures, const std::string& body) {
+  Random random(seed);
+  BodyData data(model);
+  const ChainCoordinates chains = chain_coordinates(model);
+  for (int n = 0; n < postures; ++n) {
+    const Posture g = n == 0 ? Posture(standing_posture({0.3, 0.6, 1.0})) : testing::random_posture(model, random);
+    operational_forward_kinematics(model, data, g);
+    operational_jacobians(model, data);
+    CoordinateSet frozen = 0;
+    for (int i = kRootDof; i < kConfigurationDof; ++i) {
+      if (random.uniform() < 0.2) frozen |= CoordinateSet{1} << i;
+    }
+    TaskVector v;
+    for (int r = 0; r < kTaskSize; ++r) v[r] = random.uniform(-1.0, 1.0);
+    const TaskJacobian jacobian = dense_jacobian(data, frozen);
+
+    TaskMatrix expected_normal, normal;
+    expected_normal.noalias() = jacobian * jacobian.transpose();
+    task_normal_matrix(data, chains, frozen, normal);
+    Posture expected_product, product;
+    expected_product.noalias() = jacobian.transpose() * v;
+    task_transpose_product(data, chains, frozen, v, product);
+
+    const std::string where = body + ", seed " + std::to_string(seed) + ", posture " + std::to_string(n);
+    for (int r = 0; r < kTaskSize; ++r) {
+      for (int c = 0; c < kTaskSize; ++c) {
+        expect_same_bits(expected_normal(r, c), normal(r, c),
+                         where + ", J J^T (" + std::to_string(r) + ", " + std::to_string(c) + ")");
+      }
+    }
+    for (int i = 0; i < kConfigurationDof; ++i) {
+      expect_same_bits(expected_product[i], product[i], where + ", J^T v [" + std::to_string(i) + "]");
+    }
+    if (::testing::Test::HasFailure()) return;  // one posture's report is enough
+  }
+}
+
+TEST(TaskJacobian, ChainCoordinatesAreTheChains) {
+  const BodyModel& model = testing::human_model();
+  const ChainCoordinates chains = chain_coordinates(model);
+  for (int k = 0; k < kOperationalPointCount; ++k) {
+    EXPECT_EQ(std::popcount(chains[k]), static_cast<int>(model.chains[k].size())) << "point " << k;
+    for (const int i : model.chains[k]) EXPECT_TRUE((chains[k] >> i) & 1) << "point " << k << " coordinate " << i;
+  }
+  EXPECT_EQ(chains[0], CoordinateSet{0b111}) << "the root point moves with the root's translation only";
+}
+
+TEST(TaskJacobian, ProductsEqualEigensBitForBit) {
+  expect_eigens_bits(testing::human_model(), kSeed, 500, "human");
+  for (std::uint64_t tree = 1; tree <= 3; ++tree) {
+    const auto path = testing::write_temporary("synthetic.urdf", testing::synthetic_tree_urdf(tree));
+    expect_eigens_bits(load_body_model(path.string()), kSeed + tree, 200, "synthetic tree " + std::to_string(tree));
+  }
+}
+
+}  // namespace
+}  // namespace crux
