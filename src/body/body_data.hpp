@@ -3,6 +3,7 @@
 // buffer is sized once from the model, so the kinematic functions never allocate.
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,10 +20,19 @@ struct JointPlacement {
   Eigen::Vector3d axis;      // joint axis in the world
 };
 
+// sin and cos of a joint's coordinate, kept with the coordinate's bits they were computed
+// from: a solver's trial steps leave frozen and clamped joints where they were, and FK
+// need not call sincos again for them.
+struct JointTrigonometry {
+  std::uint64_t angle_bits = ~std::uint64_t{0};  // a NaN, which no coordinate reuses
+  double sine = 0.0, cosine = 1.0;
+};
+
 struct BodyData {
   explicit BodyData(const BodyModel& model);
 
   std::vector<JointPlacement> placements;  // one per joint of the model
+  std::vector<JointTrigonometry> trigonometry;  // one per joint of the model
   // e0 (root) then the grasp points in limb order.
   std::array<Eigen::Vector3d, kOperationalPointCount> points;
   // d e_i / d G; columns outside model.chains[i] stay zero.

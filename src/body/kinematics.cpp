@@ -1,22 +1,23 @@
 #include "body/kinematics.hpp"
 
+#include <bit>
 #include <cmath>
 
 #include <Eigen/Geometry>
 
 namespace crux {
 
-BodyData::BodyData(const BodyModel& model) : placements(model.joints.size()) {
+BodyData::BodyData(const BodyModel& model)
+    : placements(model.joints.size()), trigonometry(model.joints.size()) {
   for (auto& p : points) p.setZero();
   for (auto& j : jacobians) j.setZero();
 }
 
 namespace {
 
-// Rotation by `angle` about the unit vector `axis` (Rodrigues' formula).
-Eigen::Matrix3d axis_rotation(const Eigen::Vector3d& axis, double angle) {
-  const double s = std::sin(angle);
-  const double c = std::cos(angle);
+// Rotation about the unit vector `axis` by the angle of sine s and cosine c (Rodrigues'
+// formula).
+Eigen::Matrix3d axis_rotation(const Eigen::Vector3d& axis, double s, double c) {
   const double t = 1.0 - c;
   const double x = axis.x(), y = axis.y(), z = axis.z();
   Eigen::Matrix3d r;
@@ -29,6 +30,17 @@ Eigen::Matrix3d axis_rotation(const Eigen::Vector3d& axis, double angle) {
 }  // namespace
 
 namespace {
+
+const JointTrigonometry& joint_trigonometry(BodyData& data, int i, double angle) {
+  JointTrigonometry& cached = data.trigonometry[i];
+  // Bits, not ==: sin(-0.0) is -0.0.
+  if (std::bit_cast<std::uint64_t>(angle) != cached.angle_bits) {
+    cached.angle_bits = std::bit_cast<std::uint64_t>(angle);
+    cached.sine = std::sin(angle);
+    cached.cosine = std::cos(angle);
+  }
+  return cached;
+}
 
 // Places joint i from its parent's placement (already placed) and coordinate g[i].
 void place_joint(const BodyModel& model, BodyData& data, const Posture& g, int i) {
@@ -55,13 +67,15 @@ void place_joint(const BodyModel& model, BodyData& data, const Posture& g, int i
   } else if (joint.principal_axis >= 0) {
     // Rotating about a coordinate axis k mixes only the two other columns.
     const int k = joint.principal_axis, a = (k + 1) % 3, b = (k + 2) % 3;
-    const double s = joint.principal_sign * std::sin(g[i]);
-    const double c = std::cos(g[i]);
+    const JointTrigonometry& trigonometry = joint_trigonometry(data, i, g[i]);
+    const double s = joint.principal_sign * trigonometry.sine;
+    const double c = trigonometry.cosine;
     out.rotation.col(k) = frame.col(k);
     out.rotation.col(a) = c * frame.col(a) + s * frame.col(b);
     out.rotation.col(b) = c * frame.col(b) - s * frame.col(a);
   } else {
-    out.rotation.noalias() = frame * axis_rotation(joint.axis, g[i]);
+    const JointTrigonometry& trigonometry = joint_trigonometry(data, i, g[i]);
+    out.rotation.noalias() = frame * axis_rotation(joint.axis, trigonometry.sine, trigonometry.cosine);
   }
 }
 

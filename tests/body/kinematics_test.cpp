@@ -3,7 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
+#include <string>
+#include <vector>
 
+#include "body/urdf_loader.hpp"
 #include "support/allocation_counter.hpp"
 #include "support/test_models.hpp"
 
@@ -100,6 +105,72 @@ TEST(Kinematics, OperationalForwardKinematicsIsTheWholeOnesOnTheChains) {
     }
     EXPECT_EQ(operational.placements[i].origin, before.placements[i].origin) << model.joints[i].name;
   }
+}
+
+// Bit for bit, on the joints `joints` and the operational points.
+bool same_bits(const BodyData& a, const BodyData& b, const std::vector<int>& joints) {
+  const auto same = [](const auto& x, const auto& y) {
+    return std::memcmp(x.data(), y.data(), sizeof(double) * x.size()) == 0;
+  };
+  for (const int i : joints) {
+    if (!same(a.placements[i].rotation, b.placements[i].rotation) ||
+        !same(a.placements[i].origin, b.placements[i].origin) || !same(a.placements[i].axis, b.placements[i].axis)) {
+      return false;
+    }
+  }
+  for (int k = 0; k < kOperationalPointCount; ++k) {
+    if (!same(a.points[k], b.points[k])) return false;
+  }
+  return true;
+}
+
+// A workspace that has placed other postures reuses the sines and cosines of the joints
+// whose coordinates kept their bits; it must place each posture exactly as a fresh one.
+void expect_reuse_changes_no_bit(const BodyModel& model, std::uint64_t seed, const std::string& body) {
+  Random random(seed);
+  BodyData reused(model);
+  std::vector<int> every_joint(model.joints.size());
+  for (std::size_t i = 0; i < every_joint.size(); ++i) every_joint[i] = static_cast<int>(i);
+  Posture g = random_posture(model, random);
+  for (int step = 0; step < 300; ++step) {
+    const Posture other = random_posture(model, random);
+    for (int i = 0; i < kConfigurationDof; ++i) {
+      const double u = random.uniform();
+      if (u < 0.4) g[i] = other[i];            // moved
+      else if (u < 0.45) g[i] = -g[i];         // mirrored, so +0.0 and -0.0 both occur
+      else if (u < 0.5) g[i] = 0.0;            // at zero
+    }
+    BodyData fresh(model);
+    forward_kinematics(model, fresh, g);
+    // Odd steps place only the chains, as the solvers' trials do.
+    const bool whole = step % 2 == 0;
+    if (whole) {
+      forward_kinematics(model, reused, g);
+    } else {
+      operational_forward_kinematics(model, reused, g);
+    }
+    ASSERT_TRUE(same_bits(reused, fresh, whole ? every_joint : model.operational_joints))
+        << body << ", seed " << seed << ", step " << step;
+  }
+}
+
+TEST(Kinematics, ReusedSinesAndCosinesChangeNoBit) {
+  expect_reuse_changes_no_bit(human_model(), kSeed, "human");
+  // Random axes: the general rotation, not the coordinate-axis one.
+  const auto path = testing::write_temporary("synthetic.urdf", testing::synthetic_tree_urdf(1));
+  expect_reuse_changes_no_bit(load_body_model(path.string()), kSeed + 1, "synthetic tree 1");
+}
+
+TEST(Kinematics, AMinusZeroAngleIsNotTakenForPlusZero) {
+  const BodyModel& model = human_model();
+  BodyData data(model);
+  Posture g = standing_posture({0.3, 0.6, 1.0});
+  forward_kinematics(model, data, g);
+  const int joint = model.operational_joints.back();
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(data.trigonometry[joint].sine), std::bit_cast<std::uint64_t>(0.0));
+  g[joint] = -0.0;
+  forward_kinematics(model, data, g);
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(data.trigonometry[joint].sine), std::bit_cast<std::uint64_t>(-0.0));
 }
 
 }  // namespace
