@@ -43,7 +43,7 @@ std::string ik_result_text(const BodyModel& model, IkSolverKind solver, const Re
                   result.simulated_time_s, result.residual_m) +
       fmt::format("root target H(C4) = ({:.3f}, {:.3f}, {:.3f}); root at ({:.3f}, {:.3f}, {:.3f})\n", target.root.x(),
                   target.root.y(), target.root.z(), data.points[0].x(), data.points[0].y(), data.points[0].z());
-  if (!result.reached) out += "returned the initial posture G_init, as Algorithm 1 does on time-out\n";
+  if (!result.reached) out += "returned the initial posture G_init, as Algorithm 1 does when it does not reach\n";
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "body/kinematics.hpp"
 #include "ik/reach_queries.hpp"
 #include "support/test_models.hpp"
 
@@ -157,6 +158,39 @@ TEST(ReachEnvelope, RulesOutOnlyBeyondTheLimit) {
 
 // On climbing-like queries: no query a solver reaches is ruled out, and every query
 // generated as clearly unreachable is.
+// A point uniform in the ball of radius `radius` around `centre`, or on its sphere.
+Eigen::Vector3d point_in_ball(Random& random, const Eigen::Vector3d& centre, double radius, bool on_sphere) {
+  const Eigen::Vector3d direction = Eigen::Vector3d(random.normal(), random.normal(), random.normal()).normalized();
+  return centre + (on_sphere ? radius : radius * std::cbrt(random.uniform())) * direction;
+}
+
+// Soundness without a solver: every target that some posture satisfies (its root and
+// grasp points inside their tolerance spheres, here on them half the time) is kept.
+TEST(ReachEnvelope, NeverRulesOutATargetThatAPosturePasses) {
+  const BodyModel& model = testing::human_model();
+  BodyData data(model);
+  Random random(kQuerySeed);
+  ReachTolerances tolerances;
+  for (int sample = 0; sample < 20000; ++sample) {
+    const Posture g = testing::random_posture(model, random);
+    forward_kinematics(model, data, g);
+    tolerances.root_radius = random.uniform(0.0, 0.2);
+    tolerances.grasp_radius = random.uniform(0.0, 0.08);
+    const bool on_sphere = sample % 2 == 0;
+    ReachTarget target;
+    target.root = point_in_ball(random, data.points[0], tolerances.root_radius, on_sphere);
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      target.hold_radii[limb] = random.uniform(0.0, 0.08);
+      target.hold_centres[limb] = point_in_ball(random, data.points[operational_point(limb)],
+                                                tolerances.grasp_radius + target.hold_radii[limb], on_sphere);
+    }
+    ASSERT_TRUE(target_reached(data.points, target, tolerances) || on_sphere)
+        << "sample " << sample << ", seed " << kQuerySeed;
+    ASSERT_FALSE(beyond_reach(model.reach_envelope, target, tolerances))
+        << "sample " << sample << ", seed " << kQuerySeed;
+  }
+}
+
 TEST(ReachEnvelope, KeepsEveryReachedQueryAndRulesOutTheFarOnes) {
   const BodyModel& model = testing::human_model();
   const ReachEnvelope& envelope = model.reach_envelope;
