@@ -24,7 +24,7 @@ struct JointPlacement {
 // from: a solver's trial steps leave frozen and clamped joints where they were, and FK
 // need not call sincos again for them.
 struct JointTrigonometry {
-  std::uint64_t angle_bits = ~std::uint64_t{0};  // a NaN, which no coordinate reuses
+  std::uint64_t angle_bits = 0;  // +0.0, whose sine and cosine these are
   double sine = 0.0, cosine = 1.0;
 };
 

@@ -1,7 +1,6 @@
 #include "body/reach_envelope.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <vector>
 
 #include "body/body_data.hpp"
@@ -19,9 +18,10 @@ ReachEnvelope compute_reach_envelope(const BodyModel& model) {
     const auto first = std::find_if(chain.begin(), chain.end(), [](int joint) { return joint >= kRootDof; });
     double radius = model.grasp_points[limb].offset.norm();
     if (first == chain.end()) {
-      // The grasp frame rides on the root: it keeps a fixed offset.
+      // The grasp frame rides on the root: a fixed offset if on its last axis, which
+      // carries the root point; on an earlier axis it lags the later translations.
       envelope.chain_base[limb] = data.points[operational_point(limb)] - data.points[0];
-      radius = 0.0;
+      radius = model.grasp_points[limb].joint == kRootDof - 1 ? 0.0 : ReachEnvelope::kUnbounded;
     } else {
       // The first joint's origin follows the root's translation only; every later origin
       // and the grasp point sit at fixed distances along rotated links.
@@ -30,7 +30,7 @@ ReachEnvelope compute_reach_envelope(const BodyModel& model) {
       // A sliding joint, or a chain hanging off an intermediate root axis, has no such bound.
       const bool bounded = model.joints[*first].parent == kRootDof - 1 &&
                            std::none_of(first, chain.end(), [&](int joint) { return model.joints[joint].prismatic; });
-      if (!bounded) radius = std::numeric_limits<double>::infinity();
+      if (!bounded) radius = ReachEnvelope::kUnbounded;
     }
     envelope.radius[limb] = radius;
   }

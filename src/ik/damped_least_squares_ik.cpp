@@ -66,6 +66,7 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
       TaskMatrix damped = normal;
       damped.diagonal().array() += damping;
       factor.compute(damped);
+      // data.jacobians are still g's: forward kinematics of a trial moves points only.
       task_transpose_product(data, chains, frozen, factor.solve(error), step);
       trial = g - step;
       trial = trial.cwiseMax(model.lower_limits).cwiseMin(model.upper_limits);

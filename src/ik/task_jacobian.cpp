@@ -8,16 +8,16 @@ namespace {
 
 // The shape of Eigen 3.4's SSE2 kernels for a 15 x 35 by 35 x 15 product: GEBP takes the
 // rows in blocks of 4, then one packet of 2 rows, then single rows, and the columns in
-// blocks of 4. On the 2-row packet against a 4-column block, it sums even and odd depth
-// steps of its first kPeeledDepth in two accumulators, adds them, then adds the rest in
-// order. Every other entry is one sum in depth order. The row-major GEMV behind J^T v
-// sums each 2-wide packet of a row in two lanes, adds the lanes, then adds the last
-// (odd) entry.
-constexpr int kRowBlock = 4, kPacket = 2;
+// blocks of 4; it unrolls the depth by 8. On the 2-row packet against a 4-column block,
+// it sums even and odd depth steps of the unrolled part in two accumulators, adds them,
+// then adds the rest in order. Every other entry is one sum in depth order. The
+// row-major GEMV behind J^T v sums each 2-wide packet of a row in two lanes, adds the
+// lanes, then adds the last (odd) entry.
+constexpr int kRowBlock = 4, kColumnBlock = 4, kPacket = 2, kDepthUnroll = 8;
 constexpr int kPacketRowsBegin = kTaskSize / kRowBlock * kRowBlock;
 constexpr int kPacketRowsEnd = kPacketRowsBegin + kPacket;
-constexpr int kColumnBlocksEnd = kTaskSize / kRowBlock * kRowBlock;
-constexpr int kPeeledDepth = kConfigurationDof / 8 * 8;
+constexpr int kColumnBlocksEnd = kTaskSize / kColumnBlock * kColumnBlock;
+constexpr int kPeeledDepth = kConfigurationDof / kDepthUnroll * kDepthUnroll;
 constexpr int kLaneRowsEnd = kTaskSize / kPacket * kPacket;
 static_assert(kTaskSize - kLaneRowsEnd == 1, "J^T v ends each sum with a single last row");
 
@@ -83,15 +83,14 @@ void task_normal_matrix(const BodyData& data, const ChainCoordinates& chains, Co
 
 void task_transpose_product(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
                             const TaskVector& v, Posture& out) {
+  // Every sum starts at +0 and so never becomes -0: adding a last row of +0 changes nothing.
   std::array<double, kConfigurationDof> even{}, odd{}, last{};
-  CoordinateSet has_last = 0;
   for (int row = 0; row < kTaskSize; ++row) {
     for (CoordinateSet moving = chains[row / 3] & ~frozen; moving != 0; moving &= moving - 1) {
       const int i = std::countr_zero(moving);
       const double term = data.jacobians[row / 3](row % 3, i) * v[row];
       if (row == kLaneRowsEnd) {
         last[i] = term;
-        has_last |= CoordinateSet{1} << i;
       } else if (row % 2 == 0) {
         even[i] += term;
       } else {
@@ -100,8 +99,7 @@ void task_transpose_product(const BodyData& data, const ChainCoordinates& chains
     }
   }
   for (int i = 0; i < kConfigurationDof; ++i) {
-    out[i] = even[i] + odd[i];
-    if ((has_last >> i) & 1) out[i] += last[i];
+    out[i] = (even[i] + odd[i]) + last[i];
   }
 }
 

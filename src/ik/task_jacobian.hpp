@@ -6,8 +6,9 @@
 //
 // Every entry is summed in the order Eigen 3.4's dense kernels use for these fixed sizes
 // (GEBP for J J^T, the row-major GEMV for J^T v); terms that are exactly zero are skipped,
-// which leaves each sum unchanged. So the solver's postures, and every result built on
-// them, are bit for bit those of the dense products. The test
+// which leaves a sum that starts at +0 unchanged when every factor is finite. So the
+// solver's postures, and every result built on them, are bit for bit those of the dense
+// products. The test
 // TaskJacobian.ProductsEqualEigensBitForBit fails if a compiler or Eigen version sums in
 // another order.
 
@@ -21,7 +22,6 @@
 namespace crux {
 
 inline constexpr int kTaskSize = 3 * kOperationalPointCount;
-using TaskJacobian = Eigen::Matrix<double, kTaskSize, kConfigurationDof>;
 using TaskVector = Eigen::Matrix<double, kTaskSize, 1>;
 using TaskMatrix = Eigen::Matrix<double, kTaskSize, kTaskSize>;
 

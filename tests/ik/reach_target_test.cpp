@@ -156,8 +156,12 @@ TEST(ReachEnvelope, RulesOutOnlyBeyondTheLimit) {
   EXPECT_FALSE(beyond_reach(envelope, target, tolerances)) << "an unbounded chain rules nothing out";
 }
 
-// On climbing-like queries: no query a solver reaches is ruled out, and every query
-// generated as clearly unreachable is.
+TEST(ReachEnvelope, UntilComputedRulesNothingOut) {
+  ReachTarget target = sample_target();
+  target.hold_centres[0].z() += 1000.0;
+  EXPECT_FALSE(beyond_reach(ReachEnvelope{}, target, ReachTolerances{}));
+}
+
 // A point uniform in the ball of radius `radius` around `centre`, or on its sphere.
 Eigen::Vector3d point_in_ball(Random& random, const Eigen::Vector3d& centre, double radius, bool on_sphere) {
   const Eigen::Vector3d direction = Eigen::Vector3d(random.normal(), random.normal(), random.normal()).normalized();
@@ -172,7 +176,13 @@ TEST(ReachEnvelope, NeverRulesOutATargetThatAPosturePasses) {
   Random random(kQuerySeed);
   ReachTolerances tolerances;
   for (int sample = 0; sample < 20000; ++sample) {
-    const Posture g = testing::random_posture(model, random);
+    // Every other posture is near the zero posture, where the limbs are nearly straight,
+    // so that grasp points come close to the bound.
+    Posture g = testing::random_posture(model, random);
+    if (sample % 4 >= 2) {
+      for (int i = kRootDof; i < kConfigurationDof; ++i) g[i] = 0.05 * random.uniform(-1.0, 1.0);
+      g = g.cwiseMax(model.lower_limits).cwiseMin(model.upper_limits);
+    }
     forward_kinematics(model, data, g);
     tolerances.root_radius = random.uniform(0.0, 0.2);
     tolerances.grasp_radius = random.uniform(0.0, 0.08);
@@ -191,6 +201,8 @@ TEST(ReachEnvelope, NeverRulesOutATargetThatAPosturePasses) {
   }
 }
 
+// On climbing-like queries: no query a solver reaches is ruled out, and every query
+// generated as clearly unreachable is.
 TEST(ReachEnvelope, KeepsEveryReachedQueryAndRulesOutTheFarOnes) {
   const BodyModel& model = testing::human_model();
   const ReachEnvelope& envelope = model.reach_envelope;

@@ -14,6 +14,8 @@ namespace {
 
 constexpr std::uint64_t kSeed = 20261124;
 
+using TaskJacobian = Eigen::Matrix<double, kTaskSize, kConfigurationDof>;
+
 // The dense J the solver used to stack, with the frozen coordinates' columns zeroed.
 TaskJacobian dense_jacobian(const BodyData& data, CoordinateSet frozen) {
   TaskJacobian jacobian;
