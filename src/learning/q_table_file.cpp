@@ -15,7 +15,7 @@ namespace crux {
 
 namespace {
 
-constexpr char kMagic[8] = {'C', 'R', 'U', 'X', 'Q', 'T', 'A', 'B'};
+constexpr char kQTableMagic[8] = {'C', 'R', 'U', 'X', 'Q', 'T', 'A', 'B'};
 constexpr std::size_t kFixedHeaderSize = 8 + 4 + 4 + 4 + 8;  // the space's bytes come on top
 
 template <typename T>
@@ -48,7 +48,7 @@ std::uint64_t q_table_checksum(const std::string& bytes, std::size_t length) {
 
 void save_q_table(const std::string& path, const QTable& table, const std::string& state_space) {
   if (state_space.size() > kMaxStateSpaceNameBytes) throw std::invalid_argument("save_q_table: state space name too long");
-  std::string out(kMagic, sizeof(kMagic));
+  std::string out(kQTableMagic, sizeof(kQTableMagic));
   put<std::uint32_t>(out, kQTableFileVersion);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(table.action_count()));
   put<std::uint32_t>(out, static_cast<std::uint32_t>(state_space.size()));
@@ -70,11 +70,11 @@ QTable load_q_table(const std::string& path, int expected_action_count, const st
 QTable parse_q_table(const std::string& bytes, const std::string& path, int expected_action_count,
                      const std::string& expected_state_space) {
   if (bytes.empty()) throw InputError(path, "the file is empty");
-  if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
+  if (bytes.size() < sizeof(kQTableMagic) || std::memcmp(bytes.data(), kQTableMagic, sizeof(kQTableMagic)) != 0) {
     throw InputError(path, "not a crux Q-table file (no CRUXQTAB header)");
   }
-  if (bytes.size() < sizeof(kMagic) + 4) throw InputError(path, "truncated: the header is incomplete");
-  std::size_t at = sizeof(kMagic);
+  if (bytes.size() < sizeof(kQTableMagic) + 4) throw InputError(path, "truncated: the header is incomplete");
+  std::size_t at = sizeof(kQTableMagic);
   const auto version = get<std::uint32_t>(bytes, at);
   if (version == 1) {
     throw InputError(path, fmt::format("Q-table file version 1 does not record the state space it was learnt on; "

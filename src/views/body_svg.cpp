@@ -25,11 +25,9 @@ constexpr double kBelowPanel = 40;  // horizontal tick labels and axis title
 constexpr double kPanelGap = 30;
 constexpr double kPadding = 0.15;   // metres of wall around what is drawn
 constexpr double kLegendHeight = 24;
-constexpr double kTickSpacing = 0.5;      // metres, doubled while lines would crowd
-constexpr double kMinimumTickGap = 30;    // pixels between metre lines
 constexpr double kMaxPanelPixels = 20000;  // the larger extent of the drawing, at most
 constexpr int kCylinderSides = 24;
-constexpr const char* kHoldColour = "#555555";
+constexpr const char* kHoldBesideBodyColour = "#555555";
 constexpr const char* kWallColour = "#9a8f80";
 
 using Point = std::array<double, 2>;  // on the page, in pixels
@@ -188,8 +186,7 @@ class BodyFigure {
     for (const View& view : views_) span = std::max(span, view.high - view.low);
     if (!std::isfinite(span)) throw std::invalid_argument("render_body_svg: the wall is too large to draw");
     const double scale = std::min(options_.pixels_per_metre, kMaxPanelPixels / span);
-    tick_spacing_ = kTickSpacing;
-    while (tick_spacing_ * scale < kMinimumTickGap) tick_spacing_ *= 2;
+    tick_spacing_ = metre_tick_spacing(scale);
     double left = kMargin;
     for (View& view : views_) {
       view.left = left + kAxisRoom;
@@ -269,7 +266,7 @@ class BodyFigure {
   }
 
   void write_holds(const View& view) {
-    append_format(out_, "<g class=\"holds\" fill=\"{}\">\n", kHoldColour);
+    append_format(out_, "<g class=\"holds\" fill=\"{}\">\n", kHoldBesideBodyColour);
     for (const Hold& hold : wall_.holds) {
       const Point c = view.project(hold.position);
       append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", c[0], c[1],
@@ -352,7 +349,7 @@ class BodyFigure {
       const double y =
           kMargin + kHeaderHeight + panel_height_ + kBelowPanel + kLegendHeight * (legend_positions_[i][1] + 0.5);
       if (i == 0) {
-        append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\"/>\n", x + 12, y, kHoldColour);
+        append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\"/>\n", x + 12, y, kHoldBesideBodyColour);
       } else if (i <= kLimbCount) {
         append_format(out_, "<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"6\" fill=\"{2}\" fill-opacity=\"0.35\" stroke=\"{2}\" "
              "stroke-width=\"1.5\"/>\n",
@@ -374,7 +371,7 @@ class BodyFigure {
   std::vector<PlacedVisual> visuals_;
   std::array<View, 2> views_{};
   double z_low_ = 0, z_top_ = 0, panel_height_ = 0, width_ = 0, height_ = 0;
-  double tick_spacing_ = kTickSpacing;
+  double tick_spacing_ = 0;
   std::vector<Point> legend_positions_;  // left edge and row of each legend entry
   int legend_rows_ = 1;
   std::string out_;

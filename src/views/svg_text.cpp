@@ -32,4 +32,12 @@ double estimated_text_width(std::string_view text, double font_size) {
   return 0.6 * font_size * static_cast<double>(code_points);
 }
 
+double metre_tick_spacing(double pixels_per_metre) {
+  constexpr double kFinestSpacing = 0.5;  // metres
+  constexpr double kMinimumGap = 30;      // pixels
+  double spacing = kFinestSpacing;
+  while (spacing * pixels_per_metre < kMinimumGap) spacing *= 2;
+  return spacing;
+}
+
 }  // namespace crux

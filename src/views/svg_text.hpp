@@ -1,6 +1,7 @@
 #pragma once
 // What every SVG view of crux shares: text made safe for XML, a width estimate for
-// laying out text (SVG cannot measure it), and the limbs' colours.
+// laying out text (SVG cannot measure it), the spacing of metre lines, and the limbs'
+// colours.
 
 #include <array>
 #include <iterator>
@@ -26,6 +27,10 @@ void append_format(std::string& out, fmt::format_string<Args...> format, Args&&.
 
 // Width of `text` in a sans-serif font of `font_size` pixels, from a generous average.
 double estimated_text_width(std::string_view text, double font_size);
+
+// Metres between the lines of a wall's metre grid drawn at `pixels_per_metre`: 0.5 m,
+// doubled while neighbouring lines would be closer than 30 pixels.
+double metre_tick_spacing(double pixels_per_metre);
 
 struct LimbStyle {
   const char* code;

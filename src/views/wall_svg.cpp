@@ -40,8 +40,6 @@ constexpr double kLegendGap = 56;    // room for the finish label, right of the 
 constexpr double kLegendRowHeight = 18;
 constexpr double kLegendSwatchWidth = 26;
 constexpr double kMinimumHoldRadius = 2;  // small holds stay visible
-constexpr double kMinimumTickGap = 30;    // between metre lines
-constexpr double kTickSpacing = 0.5;      // metres, doubled while lines would crowd
 constexpr double kMaxPlotPixels = 20000;  // the larger side of the plot, at most
 
 // Rings around a hold, in pixels outside its circle: one per limb starting on it, then
@@ -192,8 +190,7 @@ class WallFigure {
     page_height_ = std::ceil(std::max(plot_top + plot_height_ + kBelowPlot,
                                       plot_top + kLegendRowHeight * static_cast<double>(legend_.size()) + kPageMargin));
 
-    tick_spacing_ = kTickSpacing;
-    while (tick_spacing_ * scale < kMinimumTickGap) tick_spacing_ *= 2;
+    tick_spacing_ = metre_tick_spacing(scale);
   }
 
   static const LimbStyle& limb_style(Limb limb) { return kLimbStyles[static_cast<int>(limb)]; }
@@ -509,7 +506,7 @@ class WallFigure {
   FrontView view_;
   double plot_width_ = 0, plot_height_ = 0, page_width_ = 0, page_height_ = 0;
   double legend_left_ = 0;
-  double tick_spacing_ = kTickSpacing;
+  double tick_spacing_ = 0;
   std::vector<std::string> subtitles_;
   std::string y_axis_title_;
   std::vector<LegendEntry> legend_;

@@ -8,23 +8,23 @@
 namespace crux {
 namespace {
 
-const GridParameters kGrid;
+const GridParameters kPaperGrid;
 
 TEST(AgentDescriptor, EncodingIsCompactAndRoundTrips) {
-  EXPECT_EQ(agent_state_count(kGrid), 4u * 36 * 36 * 36);
+  EXPECT_EQ(agent_state_count(kPaperGrid), 4u * 36 * 36 * 36);
   AgentState s;
   s.free_limb = Limb::LeftFoot;
   s.held_tiles = {kOutsideGrid, 0, 34};
-  EXPECT_EQ(encode(s, kGrid), ((3u * 36 + 0) * 36 + 1) * 36 + 35);
+  EXPECT_EQ(encode(s, kPaperGrid), ((3u * 36 + 0) * 36 + 1) * 36 + 35);
   constexpr std::uint64_t seed = 5;
   Random random(seed);
   for (int n = 0; n < 2000; ++n) {
     AgentState x;
     x.free_limb = static_cast<Limb>(random.below(4));
     for (int& t : x.held_tiles) t = static_cast<int>(random.below(36)) - 1;
-    const std::uint32_t code = encode(x, kGrid);
-    ASSERT_LT(code, agent_state_count(kGrid));
-    ASSERT_EQ(decode_agent_state(code, kGrid), x) << "seed " << seed;
+    const std::uint32_t code = encode(x, kPaperGrid);
+    ASSERT_LT(code, agent_state_count(kPaperGrid));
+    ASSERT_EQ(decode_agent_state(code, kPaperGrid), x) << "seed " << seed;
   }
 }
 
@@ -33,7 +33,7 @@ TEST(AgentDescriptor, HeldLimbsAreDescribedInLimbOrder) {
   HoldConfiguration state;
   state.holds = wall.start;
   state.holds[static_cast<int>(Limb::LeftHand)] = kFree;
-  const GridPlacement placement = place_grid(kGrid, Limb::LeftHand, wall.holds[wall.start[1]].position);
+  const GridPlacement placement = place_grid(kPaperGrid, Limb::LeftHand, wall.holds[wall.start[1]].position);
   const AgentState d = describe_state(wall, state, placement);
   EXPECT_EQ(d.free_limb, Limb::LeftHand);
   EXPECT_EQ(d.held_tiles[0], placement.tile_of(wall.holds[wall.start[0]].position));
@@ -56,8 +56,8 @@ TEST(AgentDescriptor, UnchangedWhenWallAndBodyAreTranslatedTogether) {
     const Limb free = static_cast<Limb>(random.below(4));
     const Eigen::Vector3d limb = wall.holds[state.hold(free)].position + Eigen::Vector3d(0.3, 0.02, -0.03);
     state.holds[static_cast<int>(free)] = kFree;
-    const GridPlacement here = place_grid(kGrid, free, limb);
-    const GridPlacement there = place_grid(kGrid, free, limb + shift);
+    const GridPlacement here = place_grid(kPaperGrid, free, limb);
+    const GridPlacement there = place_grid(kPaperGrid, free, limb + shift);
     ASSERT_EQ(describe_state(wall, state, here), describe_state(moved, state, there)) << "seed " << seed << " trial " << trial;
     for (int hold = 0; hold < wall.hold_count(); ++hold) {
       ASSERT_EQ(here.tile_of(wall.holds[hold].position), there.tile_of(moved.holds[hold].position))

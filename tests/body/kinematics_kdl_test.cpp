@@ -10,7 +10,7 @@
 namespace crux {
 namespace {
 
-constexpr std::uint64_t kSeed = 1122;
+constexpr std::uint64_t kKdlSeed = 1122;
 
 void expect_agreement(const std::string& urdf_path, const BodyModel& model, std::uint64_t seed) {
   testing::KdlReference kdl(urdf_path, model);
@@ -30,13 +30,13 @@ void expect_agreement(const std::string& urdf_path, const BodyModel& model, std:
 }
 
 TEST(KinematicsAgainstKdl, HumanOver1000RandomPostures) {
-  expect_agreement(default_body_model_path(), testing::human_model(), kSeed);
+  expect_agreement(default_body_model_path(), testing::human_model(), kKdlSeed);
 }
 
 TEST(KinematicsAgainstKdl, SyntheticTreeWithArbitraryAxesAndOrigins) {
-  const auto path = testing::write_temporary("synthetic.urdf", testing::synthetic_tree_urdf(kSeed));
+  const auto path = testing::write_temporary("synthetic.urdf", testing::synthetic_tree_urdf(kKdlSeed));
   const BodyModel model = load_body_model(path.string());
-  expect_agreement(path.string(), model, kSeed + 1);
+  expect_agreement(path.string(), model, kKdlSeed + 1);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 namespace crux {
 namespace {
 
-constexpr std::uint64_t kSeed = 20261124;
+constexpr std::uint64_t kEnvelopeSeed = 20261124;
 
 // The envelope read back from forward kinematics at a posture: where the chain's first
 // joint sits relative to the root, and the sum of the distances between successive
@@ -54,10 +54,10 @@ std::array<double, kLimbCount> expect_sound(const BodyModel& model, const ReachE
 TEST(ReachEnvelope, HumanChainsMatchTheirPlacementsAtAnyPosture) {
   const BodyModel& model = testing::human_model();
   const ReachEnvelope& envelope = model.reach_envelope;
-  Random random(kSeed);
+  Random random(kEnvelopeSeed);
   for (int sample = 0; sample < 20; ++sample) {
     expect_envelope_from_placements(model, envelope, testing::random_posture(model, random),
-                                    "seed " + std::to_string(kSeed) + " sample " + std::to_string(sample));
+                                    "seed " + std::to_string(kEnvelopeSeed) + " sample " + std::to_string(sample));
   }
   // The human is symmetric: the hands' chains start at the shoulders' mirror images.
   EXPECT_NEAR(envelope.chain_base[0].y(), -envelope.chain_base[1].y(), 1e-12);
@@ -67,18 +67,18 @@ TEST(ReachEnvelope, HumanChainsMatchTheirPlacementsAtAnyPosture) {
 
 TEST(ReachEnvelope, GraspPointsNeverLeaveIt) {
   const ReachEnvelope& human = testing::human_model().reach_envelope;
-  const auto farthest = expect_sound(testing::human_model(), human, kSeed, "human");
+  const auto farthest = expect_sound(testing::human_model(), human, kEnvelopeSeed, "human");
   for (int limb = 0; limb < kLimbCount; ++limb) {
     // The human's limbs nearly straighten within their limits, so the radius is not
     // loose (the synthetic trees' random axes cannot straighten).
-    EXPECT_GT(farthest[limb], 0.8 * human.radius[limb]) << "seed " << kSeed << " limb " << limb;
+    EXPECT_GT(farthest[limb], 0.8 * human.radius[limb]) << "seed " << kEnvelopeSeed << " limb " << limb;
   }
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const auto path = testing::write_temporary("synthetic.urdf", testing::synthetic_tree_urdf(seed));
     const BodyModel model = load_body_model(path.string());
     const ReachEnvelope& envelope = model.reach_envelope;
     expect_envelope_from_placements(model, envelope, Posture::Zero(), "synthetic tree " + std::to_string(seed));
-    expect_sound(model, envelope, kSeed + seed, "synthetic tree " + std::to_string(seed));
+    expect_sound(model, envelope, kEnvelopeSeed + seed, "synthetic tree " + std::to_string(seed));
   }
 }
 

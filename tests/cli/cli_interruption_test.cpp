@@ -24,7 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
+fs::path interruption_scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / "crux-tests" / ("interruption-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   fs::remove_all(dir / name);
@@ -63,7 +63,7 @@ pid_t start_crux(const std::vector<std::string>& arguments) {
 TEST(Interruption, ASignalWhileWritingLeavesNoTemporaryAndAMarkedFolder) {
   int interrupted_while_writing = 0;
   for (int trial = 0; trial < 8; ++trial) {
-    const fs::path folder = scratch("signal_" + std::to_string(trial));
+    const fs::path folder = interruption_scratch("signal_" + std::to_string(trial));
     const pid_t pid = start_crux({"paper", "--walls", "4", "--iterations", "600", "--plan", "false", "--threads", "1",
                                   "--bootstrap-resamples", "100", "-o", folder.string()});
     ASSERT_GT(pid, 0);
@@ -96,7 +96,7 @@ TEST(Interruption, ASignalWhileWritingLeavesNoTemporaryAndAMarkedFolder) {
 // SIGKILL cannot be caught: the folder keeps its marker, and the next command into it
 // (with --overwrite) clears crux's outputs and their stale temporaries, and nothing else.
 TEST(Interruption, AfterSigkillTheMarkerStaysAndOverwriteClearsStaleTemporaries) {
-  const fs::path folder = scratch("sigkill");
+  const fs::path folder = interruption_scratch("sigkill");
   const pid_t pid = start_crux({"train", "--wall-seed", "3", "--iterations", "4000", "-o", folder.string()});
   ASSERT_GT(pid, 0);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
@@ -125,10 +125,10 @@ TEST(Interruption, AfterSigkillTheMarkerStaysAndOverwriteClearsStaleTemporaries)
 // A full disk, as a file-size limit: the write fails with one line naming the file, the
 // folder keeps its marker, has no summary and no temporary.
 TEST(Interruption, AFullDiskIsOneErrorLineAndAMarkedFolderWithoutSummary) {
-  const fs::path folder = scratch("full_disk");
+  const fs::path folder = interruption_scratch("full_disk");
   const std::string command = "ulimit -f 40; trap '' XFSZ; exec " + std::string(CRUX_BINARY) +
                               " train --wall-seed 3 --iterations 2000 -o " + folder.string();
-  const fs::path err = scratch("full_disk.err");
+  const fs::path err = interruption_scratch("full_disk.err");
   const int status = std::system(("bash -c \"" + command + "\" > /dev/null 2> " + err.string()).c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);

@@ -22,14 +22,14 @@ namespace {
 namespace fs = std::filesystem;
 using testing::run_crux;
 
-fs::path scratch(const std::string& name) {
+fs::path learning_scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / "crux-tests" / ("learning-cli-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir / name;
 }
 
 TEST(CliLearning, ShortPaperRunWritesTheOutputFolder) {
-  const fs::path out = scratch("paper");
+  const fs::path out = learning_scratch("paper");
   const auto outcome = run_crux("paper --runs 1 --iterations 300 --plan=false --seed 5 -o " + out.string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("Table I"), std::string::npos);
@@ -47,7 +47,7 @@ TEST(CliLearning, ShortPaperRunWritesTheOutputFolder) {
 }
 
 TEST(CliLearning, TrainThenTransferFromItsQGrid) {
-  const fs::path train = scratch("train"), transfer = scratch("transfer");
+  const fs::path train = learning_scratch("train"), transfer = learning_scratch("transfer");
   const auto trained = run_crux("train --wall-seed 3 --iterations 300 -o " + train.string());
   ASSERT_EQ(trained.exit_code, 0) << trained.err;
   const auto transferred = run_crux("transfer --q-grid " + (train / "q_grid.bin").string() +
@@ -64,7 +64,7 @@ TEST(CliLearning, TrainThenTransferFromItsQGrid) {
 
 TEST(CliLearning, BadQGridIsOneLineExit2AndWritesNothing) {
   const auto bad = testing::write_temporary("cli_bad_qgrid.bin", "CRUXQTAB\x01");
-  const fs::path out = scratch("never");
+  const fs::path out = learning_scratch("never");
   const auto outcome = run_crux("transfer --q-grid " + bad.string() + " --wall-seed 4 -o " + out.string());
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
@@ -73,7 +73,7 @@ TEST(CliLearning, BadQGridIsOneLineExit2AndWritesNothing) {
 
 TEST(CliLearning, ConfigFileAndFlagsCombine) {
   const auto config = testing::write_temporary("cli_config.toml", "[experiment]\niterations = 250\nseed = 9\n");
-  const fs::path out = scratch("configured");
+  const fs::path out = learning_scratch("configured");
   const auto outcome = run_crux("train --wall-seed 3 --config " + config.string() + " --seed 11 -o " + out.string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   std::ifstream in(out / "config.toml");
@@ -136,14 +136,14 @@ void expect_same_folder(const fs::path& first, const fs::path& second) {
 }
 
 TEST(CliLearning, TrainAndTransferReplayFromTheirOwnConfig) {
-  const fs::path wall = scratch("replay_wall.json");
+  const fs::path wall = learning_scratch("replay_wall.json");
   ASSERT_EQ(run_crux("wall generate --wall-seed 6 -o " + wall.string()).exit_code, 0);
-  const fs::path train = scratch("replay_train"), train_again = scratch("replay_train_again");
+  const fs::path train = learning_scratch("replay_train"), train_again = learning_scratch("replay_train_again");
   ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 200 --seed 4 --learning-epsilon 0.2 -o " + train.string()).exit_code, 0);
   const auto replayed = run_crux("train --config " + (train / "config.toml").string() + " -o " + train_again.string());
   ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
   expect_same_folder(train, train_again);
-  const fs::path transfer = scratch("replay_transfer"), transfer_again = scratch("replay_transfer_again");
+  const fs::path transfer = learning_scratch("replay_transfer"), transfer_again = learning_scratch("replay_transfer_again");
   ASSERT_EQ(run_crux("transfer --q-grid " + (train / "q_grid.bin").string() + " --wall-file " + wall.string() +
                      " --iterations 200 -o " + transfer.string())
                 .exit_code,
@@ -159,14 +159,14 @@ TEST(CliLearning, TrainAndTransferReplayFromTheirOwnConfig) {
   // A replay whose input changed since is refused, naming the config and the digest.
   std::ofstream(wall, std::ios::app) << "\n";
   const auto changed = run_crux("transfer --config " + (transfer / "config.toml").string() + " -o " +
-                                scratch("replay_changed").string());
+                                learning_scratch("replay_changed").string());
   EXPECT_EQ(changed.exit_code, 2);
   EXPECT_NE(changed.err.find("provenance.wall_sha256"), std::string::npos) << changed.err;
   EXPECT_EQ(testing::count_lines(changed.err), 1) << changed.err;
 }
 
 TEST(CliLearning, PaperReplaysFromItsOwnConfig) {
-  const fs::path first = scratch("replay_paper"), second = scratch("replay_paper_again");
+  const fs::path first = learning_scratch("replay_paper"), second = learning_scratch("replay_paper_again");
   ASSERT_EQ(run_crux("paper --walls 1 --seeds-per-wall 2 --iterations 150 --plan false --seed 8 -o " + first.string())
                 .exit_code,
             0);
@@ -176,7 +176,7 @@ TEST(CliLearning, PaperReplaysFromItsOwnConfig) {
 }
 
 TEST(CliLearning, AnOutputFolderIsNeitherMixedWithEarlierOutputsNorAnInputsHome) {
-  const fs::path folder = scratch("guarded");
+  const fs::path folder = learning_scratch("guarded");
   ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 100 -o " + folder.string()).exit_code, 0);
   EXPECT_FALSE(fs::exists(folder / "INCOMPLETE")) << "a complete folder loses its marker";
   const std::string first = read_text(folder / "iterations.csv");
@@ -229,7 +229,7 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   const auto from_file = run_crux("train --wall-seed 3 --config " + config.string());
   EXPECT_EQ(from_file.exit_code, 2);
   EXPECT_EQ(from_file.err, "crux: " + config.string() + ": line 3: learning.gamma: must be in [0, 1)\n");
-  const fs::path never = scratch("never_written");
+  const fs::path never = learning_scratch("never_written");
   const auto not_finite = run_crux("train --wall-seed 3 --wall-finish-height nan -o " + never.string());
   EXPECT_EQ(not_finite.err, "crux: --wall-finish-height: must be a finite number\n");
   EXPECT_FALSE(fs::exists(never)) << "nothing written before the input is checked";
@@ -248,7 +248,7 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
 }
 
 TEST(CliLearning, ViewAndReportAnswerBadInputWithOneLine) {
-  const fs::path never = scratch("never_report.html");
+  const fs::path never = learning_scratch("never_report.html");
   const auto no_folder = run_crux("report /nonexistent/crux_folder -o " + never.string());
   EXPECT_EQ(no_folder.exit_code, 2);
   EXPECT_EQ(no_folder.err, "crux: /nonexistent/crux_folder: no such output folder\n");
@@ -265,7 +265,7 @@ TEST(CliLearning, ViewAndReportAnswerBadInputWithOneLine) {
 // any episode can be replayed, and renamed flags name their new names.
 TEST(CliLearning, ViewAndReportReadTheRunsOwnConfig) {
   const fs::path train = testing::trained_run_folder();
-  const fs::path svg = scratch("episode.svg"), html = scratch("episode.html");
+  const fs::path svg = learning_scratch("episode.svg"), html = learning_scratch("episode.html");
   const auto ik_flag = run_crux("view --run " + train.string() + " --ik-timeout 0.01 -o " + svg.string());
   EXPECT_EQ(ik_flag.exit_code, 2);
   EXPECT_EQ(ik_flag.err, "crux: --ik-timeout: not used with --run: a run is drawn with its own config.toml\n");
@@ -305,7 +305,7 @@ TEST(CliLearning, ViewAndReportReadTheRunsOwnConfig) {
 
 // crux figures draws a paper folder's figures again from its files, byte for byte.
 TEST(CliLearning, FiguresRedrawsThePaperFiguresByteForByte) {
-  const fs::path paper = scratch("figures_paper");
+  const fs::path paper = learning_scratch("figures_paper");
   ASSERT_EQ(run_crux("paper --walls 2 --iterations 400 --plan false -o " + paper.string()).exit_code, 0);
   std::map<std::string, std::string> first;
   for (const auto& entry : fs::directory_iterator(paper / "figures")) {
@@ -321,11 +321,11 @@ TEST(CliLearning, FiguresRedrawsThePaperFiguresByteForByte) {
 // Run folders that crux did not write, or wrote differently, are refused with one line
 // and exit code 2, and nothing is written.
 TEST(CliLearning, MalformedRunFoldersAreRefusedWithOneLine) {
-  const fs::path train = scratch("malformed_train");
+  const fs::path train = learning_scratch("malformed_train");
   ASSERT_EQ(run_crux("train --wall-seed 3 --seed 5 --iterations 2000 -o " + train.string()).exit_code, 0);
   const auto copy_with = [&](const std::string& name, const std::string& file, const std::string& from,
                              const std::string& to) {
-    const fs::path copy = scratch(name);
+    const fs::path copy = learning_scratch(name);
     fs::copy(train, copy, fs::copy_options::recursive);
     std::string text = read_text(copy / file);
     const std::size_t at = text.find(from);
@@ -334,7 +334,7 @@ TEST(CliLearning, MalformedRunFoldersAreRefusedWithOneLine) {
     std::ofstream(copy / file, std::ios::trunc) << text;
     return copy;
   };
-  const fs::path never = scratch("malformed.svg");
+  const fs::path never = learning_scratch("malformed.svg");
   struct Case {
     fs::path folder;
     std::string problem;
@@ -360,19 +360,19 @@ TEST(CliLearning, MalformedRunFoldersAreRefusedWithOneLine) {
 }
 
 TEST(CliLearning, EveryCommandPrintsOneJsonDocument) {
-  const fs::path wall = scratch("json_wall.json"), train = scratch("json_train");
+  const fs::path wall = learning_scratch("json_wall.json"), train = learning_scratch("json_train");
   const std::vector<std::string> commands{
       "model", "demo", "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0", "ik-compare --compare-queries 5",
       "wall generate --wall-seed 5 -o " + wall.string(), "wall show --wall-file " + wall.string(),
       "filter-stats --wall-count 1", "plan --wall-file " + wall.string(),
       "train --wall-file " + wall.string() + " --iterations 100 -o " + train.string(),
       "transfer --q-grid " + (train / "q_grid.bin").string() + " --wall-seed 2 --iterations 100 -o " +
-          scratch("json_transfer").string(),
-      "paper --walls 1 --iterations 100 --plan false -o " + scratch("json_paper").string(),
-      "view --wall-file " + wall.string() + " -o " + scratch("json_view.svg").string(),
-      "figures " + scratch("json_paper").string(),
-      "report " + scratch("json_paper").string() + " -o " + scratch("json_report.html").string(),
-      "report " + train.string() + " -o " + scratch("json_train_report.html").string()};
+          learning_scratch("json_transfer").string(),
+      "paper --walls 1 --iterations 100 --plan false -o " + learning_scratch("json_paper").string(),
+      "view --wall-file " + wall.string() + " -o " + learning_scratch("json_view.svg").string(),
+      "figures " + learning_scratch("json_paper").string(),
+      "report " + learning_scratch("json_paper").string() + " -o " + learning_scratch("json_report.html").string(),
+      "report " + train.string() + " -o " + learning_scratch("json_train_report.html").string()};
   for (const std::string& command : commands) {
     const auto outcome = run_crux(command + " --json");
     ASSERT_EQ(outcome.exit_code, 0) << command << ": " << outcome.err;
@@ -384,7 +384,7 @@ TEST(CliLearning, EveryCommandPrintsOneJsonDocument) {
 // with the files of a run never stopped; another run's parameters refuse the checkpoint.
 TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
   const std::string arguments = "train --wall-seed 3 --seed 5 --iterations 6000 --checkpoint-every 500 -o ";
-  const fs::path whole = scratch("long-whole"), killed = scratch("long-killed");
+  const fs::path whole = learning_scratch("long-whole"), killed = learning_scratch("long-killed");
   ASSERT_EQ(run_crux(arguments + whole.string()).exit_code, 0);
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -419,7 +419,7 @@ TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
   }
   EXPECT_FALSE(fs::exists(killed / "checkpoint.bin.tmp.0123456789abcdef"));
   // A folder killed while it wrote its first checkpoint holds temporaries only: it starts afresh.
-  const fs::path first = scratch("long-first");
+  const fs::path first = learning_scratch("long-first");
   fs::create_directories(first);
   std::ofstream(first / "INCOMPLETE.tmp.fedcba9876543210") << "half";
   const auto afresh = run_crux(arguments + first.string());
@@ -427,7 +427,7 @@ TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
 }
 
 TEST(CliLearning, TheTransferModeIsOneFlagWrittenToTheConfigAndAnUnknownOneIsRefused) {
-  const fs::path train = scratch("mode_train"), transfer = scratch("mode_transfer"), again = scratch("mode_again");
+  const fs::path train = learning_scratch("mode_train"), transfer = learning_scratch("mode_transfer"), again = learning_scratch("mode_again");
   ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 200 --transfer prior -o " + train.string()).exit_code, 0);
   EXPECT_NE(read_text(train / "config.toml").find("transfer = \"prior\""), std::string::npos);
   ASSERT_EQ(run_crux("transfer --q-grid " + (train / "q_grid.bin").string() +
@@ -438,19 +438,19 @@ TEST(CliLearning, TheTransferModeIsOneFlagWrittenToTheConfigAndAnUnknownOneIsRef
   ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
   expect_same_folder(transfer, again);
   const auto unknown = run_crux("transfer --q-grid " + (train / "q_grid.bin").string() +
-                                " --wall-seed 4 --transfer best -o " + scratch("mode_unknown").string());
+                                " --wall-seed 4 --transfer best -o " + learning_scratch("mode_unknown").string());
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_NE(unknown.err.find("--transfer"), std::string::npos) << unknown.err;
   EXPECT_NE(unknown.err.find("unknown transfer mode 'best'"), std::string::npos) << unknown.err;
   EXPECT_EQ(testing::count_lines(unknown.err), 1) << unknown.err;
-  EXPECT_FALSE(fs::exists(scratch("mode_unknown")));
+  EXPECT_FALSE(fs::exists(learning_scratch("mode_unknown")));
 }
 
 // With an empty Q_grid the shaping potential is 0 everywhere, so the shaping mode's
 // training and control runs are the paper's, iteration by iteration, while transfer
 // differs.
 TEST(CliLearning, ShapingWithoutATransferredTableIsThePaperRule) {
-  const fs::path paper = scratch("mode_paper"), shaping = scratch("mode_shaping");
+  const fs::path paper = learning_scratch("mode_paper"), shaping = learning_scratch("mode_shaping");
   const std::string common = "paper --walls 1 --seeds-per-wall 2 --iterations 2000 --plan false --seed 3 ";
   ASSERT_EQ(run_crux(common + "-o " + paper.string()).exit_code, 0);
   ASSERT_EQ(run_crux(common + "--transfer shaping -o " + shaping.string()).exit_code, 0);

@@ -15,14 +15,14 @@ namespace {
 
 using testing::run_crux;
 
-std::filesystem::path scratch(const std::string& name) {
+std::filesystem::path wall_scratch(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / "crux-tests" / ("wall-cli-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   return dir / name;
 }
 
 TEST(CliWall, GenerateChecksTheStartAndShowReadsItBack) {
-  const auto file = scratch("wall.json");
+  const auto file = wall_scratch("wall.json");
   const auto generated = run_crux("wall generate --wall-seed 4 -o " + file.string());
   ASSERT_EQ(generated.exit_code, 0) << generated.err;
   EXPECT_NE(generated.out.find("reachable"), std::string::npos);
@@ -36,7 +36,7 @@ TEST(CliWall, GenerateChecksTheStartAndShowReadsItBack) {
 }
 
 TEST(CliWall, UnreachableStartIsReportedWithExitCode3) {
-  const auto file = scratch("far.json");
+  const auto file = wall_scratch("far.json");
   // Rows of 1.5 m: the hands' start row is 4.5 m above the feet.
   const auto outcome = run_crux("wall generate --wall-seed 4 --wall-tile-height 1.5 -o " + file.string());
   EXPECT_EQ(outcome.exit_code, 3);
@@ -45,9 +45,9 @@ TEST(CliWall, UnreachableStartIsReportedWithExitCode3) {
 }
 
 TEST(CliWall, ShowDrawsTheGridAsSvg) {
-  const auto file = scratch("grid.json");
+  const auto file = wall_scratch("grid.json");
   ASSERT_EQ(run_crux("wall generate --wall-seed 2 -o " + file.string()).exit_code, 0);
-  const auto svg = scratch("grid.svg");
+  const auto svg = wall_scratch("grid.svg");
   const auto outcome = run_crux("wall show --wall-file " + file.string() + " --limb right_hand --at 0.3,1.5 --json -o " + svg.string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const auto json = nlohmann::json::parse(outcome.out);
@@ -80,7 +80,7 @@ TEST(CliFilterStats, ReportsPassSharesBesideThePapers) {
 }
 
 TEST(CliWall, GenerateAndShowCheckTheStartWithTheLearningsIkSettings) {
-  const auto file = scratch("strict.json");
+  const auto file = wall_scratch("strict.json");
   // A grasp sphere of 1 mm: the fast solver stops on its stall rule before reaching it.
   const auto strict = run_crux("wall generate --wall-seed 4 --ik-grasp-radius 0.001 --ik-fast-max-iterations 3 --json -o " +
                                file.string());

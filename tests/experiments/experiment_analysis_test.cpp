@@ -13,7 +13,7 @@ constexpr int kIterations = 8;
 // A run from its episodes, each a string of regimes ('w', 'g', 'r'), padded with
 // unfinished random iterations to kIterations. Hold ids count 1.. within an episode;
 // episode actions succeed, the padding fails.
-RunResult run_of(const std::vector<std::string>& episodes) {
+RunResult rising_run_of(const std::vector<std::string>& episodes) {
   RunResult run;
   for (std::size_t e = 0; e < episodes.size(); ++e) {
     for (std::size_t i = 0; i < episodes[e].size(); ++i) {
@@ -51,10 +51,10 @@ ConditionResult condition_of(std::vector<RunResult> runs) {
 ExperimentResult small_experiment() {
   ExperimentResult result;
   result.conditions[static_cast<int>(Condition::Training)] =
-      condition_of({run_of({"rrrrr", "w"}), run_of({}), run_of({"w"})});
+      condition_of({rising_run_of({"rrrrr", "w"}), rising_run_of({}), rising_run_of({"w"})});
   result.conditions[static_cast<int>(Condition::Transfer)] =
-      condition_of({run_of({"wrr", "w"}), run_of({"ww", "rrr"}), run_of({"rrrr", "ggg", "w"})});
-  std::vector<RunResult> control{run_of({"wrr", "g"}), run_of({"ww", "rrr"}), run_of({"rrrr", "gww", "w"})};
+      condition_of({rising_run_of({"wrr", "w"}), rising_run_of({"ww", "rrr"}), rising_run_of({"rrrr", "ggg", "w"})});
+  std::vector<RunResult> control{rising_run_of({"wrr", "g"}), rising_run_of({"ww", "rrr"}), rising_run_of({"rrrr", "gww", "w"})};
   control[0].iterations[2].hold_id = 99;
   control[2].iterations[5].success = false;
   result.conditions[static_cast<int>(Condition::Control)] = condition_of(std::move(control));
@@ -101,7 +101,7 @@ TEST(ExperimentAnalysis, TakeOffPerConditionByHand) {
 TEST(ExperimentAnalysis, NoTakeOffHasMedianMinusOne) {
   ExperimentResult result = small_experiment();
   for (ConditionResult& c : result.conditions) {
-    for (RunResult& run : c.runs) run = run_of({});
+    for (RunResult& run : c.runs) run = rising_run_of({});
   }
   const ExperimentAnalysis analysis = analyse_experiment(result, small_settings());
   for (const auto& t : analysis.take_off) {

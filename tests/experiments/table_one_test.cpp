@@ -16,7 +16,7 @@ IterationRecord action(Regime regime, bool success, double rise_m = 0.0) {
   return IterationRecord{0, regime, 1, success, success ? rise_m : 0.5, success ? -1.0 : -1000.0};
 }
 
-RunResult run_of(std::vector<IterationRecord> iterations) {
+RunResult run_with(std::vector<IterationRecord> iterations) {
   RunResult run;
   run.iterations = std::move(iterations);
   return run;
@@ -27,9 +27,9 @@ RunResult run_of(std::vector<IterationRecord> iterations) {
 //   run B: r ok 0.02, r fail, g fail    | w ok 0.12
 // where "|" marks the end of a 3-iteration beginning window.
 std::vector<RunResult> two_runs() {
-  return {run_of({action(W, true, 0.10), action(R, false), action(G, true, 0.02), action(R, true, 0.04),
+  return {run_with({action(W, true, 0.10), action(R, false), action(G, true, 0.02), action(R, true, 0.04),
                   action(W, true, 0.06), action(R, false)}),
-          run_of({action(R, true, 0.02), action(R, false), action(G, false), action(W, true, 0.12)})};
+          run_with({action(R, true, 0.02), action(R, false), action(G, false), action(W, true, 0.12)})};
 }
 
 struct ExpectedStats {
@@ -104,7 +104,7 @@ TEST(TableOne, NothingToCountGivesZeros) {
   EXPECT_EQ(no_runs.actions, 0u);
   EXPECT_EQ(no_runs.actions_per_run, 0.0);
   // Failures only: a rate of 0 and no displacement, whatever the failures' rise.
-  const std::vector<RunResult> failures{run_of({action(G, false), action(G, false)})};
+  const std::vector<RunResult> failures{run_with({action(G, false), action(G, false)})};
   const RegimeStats failed = regime_stats(failures, G, -1);
   EXPECT_EQ(failed.actions, 2u);
   EXPECT_EQ(failed.success_rate, 0.0);
@@ -113,8 +113,8 @@ TEST(TableOne, NothingToCountGivesZeros) {
 
 TEST(TableOne, ARunWithoutARegimeStillCountsInItsMeanPerRun) {
   // Three runs, only the first with g-greedy actions: 3 actions over 3 runs is 1 per run.
-  const std::vector<RunResult> runs{run_of({action(G, true, 0.01), action(G, true, 0.03), action(G, false)}),
-                                    run_of({action(R, false)}), run_of({})};
+  const std::vector<RunResult> runs{run_with({action(G, true, 0.01), action(G, true, 0.03), action(G, false)}),
+                                    run_with({action(R, false)}), run_with({})};
   const RegimeStats g = regime_stats(runs, G, -1);
   EXPECT_DOUBLE_EQ(g.actions_per_run, 1.0);
   EXPECT_DOUBLE_EQ(g.success_rate, 2.0 / 3.0);

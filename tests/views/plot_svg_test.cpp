@@ -15,12 +15,7 @@ namespace crux {
 namespace {
 
 using testing::check_well_formed;
-
-int count_of(const std::string& text, const std::string& what) {
-  int count = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
-  return count;
-}
+using testing::count_of;
 
 // The value of the first `name` attribute at or after `from`.
 std::string attribute_after(const std::string& svg, std::size_t from, const std::string& name) {

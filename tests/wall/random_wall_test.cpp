@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/same_bits.hpp"
+
 namespace crux {
 namespace {
 
@@ -16,7 +18,7 @@ constexpr int kVertexRows = 9;
 constexpr double kColumnSpacing = 0.3;
 constexpr double kRowSpacing = 0.5;
 
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+using testing::same_bits;
 
 // Where hold `id` sits before its random displacement (spec item 2).
 Eigen::Vector3d grid_position(int id) {

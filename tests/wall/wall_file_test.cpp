@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
+#include "support/same_bits.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
@@ -31,7 +32,7 @@ std::string example_wall_path(const std::string& file_name) {
   return CRUX_SOURCE_DIR "/walls/" + file_name;
 }
 
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+using testing::same_bits;
 
 void expect_identical(const Wall& expected, const Wall& actual) {
   EXPECT_EQ(expected.name, actual.name);
