@@ -21,8 +21,8 @@ TEST(PlanDescription, AFoundPlanListsItsMoves) {
   plan.ik_solves = 40;
   const auto json = plan_json(named_wall(), plan);
   EXPECT_EQ(json["length"], 2);
-  EXPECT_EQ(json["holds"], nlohmann::json({7, 9}));
-  EXPECT_EQ(json["limbs"], nlohmann::json({"right_hand", "left_foot"}));
+  EXPECT_EQ(json["holds"], nlohmann::ordered_json({7, 9}));
+  EXPECT_EQ(json["limbs"], nlohmann::ordered_json({"right_hand", "left_foot"}));
   EXPECT_EQ(plan_text(named_wall(), plan),
             "shortest climb on 'w': 2 actions (12 states explored, 40 IK solves)\n"
             "   1. right_hand -> hold 7\n"

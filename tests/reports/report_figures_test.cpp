@@ -30,7 +30,7 @@ TEST(ReportFigures, OnlyAPaperFolderHasPaperFiguresToWrite) {
 
 TEST(ReportFigures, TheFilesWrittenAreListed) {
   const std::vector<std::filesystem::path> written{"p/figures/a.svg", "p/figures/b.svg"};
-  EXPECT_EQ(figure_files_json(written)["figures"], nlohmann::json({"p/figures/a.svg", "p/figures/b.svg"}));
+  EXPECT_EQ(figure_files_json(written)["figures"], nlohmann::ordered_json({"p/figures/a.svg", "p/figures/b.svg"}));
   EXPECT_EQ(figure_files_text(written), "wrote p/figures/a.svg\nwrote p/figures/b.svg\n");
 }
 

@@ -80,7 +80,7 @@ TEST(Summary, ARunHasTheExperimentsShapeForItsOneCondition) {
   EXPECT_EQ(w["success_rate"], 1.0);
   EXPECT_NEAR(w["vertical_cm"].get<double>(), 10.0, 1e-12);
   EXPECT_EQ(summary["table1"]["transfer"]["overall"]["random"]["actions"], 5.0);
-  EXPECT_EQ(summary["episode_lengths"]["transfer"][0], nlohmann::json({3, 3}));
+  EXPECT_EQ(summary["episode_lengths"]["transfer"][0], nlohmann::ordered_json({3, 3}));
   EXPECT_EQ(summary["run_facts"]["transfer"][0]["learning_seed"], 11);
   EXPECT_EQ(summary["run_facts"]["transfer"][0]["wall_seed"], 5);
   EXPECT_EQ(summary["walls"][0]["seed"], 5);

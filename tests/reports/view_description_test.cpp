@@ -17,7 +17,7 @@ TEST(ViewDescription, ThePostureIsPlacedAndCaptioned) {
   forward_kinematics(model, data, posture);
   const Eigen::Vector3d com = centre_of_mass(model, data);
   EXPECT_EQ(json["svg"], "v.svg");
-  EXPECT_EQ(json["root"], nlohmann::json({0.3, 0.6, 1.0}));
+  EXPECT_EQ(json["root"], nlohmann::ordered_json({0.3, 0.6, 1.0}));
   EXPECT_DOUBLE_EQ(json["centre_of_mass"][2].get<double>(), com.z());
   EXPECT_DOUBLE_EQ(json["grasp_points"]["left_foot"][2].get<double>(),
                    data.points[operational_point(Limb::LeftFoot)].z());
