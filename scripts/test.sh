@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# README's second command: install, build and run every test, in the release build and
-# under AddressSanitizer + UndefinedBehaviorSanitizer, then fuzz the readers for a
-# bounded time (the fuzz preset: clang, libFuzzer, the same sanitizers).
+# README's second command: install, build and run every test. The release build (GCC) runs
+# them all; the sanitized build (clang, AddressSanitizer + UndefinedBehaviorSanitizer,
+# assertions on) runs all but the slow and browser ones; then the readers' libFuzzer
+# harnesses run for a bounded time each. docs/TESTING.md says which test runs where, and
+# how long each stage takes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh

@@ -3,9 +3,9 @@
 # crux finds its model beside itself, the Python module (when built) imports from the
 # prefix and finds the same model, and a consumer project builds against
 # find_package(crux) and computes forward kinematics.
-#   install_test.sh BUILD_DIR CONSUMER_SOURCE CXX_FLAGS LINKER_FLAGS
+#   install_test.sh BUILD_DIR CONSUMER_SOURCE CXX_COMPILER CXX_FLAGS LINKER_FLAGS
 set -euo pipefail
-build=$1 consumer=$2 cxx_flags=$3 linker_flags=$4
+build=$1 consumer=$2 cxx_compiler=$3 cxx_flags=$4 linker_flags=$5
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
@@ -32,6 +32,7 @@ elif grep -q "CRUX_BUILD_PYTHON:BOOL=ON" "$build/CMakeCache.txt"; then
 fi
 
 cmake -S "$consumer" -B "$work/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" \
+  -DCMAKE_CXX_COMPILER="$cxx_compiler" \
   -DCMAKE_CXX_FLAGS="$cxx_flags" -DCMAKE_EXE_LINKER_FLAGS="$linker_flags" > "$work/consumer.log"
 cmake --build "$work/consumer" >> "$work/consumer.log"
 line=$("$work/consumer/consumer" "$work/prefix/share/crux/models/crux_human.urdf")

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -28,6 +29,12 @@ struct RemovedAtExit {
 }  // namespace
 
 const std::filesystem::path& trained_run_folder() {
+  // Under ctest the fixture Fixture.TrainedRun trains it once for every test process that
+  // needs it (each test case is a process of its own); run alone, a process trains its own.
+  if (const char* shared = std::getenv("CRUX_TRAINED_RUN")) {
+    static const std::filesystem::path folder = shared;
+    return folder;
+  }
   static const RemovedAtExit folder = [] {
     const std::filesystem::path path = temporary_path("trained_run_" + std::to_string(::getpid()));
     const Outcome outcome = run_crux("train --wall-seed 3 --seed 5 --overwrite -o " + path.string());

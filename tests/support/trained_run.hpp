@@ -1,7 +1,8 @@
 #pragma once
 // A real run folder for the tests that read one back: crux train on random wall 3 with
 // learning seed 5 and its 8000 iterations, which completes episodes and learns a greedy
-// climb. Trained once per test process (ctest runs test cases in parallel processes).
+// climb. Trained once by ctest's fixture Fixture.TrainedRun (CRUX_TRAINED_RUN names its
+// folder), or once per test process when a test binary runs alone.
 
 #include <filesystem>
 #include <functional>
