@@ -5,7 +5,6 @@ import os
 import signal
 import subprocess
 import sys
-import threading
 
 import numpy as np
 import pytest
@@ -118,46 +117,47 @@ def test_numpy_numbers_are_config_values(wall7):
 
 
 # With a switch interval far longer than any test, a thread that holds the GIL keeps it
-# until it blocks or releases it: what another thread does then happens, by construction,
-# while the holder is blocked or inside a call that released the GIL. The tests below use
-# that to order events without timers.
+# until it blocks or releases it: another thread that is waiting for the GIL then runs
+# only while the holder is blocked or inside a call that released it. The tests below use
+# that to order events without timers; their calls run for minutes unless interrupted, so
+# the only thing assumed of the machine is that a runnable thread runs within minutes.
 SWITCH_NEVER = 1000.0
 
-# Runs action() on another thread once the main thread has gone on into its next call and
-# that call has released the GIL: the helper first lets the main thread have the GIL (by
-# sleeping), and the main thread, which then never blocks before the call, keeps it until
-# the call releases it. Needs sys.setswitchinterval(SWITCH_NEVER).
+# while_the_call_runs(action) runs action() on another thread once the main thread has
+# gone on into its next call and that call has released the GIL: the helper waits for
+# `go`, which the main thread sets just before the call, and then for the GIL, which the
+# main thread keeps until the call releases it. Needs sys.setswitchinterval(SWITCH_NEVER).
 WHILE_THE_CALL_RUNS = """
-import sys, threading, time
+import sys, threading
 def while_the_call_runs(action):
+    go = threading.Event()
     def wait_then_act():
-        time.sleep(0.001)
+        go.wait()
         action()
     threading.Thread(target=wait_then_act, daemon=True).start()
+    return go
 """
 
 
-def test_a_long_call_releases_the_gil(wall7):
-    returned = []
-
-    def call():
-        crux.run_learning(wall7, {"experiment.iterations": 2000})
-        returned.append(True)
-
-    previous = sys.getswitchinterval()
-    sys.setswitchinterval(SWITCH_NEVER)
-    try:
-        worker = threading.Thread(target=call)
-        # start() waits for the worker to start; the worker then keeps the GIL until it
-        # blocks or the call releases it, so this thread runs on only inside the call
-        # (or, if the call held the GIL throughout, once the worker has ended).
-        worker.start()
-        running_during_the_call = not returned and worker.is_alive()
-        worker.join()
-    finally:
-        sys.setswitchinterval(previous)
-    assert running_during_the_call
-    assert returned == [True]
+def test_a_long_call_releases_the_gil():
+    script = f"""
+import os, sys, threading, crux
+sys.setswitchinterval({SWITCH_NEVER})
+wall = crux.Wall.random(7)
+returned = []
+def call():
+    crux.run_learning(wall, {{'experiment.iterations': 10**7}})
+    returned.append(True)
+worker = threading.Thread(target=call)
+# start() waits for the worker to start; the worker then keeps the GIL until the call
+# releases it, so this thread runs on only inside the call, or once the worker has ended.
+worker.start()
+print('ran during the call' if not returned and worker.is_alive() else 'ran after the call', flush=True)
+os._exit(0)
+"""
+    # A call that held the GIL would end only after minutes: the timeout is a hang guard.
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=os.environ, timeout=120)
+    assert done.stdout == "ran during the call\n", (done.stdout, done.stderr)
 
 
 def run_interrupted(script):
@@ -183,7 +183,8 @@ def test_ctrl_c_interrupts_a_long_call(call):
     script = f"""{WHILE_THE_CALL_RUNS}
 import crux
 sys.setswitchinterval({SWITCH_NEVER})
-while_the_call_runs(lambda: print('in call', flush=True))
+go = while_the_call_runs(lambda: print('in call', flush=True))
+go.set()
 {call}
 print('the call ran to its end')
 """
@@ -197,8 +198,9 @@ def test_after_a_ctrl_c_other_calls_run_and_a_script_keeps_its_own_handler():
 import signal, crux
 sys.setswitchinterval({SWITCH_NEVER})
 wall = crux.Wall.random(7)
-while_the_call_runs(lambda: print('in call', flush=True))
+go = while_the_call_runs(lambda: print('in call', flush=True))
 try:
+    go.set()
     crux.run_learning(wall, {{'experiment.iterations': 10**7}})
 except KeyboardInterrupt:
     print('interrupted')
@@ -210,10 +212,12 @@ print('thread call finished', len(lengths))
 caught = []
 signal.signal(signal.SIGINT, lambda *args: caught.append(len(caught)))
 # The script's own handler: SIGINT raised while the call runs neither interrupts it nor is
-# lost; Python runs the handler once the call has returned.
-while_the_call_runs(lambda: signal.raise_signal(signal.SIGINT))
-run = crux.run_learning(wall, {{'experiment.iterations': 2000}})
+# lost; Python runs the handler once the call has returned. The call is short (seconds)
+# since it must end by itself: the helper must run within it.
+go = while_the_call_runs(lambda: signal.raise_signal(signal.SIGINT))
+go.set()
+run = crux.run_learning(wall, {{'experiment.iterations': 100000}})
 print('own handler', len(caught), len(run.iterations['reward']))
 """
     out, err = run_interrupted(script)
-    assert out.split("\n")[:3] == ["interrupted", "thread call finished 1", "own handler 1 2000"], (out, err)
+    assert out.split("\n")[:3] == ["interrupted", "thread call finished 1", "own handler 1 100000"], (out, err)
