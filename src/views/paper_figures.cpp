@@ -223,7 +223,6 @@ int fig3_step(int iterations) { return std::max(1, (iterations + 399) / 400); }
 constexpr double kMargin = 16;
 constexpr const char* kTitleColour = "#111111";
 constexpr const char* kSubtitleColour = "#555555";
-constexpr const char* kAnchorColour = "#1a9641";  // the P_i point, as in the wall view (Fig. 2a)
 
 // Okabe-Ito colours, told apart by colour-blind readers.
 const char* condition_colour(Condition condition) {

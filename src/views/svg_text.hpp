@@ -1,7 +1,7 @@
 #pragma once
 // What every SVG view of crux shares: text made safe for XML, a width estimate for
-// laying out text (SVG cannot measure it), the spacing of metre lines, and the limbs'
-// colours.
+// laying out text (SVG cannot measure it), the spacing of metre lines, and the colours of
+// the limbs and of the grid's anchor.
 
 #include <array>
 #include <iterator>
@@ -31,6 +31,9 @@ double estimated_text_width(std::string_view text, double font_size);
 // Metres between the lines of a wall's metre grid drawn at `pixels_per_metre`: 0.5 m,
 // doubled while neighbouring lines would be closer than 30 pixels.
 double metre_tick_spacing(double pixels_per_metre);
+
+// The anchor P_i of the moving grid (Fig. 2a), in the wall view and in Fig. 2b alike.
+inline constexpr const char* kAnchorColour = "#1a9641";
 
 struct LimbStyle {
   const char* code;

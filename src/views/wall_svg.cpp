@@ -22,7 +22,6 @@ constexpr const char* kHoldIdColour = "#444444";
 constexpr const char* kGreyedColour = "#bbbbbb";  // holds outside the moving grid
 constexpr const char* kGridColour = "#7f93b0";
 constexpr const char* kTileColour = "#6a3d9a";  // a hold's tile and each tile's hold
-constexpr const char* kAnchorColour = "#1a9641";
 constexpr const char* kAnchorTileFill = "#e5f5e9";
 
 constexpr double kTitleFontSize = 15;
@@ -37,8 +36,8 @@ constexpr double kPlotLeft = 62;     // room for the z tick labels and axis titl
 constexpr double kPlotPadding = 32;  // around the content, room for the hold labels
 constexpr double kBelowPlot = 52;    // y tick labels and axis title
 constexpr double kLegendGap = 56;    // room for the finish label, right of the plot
-constexpr double kLegendRowHeight = 18;
-constexpr double kLegendSwatchWidth = 26;
+constexpr double kWallLegendRowHeight = 18;
+constexpr double kWallLegendSwatchWidth = 26;
 constexpr double kMinimumHoldRadius = 2;  // small holds stay visible
 constexpr double kMaxPlotPixels = 20000;  // the larger side of the plot, at most
 
@@ -180,7 +179,7 @@ class WallFigure {
     legend_left_ = kPlotLeft + std::max(plot_width_, y_axis_title_width) + kLegendGap;
     double legend_width = 0;
     for (const LegendEntry& entry : legend_) {
-      legend_width = std::max(legend_width, kLegendSwatchWidth + 6 + estimated_text_width(entry.text, kLabelFontSize));
+      legend_width = std::max(legend_width, kWallLegendSwatchWidth + 6 + estimated_text_width(entry.text, kLabelFontSize));
     }
     double header_width = estimated_text_width(wall_.name, kTitleFontSize);
     for (const std::string& line : subtitles_) {
@@ -188,7 +187,7 @@ class WallFigure {
     }
     page_width_ = std::ceil(std::max(legend_left_ + legend_width, kPageMargin + header_width) + kPageMargin);
     page_height_ = std::ceil(std::max(plot_top + plot_height_ + kBelowPlot,
-                                      plot_top + kLegendRowHeight * static_cast<double>(legend_.size()) + kPageMargin));
+                                      plot_top + kWallLegendRowHeight * static_cast<double>(legend_.size()) + kPageMargin));
 
     tick_spacing_ = metre_tick_spacing(scale);
   }
@@ -442,9 +441,9 @@ class WallFigure {
     append_format(out_, "<g class=\"legend\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
     for (std::size_t i = 0; i < legend_.size(); ++i) {
       const LegendEntry& entry = legend_[i];
-      const double y = view_.top + kLegendRowHeight * (static_cast<double>(i) + 0.5);
-      write_swatch(entry, legend_left_ + kLegendSwatchWidth / 2, y);
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", legend_left_ + kLegendSwatchWidth + 6, y + 4,
+      const double y = view_.top + kWallLegendRowHeight * (static_cast<double>(i) + 0.5);
+      write_swatch(entry, legend_left_ + kWallLegendSwatchWidth / 2, y);
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", legend_left_ + kWallLegendSwatchWidth + 6, y + 4,
            xml_escaped(entry.text));
     }
     out_ += "</g>\n";

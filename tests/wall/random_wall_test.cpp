@@ -1,6 +1,5 @@
 #include "wall/random_wall.hpp"
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
