@@ -62,6 +62,8 @@ class ClimbEnv {
     const bool truncated = !terminated && steps_ >= max_steps_;
     over_ = terminated || truncated;
     py::dict info;
+    // The hold as the CLI and the run files name it (their ids); the action is its index.
+    info["hold_id"] = wall_.holds[action].id;
     info["reached"] = outcome.reached;
     info["root_rise"] = outcome.root_rise_m;
     info["centre_of_mass"] = to_array(centre_of_mass_);
@@ -84,7 +86,7 @@ class ClimbEnv {
     double total = 0.0;
     py::gil_scoped_release release;
     for (const int action : checked) {
-      if (!possible(action)) throw InputError("actions", fmt::format("hold {} is not a possible action", action));
+      if (!mdp_->offers(action)) throw InputError("actions", fmt::format("hold {} is not a possible action", action));
       total += mdp_->step(action).reward;
     }
     return total;
@@ -128,16 +130,9 @@ class ClimbEnv {
  private:
   int checked_action(const py::handle& handle) const {
     const auto action = static_cast<int>(integer_from(handle, 0, wall_.hold_count() - 1, "action"));
-    if (possible(action)) return action;
+    if (mdp_->offers(action)) return action;
     throw InputError("action", fmt::format("hold {} is not a possible action of this state (see action_mask())",
                                            action));
-  }
-
-  bool possible(int action) const {
-    for (const ActionCandidate& candidate : mdp_->candidates()) {
-      if (candidate.wall == action) return true;
-    }
-    return false;
   }
 
   BodyModelPtr model_;

@@ -1,7 +1,6 @@
 // The paper's agent and experiment: one learning run (Algorithm 2), and the experiment
 // of section IV, returning what the CLI's summary.json holds.
 
-#include <chrono>
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -9,14 +8,11 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "common/input_error.hpp"
-#include "experiments/experiment_analysis.hpp"
-#include "experiments/learning_parameters.hpp"
-#include "experiments/learning_run.hpp"
-#include "experiments/run_inputs.hpp"
 #include "interruption.hpp"
+#include "jobs/command_keys.hpp"
+#include "jobs/learning_job.hpp"
+#include "jobs/paper_job.hpp"
 #include "python_config.hpp"
-#include "reports/output_folder.hpp"
-#include "reports/summary.hpp"
 
 namespace crux::python {
 
@@ -69,77 +65,61 @@ bool config_is_file(const py::handle& config) { return !config.is_none() && !py:
 
 LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& config_handle,
                             const py::handle& seed_handle, const py::handle& q_grid_handle,
-                            const py::handle& model_handle) {
-  ExperimentConfig config = config_from_python(config_handle, kTransferParameters, "run_learning");
-  // The key is accepted so that a crux train folder's config.toml replays here.
-  if (config.checkpoint_every != 0) {
-    throw InputError("experiment.checkpoint_every", "crux.run_learning keeps no checkpoint (crux train does); leave it 0");
-  }
-  const bool wall_given = !wall_handle.is_none();
-  if (wall_given && (!config.wall_file.empty() || config.wall_seed)) {
-    throw InputError("wall", "give the wall as wall or as config's wall.file or wall.seed, not both");
+                            const py::handle& model_handle, const py::handle& output, bool overwrite) {
+  LearningJob job;
+  job.config = config_from_python(config_handle, kTransferKeys, "run_learning");
+  ExperimentConfig& config = job.config;
+  if (!wall_handle.is_none()) {
+    if (!config.wall_file.empty() || config.wall_seed) {
+      throw InputError("wall", "give the wall as wall or as config's wall.file or wall.seed, not both");
+    }
+    job.wall = wall_handle.cast<Wall>();
   }
   if (!seed_handle.is_none()) config.settings.seed = uint64_from(seed_handle, "seed");
   const BodyModelPtr model = body_from(model_handle, config.urdf);
-  config.urdf = model->source;  // what the provenance records: the body used
-  const GridParameters& grid = config.settings.learning.climbing.grid;
-  std::optional<QTable> initial;
+  if (!model_handle.is_none()) config.urdf = model->source;  // what the provenance records: the body used
+  job.model = model.get();
   if (!q_grid_handle.is_none()) {
     if (!config.q_grid.empty()) {
       throw InputError("q_grid", "give the Q_grid as q_grid or as config's experiment.q_grid, not both");
     }
     if (py::isinstance<QTable>(q_grid_handle)) {
-      initial = q_grid_handle.cast<QTable>();
-      check_q_grid(*initial, grid, "q_grid");
+      job.q_grid = q_grid_handle.cast<QTable>();
     } else {
       config.q_grid = path_from(q_grid_handle);
     }
   }
-  if (!initial && !config.q_grid.empty()) initial = load_q_grid(config.q_grid, grid);
-  const Provenance provenance = record_provenance(config);
-  if (config_is_file(config_handle)) check_recorded_provenance(config, provenance, path_from(config_handle));
-  const Wall wall = wall_given ? wall_handle.cast<Wall>() : load_configured_wall(config);
-  const Condition condition = initial ? Condition::Transfer : Condition::Training;
+  const bool transfer = job.q_grid || !config.q_grid.empty();
+  job.condition = transfer ? Condition::Transfer : Condition::Training;
+  job.keys = transfer ? &kTransferKeys : &kTrainKeys;
+  if (config_is_file(config_handle)) job.config_path = path_from(config_handle);
+  if (!output.is_none()) job.output = path_from(output);
+  job.overwrite = overwrite;
   InterruptGuard guard;
   LearningRun out;
   nlohmann::ordered_json summary;
   {
     py::gil_scoped_release release;
-    const auto start = std::chrono::steady_clock::now();
-    RunResult run = run_learning(*model, wall, config.settings.learning, config.settings.seed,
-                                 initial ? &*initial : nullptr, [&guard](int) { guard.poll(); });
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ExperimentResult result =
-        single_run_result(std::move(run), wall, config.wall_seed, config.settings.seed, condition, seconds);
-    summary = summary_json(result, nullptr, config.settings, provenance);
-    out.run = std::move(result.conditions[static_cast<int>(condition)].runs.front());
+    const Condition condition = job.condition;
+    LearningJobOutcome outcome =
+        run_learning_job(std::move(job), {"crux.run_learning", {}, [&guard] { guard.poll(); }, {}});
+    summary = std::move(outcome.summary);
+    out.run = std::move(outcome.result.conditions[static_cast<int>(condition)].runs.front());
   }
   out.summary = json_to_python(summary);
   return out;
 }
 
 py::object run_experiment_py(const py::handle& config_handle, const py::handle& output, bool overwrite) {
-  ExperimentConfig config = config_from_python(config_handle, kPaperParameters, "run_experiment");
-  const Provenance provenance = record_provenance(config);
-  const bool from_file = config_is_file(config_handle);
-  if (from_file) check_recorded_provenance(config, provenance, path_from(config_handle));
-  const BodyModel model = load_configured_body(config);
-  std::string folder;
-  std::string config_toml;
-  if (!output.is_none()) {
-    folder = path_from(output);
-    config_toml = config_file_text(config, kPaperParameters, provenance);
-    check_output_folder(folder, {config.urdf, from_file ? path_from(config_handle) : std::string()}, overwrite);
-  }
+  PaperJob job{config_from_python(config_handle, kPaperKeys, "run_experiment")};
+  if (config_is_file(config_handle)) job.config_path = path_from(config_handle);
+  if (!output.is_none()) job.output = path_from(output);
+  job.overwrite = overwrite;
   InterruptGuard guard;
   nlohmann::ordered_json summary;
   {
     py::gil_scoped_release release;
-    const ExperimentResult result =
-        run_paper_experiment(model, config.settings, {}, [&guard] { guard.poll(); });
-    const ExperimentAnalysis analysis = analyse_experiment(result, config.settings);
-    summary = summary_json(result, &analysis, config.settings, provenance);
-    if (!folder.empty()) write_experiment_folder(folder, result, config.settings, model, config_toml, summary);
+    summary = run_paper_job(std::move(job), {"crux.run_experiment", {}, [&guard] { guard.poll(); }, {}}).summary;
   }
   return json_to_python(summary);
 }
@@ -165,9 +145,11 @@ void bind_experiment(py::module_& m) {
 
   m.def("run_learning", &run_learning_py, py::arg("wall") = py::none(), py::arg("config") = py::none(),
         py::arg("seed") = py::none(), py::arg("q_grid") = py::none(), py::arg("model") = py::none(),
+        py::arg("output") = py::none(), py::arg("overwrite") = false,
         "One learning run on a wall (a Wall, or config's wall.file or wall.seed), from empty tables or from a "
         "transferred Q_grid (a QTable or a q_grid.bin path): crux train, or crux transfer. config takes their keys; "
-        "seed overrides experiment.seed.");
+        "seed overrides experiment.seed. Writes their run folder to `output` when given (with checkpoints when "
+        "experiment.checkpoint_every is set, resuming from one found there).");
   m.def("run_experiment", &run_experiment_py, py::arg("config") = py::none(), py::arg("output") = py::none(),
         py::arg("overwrite") = false,
         "The paper's experiment (crux paper): returns summary.json's contents; writes crux paper's folder to "

@@ -99,6 +99,7 @@ ExperimentConfig config_from_python(const py::handle& config, const ParameterSet
       if (field == fields.end()) throw InputError(kSource, fmt::format("unknown key {}", key));
       if (!accepted.accepts(key)) throw InputError(kSource, fmt::format("crux.{} does not take {}", caller, key));
       assign(*field, value);
+      out.given.insert(key);
     }
   } else {
     throw InputError(kSource, "must be None, a dict of config keys, or the path of a config.toml");

@@ -62,6 +62,7 @@ def test_rewards_and_what_each_kind_of_step_does(wall7):
         action = int(rng.choice(np.flatnonzero(env.action_mask())))
         after, reward, terminated, truncated, info = env.step(action)
         assert not truncated
+        assert info["hold_id"] == wall7.hold_ids[action] and wall7.index_of(info["hold_id"]) == action
         if not info["reached"]:
             kinds.add("unreachable")
             assert reward == REWARDS["unreachable"] and not terminated and info["root_rise"] == 0.0

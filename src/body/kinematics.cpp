@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/Geometry>
 
@@ -91,13 +92,21 @@ void place_operational_points(const BodyModel& model, BodyData& data) {
 
 }  // namespace
 
+void check_workspace(const BodyModel& model, const BodyData& data) {
+  if (data.placements.size() != model.joints.size() || data.trigonometry.size() != model.joints.size()) {
+    throw std::invalid_argument("BodyData was sized for another body model");
+  }
+}
+
 void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g) {
+  check_workspace(model, data);
   const int n = static_cast<int>(model.joints.size());
   for (int i = 0; i < n; ++i) place_joint(model, data, g, i);
   place_operational_points(model, data);
 }
 
 void operational_forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g) {
+  check_workspace(model, data);
   for (const int i : model.operational_joints) place_joint(model, data, g, i);
   place_operational_points(model, data);
 }

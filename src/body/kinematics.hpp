@@ -7,6 +7,10 @@
 
 namespace crux {
 
+// A workspace sized for another model is a programming error: std::invalid_argument,
+// checked by the two forward kinematics that every other function follows.
+void check_workspace(const BodyModel& model, const BodyData& data);
+
 // Places every joint frame and the operational points e0..e4 for posture g.
 void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g);
 

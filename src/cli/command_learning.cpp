@@ -1,6 +1,6 @@
 // crux paper | train | transfer | plan: learning to climb and transfer (section IV).
 
-#include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -11,26 +11,19 @@
 #include "cli/parameter_binding.hpp"
 #include "cli/progress_bar.hpp"
 #include "common/input_error.hpp"
-#include "experiments/learning_parameters.hpp"
+#include "jobs/command_keys.hpp"
 #include "experiments/run_checkpoint.hpp"
 #include "experiments/run_inputs.hpp"
-#include "reports/output_folder.hpp"
+#include "jobs/learning_job.hpp"
+#include "jobs/paper_job.hpp"
 #include "reports/plan_description.hpp"
-#include "reports/summary.hpp"
 #include "reports/text_report.hpp"
 
 namespace crux::cli {
 
 namespace {
 
-const ParameterSet kPlanParameters{{"experiment.urdf", "experiment.plan_max_solves", "ik", "filter", "wall"}, {"wall.name", "wall.count"}};
-
-// The replayed config's recorded digests must match the inputs used now.
-Provenance checked_provenance(const ExperimentConfig& config, const ParameterBinding& binding) {
-  Provenance provenance = record_provenance(config);
-  if (!binding.config_path().empty()) check_recorded_provenance(config, provenance, binding.config_path());
-  return provenance;
-}
+const ParameterSet kPlanKeys{{"experiment.urdf", "experiment.plan_max_solves", "ik", "filter", "wall"}, {"wall.name", "wall.count"}};
 
 void require_wall(const ExperimentConfig& config) {
   if (config.wall_file.empty() && !config.wall_seed) {
@@ -38,38 +31,27 @@ void require_wall(const ExperimentConfig& config) {
   }
 }
 
-// The files a command reads: none may lie in its output folder.
-std::vector<std::string> inputs_of(const ExperimentConfig& config, const ParameterBinding& binding) {
-  return {config.urdf, config.wall_file, config.q_grid, binding.config_path()};
-}
-
 struct PaperCommand {
-  ParameterBinding binding{"paper", kPaperParameters};
+  ParameterBinding binding{"paper", kPaperKeys};
   std::string output = "out/paper";
   bool json = false;
   bool overwrite = false;
 
   void run() {
-    ExperimentConfig config = binding.resolve();
-    const Provenance provenance = checked_provenance(config, binding);
-    const BodyModel model = load_configured_body(config);
-    const ExperimentSettings& settings = config.settings;
-    const std::string config_toml = config_file_text(config, binding.accepted(), provenance);
-    check_output_folder(output, inputs_of(config, binding), overwrite);
+    PaperJob job{binding.resolve(), binding.config_path(), output, overwrite};
+    const ExperimentSettings settings = job.config.settings;  // the job takes the config
     ProgressBar progress(fmt::format("paper: {} walls x {} seeds x 3 conditions", settings.wall_pairs,
                                      settings.seeds_per_wall),
                          3L * settings.runs());
-    const ExperimentResult result = run_paper_experiment(model, settings, [&](int done) { progress.update(done); });
+    const PaperJobOutcome outcome =
+        run_paper_job(std::move(job), {"crux paper", [&](int done) { progress.update(done); }, {}, {}});
     progress.finish();
-    const ExperimentAnalysis analysis = analyse_experiment(result, settings);
-    const nlohmann::ordered_json summary = summary_json(result, &analysis, settings, provenance);
-    write_experiment_folder(output, result, settings, model, config_toml, summary);
     if (json) {
-      std::cout << summary.dump(2) << '\n';
+      std::cout << outcome.summary.dump(2) << '\n';
       return;
     }
-    std::cout << experiment_text(result, analysis, settings)
-              << fmt::format("\nwrote {} ({:.1f} s)\n", output, result.seconds);
+    std::cout << experiment_text(outcome.result, outcome.analysis, settings)
+              << fmt::format("\nwrote {} ({:.1f} s)\n", output, outcome.result.seconds);
   }
 };
 
@@ -81,48 +63,33 @@ struct SingleRunCommand {
   bool overwrite = false;
 
   void run() {
-    ExperimentConfig config = binding.resolve();
-    require_wall(config);
-    if (condition == Condition::Transfer && config.q_grid.empty()) {
+    LearningJob job;
+    job.config = binding.resolve();
+    require_wall(job.config);
+    if (condition == Condition::Transfer && job.config.q_grid.empty()) {
       throw InputError("--q-grid", "give the Q_grid to transfer (q_grid.bin of a training run)");
     }
-    const Provenance provenance = checked_provenance(config, binding);
-    const BodyModel model = load_configured_body(config);
-    const Wall wall = load_configured_wall(config);
-    std::optional<QTable> initial;
-    if (condition == Condition::Transfer) initial = load_q_grid(config.q_grid, config.settings.learning.climbing.grid);
-    const std::string config_toml = config_file_text(config, binding.accepted(), provenance);
-    // A checkpoint resumes the run whose parameters and inputs it records, whatever
-    // its checkpoint interval.
-    ParameterSet identity_keys = binding.accepted();
-    identity_keys.exclude.push_back("experiment.checkpoint_every");
-    const std::string identity = config_file_text(config, identity_keys, provenance);
-    const std::filesystem::path checkpoint_file = std::filesystem::path(output) / kCheckpointFile;
-    RunCheckpoints checkpoints{config.checkpoint_every, {}, {}, checkpoint_file.string()};
-    // What a SIGKILL left half-written is no output: a folder killed while it wrote its
-    // first checkpoint starts again.
-    remove_crux_temporaries(output);
-    if (!overwrite) checkpoints.resume = read_checkpoint(checkpoint_file, identity).value_or("");
-    check_output_folder(output, inputs_of(config, binding), overwrite || !checkpoints.resume.empty());
-    checkpoints.save = [&](std::string state, int) {
-      write_checkpoint(output, checkpoint_file_bytes(identity, state));
-    };
-    ProgressBar progress(condition_name(condition), config.settings.learning.iterations);
-    const auto start = std::chrono::steady_clock::now();
-    RunResult run = run_learning(model, wall, config.settings.learning, config.settings.seed,
-                                 initial ? &*initial : nullptr, [&](int done) { progress.update(done); }, &checkpoints);
+    job.condition = condition;
+    job.keys = condition == Condition::Transfer ? &kTransferKeys : &kTrainKeys;
+    job.config_path = binding.config_path();
+    job.output = output;
+    job.overwrite = overwrite;
+    const int iterations = job.config.settings.learning.iterations;
+    ProgressBar progress(condition_name(condition), iterations);
+    const std::string caller = condition == Condition::Transfer ? "crux transfer" : "crux train";
+    const JobHooks hooks{caller, [&](int done) { progress.update(done); }, {}, [&](int iteration) {
+                           progress.start_at(iteration);
+                           std::cerr << fmt::format("{}: resumed at iteration {} of {} from {}\n", caller, iteration,
+                                                    iterations, (std::filesystem::path(output) / kCheckpointFile).string());
+                         }};
+    const LearningJobOutcome outcome = run_learning_job(std::move(job), hooks);
     progress.finish();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const ExperimentResult result =
-        single_run_result(std::move(run), wall, config.wall_seed, config.settings.seed, condition, seconds);
-    const nlohmann::ordered_json summary = summary_json(result, nullptr, config.settings, provenance);
-    write_run_folder(output, result, model, config.settings.learning.climbing.grid, config_toml, summary);
-    std::cout << (json ? summary.dump(2) + "\n" : run_text(result, config.settings.learning.iterations, output));
+    std::cout << (json ? outcome.summary.dump(2) + "\n" : run_text(outcome.result, iterations, output));
   }
 };
 
 struct PlanCommand {
-  ParameterBinding binding{"plan", kPlanParameters};
+  ParameterBinding binding{"plan", kPlanKeys};
   bool json = false;
 
   void run() {
@@ -136,9 +103,9 @@ struct PlanCommand {
 };
 
 void add_single_run_command(CLI::App& app, const char* name, const char* description, Condition condition,
-                            const ParameterSet& parameters) {
+                            const ParameterSet& keys) {
   auto command = std::make_shared<SingleRunCommand>(
-      SingleRunCommand{ParameterBinding(name, parameters), condition, fmt::format("out/{}", name)});
+      SingleRunCommand{ParameterBinding(name, keys), condition, fmt::format("out/{}", name)});
   auto* c = app.add_subcommand(name, description);
   c->add_option("-o,--output", command->output, "Output folder")->capture_default_str();
   c->add_flag("--json", command->json, "Print summary.json's contents instead of text");
@@ -162,9 +129,9 @@ void add_learning_commands(CLI::App& app) {
   p->callback([paper] { paper->run(); });
 
   add_single_run_command(app, "train", "Learn to climb one wall from empty tables", Condition::Training,
-                         kTrainParameters);
+                         kTrainKeys);
   add_single_run_command(app, "transfer", "Learn to climb one wall starting from a Q_grid learnt elsewhere",
-                         Condition::Transfer, kTransferParameters);
+                         Condition::Transfer, kTransferKeys);
 
   auto plan = std::make_shared<PlanCommand>();
   auto* l = app.add_subcommand("plan", "Exact shortest climb of a wall under the learning's rules");

@@ -96,6 +96,7 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
   for (std::size_t i = 0; i < fields.size(); ++i) {
     const CLI::Option* given = option(fields[i].key);
     if (given == nullptr || given->count() == 0) continue;
+    config.given.insert(fields[i].key);
     std::visit(
         [&](auto* destination) {
           *destination = *std::get<std::remove_cvref_t<decltype(destination)>>(flags[i].target);

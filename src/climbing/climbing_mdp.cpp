@@ -1,6 +1,8 @@
 #include "climbing/climbing_mdp.hpp"
 
+#include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -60,7 +62,13 @@ void ClimbingMdp::describe(const BodyData& body) {
   }
 }
 
+bool ClimbingMdp::offers(ActionCode hold) const {
+  const auto offered = candidates();
+  return std::any_of(offered.begin(), offered.end(), [hold](const ActionCandidate& c) { return c.wall == hold; });
+}
+
 StepOutcome ClimbingMdp::step(ActionCode hold) {
+  if (!offers(hold)) throw std::invalid_argument("ClimbingMdp::step: the state does not offer this hold");
   const Limb free = configuration_.free_limb();
   const HoldConfiguration complete = configuration_.with(free, hold);
   StepOutcome outcome;

@@ -50,6 +50,11 @@ class ClimbingMdp {
 
   const StateCouple& state() const { return state_; }
   std::span<const ActionCandidate> candidates() const { return {candidates_.data(), candidate_count_}; }
+  // Whether `hold` is one of the state's candidates (the geometric filter's possible
+  // actions): what step requires, and what callers with their own action (Python, an
+  // episode replayed from a file) check first to name it in their error.
+  bool offers(ActionCode hold) const;
+  // std::invalid_argument when the state does not offer `hold`.
   StepOutcome step(ActionCode hold);
 
   const HoldConfiguration& configuration() const { return configuration_; }

@@ -295,6 +295,7 @@ ConfigLines apply_config_text(const std::string& text, const std::string& path, 
         assign(path, *field, node);
       }
       lines[key] = line;
+      config.given.insert(key);
     }
   }
   return lines;
@@ -310,8 +311,20 @@ void require(bool ok, const char* key, const std::string& problem) {
 
 }  // namespace
 
+bool is_wall_generator_key(const std::string& key) {
+  return key.starts_with("wall.") && key != "wall.file" && key != "wall.seed" && key != "wall.name" &&
+         key != "wall.count";
+}
+
 void finalize_config(ExperimentConfig& config) {
   ExperimentSettings& s = config.settings;
+  if (!config.wall_file.empty()) {
+    for (const std::string& key : config.given) {
+      if (is_wall_generator_key(key)) {
+        throw InputError(key, "shapes a random wall, and the wall file gives the wall itself: drop one of them");
+      }
+    }
+  }
   // Flags may spell nan or inf; no parameter means anything then.
   for (const ConfigField& field : config_fields(config)) {
     if (const auto* value = std::get_if<double*>(&field.target); value != nullptr && !std::isfinite(**value)) {
@@ -483,6 +496,8 @@ std::string config_to_toml(ExperimentConfig& config, const ParameterSet& accepte
   std::string section;
   for (const ConfigField& field : config_fields(config)) {
     if (!accepted.accepts(field.key)) continue;
+    // A wall file's run used no generator key: config.toml records what ran.
+    if (!config.wall_file.empty() && is_wall_generator_key(field.key)) continue;
     const auto listed = lists.find(field.key);
     const std::string value = listed != lists.end() ? listed->second : value_text(field, true);
     if (value.empty()) continue;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <variant>
 #include <vector>
@@ -43,7 +44,14 @@ struct ExperimentConfig {
   // The [provenance] table of a config file read back (key -> value), to be checked
   // against the inputs of the replay.
   std::map<std::string, std::string> recorded_provenance;
+  // The keys a config file, a flag or a Python dict set (the rest are defaults):
+  // finalize_config refuses those that a given wall file makes meaningless.
+  std::set<std::string> given;
 };
+
+// The random wall generator's keys (wall.columns ... wall.finish_height): a wall file
+// gives its holds and finishing height itself, so none applies to it.
+bool is_wall_generator_key(const std::string& key);
 
 using ConfigTarget =
     std::variant<double*, int*, std::optional<int>*, std::uint64_t*, std::optional<std::uint64_t>*, bool*, std::string*>;

@@ -141,6 +141,7 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
   LoopState loop;
   if (checkpoints != nullptr && !checkpoints->resume.empty()) {
     loop = load_state(*checkpoints, parameters.iterations, result, climb, agent, mdp);
+    if (checkpoints->resumed) checkpoints->resumed(loop.iteration);
   } else {
     agent.observe(mdp.state(), mdp.candidates());
   }

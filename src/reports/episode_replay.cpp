@@ -1,6 +1,5 @@
 #include "reports/episode_replay.hpp"
 
-#include <algorithm>
 #include <charconv>
 
 #include <fmt/format.h>
@@ -28,10 +27,7 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
     if (step.episode > episode) break;
     if (step.episode == episode && climb.postures.empty()) climb.postures.push_back(mdp.posture());
     const ActionCode hold = folder.wall.index_of(step.hold_id);
-    const auto candidates = mdp.candidates();
-    const bool possible = hold >= 0 && std::any_of(candidates.begin(), candidates.end(),
-                                                   [&](const ActionCandidate& c) { return c.wall == hold; });
-    if (!possible) {
+    if (!mdp.offers(hold)) {
       throw InputError(iterations_file, fmt::format("iteration {}: hold {} is not a possible action there; the "
                                                     "run was not written with this folder's wall and config",
                                                     step.iteration, step.hold_id));

@@ -47,6 +47,7 @@ std::string provenance_toml(const Provenance& p) {
   };
   line("crux_version", p.crux_version);
   line("git_commit", p.git_commit);
+  line("produced_by", p.produced_by);
   line("urdf", p.urdf);
   line("urdf_sha256", p.urdf_sha256);
   line("wall_file", p.wall_file);
@@ -63,6 +64,7 @@ nlohmann::ordered_json provenance_json(const Provenance& p) {
   nlohmann::ordered_json out;
   out["crux_version"] = p.crux_version;
   out["git_commit"] = text_or_null(p.git_commit);
+  out["produced_by"] = text_or_null(p.produced_by);
   out["urdf"] = p.urdf;
   out["urdf_sha256"] = p.urdf_sha256;
   out["wall_file"] = text_or_null(p.wall_file);

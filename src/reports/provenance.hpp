@@ -1,5 +1,6 @@
 #pragma once
-// What produced an output folder: crux's version and git commit, and the input files
+// What produced an output folder: crux's version and git commit, the command or Python
+// function that ran it, and the input files
 // with their SHA-256 digests (or the wall's seed). config.toml carries it as a
 // [provenance] table, summary.json as "provenance"; a replay checks the digests.
 
@@ -15,6 +16,7 @@ namespace crux {
 
 struct Provenance {
   std::string crux_version, git_commit;
+  std::string produced_by;  // the command or function that wrote the folder: "crux train", "crux.run_learning", ...
   std::string urdf, urdf_sha256;  // absolute path
   std::string wall_file, wall_sha256;
   std::optional<std::uint64_t> wall_seed;

@@ -181,7 +181,6 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
   out["beginning_iterations"] = beginning;
   out["threshold_length"] = settings.analysis.threshold_length;
   out["solver"] = ik_solver_name(settings.learning.climbing.reachability.ik.solver);
-  out["seconds"] = result.seconds;
   out["table1"] = table_one_json(result, beginning);
   if (analysis != nullptr) {
     out["table1_over_runs"] = table_one_over_runs_json(result, beginning);

@@ -2,11 +2,11 @@
 
 #include <map>
 
-#include "experiments/learning_parameters.hpp"
+#include "jobs/command_keys.hpp"
 
 namespace crux {
 
-const ParameterSet kSweepParameters = kPaperParameters;
+const ParameterSet kSweepParameters = kPaperKeys;
 
 SweepDefinition define_sweep(const SweepGrid& grid, const std::function<ExperimentConfig(const ListChoice&)>& resolve) {
   std::vector<std::string> keys;

@@ -7,12 +7,10 @@
 
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
-#include "experiments/learning_parameters.hpp"
-#include "experiments/run_inputs.hpp"
+#include "jobs/command_keys.hpp"
+#include "jobs/learning_job.hpp"
 #include "reports/output_folder.hpp"
 #include "reports/plan_description.hpp"
-#include "reports/provenance.hpp"
-#include "reports/summary.hpp"
 #include "wall/wall_file.hpp"
 
 namespace crux {
@@ -47,27 +45,21 @@ void write_run_task(const SweepPlan& plan, const SweepTask& task, const BodyMode
   const ExperimentSettings& settings = cell.config.settings;
   const int pair = task.index / settings.seeds_per_wall;
   const bool training_wall = task.condition == Condition::Training;
-  const ExperimentWall wall = draw_wall(model, settings, training_wall ? kTrainingWalls : kTransferWalls, pair);
-  // The run's own config.toml replays it with crux train or crux transfer.
-  ExperimentConfig config = cell.config;
-  config.settings.seed = learning_seed(settings.seed, task.condition, task.index);
-  config.wall_seed = wall.seed;
-  std::optional<QTable> initial;
+  // The run's own config.toml replays it with crux train or crux transfer: the job reads
+  // its wall from the seed and its Q_grid from the training run's folder, as they would.
+  LearningJob job;
+  job.config = cell.config;
+  job.config.settings.seed = learning_seed(settings.seed, task.condition, task.index);
+  job.config.wall_seed = draw_wall(model, settings, training_wall ? kTrainingWalls : kTransferWalls, pair).seed;
   if (task.condition == Condition::Transfer) {
     const SweepTask& training = plan.tasks[static_cast<std::size_t>(task.depends_on)];
-    config.q_grid = fs::absolute(sweep_folder / training.folder / "q_grid.bin").lexically_normal().string();
-    initial = load_q_grid(config.q_grid, settings.learning.climbing.grid);
+    job.config.q_grid = fs::absolute(sweep_folder / training.folder / "q_grid.bin").lexically_normal().string();
   }
-  RunResult run = run_learning(model, wall.wall, settings.learning, config.settings.seed, initial ? &*initial : nullptr);
-  const ExperimentResult result =
-      single_run_result(std::move(run), wall.wall, wall.seed, config.settings.seed, task.condition, 0.0);
-  const Provenance provenance = record_provenance(config);
-  const ParameterSet& accepted = task.condition == Condition::Transfer ? kTransferParameters : kTrainParameters;
-  const std::string config_toml = config_file_text(config, accepted, provenance);
-  nlohmann::ordered_json summary = summary_json(result, nullptr, config.settings, provenance);
-  // The same bytes from any worker: the run's time is not part of its results.
-  summary.erase("seconds");
-  write_run_folder(folder, result, model, settings.learning.climbing.grid, config_toml, summary);
+  job.condition = task.condition;
+  job.keys = task.condition == Condition::Transfer ? &kTransferKeys : &kTrainKeys;
+  job.output = folder;
+  job.model = &model;
+  run_learning_job(std::move(job), {"crux sweep", {}, {}, {}});
 }
 
 }  // namespace

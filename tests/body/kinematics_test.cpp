@@ -63,6 +63,18 @@ TEST(Kinematics, StandingPostureIsUprightWithFeetBelowRoot) {
   EXPECT_NEAR(com.y(), root.y(), 1e-9) << "the body is symmetric";
 }
 
+// A workspace is sized from its model; one sized for another is refused, not overrun.
+TEST(Kinematics, AWorkspaceOfAnotherModelIsRefused) {
+  const BodyModel& model = testing::human_model();
+  BodyModel fewer_joints = model;
+  fewer_joints.joints.pop_back();
+  BodyData data(fewer_joints);
+  EXPECT_THROW(forward_kinematics(model, data, Posture::Zero()), std::invalid_argument);
+  EXPECT_THROW(operational_forward_kinematics(model, data, Posture::Zero()), std::invalid_argument);
+  BodyData own(model);
+  EXPECT_NO_THROW(forward_kinematics(model, own, Posture::Zero()));
+}
+
 TEST(Kinematics, HotPathDoesNotAllocate) {
   const BodyModel& model = human_model();
   BodyData data(model);

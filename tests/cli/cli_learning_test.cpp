@@ -252,7 +252,10 @@ TEST(CliLearning, ViewAndReportAnswerBadInputWithOneLine) {
   const auto no_folder = run_crux("report /nonexistent/crux_folder -o " + never.string());
   EXPECT_EQ(no_folder.exit_code, 2);
   EXPECT_EQ(no_folder.err, "crux: /nonexistent/crux_folder: no such output folder\n");
-  const auto no_run = run_crux("view --run " + fs::temp_directory_path().string() + " -o " + never.string());
+  // A folder of the test's own that holds no run (the shared temporary folder may hold anything).
+  const fs::path empty = learning_scratch("not_a_run");
+  fs::create_directories(empty);
+  const auto no_run = run_crux("view --run " + empty.string() + " -o " + never.string());
   EXPECT_EQ(no_run.exit_code, 2);
   EXPECT_NE(no_run.err.find("not a run folder"), std::string::npos) << no_run.err;
   EXPECT_EQ(testing::count_lines(no_run.err), 1);
@@ -409,6 +412,8 @@ TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
   std::ofstream(killed / "checkpoint.bin.tmp.0123456789abcdef") << "half";
   const auto resumed = run_crux(arguments + killed.string());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("crux train: resumed at iteration "), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find(" of 6000 from " + (killed / "checkpoint.bin").string()), std::string::npos) << resumed.err;
   EXPECT_FALSE(fs::exists(killed / "checkpoint.bin")) << "a complete folder keeps no checkpoint";
   EXPECT_FALSE(fs::exists(killed / "INCOMPLETE"));
   for (const char* file : {"iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv", "wall.json",
@@ -424,6 +429,31 @@ TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
   std::ofstream(first / "INCOMPLETE.tmp.fedcba9876543210") << "half";
   const auto afresh = run_crux(arguments + first.string());
   EXPECT_EQ(afresh.exit_code, 0) << afresh.err;
+}
+
+// A wall file gives the wall, so a random wall's parameters beside it are refused (they
+// were once ignored and recorded), and config.toml records none of them.
+TEST(CliLearning, WallGeneratorFlagsBesideAWallFileAreRefused) {
+  const fs::path wall = learning_scratch("generator_wall.json"), out = learning_scratch("generator_out");
+  ASSERT_EQ(run_crux("wall generate --wall-seed 5 -o " + wall.string()).exit_code, 0);
+  for (const char* flag : {"--wall-sigma 0.2", "--wall-rows 9", "--wall-finish-height 2.5"}) {
+    const auto refused = run_crux("train --wall-file " + wall.string() + " " + flag + " --iterations 100 -o " +
+                                  out.string());
+    EXPECT_EQ(refused.exit_code, 2) << flag;
+    EXPECT_EQ(refused.err.rfind("crux: " + std::string(flag).substr(0, std::string(flag).find(' ')) + ": shapes a "
+                                "random wall, and the wall file gives the wall itself: drop one of them\n", 0), 0u)
+        << refused.err;
+    EXPECT_FALSE(fs::exists(out)) << flag;
+  }
+  ASSERT_EQ(run_crux("train --wall-file " + wall.string() + " --iterations 100 -o " + out.string()).exit_code, 0);
+  std::ifstream in(out / "config.toml");
+  const std::string config((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(config.find("[wall]\nfile = "), std::string::npos) << config;
+  EXPECT_EQ(config.find("sigma"), std::string::npos) << config;
+  EXPECT_EQ(config.find("finish_height"), std::string::npos) << config;
+  // The folder's own config replays it.
+  EXPECT_EQ(run_crux("train --config " + (out / "config.toml").string() + " -o " +
+                     learning_scratch("generator_again").string()).exit_code, 0);
 }
 
 TEST(CliLearning, TheTransferModeIsOneFlagWrittenToTheConfigAndAnUnknownOneIsRefused) {

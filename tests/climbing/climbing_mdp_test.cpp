@@ -31,6 +31,30 @@ TEST(ClimbingMdp, StartsInTheStartConfigurationWithTheRightHandFree) {
   }
 }
 
+// The MDP offers exactly its candidates, and refuses to step to any other hold (one the
+// filter ruled out, one that is not on the wall) without changing its state.
+TEST(ClimbingMdp, OffersItsCandidatesAndStepsToNoOtherHold) {
+  Fixture f;
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  int offered = 0;
+  for (ActionCode hold = 0; hold < mdp.wall_action_count(); ++hold) {
+    bool candidate = false;
+    for (const ActionCandidate& c : mdp.candidates()) candidate = candidate || c.wall == hold;
+    EXPECT_EQ(mdp.offers(hold), candidate) << "hold index " << hold;
+    offered += candidate ? 1 : 0;
+  }
+  EXPECT_EQ(offered, static_cast<int>(mdp.candidates().size()));
+  ASSERT_LT(offered, mdp.wall_action_count()) << "the start offers every hold: no refused step to test";
+  ActionCode refused = 0;
+  while (mdp.offers(refused)) ++refused;
+  const StateCouple before = mdp.state();
+  EXPECT_THROW(mdp.step(refused), std::invalid_argument);
+  EXPECT_THROW(mdp.step(-1), std::invalid_argument);
+  EXPECT_THROW(mdp.step(mdp.wall_action_count()), std::invalid_argument);
+  EXPECT_EQ(mdp.state().wall, before.wall);
+  EXPECT_EQ(mdp.state().grid, before.grid);
+}
+
 TEST(ClimbingMdp, UnreachableStaysWithMinus1000AndReachableRotatesTheFreeLimb) {
   Fixture f;
   ClimbingMdp mdp(f.model, f.wall, f.parameters);

@@ -3,9 +3,14 @@
 exceptions with where they are tested. This checks both halves of that sentence:
 every src/<area>/<name>.{hpp,cpp} has tests/<area>/<name>_test.cpp (every
 python/src/bind_<area>.cpp has python/tests/test_<area>.py) or is an exception, and
-every exception is named in docs/DESIGN.md."""
+every exception is named in docs/DESIGN.md.
+
+It also checks DESIGN's folder table, whose order is the direction of dependencies:
+every `#include "<area>/..."` of a file in src/<other>/ names its own folder or one
+above it in the table, and every folder of src/ has its row."""
 
 import pathlib
+import re
 import sys
 
 EXCEPTIONS = {
@@ -18,9 +23,24 @@ EXCEPTIONS = {
     # generated at build time; tested through provenance and crux --version
     "common/build_info",
     # plain types, used by every test that reads inputs or solves IK
-    "body/body_data", "ik/ik_result", "common/input_error",
+    "body/body_data", "ik/ik_result", "common/input_error", "jobs/job_hooks",
 }
 PYTHON_EXCEPTIONS = {"conversions", "python_config", "python_errors", "interruption", "module", "bindings"}
+
+
+def layer_problems(root: pathlib.Path, design: str) -> list[str]:
+    order = re.findall(r"^\| `src/([a-z_]+)/` \|", design, flags=re.MULTILINE)
+    rank = {area: i for i, area in enumerate(order)}
+    problems = [f"docs/DESIGN.md's folder table has no row for src/{folder.name}/"
+                for folder in sorted((root / "src").iterdir()) if folder.is_dir() and folder.name not in rank]
+    include = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/', flags=re.MULTILINE)
+    for source in sorted((root / "src").rglob("*.[ch]pp")):
+        area = source.parent.relative_to(root / "src").as_posix()
+        for used in sorted(set(include.findall(source.read_text()))):
+            if used in rank and area in rank and rank[used] > rank[area]:
+                problems.append(f"src/{area}/{source.name} includes {used}/, which comes after {area}/ "
+                                f"in docs/DESIGN.md's folder table")
+    return problems
 
 
 def main(root: pathlib.Path) -> int:
@@ -43,10 +63,39 @@ def main(root: pathlib.Path) -> int:
         area = stem.removeprefix("bind_")
         if not stem.startswith("bind_") or not (root / "python" / "tests" / f"test_{area}.py").exists():
             problems.append(f"python/src/{source.name} has no python/tests/test_{area}.py")
+    problems += layer_problems(root, design)
     for problem in problems:
         print(problem)
     return 1 if problems else 0
 
 
+def self_test() -> int:
+    """The layer check on a two-folder tree: an include that points down the table passes, one
+    that points up fails, naming the file."""
+    import tempfile
+    with tempfile.TemporaryDirectory() as scratch:
+        root = pathlib.Path(scratch)
+        (root / "src" / "low").mkdir(parents=True)
+        (root / "src" / "high").mkdir()
+        design = "| folder | what |\n|---|---|\n| `src/low/` | x |\n| `src/high/` | y |\n"
+        (root / "src" / "high" / "user.cpp").write_text('#include "low/base.hpp"\n')
+        (root / "src" / "low" / "base.hpp").write_text("#pragma once\n")
+        if layer_problems(root, design):
+            print("self-test: an include of a folder above was refused")
+            return 1
+        (root / "src" / "low" / "base.hpp").write_text('#pragma once\n#include "high/user.hpp"\n')
+        if layer_problems(root, design) != ["src/low/base.hpp includes high/, which comes after low/ in "
+                                            "docs/DESIGN.md's folder table"]:
+            print("self-test: an include of a folder below was not refused")
+            return 1
+        (root / "src" / "unlisted").mkdir()
+        if not any("no row for src/unlisted/" in p for p in layer_problems(root, design)):
+            print("self-test: a folder without a row was not named")
+            return 1
+    return 0
+
+
 if __name__ == "__main__":
+    if sys.argv[1] == "--self-test":
+        sys.exit(self_test())
     sys.exit(main(pathlib.Path(sys.argv[1])))

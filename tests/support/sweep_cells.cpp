@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "experiments/learning_parameters.hpp"
+#include "jobs/command_keys.hpp"
 
 namespace crux::testing {
 
@@ -15,7 +15,7 @@ ExperimentConfig small_sweep_config(int walls, int iterations, const std::string
   config.settings.learning.iterations = iterations;
   config.settings.plan = false;
   config.settings.analysis.bootstrap_resamples = 200;
-  if (!toml.empty()) apply_config_text(toml, "test.toml", config, kPaperParameters, "sweep");
+  if (!toml.empty()) apply_config_text(toml, "test.toml", config, kPaperKeys, "sweep");
   finalize_config(config);
   return config;
 }

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/learning_parameters.hpp"
+#include "jobs/command_keys.hpp"
 
 namespace crux {
 namespace {

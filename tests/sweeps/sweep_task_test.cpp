@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "experiments/learning_parameters.hpp"
+#include "jobs/command_keys.hpp"
 #include "reports/plan_description.hpp"
 #include "reports/run_folder.hpp"
 #include "support/sweep_cells.hpp"

@@ -1,0 +1,26 @@
+#pragma once
+// The config keys (docs/OUTPUTS.md) that each job and each command shared by the CLI and
+// the Python module takes, so that both take, and write back, the same parameters. A
+// command's own set, used by it alone, stays beside it in src/cli/.
+
+#include "experiments/experiment_config.hpp"
+
+namespace crux {
+
+// One learning run on one wall (crux train); transfer adds the Q_grid it starts from.
+inline const ParameterSet kTrainKeys{{"experiment.urdf", "experiment.seed", "experiment.iterations",
+                                      "experiment.beginning", "experiment.threshold_length", "experiment.greedy_cap",
+                                      "experiment.checkpoint_every", "experiment.transfer", "learning", "reward", "ik",
+                                      "filter", "grid", "wall"},
+                                     {"wall.name", "wall.count"}};
+inline const ParameterSet kTransferKeys{{"experiment.urdf", "experiment.seed", "experiment.iterations",
+                                         "experiment.beginning", "experiment.threshold_length", "experiment.greedy_cap",
+                                         "experiment.checkpoint_every", "experiment.q_grid", "experiment.transfer",
+                                         "learning", "reward", "ik", "filter", "grid", "wall"},
+                                        {"wall.name", "wall.count"}};
+// The paper's experiment (crux paper): its walls are drawn from the experiment seed.
+inline const ParameterSet kPaperKeys{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"},
+                                     {"experiment.q_grid", "experiment.checkpoint_every", "wall.file", "wall.seed",
+                                      "wall.name", "wall.count"}};
+
+}  // namespace crux

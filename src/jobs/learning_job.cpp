@@ -1,0 +1,83 @@
+#include "jobs/learning_job.hpp"
+
+#include <chrono>
+
+#include "common/input_error.hpp"
+#include "experiments/run_checkpoint.hpp"
+#include "experiments/run_inputs.hpp"
+#include "reports/output_folder.hpp"
+#include "reports/summary.hpp"
+
+namespace crux {
+
+LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
+  ExperimentConfig& config = job.config;
+  const bool writes_folder = !job.output.empty();
+  if (config.checkpoint_every != 0 && !writes_folder) {
+    throw InputError("experiment.checkpoint_every", "a run that writes no folder keeps no checkpoint; leave it 0");
+  }
+  std::optional<BodyModel> loaded_model;
+  if (job.model == nullptr) loaded_model = load_configured_body(config);
+  const BodyModel& model = job.model != nullptr ? *job.model : *loaded_model;
+  Provenance provenance = record_provenance(config);
+  provenance.produced_by = hooks.caller;
+  if (!job.config_path.empty()) check_recorded_provenance(config, provenance, job.config_path);
+  const Wall wall = job.wall ? std::move(*job.wall) : load_configured_wall(config);
+  if (job.condition == Condition::Transfer && !job.q_grid && config.q_grid.empty()) {
+    throw InputError("experiment.q_grid", "give the Q_grid to transfer (q_grid.bin of a training run)");
+  }
+  if (job.condition != Condition::Transfer && (job.q_grid || !config.q_grid.empty())) {
+    throw InputError("experiment.q_grid", "only a transfer run starts from a Q_grid");
+  }
+  const GridParameters& grid = config.settings.learning.climbing.grid;
+  std::optional<QTable> initial = std::move(job.q_grid);
+  if (initial) {
+    check_q_grid(*initial, grid, "q_grid");
+  } else if (!config.q_grid.empty()) {
+    initial = load_q_grid(config.q_grid, grid);
+  }
+
+  RunCheckpoints checkpoints{config.checkpoint_every, {}, {}, {}, {}};
+  std::string config_toml;
+  LearningJobOutcome outcome;
+  if (writes_folder) {
+    config_toml = config_file_text(config, *job.keys, provenance);
+    // A checkpoint resumes the run whose parameters and inputs it records, whatever its
+    // checkpoint interval and whoever runs it.
+    ParameterSet identity_keys = *job.keys;
+    identity_keys.exclude.push_back("experiment.checkpoint_every");
+    Provenance identity_provenance = provenance;
+    identity_provenance.produced_by.clear();
+    const std::string identity = config_file_text(config, identity_keys, identity_provenance);
+    const std::filesystem::path checkpoint_file = job.output / kCheckpointFile;
+    checkpoints.source = checkpoint_file.string();
+    // What a SIGKILL left half-written is no output: a folder killed while it wrote its
+    // first checkpoint starts again.
+    remove_crux_temporaries(job.output);
+    if (!job.overwrite) checkpoints.resume = read_checkpoint(checkpoint_file, identity).value_or("");
+    check_output_folder(job.output, {config.urdf, config.wall_file, config.q_grid, job.config_path},
+                        job.overwrite || !checkpoints.resume.empty());
+    checkpoints.save = [&job, identity](std::string state, int) {
+      write_checkpoint(job.output, checkpoint_file_bytes(identity, state));
+    };
+    checkpoints.resumed = [&](int iteration) {
+      outcome.resumed_at = iteration;
+      if (hooks.resumed) hooks.resumed(iteration);
+    };
+  }
+  const auto progress = [&hooks](int done) {
+    if (hooks.interruption_point) hooks.interruption_point();
+    if (hooks.progress) hooks.progress(done);
+  };
+  const auto start = std::chrono::steady_clock::now();
+  RunResult run = run_learning(model, wall, config.settings.learning, config.settings.seed,
+                               initial ? &*initial : nullptr, progress, &checkpoints);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.result =
+      single_run_result(std::move(run), wall, config.wall_seed, config.settings.seed, job.condition, seconds);
+  outcome.summary = summary_json(outcome.result, nullptr, config.settings, provenance);
+  if (writes_folder) write_run_folder(job.output, outcome.result, model, grid, config_toml, outcome.summary);
+  return outcome;
+}
+
+}  // namespace crux
