@@ -33,7 +33,6 @@ constexpr double kMaxPanelPixels = 20000;  // the larger extent of the drawing, 
 constexpr int kCylinderSides = 24;
 constexpr const char* kHoldBesideBodyColour = "#555555";
 constexpr const char* kWallColour = "#9a8f80";
-constexpr const char* kBodyMetreLineColour = "#ececec";
 
 using Point = std::array<double, 2>;  // on the page, in pixels
 
@@ -235,8 +234,8 @@ class BodyFigure {
                   "transform=\"rotate(-90 {0:.2f} {1:.2f})\">z (m), up</text>\n",
                   view.left - 32, view.top + panel_height_ / 2, kTextColour);
     append_format(out_,
-        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\"/>\n",
-        view.left, view.top, view.width(), panel_height_);
+        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\"/>\n",
+        view.left, view.top, view.width(), panel_height_, kViewFrameColour);
     if (view.horizontal_axis == 0) {  // the wall plane, seen edge on
       const double x = view.x_of(0.0);
       draw_line(out_, x, view.top, x, bottom, {kWallColour, 3}, "wall");

@@ -23,6 +23,14 @@ inline constexpr const char* kTextColour = "#333333";  // axis titles, legends, 
 inline constexpr const char* kDarkGrey = "#444444";    // tick labels, reference and finish lines
 inline constexpr const char* kSubtitleColour = "#555555";
 
+// Frames, and the light lines behind the data. Each kind of figure has kept its own
+// shade, so that the figures' bytes stay as they were.
+inline constexpr const char* kPlotFrameColour = "#888888";  // plots, colour bars, Fig. 2b's maps
+inline constexpr const char* kViewFrameColour = "#999999";  // the wall and body views
+inline constexpr const char* kPlotGridLineColour = "#e6e6e6";
+inline constexpr const char* kWallMetreLineColour = "#e8e8e8";
+inline constexpr const char* kBodyMetreLineColour = "#ececec";
+
 // The anchor P_i of the moving grid (Fig. 2a), in the wall view and in Fig. 2b alike.
 inline constexpr const char* kAnchorColour = "#1a9641";
 

@@ -467,9 +467,9 @@ std::string fig2b_svg(const PaperFigureData& data) {
       }
       draw_cells(svg, cells, colours);
       svg += fmt::format(
-          "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#888888\" "
+          "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
           "stroke-width=\"1\"/>\n",
-          map_left(l), y, map_width, map_height);
+          map_left(l), y, map_width, map_height, kPlotFrameColour);
       const auto [anchor_column, anchor_row] = grid.anchors[l];
       svg += fmt::format(
           "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"4.5\" fill=\"{}\" stroke=\"white\" "

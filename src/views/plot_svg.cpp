@@ -12,8 +12,6 @@
 namespace crux {
 namespace {
 
-constexpr const char* kPlotGridLineColour = "#e6e6e6";
-constexpr const char* kPlotFrameColour = "#888888";
 constexpr double kTickLength = 4;
 constexpr double kLegendSwatchWidth = 30;
 // The plots' legend: 30 pixels of swatch and 8 of gap before the text.

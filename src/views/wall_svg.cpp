@@ -24,8 +24,6 @@ constexpr const char* kGreyedColour = "#bbbbbb";  // holds outside the moving gr
 constexpr const char* kGridColour = "#7f93b0";
 constexpr const char* kTileColour = "#6a3d9a";  // a hold's tile and each tile's hold
 constexpr const char* kAnchorTileFill = "#e5f5e9";
-constexpr const char* kMetreLineColour = "#e8e8e8";
-constexpr const char* kWallFrameColour = "#999999";
 
 constexpr double kTitleFontSize = 15;
 constexpr double kSubtitleFontSize = 10.5;
@@ -264,14 +262,14 @@ class WallFigure {
     const double left = view_.left, top = view_.top, right = left + plot_width_, bottom = top + plot_height_;
     const std::vector<double> y_ticks = metre_ticks(extent_.y_min, extent_.y_max, tick_spacing_);
     const std::vector<double> z_ticks = metre_ticks(extent_.z_min, extent_.z_max, tick_spacing_);
-    append_format(out_, "<g class=\"metre-lines\" stroke=\"{}\" stroke-width=\"1\">\n", kMetreLineColour);
+    append_format(out_, "<g class=\"metre-lines\" stroke=\"{}\" stroke-width=\"1\">\n", kWallMetreLineColour);
     for (const double y : y_ticks) draw_vertical_line(out_, view_.screen_x(y), top, bottom);
     for (const double z : z_ticks) draw_horizontal_line(out_, left, right, view_.screen_y(z));
     out_ += "</g>\n";
     append_format(out_,
                   "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
                   "stroke-width=\"1\"/>\n",
-                  left, top, plot_width_, plot_height_, kWallFrameColour);
+                  left, top, plot_width_, plot_height_, kViewFrameColour);
 
     append_format(out_, "<g class=\"tick-labels\" font-size=\"{}\" fill=\"{}\">\n", kLabelFontSize - 1, kSubtitleColour);
     for (const double y : y_ticks) draw_plain_text(out_, view_.screen_x(y), bottom + 14, metre_tick_label(y), "middle");

@@ -21,7 +21,8 @@ bool is_hex_colour(std::string_view colour) {
 TEST(PaletteTest, ColoursAreLowerCaseHexAsTheFiguresWriteThem) {
   for (const char* colour : {kOkabeItoOrange, kOkabeItoBlue, kOkabeItoBluishGreen, kOkabeItoVermillion,
                              kOkabeItoReddishPurple, kTitleColour, kTextColour, kDarkGrey, kSubtitleColour,
-                             kAnchorColour}) {
+                             kPlotFrameColour, kViewFrameColour, kPlotGridLineColour, kWallMetreLineColour,
+                             kBodyMetreLineColour, kAnchorColour}) {
     EXPECT_TRUE(is_hex_colour(colour)) << colour;
   }
   EXPECT_TRUE(is_hex_colour(kFinishStroke.colour));
