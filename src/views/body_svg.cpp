@@ -238,7 +238,7 @@ class BodyFigure {
         view.left, view.top, view.width(), panel_height_, kViewFrameColour);
     if (view.horizontal_axis == 0) {  // the wall plane, seen edge on
       const double x = view.x_of(0.0);
-      draw_line(out_, x, view.top, x, bottom, {kWallColour, 3}, "wall");
+      draw_line(out_, x, view.top, x, bottom, {kWallColour, 3, ""}, "wall");
     }
     const double finish = view.top + (z_top_ - wall_.finish_height) * view.scale;
     draw_line(out_, view.left, finish, view.left + view.width(), finish, kFinishStroke, "finish");

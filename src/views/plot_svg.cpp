@@ -250,7 +250,7 @@ void draw_legend(std::string& svg, double left, double top, const std::vector<Le
                            [[fallthrough]];
                          case LegendMark::Line: draw_line(out, x1, y, x2, y, {entry.colour, 2, entry.dash}); break;
                          case LegendMark::PointWithBar:
-                           draw_line(out, x1, y, x2, y, {entry.colour, 1.8});
+                           draw_line(out, x1, y, x2, y, {entry.colour, 1.8, ""});
                            [[fallthrough]];
                          case LegendMark::Point:
                            append_format(out,
@@ -330,7 +330,7 @@ void draw_colour_bar(std::string& svg, double left, double top, double width, co
     const LabelSpan span{bar_x(candidate.value), estimated_text_width(candidate.label, kPlotTickFontSize) / 2};
     if (std::any_of(kept.begin(), kept.end(), [&](const LabelSpan& k) { return span.overlaps(k, 6); })) continue;
     kept.push_back(span);
-    draw_line(svg, span.x, top + kColourBarHeight, span.x, top + kColourBarHeight + kTickLength, {kPlotFrameColour, 1});
+    draw_line(svg, span.x, top + kColourBarHeight, span.x, top + kColourBarHeight + kTickLength, {kPlotFrameColour, 1, ""});
     draw_plain_text(svg, span.x, top + kColourBarHeight + kTickLength + 12, candidate.label);
   }
   svg += "</g>\n";

@@ -433,7 +433,7 @@ class WallFigure {
         z_title_x, z_title_y);
     const double title_width = 36 + estimated_text_width(y_axis_title_, kLabelFontSize);
     const double arrow_x = view_.left + std::max(0.0, (plot_width_ - title_width) / 2), arrow_y = bottom + 36;
-    draw_line(out_, arrow_x + 4, arrow_y, arrow_x + 30, arrow_y, {kTextColour, 1.2});
+    draw_line(out_, arrow_x + 4, arrow_y, arrow_x + 30, arrow_y, {kTextColour, 1.2, ""});
     append_format(out_, "<polygon points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\"/>\n", arrow_x, arrow_y, arrow_x + 8,
          arrow_y - 4, arrow_x + 8, arrow_y + 4);
     draw_plain_text(out_, arrow_x + 36, arrow_y + 4, y_axis_title_);

@@ -61,7 +61,7 @@ TEST(SvgDocumentTest, LinesWriteTheirCoordinatesWithTwoDecimals) {
 TEST(SvgDocumentTest, StrokedLinesCarryTheirClassWidthAndDash) {
   std::string svg;
   draw_line(svg, 0, 1, 2, 3, {"#123456", 1.2, "6 4"}, "finish");
-  draw_line(svg, 0, 1, 2, 3, {"#123456", 2});
+  draw_line(svg, 0, 1, 2, 3, {"#123456", 2, ""});
   EXPECT_EQ(svg,
             "<line class=\"finish\" x1=\"0.00\" y1=\"1.00\" x2=\"2.00\" y2=\"3.00\" stroke=\"#123456\" "
             "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n"
