@@ -6,7 +6,7 @@
 
 #include "learning/action_selection.hpp"
 #include "reports/paper_reference.hpp"
-#include "views/svg_text.hpp"
+#include "views/svg_document.hpp"
 
 namespace crux {
 namespace {

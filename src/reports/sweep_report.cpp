@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "views/svg_text.hpp"
+#include "views/svg_document.hpp"
 
 namespace crux {
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -13,18 +12,23 @@
 
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
-#include "views/svg_text.hpp"
+#include "views/axis_ticks.hpp"
+#include "views/legend.hpp"
+#include "views/palette.hpp"
+#include "views/svg_document.hpp"
 
 namespace crux {
 namespace {
 
-constexpr double kMargin = 12;
+constexpr double kBodyMargin = 12;
 constexpr double kHeaderHeight = 52;
 constexpr double kAxisRoom = 44;    // left of each panel: z tick labels and title
 constexpr double kBelowPanel = 40;  // horizontal tick labels and axis title
 constexpr double kPanelGap = 30;
 constexpr double kPadding = 0.15;   // metres of wall around what is drawn
-constexpr double kLegendHeight = 24;
+// The legend flows across the page under the panels, items 14 pixels apart.
+constexpr LegendLayout kBodyLegendLayout{11, 30, 24, true};
+constexpr double kBodyLegendGap = 14;
 constexpr double kMaxPanelPixels = 20000;  // the larger extent of the drawing, at most
 constexpr int kCylinderSides = 24;
 constexpr const char* kHoldBesideBodyColour = "#555555";
@@ -123,21 +127,14 @@ class BodyFigure {
   }
 
   std::string render() {
-    append_format(out_,
-        "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{0:.0f}\" height=\"{1:.0f}\" "
-        "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
-        width_, height_);
-    append_format(out_, "<title>{}</title>\n", xml_escaped(options_.title));
-    append_format(out_, "<rect width=\"{:.0f}\" height=\"{:.0f}\" fill=\"white\"/>\n", width_, height_);
-    append_format(out_, "<text x=\"{}\" y=\"{}\" font-size=\"15\" font-weight=\"bold\" fill=\"#111111\">{}</text>\n", kMargin,
-         kMargin + 14, xml_escaped(options_.title));
-    append_format(out_, "<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#555555\">{}</text>\n", kMargin, kMargin + 32,
-         xml_escaped(options_.subtitle));
+    append_format(out_, "<text x=\"{}\" y=\"{}\" font-size=\"15\" font-weight=\"bold\" fill=\"{}\">{}</text>\n", kBodyMargin,
+                  kBodyMargin + 14, kTitleColour, xml_escaped(options_.title));
+    append_format(out_, "<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"{}\">{}</text>\n", kBodyMargin, kBodyMargin + 32,
+                  kSubtitleColour, xml_escaped(options_.subtitle));
     for (const View& view : views_) write_panel(view);
-    write_legend();
-    out_ += "</svg>\n";
-    return std::move(out_);
+    draw_legend_at(out_, kBodyMargin + kHeaderHeight + panel_height_ + kBelowPanel, legend_, legend_places_,
+                   kBodyLegendLayout);
+    return svg_document(width_, height_, options_.title, out_);
   }
 
  private:
@@ -187,78 +184,64 @@ class BodyFigure {
     if (!std::isfinite(span)) throw std::invalid_argument("render_body_svg: the wall is too large to draw");
     const double scale = std::min(options_.pixels_per_metre, kMaxPanelPixels / span);
     tick_spacing_ = metre_tick_spacing(scale);
-    double left = kMargin;
+    double left = kBodyMargin;
     for (View& view : views_) {
       view.left = left + kAxisRoom;
-      view.top = kMargin + kHeaderHeight;
+      view.top = kBodyMargin + kHeaderHeight;
       view.scale = scale;
       view.z_top = z_top_;
       left = view.left + view.width() + kPanelGap;
     }
     panel_height_ = (z_top_ - z_low_) * scale;
-    width_ = std::ceil(std::max(left - kPanelGap + kMargin,
-                                2 * kMargin + std::max(estimated_text_width(options_.title, 15),
+    width_ = std::ceil(std::max(left - kPanelGap + kBodyMargin,
+                                2 * kBodyMargin + std::max(estimated_text_width(options_.title, 15),
                                                        estimated_text_width(options_.subtitle, 11))));
     for (const View& view : views_) {
-      width_ = std::max(width_, std::ceil(view.left + estimated_text_width(view.title, 12) + kMargin));
+      width_ = std::max(width_, std::ceil(view.left + estimated_text_width(view.title, 12) + kBodyMargin));
     }
-    legend_rows_ = lay_out_legend();
-    height_ = std::ceil(kMargin + kHeaderHeight + panel_height_ + kBelowPanel + kLegendHeight * legend_rows_ + kMargin);
+    legend_ = legend_items();
+    legend_places_ = flowing_legend_places(legend_, kBodyLegendLayout, kBodyLegendGap, kBodyMargin, width_);
+    const int legend_rows = legend_places_.empty() ? 1 : legend_places_.back().row + 1;
+    height_ = std::ceil(kBodyMargin + kHeaderHeight + panel_height_ + kBelowPanel +
+                        kBodyLegendLayout.row_height * legend_rows + kBodyMargin);
   }
 
   void write_panel(const View& view) {
     const double bottom = view.top + panel_height_;
-    append_format(out_, "<g class=\"panel\">\n<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"12\" fill=\"#333333\">{}</text>\n",
-         view.left, view.top - 6, view.title);
-    // Metre lines and their labels, at multiples of the tick spacing.
-    const auto ticks = [&](double low, double high) {
-      std::vector<double> values;
-      const auto last = static_cast<long>(std::floor(high / tick_spacing_));
-      for (auto k = static_cast<long>(std::ceil(low / tick_spacing_)); k <= last; ++k) {
-        values.push_back(static_cast<double>(k) * tick_spacing_);
-      }
-      return values;
-    };
-    const std::vector<double> z_ticks = ticks(z_low_, z_top_), u_ticks = ticks(view.low, view.high);
-    out_ += "<g stroke=\"#ececec\" stroke-width=\"1\">\n";
+    append_format(out_, "<g class=\"panel\">\n<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"12\" fill=\"{}\">{}</text>\n",
+                  view.left, view.top - 6, kTextColour, view.title);
+    // Metre lines and their labels.
+    const std::vector<double> z_ticks = metre_ticks(z_low_, z_top_, tick_spacing_);
+    const std::vector<double> u_ticks = metre_ticks(view.low, view.high, tick_spacing_);
+    append_format(out_, "<g stroke=\"{}\" stroke-width=\"1\">\n", kBodyMetreLineColour);
     for (const double z : z_ticks) {
-      const double y = view.top + (z_top_ - z) * view.scale;
-      append_format(out_, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\"/>\n", view.left, y, view.left + view.width(), y);
+      draw_horizontal_line(out_, view.left, view.left + view.width(), view.top + (z_top_ - z) * view.scale);
     }
-    for (const double u : u_ticks) {
-      append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", view.x_of(u), view.top, bottom);
-    }
-    out_ += "</g>\n<g font-size=\"10\" fill=\"#555555\">\n";
+    for (const double u : u_ticks) draw_vertical_line(out_, view.x_of(u), view.top, bottom);
+    append_format(out_, "</g>\n<g font-size=\"10\" fill=\"{}\">\n", kSubtitleColour);
     for (const double z : z_ticks) {
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">{:.1f}</text>\n", view.left - 4,
-           view.top + (z_top_ - z) * view.scale + 3.5, z + 0.0);
+      draw_plain_text(out_, view.left - 4, view.top + (z_top_ - z) * view.scale + 3.5, metre_tick_label(z), "end");
     }
     for (const double u : u_ticks) {
       // The label is the world coordinate, whose sign the front view flips.
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{:.1f}</text>\n", view.x_of(u), bottom + 14,
-           view.horizontal_sign * u + 0.0);
+      draw_plain_text(out_, view.x_of(u), bottom + 14, metre_tick_label(view.horizontal_sign * u), "middle");
     }
     out_ += "</g>\n";
-    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"11\" fill=\"#333333\" text-anchor=\"middle\">{}</text>\n",
-         view.left + view.width() / 2, bottom + 32, view.axis_title);
+    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"11\" fill=\"{}\" text-anchor=\"middle\">{}</text>\n",
+                  view.left + view.width() / 2, bottom + 32, kTextColour, view.axis_title);
     append_format(out_,
-        "<text x=\"{0:.2f}\" y=\"{1:.2f}\" font-size=\"11\" fill=\"#333333\" text-anchor=\"middle\" "
-        "transform=\"rotate(-90 {0:.2f} {1:.2f})\">z (m), up</text>\n",
-        view.left - 32, view.top + panel_height_ / 2);
+                  "<text x=\"{0:.2f}\" y=\"{1:.2f}\" font-size=\"11\" fill=\"{2}\" text-anchor=\"middle\" "
+                  "transform=\"rotate(-90 {0:.2f} {1:.2f})\">z (m), up</text>\n",
+                  view.left - 32, view.top + panel_height_ / 2, kTextColour);
     append_format(out_,
-        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\"/>\n",
-        view.left, view.top, view.width(), panel_height_);
+        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\"/>\n",
+        view.left, view.top, view.width(), panel_height_, kViewFrameColour);
     if (view.horizontal_axis == 0) {  // the wall plane, seen edge on
       const double x = view.x_of(0.0);
-      append_format(out_, "<line class=\"wall\" x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\" stroke=\"{3}\" "
-           "stroke-width=\"3\"/>\n",
-           x, view.top, bottom, kWallColour);
+      draw_line(out_, x, view.top, x, bottom, {kWallColour, 3, ""}, "wall");
     }
     const double finish = view.top + (z_top_ - wall_.finish_height) * view.scale;
-    append_format(out_,
-        "<line class=\"finish\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" "
-        "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
-        view.left, finish, view.left + view.width(), finish);
+    draw_line(out_, view.left, finish, view.left + view.width(), finish, kFinishStroke, "finish");
     write_holds(view);
     write_body(view);
     write_grasp_spheres(view);
@@ -314,54 +297,23 @@ class BodyFigure {
     out_ += "</g>\n";
   }
 
-  std::vector<std::string> legend_texts() const {
-    std::vector<std::string> texts{"hold"};
-    for (const LimbStyle& style : kLimbStyles) texts.push_back(fmt::format("{} grasp sphere", style.name));
-    texts.push_back(fmt::format("finish height, {:.2f} m", wall_.finish_height));
-    return texts;
-  }
-  static double legend_entry_width(const std::string& text) { return 30 + estimated_text_width(text, 11) + 14; }
-
-  // Places the legend's entries in rows no wider than the page (widened for a single
-  // entry that would not fit); returns the number of rows.
-  int lay_out_legend() {
-    legend_positions_.clear();
-    double x = kMargin;
-    int row = 0;
-    for (const std::string& text : legend_texts()) {
-      const double width = legend_entry_width(text);
-      if (x > kMargin && x + width > width_ - kMargin) {
-        x = kMargin;
-        ++row;
-      }
-      width_ = std::max(width_, std::ceil(x + width + kMargin));
-      legend_positions_.push_back({x, static_cast<double>(row)});
-      x += width;
+  // A hold, each limb's grasp sphere, the finishing height.
+  std::vector<LegendItem> legend_items() const {
+    std::vector<LegendItem> items{{"hold", [](std::string& svg, double x, double y) {
+                                     append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\"/>\n", x + 12,
+                                                   y, kHoldBesideBodyColour);
+                                   }}};
+    for (const LimbStyle& style : kLimbStyles) {
+      items.push_back({fmt::format("{} grasp sphere", style.name), [&style](std::string& svg, double x, double y) {
+                         append_format(svg,
+                                       "<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"6\" fill=\"{2}\" fill-opacity=\"0.35\" "
+                                       "stroke=\"{2}\" stroke-width=\"1.5\"/>\n",
+                                       x + 12, y, style.colour);
+                       }});
     }
-    return row + 1;
-  }
-
-  void write_legend() {
-    const std::vector<std::string> texts = legend_texts();
-    out_ += "<g class=\"legend\" font-size=\"11\" fill=\"#333333\">\n";
-    for (std::size_t i = 0; i < texts.size(); ++i) {
-      const double x = legend_positions_[i][0];
-      const double y =
-          kMargin + kHeaderHeight + panel_height_ + kBelowPanel + kLegendHeight * (legend_positions_[i][1] + 0.5);
-      if (i == 0) {
-        append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\"/>\n", x + 12, y, kHoldBesideBodyColour);
-      } else if (i <= kLimbCount) {
-        append_format(out_, "<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"6\" fill=\"{2}\" fill-opacity=\"0.35\" stroke=\"{2}\" "
-             "stroke-width=\"1.5\"/>\n",
-             x + 12, y, kLimbStyles[i - 1].colour);
-      } else {
-        append_format(out_, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" stroke-width=\"1.2\" "
-             "stroke-dasharray=\"6 4\"/>\n",
-             x, y, x + 24, y);
-      }
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", x + 30, y + 4, xml_escaped(texts[i]));
-    }
-    out_ += "</g>\n";
+    items.push_back({fmt::format("finish height, {:.2f} m", wall_.finish_height),
+                     [](std::string& svg, double x, double y) { draw_line(svg, x, y, x + 24, y, kFinishStroke); }});
+    return items;
   }
 
   const BodyModel& model_;
@@ -372,8 +324,8 @@ class BodyFigure {
   std::array<View, 2> views_{};
   double z_low_ = 0, z_top_ = 0, panel_height_ = 0, width_ = 0, height_ = 0;
   double tick_spacing_ = 0;
-  std::vector<Point> legend_positions_;  // left edge and row of each legend entry
-  int legend_rows_ = 1;
+  std::vector<LegendItem> legend_;
+  std::vector<LegendPlace> legend_places_;
   std::string out_;
 };
 

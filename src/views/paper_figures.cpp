@@ -18,7 +18,7 @@
 #include "common/input_file.hpp"
 #include "experiments/statistics.hpp"
 #include "views/plot_svg.hpp"
-#include "views/svg_text.hpp"
+#include "views/palette.hpp"
 
 namespace crux {
 namespace {
@@ -221,20 +221,17 @@ int fig3_step(int iterations) { return std::max(1, (iterations + 399) / 400); }
 // --- Page layout -----------------------------------------------------------------------
 
 constexpr double kMargin = 16;
-constexpr const char* kTitleColour = "#111111";
-constexpr const char* kSubtitleColour = "#555555";
 
-// Okabe-Ito colours, told apart by colour-blind readers.
 const char* condition_colour(Condition condition) {
   switch (condition) {
     case Condition::Training:
-      return "#0072b2";
+      return kOkabeItoBlue;
     case Condition::Transfer:
-      return "#d55e00";
+      return kOkabeItoVermillion;
     case Condition::Control:
-      return "#009e73";
+      return kOkabeItoBluishGreen;
   }
-  return "#333333";
+  return kTextColour;
 }
 
 struct RegimeStyle {
@@ -243,9 +240,9 @@ struct RegimeStyle {
   const char* dash;  // told apart in grey print too
 };
 constexpr std::array<RegimeStyle, kRegimeCount> kRegimeStyles{{
-    {"w-greedy", "#0072b2", ""},
-    {"g-greedy", "#e69f00", "8 4"},
-    {"random", "#333333", "2 3"},
+    {"w-greedy", kOkabeItoBlue, ""},
+    {"g-greedy", kOkabeItoOrange, "8 4"},
+    {"random", kTextColour, "2 3"},
 }};
 
 struct Header {
@@ -470,9 +467,9 @@ std::string fig2b_svg(const PaperFigureData& data) {
       }
       draw_cells(svg, cells, colours);
       svg += fmt::format(
-          "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#888888\" "
+          "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
           "stroke-width=\"1\"/>\n",
-          map_left(l), y, map_width, map_height);
+          map_left(l), y, map_width, map_height, kPlotFrameColour);
       const auto [anchor_column, anchor_row] = grid.anchors[l];
       svg += fmt::format(
           "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"4.5\" fill=\"{}\" stroke=\"white\" "
@@ -481,14 +478,14 @@ std::string fig2b_svg(const PaperFigureData& data) {
     }
     for (int row = 0; row < grid.rows; row += row_every) {
       draw_text(svg, maps_left - 8, y + (grid.rows - 0.5 - row) * cell_height + 4, std::to_string(row),
-                {.size = kPlotTickFontSize, .anchor = "end", .colour = "#444444"});
+                {.size = kPlotTickFontSize, .anchor = "end", .colour = kDarkGrey});
     }
     y += map_height + 14;
   }
   for (int l = 0; l < kLimbCount; ++l) {
     for (int column = 0; column < grid.columns; column += column_every) {
       draw_text(svg, map_left(l) + (grid.columns - 0.5 - column) * cell_width, y + 2, std::to_string(column),
-                {.size = kPlotTickFontSize, .anchor = "middle", .colour = "#444444"});
+                {.size = kPlotTickFontSize, .anchor = "middle", .colour = kDarkGrey});
     }
   }
   const double maps_right = maps_left + slot * kLimbCount - 32;
@@ -622,7 +619,7 @@ std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
   double label_floor = -std::numeric_limits<double>::infinity();
   for (auto it = plans.rbegin(); it != plans.rend(); ++it) {
     const auto& [text, conditions] = *it;
-    const char* colour = conditions.size() == 1 ? condition_colour(conditions.front()) : "#444444";
+    const char* colour = conditions.size() == 1 ? condition_colour(conditions.front()) : kDarkGrey;
     std::string names;
     for (const Condition c : conditions) names += fmt::format("{}{}", names.empty() ? "" : ", ", condition_name(c));
     const double value = plan_values[text];
@@ -656,8 +653,8 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
        fmt::format("bar: Student-t 95 % interval over {} wall{}; both in % of |control's mean|, so that metrics of "
                    "different units share one axis",
                    walls, walls == 1 ? "" : "s")}};
-  constexpr const char* kFavoursTransfer = "#0072b2";
-  constexpr const char* kFavoursControl = "#d55e00";
+  constexpr const char* kFavoursTransfer = kOkabeItoBlue;
+  constexpr const char* kFavoursControl = kOkabeItoVermillion;
   constexpr const char* kNoDifference = "#777777";
   constexpr double kRowHeight = 46;
 
@@ -717,7 +714,7 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
                        kMargin, panel.top + kRowHeight * static_cast<double>(i), right_edge - kMargin, kRowHeight);
   }
   draw_axes(svg, panel);
-  draw_reference_line(svg, panel, Direction::Vertical, 0, {"#444444", 1.2, "5 4"});
+  draw_reference_line(svg, panel, Direction::Vertical, 0, {kDarkGrey, 1.2, "5 4"});
   if (rows.empty()) {
     draw_text(svg, panel.left + panel.width / 2, panel.top + kRowHeight / 2 + 4, "no metrics in this folder",
               {.anchor = "middle", .colour = kNoDifference, .italic = true});
@@ -747,7 +744,7 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
   }
   const std::vector<LegendEntry> legend{{LegendMark::PointWithBar, kFavoursTransfer, "", "favours transfer"},
                                         {LegendMark::PointWithBar, kFavoursControl, "", "favours control"},
-                                        {LegendMark::Line, "#444444", "5 4", "no difference"}};
+                                        {LegendMark::Line, kDarkGrey, "5 4", "no difference"}};
   const double legend_top = panel.top + panel.height + kXAxisRoom + 6;
   draw_legend(svg, panel.left, legend_top, legend);
   const double width = std::max({right_edge, panel.left + legend_width(legend), kMargin + header.width()}) + kMargin;

@@ -5,26 +5,17 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
 #include <stdexcept>
 
-#include "views/svg_text.hpp"
+#include "views/legend.hpp"
 
 namespace crux {
 namespace {
 
-constexpr const char* kGridLineColour = "#e6e6e6";
-constexpr const char* kFrameColour = "#888888";
-constexpr const char* kTickLabelColour = "#444444";
 constexpr double kTickLength = 4;
-constexpr double kLegendRowHeight = 20;
 constexpr double kLegendSwatchWidth = 30;
-constexpr double kLegendTextGap = 8;
-
-template <typename... Args>
-void emit(std::string& out, fmt::format_string<Args...> format, Args&&... args) {
-  fmt::format_to(std::back_inserter(out), format, std::forward<Args>(args)...);
-}
+// The plots' legend: 30 pixels of swatch and 8 of gap before the text.
+constexpr LegendLayout kPlotLegendLayout{kPlotLabelFontSize, kLegendSwatchWidth + 8, 20, false};
 
 std::string dash_attribute(std::string_view dash) {
   return dash.empty() ? std::string() : fmt::format(" stroke-dasharray=\"{}\"", dash);
@@ -95,47 +86,6 @@ struct LabelSpan {
 
 }  // namespace
 
-Ticks nice_ticks(double min, double max, int target) {
-  if (!std::isfinite(min) || !std::isfinite(max)) {
-    throw std::invalid_argument(fmt::format("nice_ticks: the range [{}, {}] is not finite", min, max));
-  }
-  if (min > max) std::swap(min, max);
-  if (max - min <= 1e-12 * std::max(1.0, std::abs(max))) {
-    const double pad = min == 0 ? 1.0 : 0.1 * std::abs(min);
-    min -= pad;
-    max += pad;
-  }
-  target = std::max(1, target);
-  const double raw = (max - min) / target;
-  double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  constexpr std::array<double, 3> kMultiples{1, 2, 5};
-  Ticks ticks;
-  for (int attempt = 0;; ++attempt) {
-    const double step = kMultiples[attempt % 3] * magnitude;
-    // The tolerance keeps a bound that is a multiple of the step from adding a tick.
-    const double low = std::floor(min / step + 1e-9), high = std::ceil(max / step - 1e-9);
-    if (high - low <= target) {
-      ticks.step = step;
-      for (double k = low; k <= high; k += 1) ticks.values.push_back(k * step);
-      break;
-    }
-    if (attempt % 3 == 2) magnitude *= 10;
-  }
-  ticks.low = ticks.values.front();
-  ticks.high = ticks.values.back();
-  return ticks;
-}
-
-std::string tick_label(double value, double step, double magnitude) {
-  if (std::abs(value) < 1e-6 * std::abs(step)) return "0";
-  int exponent = 0;
-  if (magnitude >= 1e5) exponent = std::min(9, 3 * static_cast<int>(std::floor(std::log10(magnitude) / 3 + 1e-9)));
-  static constexpr std::array<const char*, 4> kSuffixes{"", "k", "M", "G"};
-  const double divisor = std::pow(10.0, exponent);
-  const int decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(std::abs(step) / divisor) - 1e-9)));
-  return fmt::format("{:.{}f}{}", value / divisor, decimals, kSuffixes[exponent / 3]);
-}
-
 Axis linear_axis(double min, double max, std::string title, int target_ticks) {
   const Ticks ticks = nice_ticks(min, max, target_ticks);
   Axis axis{AxisScale::Linear, ticks.low, ticks.high, ticks.values, {}, std::move(title)};
@@ -178,40 +128,27 @@ double y_axis_room(const Axis& y) {
 
 void draw_axes(std::string& svg, const Panel& panel) {
   const double right = panel.left + panel.width, bottom = panel.top + panel.height;
-  emit(svg, "<g class=\"grid-lines\" stroke=\"{}\" stroke-width=\"1\">\n", kGridLineColour);
-  for (const double tick : panel.x.ticks) {
-    emit(svg, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", panel.x_pixel(tick), panel.top,
-         bottom);
-  }
-  for (const double tick : panel.y.ticks) {
-    emit(svg, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", panel.left, panel.y_pixel(tick),
-         right);
-  }
+  append_format(svg, "<g class=\"grid-lines\" stroke=\"{}\" stroke-width=\"1\">\n", kPlotGridLineColour);
+  for (const double tick : panel.x.ticks) draw_vertical_line(svg, panel.x_pixel(tick), panel.top, bottom);
+  for (const double tick : panel.y.ticks) draw_horizontal_line(svg, panel.left, right, panel.y_pixel(tick));
   svg += "</g>\n";
-  emit(svg,
+  append_format(svg,
        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
        "stroke-width=\"1\"/>\n",
-       panel.left, panel.top, panel.width, panel.height, kFrameColour);
+       panel.left, panel.top, panel.width, panel.height, kPlotFrameColour);
 
-  emit(svg, "<g class=\"ticks\" stroke=\"{}\" stroke-width=\"1\">\n", kFrameColour);
-  for (const double tick : panel.x.ticks) {
-    emit(svg, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", panel.x_pixel(tick), bottom,
-         bottom + kTickLength);
-  }
-  for (const double tick : panel.y.ticks) {
-    emit(svg, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", panel.left - kTickLength,
-         panel.y_pixel(tick), panel.left);
-  }
+  append_format(svg, "<g class=\"ticks\" stroke=\"{}\" stroke-width=\"1\">\n", kPlotFrameColour);
+  for (const double tick : panel.x.ticks) draw_vertical_line(svg, panel.x_pixel(tick), bottom, bottom + kTickLength);
+  for (const double tick : panel.y.ticks) draw_horizontal_line(svg, panel.left - kTickLength, panel.left, panel.y_pixel(tick));
   svg += "</g>\n";
 
-  emit(svg, "<g class=\"tick-labels\" font-size=\"{}\" fill=\"{}\">\n", kPlotTickFontSize, kTickLabelColour);
+  append_format(svg, "<g class=\"tick-labels\" font-size=\"{}\" fill=\"{}\">\n", kPlotTickFontSize, kDarkGrey);
   for (std::size_t i = 0; i < panel.x.ticks.size(); ++i) {
-    emit(svg, "<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{}</text>\n", panel.x_pixel(panel.x.ticks[i]),
-         bottom + kTickLength + 12, xml_escaped(panel.x.tick_labels[i]));
+    draw_plain_text(svg, panel.x_pixel(panel.x.ticks[i]), bottom + kTickLength + 12, panel.x.tick_labels[i], "middle");
   }
   for (std::size_t i = 0; i < panel.y.ticks.size(); ++i) {
-    emit(svg, "<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">{}</text>\n", panel.left - kTickLength - 3,
-         panel.y_pixel(panel.y.ticks[i]) + 4, xml_escaped(panel.y.tick_labels[i]));
+    draw_plain_text(svg, panel.left - kTickLength - 3, panel.y_pixel(panel.y.ticks[i]) + 4, panel.y.tick_labels[i],
+                    "end");
   }
   svg += "</g>\n";
 
@@ -232,15 +169,15 @@ void draw_polyline(std::string& svg, const Panel& panel, const std::vector<doubl
   const auto runs = finite_runs(x.size(), [&](std::size_t i) { return std::isfinite(x[i]) && std::isfinite(y[i]); });
   for (const auto& [begin, end] : runs) {
     if (end - begin == 1) {  // a lone point would draw nothing as a line
-      emit(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\"/>\n", panel.x_pixel(x[begin]),
+      append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\"/>\n", panel.x_pixel(x[begin]),
            panel.y_pixel(y[begin]), stroke.width, stroke.colour);
       continue;
     }
     svg += "<polyline points=\"";
     for (std::size_t i = begin; i < end; ++i) {
-      emit(svg, "{}{:.2f},{:.2f}", i == begin ? "" : " ", panel.x_pixel(x[i]), panel.y_pixel(y[i]));
+      append_format(svg, "{}{:.2f},{:.2f}", i == begin ? "" : " ", panel.x_pixel(x[i]), panel.y_pixel(y[i]));
     }
-    emit(svg, "\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.2f}\" stroke-linejoin=\"round\"{}/>\n", stroke.colour,
+    append_format(svg, "\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.2f}\" stroke-linejoin=\"round\"{}/>\n", stroke.colour,
          stroke.width, dash_attribute(stroke.dash));
   }
 }
@@ -256,10 +193,10 @@ void draw_band(std::string& svg, const Panel& panel, const std::vector<double>& 
     if (end - begin < 2) continue;  // no area
     svg += "<polygon points=\"";
     for (std::size_t i = begin; i < end; ++i) {
-      emit(svg, "{}{:.2f},{:.2f}", i == begin ? "" : " ", panel.x_pixel(x[i]), panel.y_pixel(high[i]));
+      append_format(svg, "{}{:.2f},{:.2f}", i == begin ? "" : " ", panel.x_pixel(x[i]), panel.y_pixel(high[i]));
     }
-    for (std::size_t i = end; i-- > begin;) emit(svg, " {:.2f},{:.2f}", panel.x_pixel(x[i]), panel.y_pixel(low[i]));
-    emit(svg, "\" fill=\"{}\" fill-opacity=\"{:.2f}\" stroke=\"none\"/>\n", colour, opacity);
+    for (std::size_t i = end; i-- > begin;) append_format(svg, " {:.2f},{:.2f}", panel.x_pixel(x[i]), panel.y_pixel(low[i]));
+    append_format(svg, "\" fill=\"{}\" fill-opacity=\"{:.2f}\" stroke=\"none\"/>\n", colour, opacity);
   }
 }
 
@@ -271,7 +208,7 @@ void draw_reference_line(std::string& svg, const Panel& panel, Direction directi
   } else {
     x1 = x2 = panel.x_pixel(value);
   }
-  emit(svg, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{:.2f}\"{}/>\n",
+  append_format(svg, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{:.2f}\"{}/>\n",
        x1, y1, x2, y2, stroke.colour, stroke.width, dash_attribute(stroke.dash));
 }
 
@@ -279,67 +216,52 @@ void draw_point_with_error_bar(std::string& svg, const Panel& panel, double x, d
                                std::string_view colour) {
   constexpr double kCap = 5;
   const double py = panel.y_pixel(y), low = panel.x_pixel(x_low), high = panel.x_pixel(x_high);
-  emit(svg, "<g class=\"error-bar\" stroke=\"{}\" stroke-width=\"1.8\">\n", colour);
-  emit(svg, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", low, py, high);
+  append_format(svg, "<g class=\"error-bar\" stroke=\"{}\" stroke-width=\"1.8\">\n", colour);
+  draw_horizontal_line(svg, low, high, py);
   for (const double end : {low, high}) {
-    emit(svg, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", end, py - kCap, py + kCap);
+    draw_vertical_line(svg, end, py - kCap, py + kCap);
   }
   svg += "</g>\n";
-  emit(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\" stroke=\"white\" stroke-width=\"1.2\"/>\n",
+  append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\" stroke=\"white\" stroke-width=\"1.2\"/>\n",
        panel.x_pixel(x), py, colour);
 }
 
-void draw_text(std::string& svg, double x, double y, std::string_view text, const TextStyle& style) {
-  emit(svg, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\"", x, y, style.size, style.colour);
-  if (style.anchor != "start") emit(svg, " text-anchor=\"{}\"", style.anchor);
-  if (style.bold) svg += " font-weight=\"bold\"";
-  if (style.italic) svg += " font-style=\"italic\"";
-  if (style.rotation != 0) emit(svg, " transform=\"rotate({:.1f} {:.2f} {:.2f})\"", style.rotation, x, y);
-  emit(svg, ">{}</text>\n", xml_escaped(text));
-}
-
 double legend_width(const std::vector<LegendEntry>& entries) {
-  double widest = 0;
-  for (const LegendEntry& entry : entries) {
-    widest = std::max(widest, estimated_text_width(entry.text, kPlotLabelFontSize));
-  }
-  return kLegendSwatchWidth + kLegendTextGap + widest;
+  std::vector<std::string> texts;
+  for (const LegendEntry& entry : entries) texts.push_back(entry.text);
+  return crux::legend_width(texts, kPlotLegendLayout);
 }
 
 double legend_height(const std::vector<LegendEntry>& entries) {
-  return kLegendRowHeight * static_cast<double>(entries.size());
+  return kPlotLegendLayout.row_height * static_cast<double>(entries.size());
 }
 
 void draw_legend(std::string& svg, double left, double top, const std::vector<LegendEntry>& entries) {
-  svg += "<g class=\"legend\">\n";
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    const LegendEntry& entry = entries[i];
-    const double y = top + kLegendRowHeight * (static_cast<double>(i) + 0.5);
-    const double x1 = left + 2, x2 = left + kLegendSwatchWidth - 2, middle = left + kLegendSwatchWidth / 2;
-    switch (entry.mark) {
-      case LegendMark::LineWithBand:
-        emit(svg,
-             "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"12\" fill=\"{}\" fill-opacity=\"0.22\"/>\n", x1,
-             y - 6, x2 - x1, entry.colour);
-        [[fallthrough]];
-      case LegendMark::Line:
-        emit(svg,
-             "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"2\"{}/>\n", x1,
-             y, x2, y, entry.colour, dash_attribute(entry.dash));
-        break;
-      case LegendMark::PointWithBar:
-        emit(svg,
-             "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"1.8\"/>\n", x1,
-             y, x2, y, entry.colour);
-        [[fallthrough]];
-      case LegendMark::Point:
-        emit(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\" stroke=\"white\" stroke-width=\"1.2\"/>\n",
-             middle, y, entry.colour);
-        break;
-    }
-    draw_text(svg, left + kLegendSwatchWidth + kLegendTextGap, y + 4, entry.text);
+  std::vector<LegendItem> items;
+  for (const LegendEntry& entry : entries) {
+    items.push_back({entry.text, [&entry](std::string& out, double x, double y) {
+                       const double x1 = x + 2, x2 = x + kLegendSwatchWidth - 2, middle = x + kLegendSwatchWidth / 2;
+                       switch (entry.mark) {
+                         case LegendMark::LineWithBand:
+                           append_format(out,
+                                         "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"12\" fill=\"{}\" "
+                                         "fill-opacity=\"0.22\"/>\n",
+                                         x1, y - 6, x2 - x1, entry.colour);
+                           [[fallthrough]];
+                         case LegendMark::Line: draw_line(out, x1, y, x2, y, {entry.colour, 2, entry.dash}); break;
+                         case LegendMark::PointWithBar:
+                           draw_line(out, x1, y, x2, y, {entry.colour, 1.8, ""});
+                           [[fallthrough]];
+                         case LegendMark::Point:
+                           append_format(out,
+                                         "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\" stroke=\"white\" "
+                                         "stroke-width=\"1.2\"/>\n",
+                                         middle, y, entry.colour);
+                           break;
+                       }
+                     }});
   }
-  svg += "</g>\n";
+  draw_legend_column(svg, left, top, items, kPlotLegendLayout);
 }
 
 double diverging_position(const DivergingScale& scale, double value) {
@@ -356,7 +278,7 @@ void draw_cells(std::string& svg, const std::vector<Cell>& cells, const Divergin
   // A light outline keeps cells of value 0, as white as the page, visible as cells.
   svg += "<g class=\"cells\" stroke=\"#d0d0d0\" stroke-width=\"0.6\">\n";
   for (const Cell& cell : cells) {
-    emit(svg, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"/>\n", cell.x, cell.y,
+    append_format(svg, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"/>\n", cell.x, cell.y,
          cell.width, cell.height, diverging_colour(scale, cell.value));
   }
   svg += "</g>\n";
@@ -374,13 +296,13 @@ void draw_colour_bar(std::string& svg, double left, double top, double width, co
   for (int i = 0; i < kSlices; ++i) {
     const double position = first + (last - first) * (i + 0.5) / kSlices;
     // Slices overlap by a fraction of a pixel so that no seam shows between them.
-    emit(svg, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{}\" fill=\"{}\"/>\n",
+    append_format(svg, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{}\" fill=\"{}\"/>\n",
          left + width * i / kSlices, top, width / kSlices + 0.4, kColourBarHeight, colour_at(position));
   }
-  emit(svg,
+  append_format(svg,
        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{}\" fill=\"none\" stroke=\"{}\" "
        "stroke-width=\"0.8\"/>\n",
-       left, top, width, kColourBarHeight, kFrameColour);
+       left, top, width, kColourBarHeight, kPlotFrameColour);
 
   // 0 first, then each side's nice ticks from 0 outwards, each kept if its label has room.
   struct Candidate {
@@ -402,35 +324,18 @@ void draw_colour_bar(std::string& svg, double left, double top, double width, co
   if (scale.low < 0) add_side(scale.low);
   if (scale.high > 0) add_side(scale.high);
   std::vector<LabelSpan> kept;
-  emit(svg, "<g class=\"colour-bar-ticks\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">\n", kPlotTickFontSize,
-       kTickLabelColour);
+  append_format(svg, "<g class=\"colour-bar-ticks\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">\n", kPlotTickFontSize,
+       kDarkGrey);
   for (const Candidate& candidate : candidates) {
     const LabelSpan span{bar_x(candidate.value), estimated_text_width(candidate.label, kPlotTickFontSize) / 2};
     if (std::any_of(kept.begin(), kept.end(), [&](const LabelSpan& k) { return span.overlaps(k, 6); })) continue;
     kept.push_back(span);
-    emit(svg, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\" stroke=\"{3}\" stroke-width=\"1\"/>\n",
-         span.x, top + kColourBarHeight, top + kColourBarHeight + kTickLength, kFrameColour);
-    emit(svg, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", span.x, top + kColourBarHeight + kTickLength + 12,
-         xml_escaped(candidate.label));
+    draw_line(svg, span.x, top + kColourBarHeight, span.x, top + kColourBarHeight + kTickLength, {kPlotFrameColour, 1, ""});
+    draw_plain_text(svg, span.x, top + kColourBarHeight + kTickLength + 12, candidate.label);
   }
   svg += "</g>\n";
   draw_text(svg, left + width / 2, top + kColourBarHeight + 40, title, {.anchor = "middle"});
   svg += "</g>\n";
-}
-
-std::string svg_document(double width, double height, std::string_view title, std::string_view body) {
-  std::string svg;
-  svg.reserve(body.size() + 512);
-  svg += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-  emit(svg,
-       "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{0:.0f}\" height=\"{1:.0f}\" "
-       "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
-       std::ceil(width), std::ceil(height));
-  emit(svg, "<title>{}</title>\n", xml_escaped(title));
-  emit(svg, "<rect width=\"{:.0f}\" height=\"{:.0f}\" fill=\"white\"/>\n", std::ceil(width), std::ceil(height));
-  svg += body;
-  svg += "</svg>\n";
-  return svg;
 }
 
 }  // namespace crux

@@ -1,36 +1,25 @@
 #pragma once
 // A small SVG plotting layer (Debian packages no C++ plotting library): axes with "nice"
 // linear or log10 ticks, lines, shaded bands, dashed reference lines, points with
-// horizontal error bars, text, legends, and colour-mapped cells with a colour bar. Each
-// draw_* function appends SVG elements to a string; svg_document wraps them into a
-// standalone SVG 1.1 page. Numbers are written with a fixed format, so the same input
-// gives the same bytes.
+// horizontal error bars, legends of those marks, and colour-mapped cells with a colour
+// bar. Each draw_* function appends SVG elements to a string; svg_document wraps them
+// into a standalone SVG 1.1 page. Numbers are written with a fixed format, so the same
+// input gives the same bytes.
 
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "views/axis_ticks.hpp"
+#include "views/palette.hpp"
+#include "views/svg_document.hpp"
+
 namespace crux {
 
 inline constexpr double kPlotTitleFontSize = 16;
 inline constexpr double kPlotSubtitleFontSize = 12;
-inline constexpr double kPlotLabelFontSize = 12;  // axis titles, legend, panel titles
+inline constexpr double kPlotLabelFontSize = kDefaultFontSize;  // axis titles, legend, panel titles
 inline constexpr double kPlotTickFontSize = 11;
-
-// Ticks at multiples of a step of 1, 2 or 5 times a power of ten, the smallest such step
-// that covers [min, max] with at most `target` intervals; low and high are the multiples
-// of the step just outside [min, max]. An empty range is widened to one around its value.
-struct Ticks {
-  double low = 0, high = 1, step = 1;
-  std::vector<double> values;  // low, low + step, ..., high, each computed as k * step
-};
-Ticks nice_ticks(double min, double max, int target = 5);
-
-// A tick's label, with the decimals its step needs, the same for every tick of an axis.
-// From magnitude (the largest |value| of the axis) 100000 up, values are written in
-// thousands (k), millions (M) or billions (G): 200000 with step 200000 and magnitude 1e6
-// is "0.2M". Zero is "0", never "-0".
-std::string tick_label(double value, double step, double magnitude);
 
 enum class AxisScale { Linear, Log10 };
 
@@ -68,12 +57,6 @@ inline constexpr double kXAxisRoom = 44;  // below the panel: tick labels and ti
 // (the y title turned a quarter, left of the tick labels; either title may be empty).
 void draw_axes(std::string& svg, const Panel& panel);
 
-struct Stroke {
-  std::string colour = "#333333";
-  double width = 1.5;
-  std::string dash;  // an SVG stroke-dasharray, e.g. "6 4"; empty for a solid line
-};
-
 // A line through the points (x[i], y[i]), broken wherever a value is not finite.
 // Throws std::invalid_argument when the sizes differ.
 void draw_polyline(std::string& svg, const Panel& panel, const std::vector<double>& x, const std::vector<double>& y,
@@ -92,16 +75,6 @@ void draw_reference_line(std::string& svg, const Panel& panel, Direction directi
 void draw_point_with_error_bar(std::string& svg, const Panel& panel, double x, double x_low, double x_high, double y,
                                std::string_view colour);
 
-struct TextStyle {
-  double size = kPlotLabelFontSize;
-  std::string anchor = "start";  // start, middle or end
-  std::string colour = "#333333";
-  bool bold = false;
-  bool italic = false;
-  double rotation = 0;  // degrees, about (x, y)
-};
-void draw_text(std::string& svg, double x, double y, std::string_view text, const TextStyle& style = {});
-
 enum class LegendMark {
   Line,          // a stroke (dashed when the entry has a dash)
   LineWithBand,  // a stroke over a shaded band
@@ -114,7 +87,7 @@ struct LegendEntry {
   std::string dash;
   std::string text;
 };
-// One row per entry, from (left, top); the size it takes.
+// One row per entry, from (left, top), through the views' legend writer; the size it takes.
 double legend_width(const std::vector<LegendEntry>& entries);
 double legend_height(const std::vector<LegendEntry>& entries);
 void draw_legend(std::string& svg, double left, double top, const std::vector<LegendEntry>& entries);
@@ -140,9 +113,5 @@ inline constexpr double kColourBarHeight = 14;
 inline constexpr double kColourBarRoom = 52;  // the bar, its tick labels and its title
 void draw_colour_bar(std::string& svg, double left, double top, double width, const DivergingScale& scale,
                      std::string_view title);
-
-// The standalone document: XML declaration, <svg> root with xmlns, version, width,
-// height and viewBox (sizes rounded up to whole pixels), <title>, a white page, the body.
-std::string svg_document(double width, double height, std::string_view title, std::string_view body);
 
 }  // namespace crux

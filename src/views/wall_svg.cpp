@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -12,13 +11,15 @@
 
 #include <fmt/format.h>
 
-#include "views/svg_text.hpp"
+#include "views/axis_ticks.hpp"
+#include "views/legend.hpp"
+#include "views/palette.hpp"
+#include "views/svg_document.hpp"
 
 namespace crux {
 namespace {
 
 constexpr const char* kHoldColour = "#222222";
-constexpr const char* kHoldIdColour = "#444444";
 constexpr const char* kGreyedColour = "#bbbbbb";  // holds outside the moving grid
 constexpr const char* kGridColour = "#7f93b0";
 constexpr const char* kTileColour = "#6a3d9a";  // a hold's tile and each tile's hold
@@ -36,8 +37,10 @@ constexpr double kPlotLeft = 62;     // room for the z tick labels and axis titl
 constexpr double kPlotPadding = 32;  // around the content, room for the hold labels
 constexpr double kBelowPlot = 52;    // y tick labels and axis title
 constexpr double kLegendGap = 56;    // room for the finish label, right of the plot
-constexpr double kWallLegendRowHeight = 18;
 constexpr double kWallLegendSwatchWidth = 26;
+// A column right of the plot: swatches 26 pixels wide, 6 from their text.
+constexpr LegendLayout kWallLegendLayout{kLabelFontSize, kWallLegendSwatchWidth + 6, 18, true};
+constexpr double kWallLegendDiscRadius = 4.5;
 constexpr double kMinimumHoldRadius = 2;  // small holds stay visible
 constexpr double kMaxPlotPixels = 20000;  // the larger side of the plot, at most
 
@@ -78,14 +81,6 @@ struct FrontView {
   double screen_y(double z) const { return top + (z_max - z) * scale; }
 };
 
-enum class Swatch { Hold, StartHold, Finish, GridTile, HoldTile, ChosenHold, OutsideHold, Anchor };
-
-struct LegendEntry {
-  Swatch swatch;
-  std::string text;
-  int limb = 0;  // for Swatch::StartHold
-};
-
 class WallFigure {
  public:
   WallFigure(const Wall& wall, const WallSvgOptions& options) : wall_(wall), options_(options) {
@@ -104,7 +99,6 @@ class WallFigure {
 
   std::string render() {
     out_.reserve(512 + 400 * wall_.holds.size());
-    write_document_start();
     write_header();
     write_plot_frame();
     if (options_.grid) write_grid();
@@ -117,9 +111,8 @@ class WallFigure {
     if (options_.grid) write_hold_tiles();
     if (!start_limbs_.empty()) write_start_codes();  // last: the most important labels
     write_axis_titles();
-    write_legend();
-    out_ += "</svg>\n";
-    return std::move(out_);
+    draw_legend_column(out_, legend_left_, view_.top, legend_, kWallLegendLayout);
+    return svg_document(page_width_, page_height_, wall_.name, out_, XlinkNamespace::Declared);
   }
 
  private:
@@ -177,92 +170,110 @@ class WallFigure {
     y_axis_title_ = "y (m), to the climber's left";
     const double y_axis_title_width = 36 + estimated_text_width(y_axis_title_, kLabelFontSize);
     legend_left_ = kPlotLeft + std::max(plot_width_, y_axis_title_width) + kLegendGap;
-    double legend_width = 0;
-    for (const LegendEntry& entry : legend_) {
-      legend_width = std::max(legend_width, kWallLegendSwatchWidth + 6 + estimated_text_width(entry.text, kLabelFontSize));
-    }
+    std::vector<std::string> legend_texts;
+    for (const LegendItem& item : legend_) legend_texts.push_back(item.text);
+    const double legend_width = crux::legend_width(legend_texts, kWallLegendLayout);
     double header_width = estimated_text_width(wall_.name, kTitleFontSize);
     for (const std::string& line : subtitles_) {
       header_width = std::max(header_width, estimated_text_width(line, kSubtitleFontSize));
     }
     page_width_ = std::ceil(std::max(legend_left_ + legend_width, kPageMargin + header_width) + kPageMargin);
     page_height_ = std::ceil(std::max(plot_top + plot_height_ + kBelowPlot,
-                                      plot_top + kWallLegendRowHeight * static_cast<double>(legend_.size()) + kPageMargin));
+                                      plot_top + kWallLegendLayout.row_height * static_cast<double>(legend_.size()) + kPageMargin));
 
     tick_spacing_ = metre_tick_spacing(scale);
   }
 
   static const LimbStyle& limb_style(Limb limb) { return kLimbStyles[static_cast<int>(limb)]; }
 
+  // Each legend item's swatch is centred in the swatch column.
+  template <typename Draw>
+  void add_legend_item(std::string text, Draw draw) {
+    legend_.push_back({std::move(text), [draw](std::string& svg, double left, double y) {
+                         draw(svg, left + kWallLegendSwatchWidth / 2, y);
+                       }});
+  }
+
   void fill_legend() {
-    legend_.push_back({Swatch::Hold, options_.number_holds ? "hold, with its id" : "hold"});
+    const auto disc = [](std::string& svg, double x, double y, const char* colour) {
+      append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"{}\"/>\n", x, y, kWallLegendDiscRadius, colour);
+    };
+    const auto ring = [](std::string& svg, double x, double y, double ring_radius, const char* colour, double width) {
+      append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"/>\n",
+                    x, y, ring_radius, colour, width);
+    };
+    add_legend_item(options_.number_holds ? "hold, with its id" : "hold",
+                    [disc](std::string& svg, double x, double y) { disc(svg, x, y, kHoldColour); });
     for (int limb = 0; limb < kLimbCount; ++limb) {
       if (!start_limbs_.contains(wall_.start[limb])) continue;  // not marked, or no such hold
       const LimbStyle& style = kLimbStyles[limb];
-      legend_.push_back({Swatch::StartHold, fmt::format("{}: {} start hold", style.code, style.name), limb});
+      add_legend_item(fmt::format("{}: {} start hold", style.code, style.name),
+                      [disc, ring, &style](std::string& svg, double x, double y) {
+                        disc(svg, x, y, kHoldColour);
+                        ring(svg, x, y, kWallLegendDiscRadius + kStartRingGap, style.colour, 2);
+                      });
     }
-    legend_.push_back({Swatch::Finish, fmt::format("finish height, {:.2f} m", wall_.finish_height)});
+    add_legend_item(fmt::format("finish height, {:.2f} m", wall_.finish_height),
+                    [](std::string& svg, double x, double y) { draw_line(svg, x - 12, y, x + 12, y, kFinishStroke); });
     if (!options_.grid) return;
-    legend_.push_back({Swatch::GridTile, "grid tile, with its number"});
-    legend_.push_back({Swatch::HoldTile, "tile a hold lies in"});
-    legend_.push_back({Swatch::ChosenHold, "hold its tile maps to (nearest centre)"});
-    legend_.push_back({Swatch::OutsideHold, "hold outside the grid"});
+    add_legend_item("grid tile, with its number", [](std::string& svg, double x, double y) {
+      append_format(svg,
+                    "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"none\" stroke=\"{}\" "
+                    "stroke-width=\"0.8\"/>\n",
+                    x - 11, y - 7, kGridColour);
+      append_format(svg, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\">12</text>\n", x - 9, y + 1,
+                    kTileNumberFontSize, kGridColour);
+    });
+    add_legend_item("tile a hold lies in", [](std::string& svg, double x, double y) {
+      append_format(svg, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">t12</text>\n",
+                    x, y + 3, kHoldFontSize, kTileColour);
+    });
+    add_legend_item("hold its tile maps to (nearest centre)", [disc, ring](std::string& svg, double x, double y) {
+      disc(svg, x, y, kHoldColour);
+      ring(svg, x, y, kWallLegendDiscRadius + 3.5, kTileColour, 1);
+    });
+    add_legend_item("hold outside the grid",
+                    [disc](std::string& svg, double x, double y) { disc(svg, x, y, kGreyedColour); });
     if (anchor_tile_ != kOutsideGrid) {
-      legend_.push_back({Swatch::Anchor, fmt::format("anchor P of the {}", limb_style(*options_.grid_limb).name)});
+      add_legend_item(fmt::format("anchor P of the {}", limb_style(*options_.grid_limb).name),
+                      [](std::string& svg, double x, double y) {
+                        append_format(svg, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"{}\"/>\n",
+                                      x - 11, y - 7, kAnchorTileFill);
+                        append_format(svg,
+                                      "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" "
+                                      "stroke-width=\"1\"/>\n",
+                                      x, y, kAnchorColour);
+                      });
     }
-  }
-
-  void write_document_start() {
-    out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-    append_format(out_,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" "
-        "width=\"{0:.0f}\" height=\"{1:.0f}\" "
-        "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
-        page_width_, page_height_);
-    append_format(out_, "<title>{}</title>\n", xml_escaped(wall_.name));
-    append_format(out_, "<rect width=\"{:.0f}\" height=\"{:.0f}\" fill=\"white\"/>\n", page_width_, page_height_);
   }
 
   void write_header() {
-    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-weight=\"bold\" fill=\"#111111\">{}</text>\n",
-         kPageMargin, kPageMargin + 14, kTitleFontSize, xml_escaped(wall_.name));
+    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-weight=\"bold\" fill=\"{}\">{}</text>\n",
+                  kPageMargin, kPageMargin + 14, kTitleFontSize, kTitleColour, xml_escaped(wall_.name));
     for (std::size_t i = 0; i < subtitles_.size(); ++i) {
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"#555555\">{}</text>\n", kPageMargin,
-           kPageMargin + 32 + 15 * static_cast<double>(i), kSubtitleFontSize, xml_escaped(subtitles_[i]));
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\">{}</text>\n", kPageMargin,
+                    kPageMargin + 32 + 15 * static_cast<double>(i), kSubtitleFontSize, kSubtitleColour,
+                    xml_escaped(subtitles_[i]));
     }
   }
 
   // The plot's frame, light lines every tick_spacing_ metres and their labels.
   void write_plot_frame() {
     const double left = view_.left, top = view_.top, right = left + plot_width_, bottom = top + plot_height_;
-    out_ += "<g class=\"metre-lines\" stroke=\"#e8e8e8\" stroke-width=\"1\">\n";
-    const auto first_y = static_cast<long>(std::ceil(extent_.y_min / tick_spacing_));
-    const auto last_y = static_cast<long>(std::floor(extent_.y_max / tick_spacing_));
-    for (long k = first_y; k <= last_y; ++k) {
-      const double x = view_.screen_x(static_cast<double>(k) * tick_spacing_);
-      append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", x, top, bottom);
-    }
-    const auto first_z = static_cast<long>(std::ceil(extent_.z_min / tick_spacing_));
-    const auto last_z = static_cast<long>(std::floor(extent_.z_max / tick_spacing_));
-    for (long k = first_z; k <= last_z; ++k) {
-      const double y = view_.screen_y(static_cast<double>(k) * tick_spacing_);
-      append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", left, y, right);
-    }
+    const std::vector<double> y_ticks = metre_ticks(extent_.y_min, extent_.y_max, tick_spacing_);
+    const std::vector<double> z_ticks = metre_ticks(extent_.z_min, extent_.z_max, tick_spacing_);
+    append_format(out_, "<g class=\"metre-lines\" stroke=\"{}\" stroke-width=\"1\">\n", kWallMetreLineColour);
+    for (const double y : y_ticks) draw_vertical_line(out_, view_.screen_x(y), top, bottom);
+    for (const double z : z_ticks) draw_horizontal_line(out_, left, right, view_.screen_y(z));
     out_ += "</g>\n";
     append_format(out_,
-        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"#999999\" "
-        "stroke-width=\"1\"/>\n",
-        left, top, plot_width_, plot_height_);
+                  "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
+                  "stroke-width=\"1\"/>\n",
+                  left, top, plot_width_, plot_height_, kViewFrameColour);
 
-    append_format(out_, "<g class=\"tick-labels\" font-size=\"{}\" fill=\"#555555\">\n", kLabelFontSize - 1);
-    for (long k = first_y; k <= last_y; ++k) {
-      const double y = static_cast<double>(k) * tick_spacing_;
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{:.1f}</text>\n", view_.screen_x(y), bottom + 14, y);
-    }
-    for (long k = first_z; k <= last_z; ++k) {
-      const double z = static_cast<double>(k) * tick_spacing_;
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"end\">{:.1f}</text>\n", left - 5, view_.screen_y(z) + 3.5, z);
-    }
+    append_format(out_, "<g class=\"tick-labels\" font-size=\"{}\" fill=\"{}\">\n", kLabelFontSize - 1, kSubtitleColour);
+    for (const double y : y_ticks) draw_plain_text(out_, view_.screen_x(y), bottom + 14, metre_tick_label(y), "middle");
+    for (const double z : z_ticks) draw_plain_text(out_, left - 5, view_.screen_y(z) + 3.5, metre_tick_label(z), "end");
     out_ += "</g>\n";
   }
 
@@ -279,14 +290,10 @@ class WallFigure {
     }
     append_format(out_, "<g class=\"moving-grid\" stroke=\"{}\" stroke-width=\"0.8\">\n", kGridColour);
     for (int column = 1; column < grid.columns; ++column) {
-      const double x = view_.screen_x(y0 + column * grid.tile_width);
-      append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\"/>\n", x, view_.screen_y(z1),
-           view_.screen_y(z0));
+      draw_vertical_line(out_, view_.screen_x(y0 + column * grid.tile_width), view_.screen_y(z1), view_.screen_y(z0));
     }
     for (int row = 1; row < grid.rows; ++row) {
-      const double y = view_.screen_y(z0 + row * grid.tile_height);
-      append_format(out_, "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\"/>\n", view_.screen_x(y1), y,
-           view_.screen_x(y0));
+      draw_horizontal_line(out_, view_.screen_x(y1), view_.screen_x(y0), view_.screen_y(z0 + row * grid.tile_height));
     }
     append_format(out_, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke-width=\"1.5\"/>\n",
          view_.screen_x(y1), view_.screen_y(z1), (y1 - y0) * view_.scale, (z1 - z0) * view_.scale);
@@ -304,13 +311,10 @@ class WallFigure {
 
   void write_finish_line() {
     const double y = view_.screen_y(wall_.finish_height), right = view_.left + plot_width_;
-    append_format(out_,
-        "<line class=\"finish\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" "
-        "stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
-        view_.left, y, right, y);
+    draw_line(out_, view_.left, y, right, y, kFinishStroke, "finish");
     // Outside the plot, where no hold label can cover it.
-    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-style=\"italic\" fill=\"#444444\">finish</text>\n",
-         right + 4, y + 3.5, kLabelFontSize - 1);
+    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-style=\"italic\" fill=\"{}\">finish</text>\n",
+                  right + 4, y + 3.5, kLabelFontSize - 1, kFinishStroke.colour);
   }
 
   void write_holds() {
@@ -384,7 +388,7 @@ class WallFigure {
 
   void write_hold_ids() {
     begin_haloed_labels("hold-ids", "font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\"", kHoldFontSize,
-                        kHoldIdColour);
+                        kDarkGrey);
     for (int i = 0; i < wall_.hold_count(); ++i) {
       const Hold& hold = wall_.holds[i];
       const double radius = hold_radius_pixels(hold);
@@ -422,78 +426,18 @@ class WallFigure {
   void write_axis_titles() {
     const double bottom = view_.top + plot_height_;
     const double z_title_x = 18, z_title_y = view_.top + plot_height_ / 2;
-    append_format(out_, "<g class=\"axis-titles\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
+    append_format(out_, "<g class=\"axis-titles\" font-size=\"{}\" fill=\"{}\">\n", kLabelFontSize, kTextColour);
     append_format(out_,
         "<text x=\"{0:.2f}\" y=\"{1:.2f}\" text-anchor=\"middle\" transform=\"rotate(-90 {0:.2f} {1:.2f})\">"
         "z (m), up</text>\n",
         z_title_x, z_title_y);
     const double title_width = 36 + estimated_text_width(y_axis_title_, kLabelFontSize);
     const double arrow_x = view_.left + std::max(0.0, (plot_width_ - title_width) / 2), arrow_y = bottom + 36;
-    append_format(out_, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#333333\" stroke-width=\"1.2\"/>\n",
-         arrow_x + 4, arrow_y, arrow_x + 30, arrow_y);
+    draw_line(out_, arrow_x + 4, arrow_y, arrow_x + 30, arrow_y, {kTextColour, 1.2, ""});
     append_format(out_, "<polygon points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\"/>\n", arrow_x, arrow_y, arrow_x + 8,
          arrow_y - 4, arrow_x + 8, arrow_y + 4);
-    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", arrow_x + 36, arrow_y + 4, xml_escaped(y_axis_title_));
+    draw_plain_text(out_, arrow_x + 36, arrow_y + 4, y_axis_title_);
     out_ += "</g>\n";
-  }
-
-  void write_legend() {
-    append_format(out_, "<g class=\"legend\" font-size=\"{}\" fill=\"#333333\">\n", kLabelFontSize);
-    for (std::size_t i = 0; i < legend_.size(); ++i) {
-      const LegendEntry& entry = legend_[i];
-      const double y = view_.top + kWallLegendRowHeight * (static_cast<double>(i) + 0.5);
-      write_swatch(entry, legend_left_ + kWallLegendSwatchWidth / 2, y);
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", legend_left_ + kWallLegendSwatchWidth + 6, y + 4,
-           xml_escaped(entry.text));
-    }
-    out_ += "</g>\n";
-  }
-
-  void write_swatch(const LegendEntry& entry, double x, double y) {
-    constexpr double radius = 4.5;
-    const auto disc = [&](const char* colour) {
-      append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"{}\"/>\n", x, y, radius, colour);
-    };
-    const auto ring = [&](double ring_radius, const char* colour, double width) {
-      append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"/>\n", x, y,
-           ring_radius, colour, width);
-    };
-    switch (entry.swatch) {
-      case Swatch::Hold: disc(kHoldColour); break;
-      case Swatch::StartHold:
-        disc(kHoldColour);
-        ring(radius + kStartRingGap, kLimbStyles[entry.limb].colour, 2);
-        break;
-      case Swatch::Finish:
-        append_format(out_,
-            "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#444444\" stroke-width=\"1.2\" "
-            "stroke-dasharray=\"6 4\"/>\n",
-            x - 12, y, x + 12, y);
-        break;
-      case Swatch::GridTile:
-        append_format(out_,
-            "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"none\" stroke=\"{}\" "
-            "stroke-width=\"0.8\"/>\n",
-            x - 11, y - 7, kGridColour);
-        append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\">12</text>\n", x - 9, y + 1,
-             kTileNumberFontSize, kGridColour);
-        break;
-      case Swatch::HoldTile:
-        append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">t12</text>\n", x,
-             y + 3, kHoldFontSize, kTileColour);
-        break;
-      case Swatch::ChosenHold:
-        disc(kHoldColour);
-        ring(radius + 3.5, kTileColour, 1);
-        break;
-      case Swatch::OutsideHold: disc(kGreyedColour); break;
-      case Swatch::Anchor:
-        append_format(out_, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"22\" height=\"14\" fill=\"{}\"/>\n", x - 11, y - 7,
-             kAnchorTileFill);
-        append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" stroke-width=\"1\"/>\n", x, y,
-             kAnchorColour);
-        break;
-    }
   }
 
   const Wall& wall_;
@@ -508,7 +452,7 @@ class WallFigure {
   double tick_spacing_ = 0;
   std::vector<std::string> subtitles_;
   std::string y_axis_title_;
-  std::vector<LegendEntry> legend_;
+  std::vector<LegendItem> legend_;
   std::string out_;
 };
 
