@@ -17,6 +17,8 @@ packages=(
   liburdfdom-tools
   # Fuzzing the readers: clang's libFuzzer (the fuzz preset).
   clang libfuzzer-14-dev
+  # The one formatter of the C++ sources (.clang-format), checked by the tests.
+  clang-format
   # The Python module, built for and tested with Debian's /usr/bin/python3; its examples
   # use pandas and matplotlib.
   python3-dev pybind11-dev python3-numpy python3-pytest python3-pandas python3-matplotlib
