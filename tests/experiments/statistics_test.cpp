@@ -48,6 +48,15 @@ TEST(Statistics, SmallPValuesKeepTheirDigits) {
   EXPECT_NEAR(test.p_value / expected, 1.0, 1e-13);
 }
 
+TEST(Statistics, NaNInTheDataGivesNaNStatisticsNotAnException) {
+  const double nan = std::nan("");
+  const PairedTest test = paired_t_test({1.0, nan, 3.0}, {0.0, 0.0, 0.0});
+  EXPECT_TRUE(std::isnan(test.t));
+  EXPECT_TRUE(std::isnan(test.p_value));
+  EXPECT_TRUE(std::isnan(test.difference.half_width));
+  EXPECT_TRUE(std::isnan(student_t_cdf(nan, 4)));
+}
+
 TEST(Statistics, MeanIntervalByHand) {
   // mean 3, sample sd sqrt(2.5), half-width t(0.975, 4) * sd / sqrt(5) = 2.7764 * 0.7071.
   const MeanInterval m = mean_interval({1, 2, 3, 4, 5});
