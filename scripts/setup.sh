@@ -7,6 +7,8 @@ packages=(
   build-essential cmake ninja-build git
   libeigen3-dev liburdfdom-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
   libfmt-dev libtbb-dev libabsl-dev libgtest-dev libgmock-dev libbenchmark-dev
+  # Student's t distribution of the statistics (Boost.Math, header-only).
+  libboost-math-dev
   # crux sweep across processes and machines (mpirun).
   libopenmpi-dev openmpi-bin
   # SHA-256 of the inputs a run records (libcrypto).

@@ -22,8 +22,8 @@ struct GridParameters {
   int rows = 7;     // up (z), counted from the bottom
   double tile_width = 0.3;
   double tile_height = 0.5;
-  // Anchor tile (column, row) of each limb, whose centre is placed on that limb (spec
-  // item 15), limb order.
+  // Anchor tile (column, row) of each limb, whose centre is placed on that limb
+  // (docs/MODEL.md, choice C15), limb order.
   std::array<std::array<int, 2>, kLimbCount> anchors{{{1, 4}, {3, 4}, {1, 1}, {3, 1}}};
 
   int tile_count() const { return columns * rows; }
@@ -53,7 +53,7 @@ GridPlacement place_grid(const GridParameters& grid, Limb free_limb, const Eigen
 std::string describe_grid(const GridParameters& grid);
 
 // Grid -> wall: the hold nearest the tile's centre among those lying in the tile, or -1
-// when the tile holds none (spec item 16). Distances are measured in the wall plane;
+// when the tile holds none (docs/MODEL.md, choice C16). Distances are measured in the wall plane;
 // ties go to the hold listed first.
 int hold_in_tile(const Wall& wall, const GridPlacement& placement, int tile);
 

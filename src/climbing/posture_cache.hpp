@@ -2,7 +2,7 @@
 // The cache of section III-C: every 4-configuration solved on a wall, with the posture
 // that reaches it, so that IK runs once per 4-configuration. Unreachable verdicts are
 // cached too (on by default): the paper's reachability does not depend on the path
-// (its G-reachability hypothesis, spec item 11), so solving again could only repeat the
+// (its G-reachability hypothesis; docs/MODEL.md, choice C11), so solving again could only repeat the
 // verdict at the price of a full time-out.
 
 #include <cstdint>

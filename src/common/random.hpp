@@ -1,5 +1,5 @@
 #pragma once
-// Reproducible randomness (spec item 7): a fixed engine, std::mt19937_64, whose output
+// Reproducible randomness (docs/MODEL.md, choice C7): a fixed engine, std::mt19937_64, whose output
 // the C++ standard pins down, and crux's own distributions, because the standard
 // library's distributions differ between implementations.
 

@@ -12,7 +12,7 @@
 
 namespace crux {
 
-// Readings of the paper's "both feet above the hands" (spec item 13); docs/DESIGN.md
+// Readings of the paper's "both feet above the hands" (docs/MODEL.md, choice C13); docs/DESIGN.md
 // compares their pass rates with the paper's. Each compares the heights of the held feet
 // with those of the held hands and rejects when:
 enum class FeetAboveHandsReading {

@@ -1,5 +1,5 @@
 #pragma once
-// The possible actions of a 3-configuration (spec item 14): the holds its free limb may
+// The possible actions of a 3-configuration (docs/MODEL.md, choice C14): the holds its free limb may
 // take such that the resulting 4-configuration passes the geometric filter. Called at
 // every learning step, so it writes into a caller-owned buffer and never allocates.
 

@@ -10,7 +10,7 @@
 namespace crux {
 
 // How C-reachability is decided: the IK solver and its settings, the root heuristic,
-// and whether unreachable verdicts are cached (spec item 11).
+// and whether unreachable verdicts are cached (docs/MODEL.md, choice C11).
 struct ReachabilityParameters {
   IkSettings ik;
   RootTargetParameters root;

@@ -27,7 +27,7 @@ struct PairedTest {
 };
 PairedTest paired_t_test(const std::vector<double>& a, const std::vector<double>& b);
 
-// Student's t distribution with `dof` degrees of freedom.
+// Student's t distribution with `dof` degrees of freedom (Boost.Math's).
 double student_t_cdf(double t, double dof);
 double student_t_quantile(double probability, double dof);
 

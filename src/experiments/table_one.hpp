@@ -1,8 +1,8 @@
 #pragma once
 // Table I of the paper: per action-selection regime, the number of actions, the
 // success rate (share of its actions that reached a C-reachable 4-configuration) and
-// the mean vertical displacement of e0 over its successful actions, in cm (spec item
-// 21), over the first iterations of a run ("beginning") and over the whole run.
+// the mean vertical displacement of e0 over its successful actions, in cm (docs/MODEL.md,
+// choice C21), over the first iterations of a run ("beginning") and over the whole run.
 
 #include <array>
 #include <span>

@@ -29,7 +29,7 @@ struct GradientDescentSettings {
   int max_iterations(double time_step_s) const;
 };
 
-// `time_step_s`: simulated time per iteration (spec item 9: see docs/DESIGN.md).
+// `time_step_s`: simulated time per iteration (docs/MODEL.md, choice C9).
 IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const Posture& g_init,
                                    const ReachTarget& target, const ReachTolerances& tolerances, double time_step_s,
                                    const GradientDescentSettings& settings, const PathRecorder& recorder = {});

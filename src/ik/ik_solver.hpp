@@ -18,7 +18,7 @@ std::optional<IkSolverKind> parse_ik_solver(std::string_view name);
 struct IkSettings {
   IkSolverKind solver = IkSolverKind::Fast;
   // What both solvers share: the termination test and the simulated time per iteration
-  // (spec item 9; the paper's time-out is counted in it).
+  // (docs/MODEL.md, choice C9; the paper's time-out is counted in it).
   ReachTolerances tolerances;
   double time_step_s = 0.002;
   // Give up before the first iteration when a hold is beyond its limb's reach envelope

@@ -29,7 +29,7 @@ struct ReachQuerySettings {
   RootTargetParameters root;
 };
 
-// Four holds in the spec's start layout on a regular 0.3 m x 0.5 m grid (feet on row 0,
+// Four holds in the start layout (docs/MODEL.md, choice C5) on a regular 0.3 m x 0.5 m grid (feet on row 0,
 // hands on row 3, columns 1 and 3 counted from the climber's right).
 std::array<Eigen::Vector3d, kLimbCount> start_layout_holds();
 

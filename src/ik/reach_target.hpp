@@ -17,8 +17,8 @@ struct ReachTarget {
 };
 
 struct ReachTolerances {
-  double grasp_radius = 0.04;  // grasp sphere at each hand and foot (spec item 3)
-  double root_radius = 0.10;   // tolerance sphere of the root (spec item 4)
+  double grasp_radius = 0.04;  // grasp sphere at each hand and foot (docs/MODEL.md, choice C3)
+  double root_radius = 0.10;   // tolerance sphere of the root (docs/MODEL.md, choice C4)
 };
 
 // Largest distance from a grasp point to its hold centre.

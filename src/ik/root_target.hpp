@@ -1,5 +1,5 @@
 #pragma once
-// The root target heuristic H(C4) (paper, III-B; spec item 8).
+// The root target heuristic H(C4) (paper, III-B; docs/MODEL.md, choice C8).
 
 #include <array>
 

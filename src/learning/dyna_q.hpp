@@ -30,7 +30,7 @@ std::optional<Planner> parse_planner(std::string_view name);
 struct DynaSettings {
   QLearningRates rates;
   int planning_steps = 50;  // model updates per real step
-  double epsilon = 0.1;     // Algorithm 3; the paper gives no value (spec item 19)
+  double epsilon = 0.1;     // Algorithm 3; the paper gives no value (docs/MODEL.md, choice C19)
   Planner planner = Planner::Uniform;
   double priority_threshold = 1e-6;  // prioritized sweeping queues larger |TD errors| only
   TransferMode transfer = TransferMode::Paper;

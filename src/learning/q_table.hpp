@@ -1,7 +1,7 @@
 #pragma once
 // A Q-table over integer states and actions: sparse in states (a row is created when a
 // state's value is first written), dense in actions. Unwritten values are 0, the
-// initial value of every Q-table here (spec item 18). It also counts, per pair, the real
+// initial value of every Q-table here (docs/MODEL.md, choice C18). It also counts, per pair, the real
 // experiences of it, which is what "already taken" means in Algorithm 3.
 
 #include <algorithm>

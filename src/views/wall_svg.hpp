@@ -18,8 +18,8 @@ struct WallSvgOptions {
   bool mark_start = true;             // each start hold marked with its limb (RH, LH, RF, LF) + legend
   std::optional<GridPlacement> grid;  // draw the moving grid (Fig. 2a)
   // Whose anchor tile to highlight, with a green dot at its centre (the P_i point). The
-  // anchor tiles are the spec's (GridParameters' defaults), as the placement does not
-  // carry them.
+  // anchor tiles are those of docs/MODEL.md, choice C15 (GridParameters' defaults), as the
+  // placement does not carry them.
   std::optional<Limb> grid_limb;
 };
 

@@ -17,7 +17,7 @@ struct RandomWallParameters {
   double hold_radius = 0.04;
   double finish_height = 3.0;  // calibrated on the optimal climb length (docs/DESIGN.md)
   // Start configuration as (column, row) vertices, columns from the climber's right,
-  // rows from the bottom, limb order (spec item 5).
+  // rows from the bottom, limb order (docs/MODEL.md, choice C5).
   std::array<std::array<int, 2>, kLimbCount> start_vertices{{{1, 3}, {3, 3}, {1, 0}, {3, 0}}};
 };
 

@@ -18,7 +18,7 @@ TEST(MovingGrid, EachLimbsAnchorTileIsCentredOnTheLimb) {
     EXPECT_EQ(placement.tile_of(limb), anchor) << limb_name(static_cast<Limb>(l));
     EXPECT_LT((placement.tile_centre(anchor) - limb).norm(), 1e-12);
   }
-  // The right hand's anchor P_1 is at column 1, row 4 (spec item 15): the grid spans
+  // The right hand's anchor P_1 is at column 1, row 4 (docs/MODEL.md, choice C15): the grid spans
   // 1.5 tiles to the right of the hand and 3.5 to its left, 4.5 below and 2.5 above.
   const GridPlacement right_hand = place_grid(kGrid, Limb::RightHand, limb);
   EXPECT_NEAR(right_hand.origin.x(), 0.7 - 1.5 * 0.3, 1e-12);

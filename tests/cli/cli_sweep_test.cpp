@@ -64,6 +64,17 @@ TEST(CliSweep, WritesEachRunAndTheResultsAndPrintsEachCell) {
   EXPECT_FALSE(fs::exists(out / "INCOMPLETE"));
   // The same command again resumes a finished sweep: nothing to run, the same results.
   const auto results = folder_contents(out);
+  // One results.csv and one summary.json for the whole sweep, none per cell (a run folder
+  // has the summary.json of a crux train folder).
+  for (const auto& [file, bytes] : results) {
+    const fs::path path(file);
+    if (path.filename() == "results.csv") {
+      EXPECT_EQ(file, "results.csv");
+    }
+    if (path.filename() == "summary.json" && file != "summary.json") {
+      EXPECT_EQ(path.parent_path().parent_path().parent_path(), "runs") << file << " is not a run's summary";
+    }
+  }
   const std::string& report = results.at("report.html");
   ASSERT_NE(report.find("cell 1: learning.epsilon = 0.3"), std::string::npos);
   EXPECT_LT(report.find("cell 0: learning.epsilon = 0.1"), report.find("cell 1: learning.epsilon = 0.3"));

@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "support/repository_docs.hpp"
 #include "support/run_crux.hpp"
 #include "support/test_models.hpp"
 
@@ -95,6 +99,106 @@ TEST(Cli, IkPathIsWrittenAsCsv) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   ASSERT_TRUE(std::filesystem::exists(out));
   EXPECT_GT(std::filesystem::file_size(out), 100u);
+}
+
+
+// docs/OUTPUTS.md's smallest legal wall, which the wall errors below start from.
+const std::string kFourHoldWall = R"({
+  "format": "crux-wall",
+  "version": 1,
+  "name": "four holds",
+  "finish_height": 1.5,
+  "start": {"right_hand": 3, "left_hand": 4, "right_foot": 1, "left_foot": 2},
+  "holds": [
+    {"id": 1, "position": [0.0, 0.3, 0.2], "radius": 0.04},
+    {"id": 2, "position": [0.0, 0.9, 0.2], "radius": 0.04},
+    {"id": 3, "position": [0.0, 0.35, 1.7], "radius": 0.04},
+    {"id": 4, "position": [0.0, 0.85, 1.7], "radius": 0.04}
+  ]
+}
+)";
+
+// Every error line the docs quote, with a command and files that make crux print it: the
+// docs must quote it as crux prints it, word for word, and crux must print it alone, on
+// stderr, with exit code 2.
+TEST(Cli, TheDocsQuoteErrorLinesAsCruxPrintsThem) {
+  struct QuotedError {
+    std::vector<std::string> docs;
+    std::string line;
+    std::string command;
+    std::vector<std::pair<std::string, std::string>> files;
+  };
+  const std::string train = "train --wall-seed 3 --iterations 10 --config my.toml -o out";
+  const std::vector<QuotedError> quoted{
+      {{"README.md", "docs/DESIGN.md", "docs/OUTPUTS.md"}, "crux: --runs: must be positive", "paper --runs 0", {}},
+      {{"README.md"},
+       "crux: wall.json: holds[3].radius must be positive, got -0.01",
+       "wall show --wall-file wall.json",
+       {{"wall.json", testing::replaced(kFourHoldWall, "0.85, 1.7], \"radius\": 0.04", "0.85, 1.7], \"radius\": -0.01")}}},
+      {{"README.md", "docs/DESIGN.md", "docs/OUTPUTS.md"},
+       "crux: my.toml: line 3: learning.gamma: must be in [0, 1)",
+       train,
+       {{"my.toml", "[learning]\nalpha = 0.1\ngamma = 1.5\n"}}},
+      {{"docs/DESIGN.md", "docs/OUTPUTS.md"}, "crux: unknown command 'trian' (did you mean 'train'?) (see 'crux --help')",
+       "trian", {}},
+      {{"docs/OUTPUTS.md"}, "crux: unknown option --runs of 'crux plan' (see 'crux plan --help')", "plan --runs 3", {}},
+      {{"docs/OUTPUTS.md"},
+       "crux: unknown option --wall-fil of 'crux plan' (did you mean '--wall-file'?) (see 'crux plan --help')",
+       "plan --wall-fil wall.json",
+       {}},
+      {{"docs/OUTPUTS.md"}, "crux: --ik-solver: unknown solver 'quick' (expected fast or paper)",
+       "plan --wall-seed 3 --ik-solver quick", {}},
+      {{"docs/OUTPUTS.md"},
+       "crux: my.toml: line 2: crux plan does not take experiment.iterations",
+       "plan --wall-seed 3 --config my.toml",
+       {{"my.toml", "[experiment]\niterations = 5\n"}}},
+      {{"docs/OUTPUTS.md"},
+       "crux: my.toml: line 2: unknown key walls.sigma (it is now wall.sigma)",
+       "plan --wall-seed 3 --config my.toml",
+       {{"my.toml", "[walls]\nsigma = 0.1\n"}}},
+      {{"docs/OUTPUTS.md"}, "crux: my.toml: line 2: learning.alpha must be a finite number", train,
+       {{"my.toml", "[learning]\nalpha = nan\n"}}},
+      {{"docs/OUTPUTS.md"},
+       "crux: my.toml: line 5: learning.epsilon must be one value; only crux sweep takes lists",
+       "paper --config my.toml -o out",
+       {{"my.toml", "[experiment]\nwalls = 2\n\n[learning]\nepsilon = [0.1, 0.2]\n"}}},
+      {{"docs/OUTPUTS.md"},
+       "crux: walls/mine.json: holds[3].radius must be positive, got -0.01",
+       "wall show --wall-file walls/mine.json",
+       {{"walls/mine.json",
+         testing::replaced(kFourHoldWall, "0.85, 1.7], \"radius\": 0.04", "0.85, 1.7], \"radius\": -0.01")}}},
+      {{"docs/OUTPUTS.md"},
+       "crux: walls/mine.json: unknown key \"finsh_height\" at the top level (allowed: format, version, name, "
+       "finish_height, start, holds)",
+       "wall show --wall-file walls/mine.json",
+       {{"walls/mine.json", testing::replaced(kFourHoldWall, "\"finish_height\"", "\"finsh_height\"")}}},
+      {{"docs/OUTPUTS.md"},
+       "crux: walls/mine.json: JSON syntax error at line 3, column 16: unexpected ','; expected string literal",
+       "wall show --wall-file walls/mine.json",
+       {{"walls/mine.json", testing::replaced(kFourHoldWall, "\"version\": 1,", "\"version\": 1,,")}}},
+      {{"docs/OUTPUTS.md"},
+       "crux: walls/mine.json: start.right_hand and start.left_foot both name hold 3; each limb needs its own hold",
+       "wall show --wall-file walls/mine.json",
+       {{"walls/mine.json", testing::replaced(kFourHoldWall, "\"left_foot\": 2", "\"left_foot\": 3")}}},
+  };
+  const std::filesystem::path four_holds = testing::temporary_path("cli-docs-four-holds");
+  std::filesystem::create_directories(four_holds);
+  std::ofstream(four_holds / "wall.json") << kFourHoldWall;
+  ASSERT_EQ(testing::run_crux_in(four_holds, "wall show --wall-file wall.json").exit_code, 0)
+      << "the docs' four-hold wall loads as it is";
+  for (std::size_t i = 0; i < quoted.size(); ++i) {
+    const QuotedError& q = quoted[i];
+    for (const std::string& doc : q.docs) {
+      EXPECT_TRUE(testing::quotes(testing::repository_file(doc), q.line)) << doc << " does not quote " << q.line;
+    }
+    const std::filesystem::path folder = testing::temporary_path("cli-docs-error-" + std::to_string(i));
+    std::filesystem::create_directories(folder / "walls");
+    for (const auto& [name, contents] : q.files) std::ofstream(folder / name) << contents;
+    const testing::Outcome run = testing::run_crux_in(folder, q.command);
+    EXPECT_EQ(run.exit_code, 2) << q.command;
+    EXPECT_EQ(run.err, q.line + "\n") << q.command;
+    EXPECT_FALSE(std::filesystem::exists(folder / "out")) << q.command << ": nothing written";
+  }
 }
 
 }  // namespace

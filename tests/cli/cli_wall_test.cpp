@@ -6,7 +6,10 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
+#include "support/repository_docs.hpp"
 #include "support/run_crux.hpp"
 #include "support/test_models.hpp"
 
@@ -77,6 +80,17 @@ TEST(CliFilterStats, ReportsPassSharesBesideThePapers) {
   EXPECT_GT(json["pass3"].get<double>(), json["pass4"].get<double>());
   EXPECT_EQ(json["readings"].size(), 4u);
   EXPECT_DOUBLE_EQ(json["paper_pass3"].get<double>(), 0.073);
+}
+
+TEST(CliFilterStats, JsonKeysAreThoseDocsOutputsMdLists) {
+  const auto outcome = run_crux("filter-stats --wall-count 1 --wall-seed 3 --json");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  std::vector<std::string> printed;
+  const auto json = nlohmann::ordered_json::parse(outcome.out);
+  for (const auto& [key, value] : json.items()) printed.push_back(key);
+  const auto documented =
+      testing::documented_keys(testing::repository_file("docs/OUTPUTS.md"), "## `crux filter-stats --json`");
+  EXPECT_EQ(printed, documented) << "docs/OUTPUTS.md lists the keys in the order crux prints them";
 }
 
 TEST(CliWall, GenerateAndShowCheckTheStartWithTheLearningsIkSettings) {

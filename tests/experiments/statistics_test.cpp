@@ -14,10 +14,47 @@ TEST(Statistics, StudentTAgainstPublishedTables) {
   // Two-sided 95 % critical values from standard t tables.
   EXPECT_NEAR(student_t_quantile(0.975, 1), 12.7062, 1e-4);
   EXPECT_NEAR(student_t_quantile(0.975, 5), 2.5706, 1e-4);
+  EXPECT_NEAR(student_t_quantile(0.975, 9), 2.262157, 1e-6);
   EXPECT_NEAR(student_t_quantile(0.975, 29), 2.0452, 1e-4);
+  EXPECT_NEAR(student_t_quantile(0.995, 9), 3.249836, 1e-6);
+  EXPECT_NEAR(student_t_quantile(0.95, 9), 1.833113, 1e-6);
+  EXPECT_NEAR(student_t_quantile(0.8, 9), 0.883404, 1e-6);
+  EXPECT_NEAR(student_t_quantile(0.025, 9), -2.262157, 1e-6) << "symmetric about 0";
   EXPECT_NEAR(student_t_cdf(0.0, 7), 0.5, 1e-15);
   EXPECT_NEAR(student_t_cdf(2.0, 10), 0.963306, 1e-6);  // tables: 1 - 0.036694
   EXPECT_NEAR(student_t_cdf(-2.0, 10), 0.036694, 1e-6);
+  EXPECT_NEAR(student_t_cdf(2.262157, 9), 0.975, 1e-6);
+}
+
+TEST(Statistics, StudentTAgainstClosedForms) {
+  // With 1 degree of freedom t is Cauchy: cdf(t) = 1/2 + atan(t) / pi, so the 0.975
+  // quantile is tan(0.475 pi). With 2: cdf(t) = 1/2 + t / (2 sqrt(2 + t^2)), whose
+  // inverse gives the quantile (2p - 1) / sqrt(2 p (1 - p)) = 0.95 / sqrt(0.04875).
+  EXPECT_NEAR(student_t_quantile(0.975, 1), std::tan(0.475 * M_PI), 1e-13);
+  EXPECT_NEAR(student_t_quantile(0.975, 2), 0.95 / std::sqrt(0.04875), 1e-14);
+  for (const double t : {-7.5, -1.0, 0.3, 2.0, 40.0}) {
+    EXPECT_NEAR(student_t_cdf(t, 1), 0.5 + std::atan(t) / M_PI, 1e-15) << t;
+    EXPECT_NEAR(student_t_cdf(t, 2), 0.5 + t / (2.0 * std::sqrt(2.0 + t * t)), 1e-15) << t;
+  }
+}
+
+TEST(Statistics, SmallPValuesKeepTheirDigits) {
+  // Differences 1 - 1e-6 and 1 + 1e-6: t is about 1e6 with 1 degree of freedom, where the
+  // two-sided p is 2 atan(1 / t) / pi, about 6.4e-7. Computed as 1 - cdf(t) it would keep
+  // only its first 9 or 10 digits; the upper tail itself keeps them all.
+  const PairedTest test = paired_t_test({1.0 - 1e-6, 1.0 + 1e-6}, {0.0, 0.0});
+  EXPECT_NEAR(test.t, 1e6, 1.0);
+  const double expected = 2.0 * std::atan(1.0 / test.t) / M_PI;
+  EXPECT_NEAR(test.p_value / expected, 1.0, 1e-13);
+}
+
+TEST(Statistics, NaNInTheDataGivesNaNStatisticsNotAnException) {
+  const double nan = std::nan("");
+  const PairedTest test = paired_t_test({1.0, nan, 3.0}, {0.0, 0.0, 0.0});
+  EXPECT_TRUE(std::isnan(test.t));
+  EXPECT_TRUE(std::isnan(test.p_value));
+  EXPECT_TRUE(std::isnan(test.difference.half_width));
+  EXPECT_TRUE(std::isnan(student_t_cdf(nan, 4)));
 }
 
 TEST(Statistics, MeanIntervalByHand) {

@@ -13,7 +13,7 @@ TEST(QTable, UnwrittenValuesAndVisitsAreZero) {
   const QTable q(4);
   EXPECT_EQ(q.action_count(), 4);
   EXPECT_EQ(q.state_count(), 0u);
-  EXPECT_EQ(q.value(17, 3), 0.0) << "every Q-table starts at 0 (spec item 18)";
+  EXPECT_EQ(q.value(17, 3), 0.0) << "every Q-table starts at 0 (docs/MODEL.md, choice C18)";
   EXPECT_EQ(q.visits(17, 3), 0u);
   EXPECT_FALSE(q.taken(17, 3));
 }

@@ -22,13 +22,14 @@ std::string read_all(FILE* file) {
 
 }  // namespace
 
-Outcome run_crux(const std::string& arguments) {
+Outcome run_crux_in(const std::filesystem::path& folder, const std::string& arguments) {
   static std::atomic<int> calls{0};
   const auto dir = std::filesystem::temp_directory_path() / "crux-tests";
   std::filesystem::create_directories(dir);
   // Unique per process and call: ctest runs test cases in parallel processes.
   const auto err_path = dir / ("stderr." + std::to_string(::getpid()) + "." + std::to_string(calls++));
-  const std::string command = std::string(CRUX_BINARY) + " " + arguments + " 2>" + err_path.string();
+  const std::string change_folder = folder.empty() ? std::string() : "cd '" + folder.string() + "' && ";
+  const std::string command = change_folder + CRUX_BINARY + " " + arguments + " 2>" + err_path.string();
   Outcome outcome;
   FILE* pipe = popen(command.c_str(), "r");
   outcome.out = read_all(pipe);
@@ -41,6 +42,8 @@ Outcome run_crux(const std::string& arguments) {
   std::filesystem::remove(err_path);
   return outcome;
 }
+
+Outcome run_crux(const std::string& arguments) { return run_crux_in({}, arguments); }
 
 int count_lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 

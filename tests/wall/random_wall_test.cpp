@@ -19,7 +19,7 @@ constexpr double kRowSpacing = 0.5;
 
 using testing::same_bits;
 
-// Where hold `id` sits before its random displacement (spec item 2).
+// Where hold `id` sits before its random displacement (docs/MODEL.md, choice C2).
 Eigen::Vector3d grid_position(int id) {
   const int column = (id - 1) % kVertexColumns;
   const int row = (id - 1) / kVertexColumns;
@@ -113,7 +113,7 @@ std::string printed(double value) {
 
 TEST(RandomWall, Seed1Hold1IsTheGoldenPosition) {
   // Recorded once from this implementation. It must never change: it pins that a seed
-  // gives the same wall on every machine, compiler and standard library (spec item 7),
+  // gives the same wall on every machine, compiler and standard library (docs/MODEL.md, choice C7),
   // so results computed on one machine replay on another. If it fails, the generator,
   // the draw order or the normal distribution changed; fix that, do not update this.
   const Wall wall = generate_random_wall(1);
