@@ -220,7 +220,7 @@ int fig3_step(int iterations) { return std::max(1, (iterations + 399) / 400); }
 
 // --- Page layout -----------------------------------------------------------------------
 
-constexpr double kMargin = 16;
+constexpr double kFigureMargin = 16;
 constexpr const char* kTitleColour = "#111111";
 constexpr const char* kSubtitleColour = "#555555";
 
@@ -261,9 +261,9 @@ struct Header {
     return widest;
   }
   void draw(std::string& svg) const {
-    draw_text(svg, kMargin, kMargin + 14, title, {.size = kPlotTitleFontSize, .colour = kTitleColour, .bold = true});
+    draw_text(svg, kFigureMargin, kFigureMargin + 14, title, {.size = kPlotTitleFontSize, .colour = kTitleColour, .bold = true});
     for (std::size_t i = 0; i < subtitles.size(); ++i) {
-      draw_text(svg, kMargin, kMargin + 34 + 16 * static_cast<double>(i), subtitles[i],
+      draw_text(svg, kFigureMargin, kFigureMargin + 34 + 16 * static_cast<double>(i), subtitles[i],
                 {.size = kPlotSubtitleFontSize, .colour = kSubtitleColour});
     }
   }
@@ -424,7 +424,7 @@ std::string fig2b_svg(const PaperFigureData& data) {
     heading_width = std::max(heading_width, estimated_text_width(limb_title(static_cast<Limb>(l)), kPlotLabelFontSize));
   }
   const double slot = std::max(map_width, heading_width) + 32;
-  const double maps_left = kMargin + 56;  // room for the row numbers and the row title
+  const double maps_left = kFigureMargin + 56;  // room for the row numbers and the row title
   const auto map_left = [&](int limb) { return maps_left + slot * limb + (slot - 32 - map_width) / 2; };
 
   DivergingScale colours{0, 0};
@@ -443,7 +443,7 @@ std::string fig2b_svg(const PaperFigureData& data) {
 
   std::string svg;
   header.draw(svg);
-  double y = kMargin + header.height();
+  double y = kFigureMargin + header.height();
   for (int l = 0; l < kLimbCount; ++l) {
     draw_text(svg, map_left(l) + map_width / 2, y + 12, limb_title(static_cast<Limb>(l)),
               {.anchor = "middle", .bold = true});
@@ -493,7 +493,7 @@ std::string fig2b_svg(const PaperFigureData& data) {
   }
   const double maps_right = maps_left + slot * kLimbCount - 32;
   draw_text(svg, (maps_left + maps_right) / 2, y + 22, "grid column (0 = the climber's right)", {.anchor = "middle"});
-  draw_text(svg, kMargin + 12, (rows_top + y - 14) / 2, "grid row (0 = bottom)", {.anchor = "middle", .rotation = -90});
+  draw_text(svg, kFigureMargin + 12, (rows_top + y - 14) / 2, "grid row (0 = bottom)", {.anchor = "middle", .rotation = -90});
   y += 42;
 
   const double bar_width = std::min(360.0, maps_right - maps_left);
@@ -503,8 +503,8 @@ std::string fig2b_svg(const PaperFigureData& data) {
   const double legend_left = maps_left + bar_width + 32;
   draw_legend(svg, legend_left, y - 3, legend);
 
-  const double width = std::max({maps_right, legend_left + legend_width(legend), kMargin + header.width()}) + kMargin;
-  return svg_document(width, y + kColourBarRoom + kMargin, header.title, svg);
+  const double width = std::max({maps_right, legend_left + legend_width(legend), kFigureMargin + header.width()}) + kFigureMargin;
+  return svg_document(width, y + kColourBarRoom + kFigureMargin, header.title, svg);
 }
 
 // Paper, Fig. 3: how many actions each selection regime has taken by each iteration, one
@@ -522,8 +522,8 @@ std::string fig3_svg(const PaperFigureData& data) {
 
   std::string svg;
   header.draw(svg);
-  const double top = kMargin + header.height() + 22;  // room for the panel titles
-  double left = kMargin + y_axis_room(y);
+  const double top = kFigureMargin + header.height() + 22;  // room for the panel titles
+  double left = kFigureMargin + y_axis_room(y);
   bool any_band = false;
   for (const PaperConditionData& c : data.conditions) {
     // Only the first panel carries the y axis title; all panels share the axis.
@@ -550,8 +550,8 @@ std::string fig3_svg(const PaperFigureData& data) {
   }
   const double legend_left = left - y_axis_room(y_untitled) - kPanelGap + 24;
   draw_legend(svg, legend_left, top, legend);
-  const double width = std::max(legend_left + legend_width(legend), kMargin + header.width()) + kMargin;
-  return svg_document(width, top + kPanelHeight + kXAxisRoom + kMargin, header.title, svg);
+  const double width = std::max(legend_left + legend_width(legend), kFigureMargin + header.width()) + kFigureMargin;
+  return svg_document(width, top + kPanelHeight + kXAxisRoom + kFigureMargin, header.title, svg);
 }
 
 // Paper, Fig. 4: episode length against episode, on a log scale, with the walls' shortest
@@ -597,7 +597,7 @@ std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
   }
   const Axis x = linear_axis(0, episodes, "episode (from 1)");
   const Axis y = log10_axis(low, std::max(high, low), "episode length (actions, log scale)");
-  const Panel panel{kMargin + y_axis_room(y), kMargin + header.height() + 6, 640, 360, x, y};
+  const Panel panel{kFigureMargin + y_axis_room(y), kFigureMargin + header.height() + 6, 640, 360, x, y};
 
   std::string svg;
   header.draw(svg);
@@ -641,8 +641,8 @@ std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
   }
   const double legend_left = panel.left + panel.width + 20;
   draw_legend(svg, legend_left, panel.top, legend);
-  const double width = std::max(legend_left + legend_width(legend), kMargin + header.width()) + kMargin;
-  return svg_document(width, panel.top + panel.height + kXAxisRoom + kMargin, header.title, svg);
+  const double width = std::max(legend_left + legend_width(legend), kFigureMargin + header.width()) + kFigureMargin;
+  return svg_document(width, panel.top + panel.height + kXAxisRoom + kFigureMargin, header.title, svg);
 }
 
 // Not in the paper: the transfer metrics as a forest plot, each difference divided by
@@ -702,10 +702,10 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
     note_width = std::max(note_width, estimated_text_width(note, kPlotTickFontSize));
   }
   const Axis x = linear_axis(low, high, "transfer minus control (% of |control's mean|)", 6);
-  const double plot_left = kMargin + label_width + 20;
+  const double plot_left = kFigureMargin + label_width + 20;
   const double plot_height = kRowHeight * static_cast<double>(std::max<std::size_t>(rows.size(), 1));
   const Panel panel{
-      plot_left, kMargin + header.height() + 6,
+      plot_left, kFigureMargin + header.height() + 6,
       380,       plot_height,
       x,         Axis{AxisScale::Linear, 0, std::max<double>(1, static_cast<double>(rows.size())), {}, {}, ""}};
 
@@ -714,7 +714,7 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
   const double right_edge = panel.left + panel.width + 16 + std::max(note_width, 120.0);
   for (std::size_t i = 0; i < rows.size(); i += 2) {  // every other row shaded, to guide the eye
     svg += fmt::format("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"#f4f4f4\"/>\n",
-                       kMargin, panel.top + kRowHeight * static_cast<double>(i), right_edge - kMargin, kRowHeight);
+                       kFigureMargin, panel.top + kRowHeight * static_cast<double>(i), right_edge - kFigureMargin, kRowHeight);
   }
   draw_axes(svg, panel);
   draw_reference_line(svg, panel, Direction::Vertical, 0, {"#444444", 1.2, "5 4"});
@@ -727,9 +727,9 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
     const TransferMetricData& m = *row.metric;
     const double centre = static_cast<double>(rows.size()) - 0.5 - static_cast<double>(i);
     const double row_top = panel.top + kRowHeight * static_cast<double>(i);
-    draw_text(svg, kMargin + 4, row_top + 19,
+    draw_text(svg, kFigureMargin + 4, row_top + 19,
               m.name + (m.higher_is_better ? " (higher is better)" : " (lower is better)"), {.bold = true});
-    draw_text(svg, kMargin + 4, row_top + 36, m.description, {.size = kPlotTickFontSize, .colour = kSubtitleColour});
+    draw_text(svg, kFigureMargin + 4, row_top + 36, m.description, {.size = kPlotTickFontSize, .colour = kSubtitleColour});
     const double text_left = panel.left + panel.width + 16;
     draw_text(svg, text_left, row_top + 19, notes[i], {.size = kPlotTickFontSize});
     const std::string p = m.p_value < 0.001 ? "p < 0.001" : fmt::format("p = {:.3f}", m.p_value);
@@ -750,8 +750,8 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
                                         {LegendMark::Line, "#444444", "5 4", "no difference"}};
   const double legend_top = panel.top + panel.height + kXAxisRoom + 6;
   draw_legend(svg, panel.left, legend_top, legend);
-  const double width = std::max({right_edge, panel.left + legend_width(legend), kMargin + header.width()}) + kMargin;
-  return svg_document(width, legend_top + legend_height(legend) + kMargin, header.title, svg);
+  const double width = std::max({right_edge, panel.left + legend_width(legend), kFigureMargin + header.width()}) + kFigureMargin;
+  return svg_document(width, legend_top + legend_height(legend) + kFigureMargin, header.title, svg);
 }
 
 std::vector<std::pair<std::string, std::string>> paper_figures(const PaperFigureData& data) {
