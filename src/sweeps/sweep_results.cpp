@@ -8,7 +8,9 @@
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
 #include "experiments/experiment_analysis.hpp"
+#include "experiments/iterations_file.hpp"
 #include "experiments/statistics.hpp"
+#include "experiments/summary_file.hpp"
 #include "reports/run_folder.hpp"
 #include "reports/summary.hpp"
 #include "reports/sweep_report.hpp"
@@ -24,7 +26,7 @@ namespace {
 // iterations.csv) and episode lengths; the agent-space columns are not in the folder.
 RunResult read_run(const fs::path& directory) {
   RunResult run;
-  for (const RunStep& step : read_run_steps(directory)) {
+  for (const RunStep& step : read_iterations_file(directory / "iterations.csv")) {
     IterationRecord record;
     record.episode = step.episode;
     record.regime = step.regime;
@@ -102,7 +104,7 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
         runs.cluster_of_run.push_back(static_cast<std::size_t>(pair));
         runs.wall_of_run.push_back(static_cast<std::size_t>(pair));
         const std::string name = condition_name(condition);
-        const nlohmann::json summary = read_summary(directory);
+        const nlohmann::json summary(read_summary(directory));
         const nlohmann::json& facts = summary.at("run_facts").at(name).at(0);
         runs.learning_seeds.push_back(facts.at("learning_seed").get<std::uint64_t>());
         const fs::path wall_folder = folder / "walls" / fmt::format("g{}", cell.wall_group) /

@@ -1,21 +1,15 @@
 #include "views/paper_figures.hpp"
 
 #include <fmt/format.h>
-#include <toml++/toml.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
 #include <string_view>
 
-#include "common/input_error.hpp"
-#include "common/input_file.hpp"
 #include "experiments/statistics.hpp"
 #include "views/plot_svg.hpp"
 #include "views/svg_text.hpp"
@@ -23,176 +17,7 @@
 namespace crux {
 namespace {
 
-using Json = nlohmann::ordered_json;  // keeps transfer_vs_control's metrics in file order
-
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Input echoed in an error stays short enough for one line.
-std::string shortened(std::string_view text) {
-  constexpr std::size_t kMax = 40;
-  return text.size() <= kMax ? std::string(text) : std::string(text.substr(0, kMax - 3)) + "...";
-}
-
-// A value of summary.json with its key path, so that every error names the key.
-struct Field {
-  const std::string& file;
-  const Json& value;
-  std::string path;
-
-  Field operator[](std::string_view key) const {
-    const std::string where = path.empty() ? std::string(key) : fmt::format("{}.{}", path, key);
-    if (!value.is_object())
-      throw InputError(file, fmt::format("{} must be an object", path.empty() ? "the file" : path));
-    const auto found = value.find(key);
-    if (found == value.end()) throw InputError(file, "missing key " + where);
-    return {file, *found, where};
-  }
-  Field operator[](std::size_t index) const { return {file, value.at(index), fmt::format("{}[{}]", path, index)}; }
-  bool contains(std::string_view key) const { return value.is_object() && value.contains(key); }
-  bool is_null() const { return value.is_null(); }
-
-  std::size_t size() const {
-    if (!value.is_array()) throw InputError(file, path + " must be an array");
-    return value.size();
-  }
-  // An array of exactly n elements.
-  void expect_size(std::size_t n) const {
-    if (size() != n) throw InputError(file, fmt::format("{} has {} values, not {}", path, value.size(), n));
-  }
-  double number() const {
-    if (!value.is_number()) throw InputError(file, path + " must be a number");
-    return value.get<double>();
-  }
-  int integer(std::int64_t min = std::numeric_limits<int>::min()) const {
-    if (!value.is_number_integer()) throw InputError(file, path + " must be an integer");
-    const auto n = value.get<std::int64_t>();
-    if (n < min || n > std::numeric_limits<int>::max()) {
-      throw InputError(file, fmt::format("{} is {}; it must be an integer of at least {}", path, n, min));
-    }
-    return static_cast<int>(n);
-  }
-  bool boolean() const {
-    if (!value.is_boolean()) throw InputError(file, path + " must be true or false");
-    return value.get<bool>();
-  }
-  std::string string() const {
-    if (!value.is_string()) throw InputError(file, path + " must be a string");
-    return value.get<std::string>();
-  }
-};
-
-GridParameters read_grid(const std::filesystem::path& path) {
-  const std::string file = path.string();
-  const std::string text = read_input_file(file, "config file");
-  toml::table table;
-  try {
-    table = toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    throw InputError(file, fmt::format("TOML syntax error at line {}, column {}: {}", e.source().begin.line,
-                                       e.source().begin.column, e.description()));
-  }
-  const auto integer = [&](std::string_view key, int min) {
-    const auto node = table["grid"][key];
-    if (!node) throw InputError(file, fmt::format("missing key grid.{}", key));
-    const auto value = node.value_exact<std::int64_t>();
-    if (!value || *value < min || *value > 1'000'000) {
-      throw InputError(file, fmt::format("grid.{} must be an integer from {} to 1000000", key, min));
-    }
-    return static_cast<int>(*value);
-  };
-  const auto length = [&](std::string_view key) {
-    const auto node = table["grid"][key];
-    if (!node) throw InputError(file, fmt::format("missing key grid.{}", key));
-    const auto value = node.value<double>();
-    if (!value || !(*value > 0) || !std::isfinite(*value)) {
-      throw InputError(file, fmt::format("grid.{} must be a positive number of metres", key));
-    }
-    return *value;
-  };
-  GridParameters grid;
-  grid.columns = integer("columns", 1);
-  grid.rows = integer("rows", 1);
-  grid.tile_width = length("tile_width");
-  grid.tile_height = length("tile_height");
-  // GridParameters counts tiles in an int, and each tile is one value per map.
-  if (static_cast<std::int64_t>(grid.columns) * grid.rows > 1'000'000) {
-    throw InputError(file, fmt::format("a grid of {} x {} tiles is larger than the 1000000 tiles this reads",
-                                       grid.columns, grid.rows));
-  }
-  for (int l = 0; l < kLimbCount; ++l) {
-    const std::string limb = limb_name(static_cast<Limb>(l));
-    grid.anchors[l] = {integer(limb + "_anchor_column", 0), integer(limb + "_anchor_row", 0)};
-    if (grid.anchors[l][0] >= grid.columns || grid.anchors[l][1] >= grid.rows) {
-      throw InputError(file, fmt::format("the {} anchor tile ({}, {}) lies outside the {} x {} grid", limb,
-                                         grid.anchors[l][0], grid.anchors[l][1], grid.columns, grid.rows));
-    }
-  }
-  return grid;
-}
-
-std::vector<Regime> read_regimes(const std::filesystem::path& path, int iterations) {
-  const std::string file = path.string();
-  const std::string text = read_input_file(file, "iterations file");
-  constexpr std::string_view kHeader = "iteration,episode,regime,hold,success,root_rise_cm,reward";
-  constexpr std::array<Regime, kRegimeCount> kRegimes{Regime::WGreedy, Regime::GGreedy, Regime::Random};
-  std::vector<Regime> regimes;
-  std::size_t at = 0;
-  for (int line = 1; at < text.size(); ++line) {
-    const std::size_t end = std::min(text.find('\n', at), text.size());
-    const std::string_view row(text.data() + at, end - at);
-    at = end + 1;
-    if (line == 1) {
-      if (row != kHeader) {
-        throw InputError(file, fmt::format("line 1: the header must be '{}', not '{}'", kHeader, shortened(row)));
-      }
-      continue;
-    }
-    std::vector<std::string_view> fields;
-    for (std::size_t start = 0;;) {
-      const std::size_t comma = row.find(',', start);
-      fields.push_back(row.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
-      if (comma == std::string_view::npos) break;
-      start = comma + 1;
-    }
-    if (fields.size() != 7) throw InputError(file, fmt::format("line {}: {} fields, not 7", line, fields.size()));
-    int iteration = 0;
-    const auto [end_of_number, error] =
-        std::from_chars(fields[0].data(), fields[0].data() + fields[0].size(), iteration);
-    if (error != std::errc() || end_of_number != fields[0].data() + fields[0].size() || iteration != line - 1) {
-      throw InputError(
-          file, fmt::format("line {}: iteration '{}' where {} was expected", line, shortened(fields[0]), line - 1));
-    }
-    const auto regime =
-        std::find_if(kRegimes.begin(), kRegimes.end(), [&](Regime r) { return fields[2] == regime_name(r); });
-    if (regime == kRegimes.end()) {
-      throw InputError(file, fmt::format("line {}: unknown regime '{}'", line, shortened(fields[2])));
-    }
-    regimes.push_back(*regime);
-  }
-  if (text.empty()) throw InputError(file, "is empty; the header line is missing");
-  if (static_cast<int>(regimes.size()) != iterations) {
-    throw InputError(file, fmt::format("has {} iterations, but summary.json says {}", regimes.size(), iterations));
-  }
-  return regimes;
-}
-
-TransferMetricData read_metric(const Field& metric, const std::string& name) {
-  TransferMetricData out;
-  out.name = name;
-  out.description = metric["description"].string();
-  out.higher_is_better = metric["higher_is_better"].boolean();
-  out.control_mean = metric["control"]["mean"].number();
-  const Field difference = metric["transfer_minus_control"];
-  out.difference = difference["mean"].number();
-  const Field interval = difference["ci95_t_over_walls"];
-  if (!interval.is_null()) {
-    interval.expect_size(2);
-    out.difference_ci95 = std::array<double, 2>{interval[0].number(), interval[1].number()};
-  }
-  out.p_value = difference["p_value"].number();
-  out.walls = difference["walls"].integer(0);
-  return out;
-}
 
 // --- Statistics over walls -------------------------------------------------------------
 
@@ -293,62 +118,6 @@ std::string limb_title(Limb limb) {
 std::string format_length(double value) { return fmt::format("{:.1f}", value); }
 
 }  // namespace
-
-PaperFigureData read_paper_figure_data(const std::filesystem::path& folder) {
-  PaperFigureData data;
-  data.grid = read_grid(folder / "config.toml");
-
-  const std::string file = (folder / "summary.json").string();
-  Json json;
-  try {
-    json = Json::parse(read_input_file(file, "summary file"));
-  } catch (const Json::parse_error& e) {
-    throw InputError(file, fmt::format("not JSON: {}", e.what()));
-  }
-  const Field summary{file, json, ""};
-  if (const std::string format = summary["format"].string(); format != "crux-summary") {
-    throw InputError(file, fmt::format("format is '{}', not 'crux-summary'", shortened(format)));
-  }
-  if (const int version = summary["version"].integer(); version != 3) {
-    throw InputError(file, fmt::format("version {} is not the version 3 this crux reads", version));
-  }
-  data.iterations = summary["iterations"].integer(0);
-  data.seeds_per_wall = summary["seeds_per_wall"].integer(1);
-
-  const Field lengths = summary["episode_lengths"];
-  for (const Condition condition : kConditions) {
-    const std::string name = condition_name(condition);
-    if (!lengths.contains(name)) continue;
-    PaperConditionData c;
-    c.condition = condition;
-    const Field run_lengths = lengths[name];
-    const Field facts = summary["run_facts"][name];
-    facts.expect_size(run_lengths.size());
-    for (std::size_t i = 0; i < run_lengths.size(); ++i) {
-      PaperRunData run;
-      run.wall_pair = facts[i]["wall_pair"].integer(0);
-      run.plan_length = facts[i]["plan_length"].integer(-1);
-      const Field episodes = run_lengths[i];
-      for (std::size_t e = 0; e < episodes.size(); ++e) run.episode_lengths.push_back(episodes[e].integer(1));
-      run.regimes = read_regimes(folder / "runs" / fmt::format("{}_{}", name, i) / "iterations.csv", data.iterations);
-      c.runs.push_back(std::move(run));
-    }
-    for (int l = 0; l < kLimbCount; ++l) {
-      const Field map = summary["qgrid_maps"][name][limb_name(static_cast<Limb>(l))];
-      map.expect_size(static_cast<std::size_t>(data.grid.tile_count()));
-      for (std::size_t t = 0; t < map.size(); ++t) c.q_grid_maps[l].push_back(map[t].number());
-    }
-    data.conditions.push_back(std::move(c));
-  }
-  if (data.conditions.empty()) throw InputError(file, "episode_lengths holds none of training, transfer, control");
-
-  const Field metrics = summary["transfer_vs_control"];
-  if (!metrics.value.is_object()) throw InputError(file, "transfer_vs_control must be an object");
-  for (const auto& [name, value] : metrics.value.items()) {
-    data.transfer_metrics.push_back(read_metric(metrics[name], name));
-  }
-  return data;
-}
 
 std::array<WallBandSeries, kRegimeCount> regime_series(const PaperConditionData& condition, int iterations, int step) {
   step = std::max(1, step);

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "common/input_error.hpp"
+#include "experiments/run_config_file.hpp"
 #include "support/test_models.hpp"
 #include "support/trained_run.hpp"
 
@@ -77,7 +78,7 @@ TEST(RunFolder, KeepsEveryIterationAndReadsItsOwnConfig) {
   ASSERT_EQ(folder.steps.size(), 8000u);
   for (std::size_t i = 0; i < folder.steps.size(); ++i) EXPECT_EQ(folder.steps[i].iteration, static_cast<int>(i) + 1);
   EXPECT_EQ(folder.steps.back().episode, folder.last.episode + 1) << "the last episode is unfinished";
-  const ExperimentConfig config = read_run_config(folder);
+  const ExperimentConfig config = read_run_config(folder.config_file);
   EXPECT_EQ(config.settings.seed, 5u);
   EXPECT_EQ(config.wall_seed, 3u);
   EXPECT_EQ(config.settings.learning.iterations, 8000);
@@ -91,7 +92,7 @@ TEST(RunFolder, ABadConfigIsNamedWithItsLineAndKey) {
   });
   const RunFolder folder = locate_run_folder(copy);
   try {
-    read_run_config(folder);
+    read_run_config(folder.config_file);
     FAIL() << "accepted gamma = 2";
   } catch (const InputError& e) {
     EXPECT_NE(e.source().find("config.toml: line"), std::string::npos) << e.what();
