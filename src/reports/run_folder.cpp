@@ -1,9 +1,12 @@
 #include "reports/run_folder.hpp"
 
+#include <map>
 #include <regex>
+#include <set>
 #include <string_view>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "common/csv_rows.hpp"
@@ -21,6 +24,32 @@ namespace fs = std::filesystem;
 const std::regex& run_name_pattern() {
   static const std::regex pattern("(training|transfer|control)_([0-9]{1,9})");
   return pattern;
+}
+
+// The runs of a crux paper folder, each condition's consecutive runs as one range:
+// "training_0..training_3, transfer_0..transfer_3, control_0, control_2".
+std::string paper_run_names(const fs::path& folder) {
+  std::map<std::string, std::set<int>> runs;  // condition -> run indices
+  std::error_code error;
+  for (fs::directory_iterator entry(folder / "runs", error), end; !error && entry != end; entry.increment(error)) {
+    std::smatch match;
+    const std::string name = entry->path().filename().string();
+    if (std::regex_match(name, match, run_name_pattern()) && entry->is_directory(error)) {
+      runs[match[1]].insert(std::stoi(match[2]));
+    }
+  }
+  std::vector<std::string> ranges;
+  for (const char* condition : {"training", "transfer", "control"}) {
+    const std::set<int>& indices = runs[condition];
+    for (auto first = indices.begin(); first != indices.end();) {
+      auto last = first;
+      while (std::next(last) != indices.end() && *std::next(last) == *last + 1) ++last;
+      ranges.push_back(last == first ? fmt::format("{}_{}", condition, *first)
+                                     : fmt::format("{0}_{1}..{0}_{2}", condition, *first, *last));
+      first = std::next(last);
+    }
+  }
+  return ranges.empty() ? std::string("no runs") : fmt::format("{}", fmt::join(ranges, ", "));
 }
 
 }  // namespace
@@ -92,7 +121,8 @@ ReportedRun locate_reported_run(const fs::path& folder, const std::string& run_n
   }
   out.run_directory = folder / "runs" / run_name;
   if (!fs::is_directory(out.run_directory, error)) {
-    throw InputError(flag, fmt::format("'{}' is not a run of {}", run_name, folder.string()));
+    throw InputError(flag, fmt::format("'{}' is not a run of {}; it has {}", run_name, folder.string(),
+                                       paper_run_names(folder)));
   }
   return out;
 }

@@ -45,7 +45,8 @@ struct RunFolder {
 RunFolder locate_run_folder(const std::filesystem::path& directory);
 
 // A report or view of `folder`: the folder itself for a run folder, or runs/`run_name`
-// of a crux paper folder (`experiment` is set). InputError naming the folder or `flag`.
+// of a crux paper folder (`experiment` is set). InputError naming the folder or `flag`;
+// for a run the paper folder does not hold, the error lists the runs it holds.
 struct ReportedRun {
   bool experiment = false;
   std::filesystem::path run_directory;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "common/input_error.hpp"
@@ -120,6 +121,35 @@ TEST(RunFolder, AReportedRunIsTheFolderOrARunOfAPaperFolder) {
     }
   }
   EXPECT_THROW(locate_reported_run(paper / "nowhere", "control_2", "--run"), InputError);
+}
+
+// A run the paper folder does not hold is refused with the runs it holds, each
+// condition's consecutive runs as one range.
+TEST(RunFolder, AMissingRunOfAPaperFolderListsTheRunsItHas) {
+  const fs::path paper = testing::temporary_path("reported_runs_" + std::to_string(::getpid()));
+  for (const char* run : {"training_0", "training_1", "transfer_0", "transfer_1", "control_0", "control_1",
+                          "control_3", "training_x"}) {
+    fs::create_directories(paper / "runs" / run);
+  }
+  std::ofstream(paper / "runs" / "transfer_2") << "a file, not a run";
+  std::ofstream(paper / "summary.json") << "{}";
+  try {
+    locate_reported_run(paper, "transfer_4", "--run");
+    FAIL() << "accepted transfer_4";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "--run");
+    EXPECT_EQ(e.problem(), fmt::format("'transfer_4' is not a run of {}; it has training_0..training_1, "
+                                       "transfer_0..transfer_1, control_0..control_1, control_3",
+                                       paper.string()));
+  }
+  fs::remove_all(paper / "runs");
+  fs::create_directories(paper / "runs");
+  try {
+    locate_reported_run(paper, "training_0", "--run");
+    FAIL() << "accepted a run of a folder without runs";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.problem(), fmt::format("'training_0' is not a run of {}; it has no runs", paper.string()));
+  }
 }
 
 TEST(RunFolder, AClimbIsDescribedByItsKind) {
