@@ -49,7 +49,8 @@ std::vector<std::string_view> csv_rows(std::string_view text, const std::string&
     start = end + 1;
   }
   if (lines.front() != header) {
-    throw InputError(file, fmt::format("line 1: the header must be '{}', not '{}'", header, quoted_cell(lines.front())));
+    throw InputError(file,
+                     fmt::format("line 1: the header must be '{}', not '{}'", header, quoted_cell(lines.front())));
   }
   lines.erase(lines.begin());
   return lines;
@@ -70,7 +71,9 @@ int csv_integer(std::string_view cell, const std::string& file, std::size_t line
 
 double csv_number(std::string_view cell, const std::string& file, std::size_t line) {
   const double value = csv_value<double>(cell, file, line, "a number");
-  if (!std::isfinite(value)) throw InputError(file, fmt::format("line {}: '{}' is not finite", line, quoted_cell(cell)));
+  if (!std::isfinite(value)) {
+    throw InputError(file, fmt::format("line {}: '{}' is not finite", line, quoted_cell(cell)));
+  }
   return value;
 }
 

@@ -63,7 +63,9 @@ int JsonField::integer(std::int64_t min, std::int64_t max) const {
 }
 
 bool JsonField::boolean() const {
-  if (!value_.is_boolean()) fail(fmt::format("{} must be true or false, got {}", path_, json_value_description(value_)));
+  if (!value_.is_boolean()) {
+    fail(fmt::format("{} must be true or false, got {}", path_, json_value_description(value_)));
+  }
   return value_.get<bool>();
 }
 

@@ -49,7 +49,8 @@ class JsonField {
   // InputError(file, "<path> must be <kind>, got <what>") for a value of another type or,
   // for integers, outside [min, max].
   double number() const;
-  int integer(std::int64_t min = std::numeric_limits<int>::min(), std::int64_t max = std::numeric_limits<int>::max()) const;
+  int integer(std::int64_t min = std::numeric_limits<int>::min(),
+              std::int64_t max = std::numeric_limits<int>::max()) const;
   bool boolean() const;
   std::string string() const;
 

@@ -31,7 +31,9 @@ std::vector<RunStep> read_iterations_file(const std::filesystem::path& path) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const std::size_t line = csv_line_number(i);
     const std::vector<std::string_view> cells = csv_cells(rows[i], i, 7, file);
-    if (cells[4] != "0" && cells[4] != "1") throw InputError(file, fmt::format("line {}: success must be 0 or 1", line));
+    if (cells[4] != "0" && cells[4] != "1") {
+      throw InputError(file, fmt::format("line {}: success must be 0 or 1", line));
+    }
     const RunStep step{csv_integer(cells[0], file, line), csv_integer(cells[1], file, line),
                        iteration_regime(cells[2], file, line),  csv_integer(cells[3], file, line),
                        cells[4] == "1",                         csv_number(cells[5], file, line),

@@ -56,14 +56,20 @@ TEST(IterationsFile, RefusesABadRowNamingItsLine) {
   const std::string one = kIterationsCsvHeader + "1,0,random,3,1,0.5,-1\n";
   EXPECT_EQ(iterations_problem("iterations_fields.csv", one + "2,0,random\n"), "line 3: 3 fields, not 7");
   EXPECT_EQ(iterations_problem("iterations_blank.csv", one + "\n2,0,random,3,1,0.5,-1\n"), "line 3: 1 fields, not 7");
-  EXPECT_EQ(iterations_problem("iterations_order.csv", one + "7,0,random,3,1,0.5,-1\n"), "line 3: iteration 7 where 2 was due");
-  EXPECT_EQ(iterations_problem("iterations_regime.csv", one + "2,0,greedy,3,1,0.5,-1\n"), "line 3: unknown regime 'greedy'");
-  EXPECT_EQ(iterations_problem("iterations_success.csv", one + "2,0,random,3,yes,0.5,-1\n"), "line 3: success must be 0 or 1");
-  EXPECT_EQ(iterations_problem("iterations_jump.csv", one + "2,2,random,3,1,0.5,-1\n"), "line 3: episode 2 after episode 0");
+  EXPECT_EQ(iterations_problem("iterations_order.csv", one + "7,0,random,3,1,0.5,-1\n"),
+            "line 3: iteration 7 where 2 was due");
+  EXPECT_EQ(iterations_problem("iterations_regime.csv", one + "2,0,greedy,3,1,0.5,-1\n"),
+            "line 3: unknown regime 'greedy'");
+  EXPECT_EQ(iterations_problem("iterations_success.csv", one + "2,0,random,3,yes,0.5,-1\n"),
+            "line 3: success must be 0 or 1");
+  EXPECT_EQ(iterations_problem("iterations_jump.csv", one + "2,2,random,3,1,0.5,-1\n"),
+            "line 3: episode 2 after episode 0");
   EXPECT_EQ(iterations_problem("iterations_negative.csv", kIterationsCsvHeader + "1,-1,random,3,1,0.5,-1\n"),
             "line 2: episodes count from 0");
-  EXPECT_EQ(iterations_problem("iterations_hold.csv", one + "2,0,random,h3,1,0.5,-1\n"), "line 3: 'h3' is not an integer");
-  EXPECT_EQ(iterations_problem("iterations_reward.csv", one + "2,0,random,3,1,0.5,inf\n"), "line 3: 'inf' is not finite");
+  EXPECT_EQ(iterations_problem("iterations_hold.csv", one + "2,0,random,h3,1,0.5,-1\n"),
+            "line 3: 'h3' is not an integer");
+  EXPECT_EQ(iterations_problem("iterations_reward.csv", one + "2,0,random,3,1,0.5,inf\n"),
+            "line 3: 'inf' is not finite");
   EXPECT_EQ(iterations_problem("iterations_rise.csv", one + "2,0,random,3,1,,-1\n"), "line 3: '' is not a number");
 }
 
