@@ -62,6 +62,14 @@ int JsonField::integer(std::int64_t min, std::int64_t max) const {
   return static_cast<int>(value_.get<std::int64_t>());
 }
 
+std::uint64_t JsonField::unsigned_integer() const {
+  if (!value_.is_number_unsigned() && !(value_.is_number_integer() && value_.get<std::int64_t>() >= 0)) {
+    fail(fmt::format("{} must be an integer from 0 to {}, got {}", path_, std::numeric_limits<std::uint64_t>::max(),
+                     json_value_description(value_)));
+  }
+  return value_.get<std::uint64_t>();
+}
+
 bool JsonField::boolean() const {
   if (!value_.is_boolean()) {
     fail(fmt::format("{} must be true or false, got {}", path_, json_value_description(value_)));

@@ -51,6 +51,7 @@ class JsonField {
   double number() const;
   int integer(std::int64_t min = std::numeric_limits<int>::min(),
               std::int64_t max = std::numeric_limits<int>::max()) const;
+  std::uint64_t unsigned_integer() const;  // from 0 to 2^64 - 1: seeds
   bool boolean() const;
   std::string string() const;
 

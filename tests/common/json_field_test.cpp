@@ -34,6 +34,7 @@ TEST(JsonField, ReadsValuesAndNamesTheirPath) {
   EXPECT_EQ(root["name"].string(), "wall");
   EXPECT_EQ(root["count"].integer(), 3);
   EXPECT_EQ(root["count"].integer(3, 3), 3);
+  EXPECT_EQ(root["big"].unsigned_integer(), 3000000000u);
   EXPECT_DOUBLE_EQ(root["ratio"].number(), 0.5);
   EXPECT_DOUBLE_EQ(root["count"].number(), 3.0) << "an integer is a number";
   EXPECT_TRUE(root["on"].boolean());
@@ -75,6 +76,10 @@ TEST(JsonField, AValueOutOfRangeIsRefused) {
   EXPECT_EQ(json_problem([&] { root["big"].integer(); }),
             "big must be an integer from -2147483648 to 2147483647, got 3000000000");
   EXPECT_EQ(json_problem([&] { root["runs"][2]; }), "runs has 2 values; there is no [2]");
+  EXPECT_EQ(json_problem([&] { root["ratio"].unsigned_integer(); }),
+            "ratio must be an integer from 0 to 18446744073709551615, got 0.5");
+  EXPECT_EQ(json_problem([&] { JsonField(kJsonFile, OrderedJson::parse("{\"seed\": -1}"))["seed"].unsigned_integer(); }),
+            "seed must be an integer from 0 to 18446744073709551615, got -1");
   EXPECT_EQ(json_problem([&] { root["runs"][0]["lengths"].expect_size(3); }), "runs[0].lengths has 2 values, not 3");
 }
 
