@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
 #include "common/atomic_file.hpp"
+#include "experiments/run_config_file.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/report_figures.hpp"
 #include "reports/report_page.hpp"
@@ -34,7 +35,7 @@ struct ReportCommand {
     ExperimentConfig config = binding.resolve();
     const ReportedRun reported = locate_reported_run(folder, run_name, "--run");
     RunFolder run = locate_run_folder(reported.run_directory);
-    const ExperimentConfig recorded = read_run_config(run);
+    const ExperimentConfig recorded = read_run_config(run.config_file);
     if (config.urdf.empty()) config.urdf = run.urdf;
     const BodyModel model = load_configured_body(config);
     read_run_climb(run, model);

@@ -11,6 +11,7 @@
 #include "climbing/configuration_reacher.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
+#include "experiments/run_config_file.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/episode_replay.hpp"
 #include "reports/run_folder.hpp"
@@ -61,7 +62,7 @@ struct ViewCommand {
 
   void draw_run(ExperimentConfig& config) {
     RunFolder folder = locate_run_folder(run);
-    const ExperimentConfig recorded = read_run_config(folder);
+    const ExperimentConfig recorded = read_run_config(folder.config_file);
     if (config.urdf.empty()) config.urdf = folder.urdf;
     const BodyModel model = load_configured_body(config);
     read_run_climb(folder, model);

@@ -7,6 +7,7 @@
 #include "body/body_data.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
+#include "experiments/summary_file.hpp"
 #include "reports/run_folder.hpp"
 #include "views/body_svg.hpp"
 #include "views/paper_figures.hpp"
@@ -42,7 +43,7 @@ const std::map<std::string, FigureText>& figure_texts() {
 }  // namespace
 
 std::vector<std::filesystem::path> write_paper_figure_files(const std::filesystem::path& experiment_folder) {
-  if (read_summary(experiment_folder).value("kind", "") != "experiment") {
+  if (summary_kind(read_summary(experiment_folder), (experiment_folder / "summary.json").string()) != "experiment") {
     throw InputError(experiment_folder.string(), "not a crux paper folder (its summary.json is of kind \"run\")");
   }
   // Drawn before anything is written, so that bad input leaves the folder as it was.

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "experiments/experiment_config.hpp"
 #include "reports/html_report.hpp"
 #include "reports/run_folder.hpp"
 

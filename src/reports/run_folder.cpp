@@ -1,14 +1,18 @@
 #include "reports/run_folder.hpp"
 
-#include <charconv>
+#include <map>
 #include <regex>
+#include <set>
 #include <string_view>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
+#include "common/csv_rows.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
+#include "experiments/summary_file.hpp"
 #include "wall/wall_file.hpp"
 
 namespace crux {
@@ -16,67 +20,39 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string_view> split(std::string_view line, char separator) {
-  std::vector<std::string_view> cells;
-  for (std::size_t start = 0;;) {
-    const std::size_t end = line.find(separator, start);
-    cells.push_back(line.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
-    if (end == std::string_view::npos) return cells;
-    start = end + 1;
-  }
-}
-
-// The lines of a CSV file after its header, which must be `header`.
-std::vector<std::string_view> csv_rows(const std::string& text, const fs::path& file, const std::string& header) {
-  std::vector<std::string_view> lines = split(text, '\n');
-  if (!lines.empty() && lines.back().empty()) lines.pop_back();
-  if (lines.empty() || lines.front() != header) {
-    throw InputError(file.string(), fmt::format("the first line must be the header '{}'", header.substr(0, 200)));
-  }
-  lines.erase(lines.begin());
-  return lines;
-}
-
-template <typename T>
-T number(std::string_view cell, const fs::path& file, std::size_t line) {
-  T value{};
-  const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
-  if (error != std::errc() || end != cell.data() + cell.size() || cell.empty()) {
-    throw InputError(file.string(), fmt::format("line {}: '{}' is not a number", line, cell.substr(0, 40)));
-  }
-  if constexpr (std::is_floating_point_v<T>) {
-    if (!std::isfinite(value)) throw InputError(file.string(), fmt::format("line {}: '{}' is not finite", line, cell));
-  }
-  return value;
-}
-
 // runs/<condition>_<i> of a crux paper folder.
 const std::regex& run_name_pattern() {
   static const std::regex pattern("(training|transfer|control)_([0-9]{1,9})");
   return pattern;
 }
 
-Regime regime_of(std::string_view name, const fs::path& file, std::size_t line) {
-  for (int r = 0; r < kRegimeCount; ++r) {
-    if (name == regime_name(static_cast<Regime>(r))) return static_cast<Regime>(r);
+// The runs of a crux paper folder, each condition's consecutive runs as one range:
+// "training_0..training_3, transfer_0..transfer_3, control_0, control_2".
+std::string paper_run_names(const fs::path& folder) {
+  std::map<std::string, std::set<int>> runs;  // condition -> run indices
+  std::error_code error;
+  for (fs::directory_iterator entry(folder / "runs", error), end; !error && entry != end; entry.increment(error)) {
+    std::smatch match;
+    const std::string name = entry->path().filename().string();
+    if (std::regex_match(name, match, run_name_pattern()) && entry->is_directory(error)) {
+      runs[match[1]].insert(std::stoi(match[2]));
+    }
   }
-  throw InputError(file.string(), fmt::format("line {}: unknown regime '{}'", line, name.substr(0, 40)));
+  std::vector<std::string> ranges;
+  for (const char* condition : {"training", "transfer", "control"}) {
+    const std::set<int>& indices = runs[condition];
+    for (auto first = indices.begin(); first != indices.end();) {
+      auto last = first;
+      while (std::next(last) != indices.end() && *std::next(last) == *last + 1) ++last;
+      ranges.push_back(last == first ? fmt::format("{}_{}", condition, *first)
+                                     : fmt::format("{0}_{1}..{0}_{2}", condition, *first, *last));
+      first = std::next(last);
+    }
+  }
+  return ranges.empty() ? std::string("no runs") : fmt::format("{}", fmt::join(ranges, ", "));
 }
 
 }  // namespace
-
-nlohmann::json read_summary(const fs::path& folder) {
-  const fs::path file = folder / "summary.json";
-  const std::string text = read_input_file(file.string(), "summary file");
-  nlohmann::json summary = nlohmann::json::parse(text, nullptr, false);
-  if (summary.is_discarded() || !summary.is_object() || summary.value("format", "") != "crux-summary") {
-    throw InputError(file.string(), "not a crux summary (format \"crux-summary\")");
-  }
-  if (summary.value("version", 0) != 3) {
-    throw InputError(file.string(), "summary version 3 is the one this crux reads; write the folder again");
-  }
-  return summary;
-}
 
 std::string climb_description(const RecordedClimb& climb) {
   return climb.kind == "greedy" ? std::string("the greedy policy's climb after learning")
@@ -90,6 +66,7 @@ const RecordedClimb& chosen_climb(const RunFolder& folder, std::string_view kind
 
 RunFolder locate_run_folder(const fs::path& directory) {
   RunFolder folder;
+  OrderedJson summary;
   folder.directory = fs::absolute(directory).lexically_normal();
   if (!folder.directory.has_filename()) folder.directory = folder.directory.parent_path();
   std::error_code error;
@@ -109,42 +86,17 @@ RunFolder locate_run_folder(const fs::path& directory) {
     }
     folder.summary_file = experiment / "summary.json";
     folder.config_file = experiment / "config.toml";
-    folder.summary = read_summary(experiment);
-    const auto seeds = folder.summary.find("seeds_per_wall");
-    if (seeds == folder.summary.end() || !seeds->is_number_unsigned() || seeds->get<std::uint64_t>() < 1 ||
-        seeds->get<std::uint64_t>() > 1'000'000) {
-      throw InputError(folder.summary_file.string(), "seeds_per_wall must be an integer from 1 to 1000000");
-    }
+    summary = read_summary(experiment);
     const int run = std::stoi(match[2]);
     folder.wall_file = experiment / "walls" /
                        fmt::format("{}_{}.json", match[1] == "training" ? "training" : "transfer",
-                                   run / seeds->get<int>());
+                                   run / summary_seeds_per_wall(summary, folder.summary_file.string()));
   }
-  if (folder.summary.is_null()) folder.summary = read_summary(folder.directory);
-  const nlohmann::json& summary = folder.summary;
-  if (const auto provenance = summary.find("provenance"); provenance != summary.end() && provenance->is_object()) {
-    if (const auto urdf = provenance->find("urdf"); urdf != provenance->end() && urdf->is_string()) {
-      folder.urdf = urdf->get<std::string>();
-    }
-  }
+  if (summary.is_null()) summary = read_summary(folder.directory);
+  folder.urdf = summary_urdf(summary);
+  folder.summary = nlohmann::json(summary);
   folder.wall = load_wall(folder.wall_file.string());
   return folder;
-}
-
-ExperimentConfig read_run_config(const RunFolder& folder) {
-  static const ParameterSet kEveryKey{{"experiment", "learning", "reward", "ik", "compare", "filter", "grid", "wall"},
-                                      {}};
-  ExperimentConfig config;
-  const std::string file = folder.config_file.string();
-  const ConfigLines lines = apply_config_file(file, config, kEveryKey, "the run's config");
-  try {
-    finalize_config(config);
-  } catch (const InputError& e) {
-    const auto line = lines.find(e.source());
-    throw InputError(line == lines.end() ? file : fmt::format("{}: line {}: {}", file, line->second, e.source()),
-                     e.problem());
-  }
-  return config;
 }
 
 ReportedRun locate_reported_run(const fs::path& folder, const std::string& run_name, const std::string& flag) {
@@ -169,7 +121,8 @@ ReportedRun locate_reported_run(const fs::path& folder, const std::string& run_n
   }
   out.run_directory = folder / "runs" / run_name;
   if (!fs::is_directory(out.run_directory, error)) {
-    throw InputError(flag, fmt::format("'{}' is not a run of {}", run_name, folder.string()));
+    throw InputError(flag, fmt::format("'{}' is not a run of {}; it has {}", run_name, folder.string(),
+                                       paper_run_names(folder)));
   }
   return out;
 }
@@ -183,16 +136,13 @@ std::vector<Posture> read_postures(const fs::path& file, const BodyModel& model,
   std::string header = "step";
   for (const std::string& column : columns) header += "," + column;
   for (const BodyJoint& joint : model.joints) header += "," + joint.name;
-  const std::vector<std::string_view> rows = csv_rows(text, file, header);
+  const std::vector<std::string_view> rows = csv_rows(text, file.string(), header);
   std::vector<Posture> postures;
   const std::size_t first = 1 + columns.size();
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    std::vector<std::string_view> row = split(rows[i], ',');
-    if (row.size() != first + kConfigurationDof) {
-      throw InputError(file.string(), fmt::format("line {}: expected {} columns", i + 2, first + kConfigurationDof));
-    }
+    std::vector<std::string_view> row = csv_cells(rows[i], i, first + kConfigurationDof, file.string());
     Posture posture;
-    for (int k = 0; k < kConfigurationDof; ++k) posture[k] = number<double>(row[first + k], file, i + 2);
+    for (int k = 0; k < kConfigurationDof; ++k) posture[k] = csv_number(row[first + k], file.string(), i + 2);
     // A climb stays near its wall and within the joints' limits; anything else is not a
     // posture crux wrote (and would give the drawings absurd extents).
     constexpr double kRootLimit = 1000, kAngleSlack = 1e-6;
@@ -216,52 +166,17 @@ std::vector<Posture> read_postures(const fs::path& file, const BodyModel& model,
 std::vector<int> read_episode_lengths(const fs::path& directory) {
   const fs::path episodes_file = directory / "episodes.csv";
   const std::string episodes_text = read_input_file(episodes_file.string(), "episodes file");
-  const std::vector<std::string_view> rows = csv_rows(episodes_text, episodes_file, "episode,length");
+  const std::vector<std::string_view> rows = csv_rows(episodes_text, episodes_file.string(), "episode,length");
   std::vector<int> lengths;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    const std::vector<std::string_view> cells = split(rows[i], ',');
-    if (cells.size() != 2) throw InputError(episodes_file.string(), fmt::format("line {}: expected 2 columns", i + 2));
-    if (number<int>(cells[0], episodes_file, i + 2) != static_cast<int>(i)) {
+    const std::vector<std::string_view> cells = csv_cells(rows[i], i, 2, episodes_file.string());
+    if (csv_integer(cells[0], episodes_file.string(), i + 2) != static_cast<int>(i)) {
       throw InputError(episodes_file.string(), fmt::format("line {}: episode {} was due", i + 2, i));
     }
-    lengths.push_back(number<int>(cells[1], episodes_file, i + 2));
+    lengths.push_back(csv_integer(cells[1], episodes_file.string(), i + 2));
     if (lengths.back() <= 0) throw InputError(episodes_file.string(), fmt::format("line {}: length must be positive", i + 2));
   }
   return lengths;
-}
-
-std::vector<RunStep> read_run_steps(const fs::path& directory) {
-  const fs::path iterations_file = directory / "iterations.csv";
-  const std::string iterations_text = read_input_file(iterations_file.string(), "iterations file");
-  const std::vector<std::string_view> rows =
-      csv_rows(iterations_text, iterations_file, "iteration,episode,regime,hold,success,root_rise_cm,reward");
-  std::vector<RunStep> steps;
-  steps.reserve(rows.size());
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const std::size_t line = i + 2;
-    const std::vector<std::string_view> cells = split(rows[i], ',');
-    if (cells.size() != 7) throw InputError(iterations_file.string(), fmt::format("line {}: expected 7 columns", line));
-    // Every row is checked, not only the climb's: a file crux did not write is refused whole.
-    if (cells[4] != "0" && cells[4] != "1") {
-      throw InputError(iterations_file.string(), fmt::format("line {}: success must be 0 or 1", line));
-    }
-    const RunStep step{number<int>(cells[0], iterations_file, line), number<int>(cells[1], iterations_file, line),
-                       regime_of(cells[2], iterations_file, line),   number<int>(cells[3], iterations_file, line),
-                       cells[4] == "1",                              number<double>(cells[5], iterations_file, line),
-                       number<double>(cells[6], iterations_file, line)};
-    if (step.episode < 0) throw InputError(iterations_file.string(), fmt::format("line {}: episodes count from 0", line));
-    if (step.iteration != static_cast<int>(i) + 1) {
-      throw InputError(iterations_file.string(), fmt::format("line {}: iteration {} where {} was due", line,
-                                                             step.iteration, i + 1));
-    }
-    const int previous_episode = steps.empty() ? 0 : steps.back().episode;
-    if (step.episode != previous_episode && step.episode != previous_episode + 1) {
-      throw InputError(iterations_file.string(), fmt::format("line {}: episode {} after episode {}", line,
-                                                             step.episode, previous_episode));
-    }
-    steps.push_back(step);
-  }
-  return steps;
 }
 
 void read_run_climb(RunFolder& folder, const BodyModel& model) {
@@ -269,7 +184,7 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
   RecordedClimb& last = folder.last;
   last = {"last", -1, true, {}, {}};
   if (!episodes.empty()) last.episode = static_cast<int>(episodes.size()) - 1;
-  folder.steps = read_run_steps(folder.directory);
+  folder.steps = read_iterations_file(folder.directory / "iterations.csv");
   std::size_t reached = 0;
   for (const RunStep& step : folder.steps) {
     if (step.episode != last.episode) continue;
@@ -297,8 +212,8 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
   greedy.postures = read_postures(greedy_file, model, {"hold", "reward"}, cells, greedy_text);
   for (std::size_t i = 1; i < greedy.postures.size(); ++i) {
     const double rise_cm = 100 * (greedy.postures[i][2] - greedy.postures[i - 1][2]);
-    greedy.steps.push_back({0, -1, Regime::WGreedy, number<int>(cells[i][1], greedy_file, i + 2), true, rise_cm,
-                            number<double>(cells[i][2], greedy_file, i + 2)});
+    greedy.steps.push_back({0, -1, Regime::WGreedy, csv_integer(cells[i][1], greedy_file.string(), i + 2), true,
+                            rise_cm, csv_number(cells[i][2], greedy_file.string(), i + 2)});
   }
 }
 

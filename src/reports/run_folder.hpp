@@ -12,22 +12,10 @@
 #include <nlohmann/json.hpp>
 
 #include "body/body_model.hpp"
-#include "experiments/experiment_config.hpp"
-#include "learning/action_selection.hpp"
+#include "experiments/iterations_file.hpp"
 #include "wall/wall.hpp"
 
 namespace crux {
-
-// A row of iterations.csv.
-struct RunStep {
-  int iteration = 0;  // from 1
-  int episode = 0;
-  Regime regime = Regime::Random;
-  int hold_id = 0;
-  bool success = false;
-  double root_rise_cm = 0.0;
-  double reward = 0.0;
-};
 
 // A climb the run recorded, with the moves between its postures.
 struct RecordedClimb {
@@ -52,20 +40,13 @@ struct RunFolder {
   RecordedClimb greedy;  // greedy_climb.csv; empty when the greedy policy does not finish
 };
 
-// The summary.json of an output folder, checked to be crux's (format and version);
-// InputError naming the file.
-nlohmann::json read_summary(const std::filesystem::path& folder);
-
 // Where the folder's wall and summary are, and the body model it recorded; InputError
 // naming the folder (or the file) when it is not a run folder.
 RunFolder locate_run_folder(const std::filesystem::path& directory);
 
-// The parameters the run was written with, from its config.toml (finalized); InputError
-// naming the file.
-ExperimentConfig read_run_config(const RunFolder& folder);
-
 // A report or view of `folder`: the folder itself for a run folder, or runs/`run_name`
-// of a crux paper folder (`experiment` is set). InputError naming the folder or `flag`.
+// of a crux paper folder (`experiment` is set). InputError naming the folder or `flag`;
+// for a run the paper folder does not hold, the error lists the runs it holds.
 struct ReportedRun {
   bool experiment = false;
   std::filesystem::path run_directory;
@@ -73,10 +54,9 @@ struct ReportedRun {
 ReportedRun locate_reported_run(const std::filesystem::path& folder, const std::string& run_name,
                                 const std::string& flag);
 
-// episodes.csv's lengths and iterations.csv's rows, each checked (numbered in order,
-// episodes rising by 0 or 1); InputError naming the file and the problem.
+// episodes.csv's lengths, each checked (numbered in order, positive); InputError naming
+// the file and the problem.
 std::vector<int> read_episode_lengths(const std::filesystem::path& directory);
-std::vector<RunStep> read_run_steps(const std::filesystem::path& directory);
 
 // Reads climb.csv and greedy_climb.csv (whose columns must be `model`'s joints) and
 // iterations.csv into `folder`; InputError naming the file and the problem.

@@ -7,8 +7,11 @@
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
+#include "common/json_field.hpp"
 #include "experiments/experiment_analysis.hpp"
+#include "experiments/iterations_file.hpp"
 #include "experiments/statistics.hpp"
+#include "experiments/summary_file.hpp"
 #include "reports/run_folder.hpp"
 #include "reports/summary.hpp"
 #include "reports/sweep_report.hpp"
@@ -24,7 +27,7 @@ namespace {
 // iterations.csv) and episode lengths; the agent-space columns are not in the folder.
 RunResult read_run(const fs::path& directory) {
   RunResult run;
-  for (const RunStep& step : read_run_steps(directory)) {
+  for (const RunStep& step : read_iterations_file(directory / "iterations.csv")) {
     IterationRecord record;
     record.episode = step.episode;
     record.regime = step.regime;
@@ -54,9 +57,11 @@ std::string csv_cell(const std::string& text) {
   return quoted + "\"";
 }
 
-std::string number_cell(const nlohmann::json& value) {
+// Of a summary.json (ordered) or a wall's facts file.
+template <typename Json>
+std::string number_cell(const Json& value) {
   if (value.is_null()) return "";
-  if (value.is_number_float()) return fmt::format("{:.17g}", value.get<double>());
+  if (value.is_number_float()) return fmt::format("{:.17g}", value.template get<double>());
   return value.dump();
 }
 
@@ -102,22 +107,23 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
         runs.cluster_of_run.push_back(static_cast<std::size_t>(pair));
         runs.wall_of_run.push_back(static_cast<std::size_t>(pair));
         const std::string name = condition_name(condition);
-        const nlohmann::json summary = read_summary(directory);
-        const nlohmann::json& facts = summary.at("run_facts").at(name).at(0);
-        runs.learning_seeds.push_back(facts.at("learning_seed").get<std::uint64_t>());
+        const std::string summary_file = (directory / "summary.json").string();
+        const OrderedJson summary = read_summary(directory);
+        const JsonField facts = JsonField(summary_file, summary)["run_facts"][name][0];
+        runs.learning_seeds.push_back(facts["learning_seed"].unsigned_integer());
         const fs::path wall_folder = folder / "walls" / fmt::format("g{}", cell.wall_group) /
                                      fmt::format("{}_{}", condition == Condition::Training ? "training" : "transfer", pair);
         const nlohmann::json wall = read_json_file(wall_folder / kWallFactsFile);
 
         csv += fmt::format("{}", c);
         for (const std::string& value : cell.values) csv += fmt::format(",{}", csv_cell(value));
-        csv += fmt::format(",{},{},{},{},{},{}", name, r, pair, r % settings.seeds_per_wall, facts.at("wall_seed").dump(),
+        csv += fmt::format(",{},{},{},{},{},{}", name, r, pair, r % settings.seeds_per_wall, facts["wall_seed"].json().dump(),
                            runs.learning_seeds.back());
         for (const std::string& metric : metric_names) {
           const auto m = std::find_if(metrics.begin(), metrics.end(), [&](const EpisodeMetric& e) { return e.name == metric; });
           csv += m == metrics.end() ? std::string(",") : fmt::format(",{:.17g}", m->of_run(runs.runs.back(), windows));
         }
-        for (const char* fact : kRunFacts) csv += fmt::format(",{}", number_cell(facts.at(fact)));
+        for (const char* fact : kRunFacts) csv += fmt::format(",{}", number_cell(facts[fact].json()));
         const nlohmann::json& wall_plan = wall.at("plan");
         csv += fmt::format(",{},{}\n", wall_plan.is_null() ? std::string() : number_cell(wall_plan.at("length")),
                            number_cell(wall.at("filtered_pairs")));

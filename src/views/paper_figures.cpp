@@ -1,21 +1,15 @@
 #include "views/paper_figures.hpp"
 
 #include <fmt/format.h>
-#include <toml++/toml.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
 #include <string_view>
 
-#include "common/input_error.hpp"
-#include "common/input_file.hpp"
 #include "experiments/statistics.hpp"
 #include "views/plot_svg.hpp"
 #include "views/palette.hpp"
@@ -23,176 +17,7 @@
 namespace crux {
 namespace {
 
-using Json = nlohmann::ordered_json;  // keeps transfer_vs_control's metrics in file order
-
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Input echoed in an error stays short enough for one line.
-std::string shortened(std::string_view text) {
-  constexpr std::size_t kMax = 40;
-  return text.size() <= kMax ? std::string(text) : std::string(text.substr(0, kMax - 3)) + "...";
-}
-
-// A value of summary.json with its key path, so that every error names the key.
-struct Field {
-  const std::string& file;
-  const Json& value;
-  std::string path;
-
-  Field operator[](std::string_view key) const {
-    const std::string where = path.empty() ? std::string(key) : fmt::format("{}.{}", path, key);
-    if (!value.is_object())
-      throw InputError(file, fmt::format("{} must be an object", path.empty() ? "the file" : path));
-    const auto found = value.find(key);
-    if (found == value.end()) throw InputError(file, "missing key " + where);
-    return {file, *found, where};
-  }
-  Field operator[](std::size_t index) const { return {file, value.at(index), fmt::format("{}[{}]", path, index)}; }
-  bool contains(std::string_view key) const { return value.is_object() && value.contains(key); }
-  bool is_null() const { return value.is_null(); }
-
-  std::size_t size() const {
-    if (!value.is_array()) throw InputError(file, path + " must be an array");
-    return value.size();
-  }
-  // An array of exactly n elements.
-  void expect_size(std::size_t n) const {
-    if (size() != n) throw InputError(file, fmt::format("{} has {} values, not {}", path, value.size(), n));
-  }
-  double number() const {
-    if (!value.is_number()) throw InputError(file, path + " must be a number");
-    return value.get<double>();
-  }
-  int integer(std::int64_t min = std::numeric_limits<int>::min()) const {
-    if (!value.is_number_integer()) throw InputError(file, path + " must be an integer");
-    const auto n = value.get<std::int64_t>();
-    if (n < min || n > std::numeric_limits<int>::max()) {
-      throw InputError(file, fmt::format("{} is {}; it must be an integer of at least {}", path, n, min));
-    }
-    return static_cast<int>(n);
-  }
-  bool boolean() const {
-    if (!value.is_boolean()) throw InputError(file, path + " must be true or false");
-    return value.get<bool>();
-  }
-  std::string string() const {
-    if (!value.is_string()) throw InputError(file, path + " must be a string");
-    return value.get<std::string>();
-  }
-};
-
-GridParameters read_grid(const std::filesystem::path& path) {
-  const std::string file = path.string();
-  const std::string text = read_input_file(file, "config file");
-  toml::table table;
-  try {
-    table = toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    throw InputError(file, fmt::format("TOML syntax error at line {}, column {}: {}", e.source().begin.line,
-                                       e.source().begin.column, e.description()));
-  }
-  const auto integer = [&](std::string_view key, int min) {
-    const auto node = table["grid"][key];
-    if (!node) throw InputError(file, fmt::format("missing key grid.{}", key));
-    const auto value = node.value_exact<std::int64_t>();
-    if (!value || *value < min || *value > 1'000'000) {
-      throw InputError(file, fmt::format("grid.{} must be an integer from {} to 1000000", key, min));
-    }
-    return static_cast<int>(*value);
-  };
-  const auto length = [&](std::string_view key) {
-    const auto node = table["grid"][key];
-    if (!node) throw InputError(file, fmt::format("missing key grid.{}", key));
-    const auto value = node.value<double>();
-    if (!value || !(*value > 0) || !std::isfinite(*value)) {
-      throw InputError(file, fmt::format("grid.{} must be a positive number of metres", key));
-    }
-    return *value;
-  };
-  GridParameters grid;
-  grid.columns = integer("columns", 1);
-  grid.rows = integer("rows", 1);
-  grid.tile_width = length("tile_width");
-  grid.tile_height = length("tile_height");
-  // GridParameters counts tiles in an int, and each tile is one value per map.
-  if (static_cast<std::int64_t>(grid.columns) * grid.rows > 1'000'000) {
-    throw InputError(file, fmt::format("a grid of {} x {} tiles is larger than the 1000000 tiles this reads",
-                                       grid.columns, grid.rows));
-  }
-  for (int l = 0; l < kLimbCount; ++l) {
-    const std::string limb = limb_name(static_cast<Limb>(l));
-    grid.anchors[l] = {integer(limb + "_anchor_column", 0), integer(limb + "_anchor_row", 0)};
-    if (grid.anchors[l][0] >= grid.columns || grid.anchors[l][1] >= grid.rows) {
-      throw InputError(file, fmt::format("the {} anchor tile ({}, {}) lies outside the {} x {} grid", limb,
-                                         grid.anchors[l][0], grid.anchors[l][1], grid.columns, grid.rows));
-    }
-  }
-  return grid;
-}
-
-std::vector<Regime> read_regimes(const std::filesystem::path& path, int iterations) {
-  const std::string file = path.string();
-  const std::string text = read_input_file(file, "iterations file");
-  constexpr std::string_view kHeader = "iteration,episode,regime,hold,success,root_rise_cm,reward";
-  constexpr std::array<Regime, kRegimeCount> kRegimes{Regime::WGreedy, Regime::GGreedy, Regime::Random};
-  std::vector<Regime> regimes;
-  std::size_t at = 0;
-  for (int line = 1; at < text.size(); ++line) {
-    const std::size_t end = std::min(text.find('\n', at), text.size());
-    const std::string_view row(text.data() + at, end - at);
-    at = end + 1;
-    if (line == 1) {
-      if (row != kHeader) {
-        throw InputError(file, fmt::format("line 1: the header must be '{}', not '{}'", kHeader, shortened(row)));
-      }
-      continue;
-    }
-    std::vector<std::string_view> fields;
-    for (std::size_t start = 0;;) {
-      const std::size_t comma = row.find(',', start);
-      fields.push_back(row.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
-      if (comma == std::string_view::npos) break;
-      start = comma + 1;
-    }
-    if (fields.size() != 7) throw InputError(file, fmt::format("line {}: {} fields, not 7", line, fields.size()));
-    int iteration = 0;
-    const auto [end_of_number, error] =
-        std::from_chars(fields[0].data(), fields[0].data() + fields[0].size(), iteration);
-    if (error != std::errc() || end_of_number != fields[0].data() + fields[0].size() || iteration != line - 1) {
-      throw InputError(
-          file, fmt::format("line {}: iteration '{}' where {} was expected", line, shortened(fields[0]), line - 1));
-    }
-    const auto regime =
-        std::find_if(kRegimes.begin(), kRegimes.end(), [&](Regime r) { return fields[2] == regime_name(r); });
-    if (regime == kRegimes.end()) {
-      throw InputError(file, fmt::format("line {}: unknown regime '{}'", line, shortened(fields[2])));
-    }
-    regimes.push_back(*regime);
-  }
-  if (text.empty()) throw InputError(file, "is empty; the header line is missing");
-  if (static_cast<int>(regimes.size()) != iterations) {
-    throw InputError(file, fmt::format("has {} iterations, but summary.json says {}", regimes.size(), iterations));
-  }
-  return regimes;
-}
-
-TransferMetricData read_metric(const Field& metric, const std::string& name) {
-  TransferMetricData out;
-  out.name = name;
-  out.description = metric["description"].string();
-  out.higher_is_better = metric["higher_is_better"].boolean();
-  out.control_mean = metric["control"]["mean"].number();
-  const Field difference = metric["transfer_minus_control"];
-  out.difference = difference["mean"].number();
-  const Field interval = difference["ci95_t_over_walls"];
-  if (!interval.is_null()) {
-    interval.expect_size(2);
-    out.difference_ci95 = std::array<double, 2>{interval[0].number(), interval[1].number()};
-  }
-  out.p_value = difference["p_value"].number();
-  out.walls = difference["walls"].integer(0);
-  return out;
-}
 
 // --- Statistics over walls -------------------------------------------------------------
 
@@ -220,7 +45,7 @@ int fig3_step(int iterations) { return std::max(1, (iterations + 399) / 400); }
 
 // --- Page layout -----------------------------------------------------------------------
 
-constexpr double kMargin = 16;
+constexpr double kFigureMargin = 16;
 
 const char* condition_colour(Condition condition) {
   switch (condition) {
@@ -258,9 +83,9 @@ struct Header {
     return widest;
   }
   void draw(std::string& svg) const {
-    draw_text(svg, kMargin, kMargin + 14, title, {.size = kPlotTitleFontSize, .colour = kTitleColour, .bold = true});
+    draw_text(svg, kFigureMargin, kFigureMargin + 14, title, {.size = kPlotTitleFontSize, .colour = kTitleColour, .bold = true});
     for (std::size_t i = 0; i < subtitles.size(); ++i) {
-      draw_text(svg, kMargin, kMargin + 34 + 16 * static_cast<double>(i), subtitles[i],
+      draw_text(svg, kFigureMargin, kFigureMargin + 34 + 16 * static_cast<double>(i), subtitles[i],
                 {.size = kPlotSubtitleFontSize, .colour = kSubtitleColour});
     }
   }
@@ -290,62 +115,6 @@ std::string limb_title(Limb limb) {
 std::string format_length(double value) { return fmt::format("{:.1f}", value); }
 
 }  // namespace
-
-PaperFigureData read_paper_figure_data(const std::filesystem::path& folder) {
-  PaperFigureData data;
-  data.grid = read_grid(folder / "config.toml");
-
-  const std::string file = (folder / "summary.json").string();
-  Json json;
-  try {
-    json = Json::parse(read_input_file(file, "summary file"));
-  } catch (const Json::parse_error& e) {
-    throw InputError(file, fmt::format("not JSON: {}", e.what()));
-  }
-  const Field summary{file, json, ""};
-  if (const std::string format = summary["format"].string(); format != "crux-summary") {
-    throw InputError(file, fmt::format("format is '{}', not 'crux-summary'", shortened(format)));
-  }
-  if (const int version = summary["version"].integer(); version != 3) {
-    throw InputError(file, fmt::format("version {} is not the version 3 this crux reads", version));
-  }
-  data.iterations = summary["iterations"].integer(0);
-  data.seeds_per_wall = summary["seeds_per_wall"].integer(1);
-
-  const Field lengths = summary["episode_lengths"];
-  for (const Condition condition : kConditions) {
-    const std::string name = condition_name(condition);
-    if (!lengths.contains(name)) continue;
-    PaperConditionData c;
-    c.condition = condition;
-    const Field run_lengths = lengths[name];
-    const Field facts = summary["run_facts"][name];
-    facts.expect_size(run_lengths.size());
-    for (std::size_t i = 0; i < run_lengths.size(); ++i) {
-      PaperRunData run;
-      run.wall_pair = facts[i]["wall_pair"].integer(0);
-      run.plan_length = facts[i]["plan_length"].integer(-1);
-      const Field episodes = run_lengths[i];
-      for (std::size_t e = 0; e < episodes.size(); ++e) run.episode_lengths.push_back(episodes[e].integer(1));
-      run.regimes = read_regimes(folder / "runs" / fmt::format("{}_{}", name, i) / "iterations.csv", data.iterations);
-      c.runs.push_back(std::move(run));
-    }
-    for (int l = 0; l < kLimbCount; ++l) {
-      const Field map = summary["qgrid_maps"][name][limb_name(static_cast<Limb>(l))];
-      map.expect_size(static_cast<std::size_t>(data.grid.tile_count()));
-      for (std::size_t t = 0; t < map.size(); ++t) c.q_grid_maps[l].push_back(map[t].number());
-    }
-    data.conditions.push_back(std::move(c));
-  }
-  if (data.conditions.empty()) throw InputError(file, "episode_lengths holds none of training, transfer, control");
-
-  const Field metrics = summary["transfer_vs_control"];
-  if (!metrics.value.is_object()) throw InputError(file, "transfer_vs_control must be an object");
-  for (const auto& [name, value] : metrics.value.items()) {
-    data.transfer_metrics.push_back(read_metric(metrics[name], name));
-  }
-  return data;
-}
 
 std::array<WallBandSeries, kRegimeCount> regime_series(const PaperConditionData& condition, int iterations, int step) {
   step = std::max(1, step);
@@ -421,7 +190,7 @@ std::string fig2b_svg(const PaperFigureData& data) {
     heading_width = std::max(heading_width, estimated_text_width(limb_title(static_cast<Limb>(l)), kPlotLabelFontSize));
   }
   const double slot = std::max(map_width, heading_width) + 32;
-  const double maps_left = kMargin + 56;  // room for the row numbers and the row title
+  const double maps_left = kFigureMargin + 56;  // room for the row numbers and the row title
   const auto map_left = [&](int limb) { return maps_left + slot * limb + (slot - 32 - map_width) / 2; };
 
   DivergingScale colours{0, 0};
@@ -440,7 +209,7 @@ std::string fig2b_svg(const PaperFigureData& data) {
 
   std::string svg;
   header.draw(svg);
-  double y = kMargin + header.height();
+  double y = kFigureMargin + header.height();
   for (int l = 0; l < kLimbCount; ++l) {
     draw_text(svg, map_left(l) + map_width / 2, y + 12, limb_title(static_cast<Limb>(l)),
               {.anchor = "middle", .bold = true});
@@ -490,7 +259,7 @@ std::string fig2b_svg(const PaperFigureData& data) {
   }
   const double maps_right = maps_left + slot * kLimbCount - 32;
   draw_text(svg, (maps_left + maps_right) / 2, y + 22, "grid column (0 = the climber's right)", {.anchor = "middle"});
-  draw_text(svg, kMargin + 12, (rows_top + y - 14) / 2, "grid row (0 = bottom)", {.anchor = "middle", .rotation = -90});
+  draw_text(svg, kFigureMargin + 12, (rows_top + y - 14) / 2, "grid row (0 = bottom)", {.anchor = "middle", .rotation = -90});
   y += 42;
 
   const double bar_width = std::min(360.0, maps_right - maps_left);
@@ -500,8 +269,8 @@ std::string fig2b_svg(const PaperFigureData& data) {
   const double legend_left = maps_left + bar_width + 32;
   draw_legend(svg, legend_left, y - 3, legend);
 
-  const double width = std::max({maps_right, legend_left + legend_width(legend), kMargin + header.width()}) + kMargin;
-  return svg_document(width, y + kColourBarRoom + kMargin, header.title, svg);
+  const double width = std::max({maps_right, legend_left + legend_width(legend), kFigureMargin + header.width()}) + kFigureMargin;
+  return svg_document(width, y + kColourBarRoom + kFigureMargin, header.title, svg);
 }
 
 // Paper, Fig. 3: how many actions each selection regime has taken by each iteration, one
@@ -519,8 +288,8 @@ std::string fig3_svg(const PaperFigureData& data) {
 
   std::string svg;
   header.draw(svg);
-  const double top = kMargin + header.height() + 22;  // room for the panel titles
-  double left = kMargin + y_axis_room(y);
+  const double top = kFigureMargin + header.height() + 22;  // room for the panel titles
+  double left = kFigureMargin + y_axis_room(y);
   bool any_band = false;
   for (const PaperConditionData& c : data.conditions) {
     // Only the first panel carries the y axis title; all panels share the axis.
@@ -547,8 +316,8 @@ std::string fig3_svg(const PaperFigureData& data) {
   }
   const double legend_left = left - y_axis_room(y_untitled) - kPanelGap + 24;
   draw_legend(svg, legend_left, top, legend);
-  const double width = std::max(legend_left + legend_width(legend), kMargin + header.width()) + kMargin;
-  return svg_document(width, top + kPanelHeight + kXAxisRoom + kMargin, header.title, svg);
+  const double width = std::max(legend_left + legend_width(legend), kFigureMargin + header.width()) + kFigureMargin;
+  return svg_document(width, top + kPanelHeight + kXAxisRoom + kFigureMargin, header.title, svg);
 }
 
 // Paper, Fig. 4: episode length against episode, on a log scale, with the walls' shortest
@@ -594,7 +363,7 @@ std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
   }
   const Axis x = linear_axis(0, episodes, "episode (from 1)");
   const Axis y = log10_axis(low, std::max(high, low), "episode length (actions, log scale)");
-  const Panel panel{kMargin + y_axis_room(y), kMargin + header.height() + 6, 640, 360, x, y};
+  const Panel panel{kFigureMargin + y_axis_room(y), kFigureMargin + header.height() + 6, 640, 360, x, y};
 
   std::string svg;
   header.draw(svg);
@@ -638,8 +407,8 @@ std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
   }
   const double legend_left = panel.left + panel.width + 20;
   draw_legend(svg, legend_left, panel.top, legend);
-  const double width = std::max(legend_left + legend_width(legend), kMargin + header.width()) + kMargin;
-  return svg_document(width, panel.top + panel.height + kXAxisRoom + kMargin, header.title, svg);
+  const double width = std::max(legend_left + legend_width(legend), kFigureMargin + header.width()) + kFigureMargin;
+  return svg_document(width, panel.top + panel.height + kXAxisRoom + kFigureMargin, header.title, svg);
 }
 
 // Not in the paper: the transfer metrics as a forest plot, each difference divided by
@@ -699,10 +468,10 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
     note_width = std::max(note_width, estimated_text_width(note, kPlotTickFontSize));
   }
   const Axis x = linear_axis(low, high, "transfer minus control (% of |control's mean|)", 6);
-  const double plot_left = kMargin + label_width + 20;
+  const double plot_left = kFigureMargin + label_width + 20;
   const double plot_height = kRowHeight * static_cast<double>(std::max<std::size_t>(rows.size(), 1));
   const Panel panel{
-      plot_left, kMargin + header.height() + 6,
+      plot_left, kFigureMargin + header.height() + 6,
       380,       plot_height,
       x,         Axis{AxisScale::Linear, 0, std::max<double>(1, static_cast<double>(rows.size())), {}, {}, ""}};
 
@@ -711,7 +480,7 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
   const double right_edge = panel.left + panel.width + 16 + std::max(note_width, 120.0);
   for (std::size_t i = 0; i < rows.size(); i += 2) {  // every other row shaded, to guide the eye
     svg += fmt::format("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"#f4f4f4\"/>\n",
-                       kMargin, panel.top + kRowHeight * static_cast<double>(i), right_edge - kMargin, kRowHeight);
+                       kFigureMargin, panel.top + kRowHeight * static_cast<double>(i), right_edge - kFigureMargin, kRowHeight);
   }
   draw_axes(svg, panel);
   draw_reference_line(svg, panel, Direction::Vertical, 0, {kDarkGrey, 1.2, "5 4"});
@@ -724,9 +493,9 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
     const TransferMetricData& m = *row.metric;
     const double centre = static_cast<double>(rows.size()) - 0.5 - static_cast<double>(i);
     const double row_top = panel.top + kRowHeight * static_cast<double>(i);
-    draw_text(svg, kMargin + 4, row_top + 19,
+    draw_text(svg, kFigureMargin + 4, row_top + 19,
               m.name + (m.higher_is_better ? " (higher is better)" : " (lower is better)"), {.bold = true});
-    draw_text(svg, kMargin + 4, row_top + 36, m.description, {.size = kPlotTickFontSize, .colour = kSubtitleColour});
+    draw_text(svg, kFigureMargin + 4, row_top + 36, m.description, {.size = kPlotTickFontSize, .colour = kSubtitleColour});
     const double text_left = panel.left + panel.width + 16;
     draw_text(svg, text_left, row_top + 19, notes[i], {.size = kPlotTickFontSize});
     const std::string p = m.p_value < 0.001 ? "p < 0.001" : fmt::format("p = {:.3f}", m.p_value);
@@ -747,8 +516,8 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
                                         {LegendMark::Line, kDarkGrey, "5 4", "no difference"}};
   const double legend_top = panel.top + panel.height + kXAxisRoom + 6;
   draw_legend(svg, panel.left, legend_top, legend);
-  const double width = std::max({right_edge, panel.left + legend_width(legend), kMargin + header.width()}) + kMargin;
-  return svg_document(width, legend_top + legend_height(legend) + kMargin, header.title, svg);
+  const double width = std::max({right_edge, panel.left + legend_width(legend), kFigureMargin + header.width()}) + kFigureMargin;
+  return svg_document(width, legend_top + legend_height(legend) + kFigureMargin, header.title, svg);
 }
 
 std::vector<std::pair<std::string, std::string>> paper_figures(const PaperFigureData& data) {

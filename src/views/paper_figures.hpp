@@ -1,7 +1,8 @@
 #pragma once
 // The paper's figures drawn as standalone SVG files from a `crux paper` output folder:
 // Fig. 2b (Q_grid maps per free limb), Fig. 3 (cumulative actions per selection regime),
-// Fig. 4 (episode lengths), and a forest plot of transfer minus control per metric.
+// Fig. 4 (episode lengths), and a forest plot of transfer minus control per metric,
+// drawn from what read_paper_figure_data (experiments/paper_figure_data) reads.
 // Runs on one wall are not independent, so every mean is over walls (of each wall's
 // mean over its runs) and every band a Student-t 95 % interval over walls.
 
@@ -13,50 +14,9 @@
 #include <utility>
 #include <vector>
 
-#include "agent_space/moving_grid.hpp"
-#include "experiments/paper_experiment.hpp"
-#include "learning/action_selection.hpp"
+#include "experiments/paper_figure_data.hpp"
 
 namespace crux {
-
-struct PaperRunData {
-  int wall_pair = 0;     // the run's cluster (run_facts' wall_pair)
-  int plan_length = -1;  // the shortest climb on the run's wall; -1 when unknown
-  std::vector<int> episode_lengths;
-  std::vector<Regime> regimes;  // per iteration, from iterations.csv
-};
-
-struct PaperConditionData {
-  Condition condition = Condition::Training;
-  std::vector<PaperRunData> runs;
-  // Per free limb (limb order), per tile (row * columns + column): the summed Q_grid.
-  std::array<std::vector<double>, kLimbCount> q_grid_maps;
-};
-
-struct TransferMetricData {
-  std::string name, description;
-  bool higher_is_better = true;
-  double control_mean = 0;
-  double difference = 0;                                 // transfer - control, mean over walls
-  std::optional<std::array<double, 2>> difference_ci95;  // ci95_t_over_walls; none when null
-  double p_value = 1;
-  int walls = 0;
-};
-
-struct PaperFigureData {
-  GridParameters grid;  // config.toml's [grid]
-  int iterations = 0;
-  int seeds_per_wall = 1;
-  std::vector<PaperConditionData> conditions;        // those present, in kConditions order
-  std::vector<TransferMetricData> transfer_metrics;  // in summary.json's order
-};
-
-// Reads folder/summary.json, folder/config.toml and folder/runs/<condition>_<i>/
-// iterations.csv. Throws InputError(file, problem) for a missing or unreadable file, a
-// file that is not JSON or TOML, a missing key or a value of the wrong type or size, and
-// an iterations.csv with a wrong header, a bad row or a number of rows other than
-// summary.json's iterations.
-PaperFigureData read_paper_figure_data(const std::filesystem::path& folder);
 
 // A mean over walls per x, with its Student-t 95 % interval over walls; low and high are
 // NaN where fewer than two walls give a value (no interval).

@@ -17,12 +17,13 @@
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
+#include "common/json_field.hpp"
 #include "common/printable.hpp"
 
 namespace crux {
 namespace {
 
-using Json = nlohmann::json;
+using Json = OrderedJson;
 
 constexpr std::array<std::string_view, 6> kTopLevelKeys{"format", "version", "name", "finish_height", "start", "holds"};
 constexpr std::array<std::string_view, 3> kHoldKeys{"id", "position", "radius"};
@@ -35,16 +36,7 @@ constexpr int kNumberOverflowError = 406;
 // never break it over several lines.
 std::string json_quoted(std::string_view text) { return Json(text).dump(); }
 
-// What a value is, for "must be X, got Y": numbers and booleans by value, the rest by type.
-std::string describe(const Json& value) {
-  return value.is_number() || value.is_boolean() ? value.dump() : value.type_name();
-}
-
 std::string location(const std::string& path) { return path.empty() ? "at the top level" : "in " + path; }
-
-std::string child_path(const std::string& parent, std::string_view key) {
-  return parent.empty() ? std::string(key) : fmt::format("{}.{}", parent, key);
-}
 
 // Text quoted from the input, as it may go into a one-line message: at most 200 bytes,
 // control characters escaped.
@@ -134,7 +126,7 @@ class JsonStructureCheck final : public Json::json_sax_t {
   std::string path(std::size_t depth) const {
     std::string text;
     for (std::size_t i = 0; i < depth; ++i) {
-      text = frames_[i].is_array ? fmt::format("{}[{}]", text, frames_[i].index) : child_path(text, frames_[i].key);
+      text = frames_[i].is_array ? fmt::format("{}[{}]", text, frames_[i].index) : json_child_path(text, frames_[i].key);
     }
     return text;
   }
@@ -162,7 +154,7 @@ class WallReader {
   explicit WallReader(const std::string& source) : source_(source) {}
 
   Wall read(const Json& root) const {
-    if (!root.is_object()) fail("the top level must be a JSON object, got " + describe(root));
+    if (!root.is_object()) fail("the top level must be a JSON object, got " + json_value_description(root));
     check_format(root);
     check_version(root);
     reject_unknown_keys(root, "", kTopLevelKeys);
@@ -186,7 +178,7 @@ class WallReader {
   void check_version(const Json& root) const {
     const auto version = root.find("version");
     if (version == root.end()) fail(fmt::format("version is missing (supported versions: {})", kWallFormatVersion));
-    if (!version->is_number_integer()) fail("version must be an integer, got " + describe(*version));
+    if (!version->is_number_integer()) fail("version must be an integer, got " + json_value_description(*version));
     if (*version != kWallFormatVersion) {
       fail(fmt::format("version {} is not supported (supported versions: {})", version->dump(), kWallFormatVersion));
     }
@@ -203,29 +195,23 @@ class WallReader {
   }
 
   const Json& field(const Json& object, const std::string& path, std::string_view key) const {
-    const auto found = object.find(key);
-    if (found == object.end()) fail(child_path(path, key) + " is missing");
-    return *found;
+    return JsonField(source_, object, path)[key].json();
   }
 
   std::string text(const Json& object, const std::string& path, std::string_view key) const {
-    const Json& value = field(object, path, key);
-    if (!value.is_string()) fail(fmt::format("{} must be a string, got {}", child_path(path, key), describe(value)));
-    return value.get<std::string>();
+    return JsonField(source_, object, path)[key].string();
   }
 
   // Finite: the structure check has already rejected numbers that overflow a double,
   // and JSON has no literal for NaN or infinity.
   double number(const Json& object, const std::string& path, std::string_view key) const {
-    const Json& value = field(object, path, key);
-    if (!value.is_number()) fail(fmt::format("{} must be a number, got {}", child_path(path, key), describe(value)));
-    return value.get<double>();
+    return JsonField(source_, object, path)[key].number();
   }
 
   int hold_id(const Json& value, const std::string& path) const {
     const bool positive = value.is_number_unsigned() ? value.get<std::uint64_t>() > 0
                                                      : value.is_number_integer() && value.get<std::int64_t>() > 0;
-    if (!positive) fail(fmt::format("{} must be a positive integer, got {}", path, describe(value)));
+    if (!positive) fail(fmt::format("{} must be a positive integer, got {}", path, json_value_description(value)));
     constexpr auto kLargestId = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
     if (value.get<std::uint64_t>() > kLargestId) {
       fail(fmt::format("{} is {}, larger than the largest supported hold id {}", path, value.dump(), kLargestId));
@@ -234,13 +220,13 @@ class WallReader {
   }
 
   Eigen::Vector3d position(const Json& value, const std::string& path) const {
-    if (!value.is_array()) fail(fmt::format("{} must be an array of 3 numbers [x, y, z], got {}", path, describe(value)));
+    if (!value.is_array()) fail(fmt::format("{} must be an array of 3 numbers [x, y, z], got {}", path, json_value_description(value)));
     if (value.size() != 3) fail(fmt::format("{} must have 3 coordinates [x, y, z], got {}", path, value.size()));
     Eigen::Vector3d result;
     for (int axis = 0; axis < 3; ++axis) {
       const Json& coordinate = value[axis];
       if (!coordinate.is_number()) {
-        fail(fmt::format("{}[{}] must be a number, got {}", path, axis, describe(coordinate)));
+        fail(fmt::format("{}[{}] must be a number, got {}", path, axis, json_value_description(coordinate)));
       }
       result[axis] = coordinate.get<double>();
     }
@@ -248,7 +234,7 @@ class WallReader {
   }
 
   Hold hold(const Json& value, const std::string& path) const {
-    if (!value.is_object()) fail(fmt::format("{} must be an object, got {}", path, describe(value)));
+    JsonField(source_, value, path).expect_object();
     reject_unknown_keys(value, path, kHoldKeys);
     Hold result;
     result.id = hold_id(field(value, path, "id"), path + ".id");
@@ -259,7 +245,7 @@ class WallReader {
   }
 
   std::vector<Hold> holds(const Json& value) const {
-    if (!value.is_array()) fail("holds must be an array, got " + describe(value));
+    if (!value.is_array()) fail("holds must be an array, got " + json_value_description(value));
     if (value.size() < kMinimumHoldCount) {
       fail(fmt::format("holds has {} entries; a wall needs at least {} holds (one per limb)", value.size(),
                        kMinimumHoldCount));
@@ -278,13 +264,13 @@ class WallReader {
   }
 
   std::array<int, kLimbCount> start(const Json& value, const Wall& wall) const {
-    if (!value.is_object()) fail("start must be an object, got " + describe(value));
+    JsonField(source_, value, "start").expect_object();
     std::array<std::string_view, kLimbCount> limbs;
     for (int limb = 0; limb < kLimbCount; ++limb) limbs[limb] = limb_name(static_cast<Limb>(limb));
     reject_unknown_keys(value, "start", limbs);
     std::array<int, kLimbCount> indices{};
     for (int limb = 0; limb < kLimbCount; ++limb) {
-      const std::string path = child_path("start", limbs[limb]);
+      const std::string path = json_child_path("start", limbs[limb]);
       const int id = hold_id(field(value, "start", limbs[limb]), path);
       indices[limb] = wall.index_of(id);
       if (indices[limb] < 0) fail(fmt::format("{} names hold {}, which is not in holds", path, id));

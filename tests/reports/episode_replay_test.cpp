@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "common/input_error.hpp"
+#include "experiments/run_config_file.hpp"
 #include "support/test_models.hpp"
 #include "support/trained_run.hpp"
 
@@ -21,7 +22,7 @@ RunFolder read_folder(const fs::path& directory) {
 }
 
 ClimbingParameters run_parameters(const RunFolder& folder) {
-  return read_run_config(folder).settings.learning.climbing;
+  return read_run_config(folder.config_file).settings.learning.climbing;
 }
 
 // Replaying the last completed episode from the run's actions gives back climb.csv's

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "common/input_error.hpp"
+#include "experiments/run_config_file.hpp"
 #include "support/test_models.hpp"
 #include "support/trained_run.hpp"
 
@@ -12,8 +13,8 @@ namespace {
 // A run folder has no paper figures: its report shows Fig. 1 at its wall's start.
 TEST(ReportFigures, ARunFolderHasFigOneOnly) {
   RunFolder run = locate_run_folder(testing::trained_run_folder());
-  const auto figures = report_figures({}, testing::human_model(), run, read_run_config(run).settings.learning
-                                                                           .climbing.reachability);
+  const auto figures = report_figures({}, testing::human_model(), run,
+                                      read_run_config(run.config_file).settings.learning.climbing.reachability);
   ASSERT_EQ(figures.size(), 1u);
   EXPECT_NE(figures[0].title.find("Fig. 1"), std::string::npos) << figures[0].title;
   EXPECT_NE(figures[0].svg.find("<svg"), std::string::npos);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "experiments/run_config_file.hpp"
 #include "support/test_models.hpp"
 #include "support/trained_run.hpp"
 
@@ -16,7 +17,7 @@ TEST(ReportPage, ARunFolderPageReplaysTheChosenClimb) {
   for (const std::string choice : {"greedy", "1"}) {
     RunFolder run = locate_run_folder(reported.run_directory);
     read_run_climb(run, testing::human_model());
-    const ExperimentConfig recorded = read_run_config(run);
+    const ExperimentConfig recorded = read_run_config(run.config_file);
     const ReportPage page = report_page(directory, reported, run, testing::human_model(), recorded, choice);
     EXPECT_EQ(page.summary.value("kind", ""), "run");
     ASSERT_EQ(page.figures.size(), 1u) << "Fig. 1 only";

@@ -6,9 +6,11 @@
 #include <fstream>
 #include <iterator>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "common/input_error.hpp"
+#include "experiments/run_config_file.hpp"
 #include "support/test_models.hpp"
 #include "support/trained_run.hpp"
 
@@ -77,7 +79,7 @@ TEST(RunFolder, KeepsEveryIterationAndReadsItsOwnConfig) {
   ASSERT_EQ(folder.steps.size(), 8000u);
   for (std::size_t i = 0; i < folder.steps.size(); ++i) EXPECT_EQ(folder.steps[i].iteration, static_cast<int>(i) + 1);
   EXPECT_EQ(folder.steps.back().episode, folder.last.episode + 1) << "the last episode is unfinished";
-  const ExperimentConfig config = read_run_config(folder);
+  const ExperimentConfig config = read_run_config(folder.config_file);
   EXPECT_EQ(config.settings.seed, 5u);
   EXPECT_EQ(config.wall_seed, 3u);
   EXPECT_EQ(config.settings.learning.iterations, 8000);
@@ -91,7 +93,7 @@ TEST(RunFolder, ABadConfigIsNamedWithItsLineAndKey) {
   });
   const RunFolder folder = locate_run_folder(copy);
   try {
-    read_run_config(folder);
+    read_run_config(folder.config_file);
     FAIL() << "accepted gamma = 2";
   } catch (const InputError& e) {
     EXPECT_NE(e.source().find("config.toml: line"), std::string::npos) << e.what();
@@ -119,6 +121,35 @@ TEST(RunFolder, AReportedRunIsTheFolderOrARunOfAPaperFolder) {
     }
   }
   EXPECT_THROW(locate_reported_run(paper / "nowhere", "control_2", "--run"), InputError);
+}
+
+// A run the paper folder does not hold is refused with the runs it holds, each
+// condition's consecutive runs as one range.
+TEST(RunFolder, AMissingRunOfAPaperFolderListsTheRunsItHas) {
+  const fs::path paper = testing::temporary_path("reported_runs_" + std::to_string(::getpid()));
+  for (const char* run : {"training_0", "training_1", "transfer_0", "transfer_1", "control_0", "control_1",
+                          "control_3", "training_x"}) {
+    fs::create_directories(paper / "runs" / run);
+  }
+  std::ofstream(paper / "runs" / "transfer_2") << "a file, not a run";
+  std::ofstream(paper / "summary.json") << "{}";
+  try {
+    locate_reported_run(paper, "transfer_4", "--run");
+    FAIL() << "accepted transfer_4";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "--run");
+    EXPECT_EQ(e.problem(), fmt::format("'transfer_4' is not a run of {}; it has training_0..training_1, "
+                                       "transfer_0..transfer_1, control_0..control_1, control_3",
+                                       paper.string()));
+  }
+  fs::remove_all(paper / "runs");
+  fs::create_directories(paper / "runs");
+  try {
+    locate_reported_run(paper, "training_0", "--run");
+    FAIL() << "accepted a run of a folder without runs";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.problem(), fmt::format("'training_0' is not a run of {}; it has no runs", paper.string()));
+  }
 }
 
 TEST(RunFolder, AClimbIsDescribedByItsKind) {

@@ -4,6 +4,8 @@
 
 #include <fstream>
 
+#include "experiments/iterations_file.hpp"
+#include "experiments/run_config_file.hpp"
 #include "jobs/command_keys.hpp"
 #include "reports/plan_description.hpp"
 #include "reports/run_folder.hpp"
@@ -28,7 +30,7 @@ TEST(SweepTask, ARunTaskWritesTheRunFolderThatCruxTrainWouldReplay) {
 
   const ExperimentResult paper = run_paper_experiment(testing::human_model(), config.settings);
   const RunFolder run = locate_run_folder(folder / "runs/c0/transfer_0");
-  const std::vector<RunStep> steps = read_run_steps(run.directory);
+  const std::vector<RunStep> steps = read_iterations_file(run.directory / "iterations.csv");
   const RunResult& expected = paper.conditions[static_cast<int>(Condition::Transfer)].runs[0];
   ASSERT_EQ(steps.size(), expected.iterations.size());
   for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -37,7 +39,7 @@ TEST(SweepTask, ARunTaskWritesTheRunFolderThatCruxTrainWouldReplay) {
   }
   // Its config.toml names the transfer wall's seed, the run's learning seed and the
   // training run's Q_grid: crux transfer --config replays it.
-  const ExperimentConfig recorded = read_run_config(run);
+  const ExperimentConfig recorded = read_run_config(run.config_file);
   EXPECT_EQ(recorded.wall_seed, paper.walls[1].seed);
   EXPECT_EQ(recorded.settings.seed, paper.conditions[static_cast<int>(Condition::Transfer)].learning_seeds[0]);
   EXPECT_EQ(recorded.q_grid, (folder / "runs/c0/training_0/q_grid.bin").string());

@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "common/input_error.hpp"
 #include "support/test_models.hpp"
 #include "support/svg_check.hpp"
 
@@ -112,44 +111,6 @@ fs::path write_folder(const std::string& name, const Json& summary = summary_jso
     }
   }
   return folder;
-}
-
-// The InputError that reading the folder raises.
-InputError read_error(const fs::path& folder) {
-  try {
-    read_paper_figure_data(folder);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError for " << folder;
-  return InputError("", "");
-}
-
-TEST(PaperFiguresTest, ReadsTheFolder) {
-  const PaperFigureData data = read_paper_figure_data(write_folder("paper_figures_read"));
-  EXPECT_EQ(data.grid.columns, 3);
-  EXPECT_EQ(data.grid.rows, 2);
-  EXPECT_DOUBLE_EQ(data.grid.tile_height, 0.5);
-  EXPECT_EQ(data.grid.anchors[0], (std::array<int, 2>{2, 0}));
-  EXPECT_EQ(data.grid.anchors[1], (std::array<int, 2>{0, 1}));
-  EXPECT_EQ(data.iterations, 4);
-  EXPECT_EQ(data.seeds_per_wall, 2);
-  ASSERT_EQ(data.conditions.size(), 3u);
-  EXPECT_EQ(data.conditions[1].condition, Condition::Transfer);
-  const PaperRunData& run = data.conditions[0].runs[3];
-  EXPECT_EQ(run.wall_pair, 1);
-  EXPECT_EQ(run.plan_length, 11);
-  EXPECT_EQ(run.episode_lengths, (std::vector<int>{40, 8}));
-  EXPECT_EQ(run.regimes, (std::vector<Regime>{Regime::GGreedy, Regime::WGreedy, Regime::Random, Regime::WGreedy}));
-  EXPECT_EQ(data.conditions[0].q_grid_maps[0], (std::vector<double>{0, -5, 100, 0, 0, 0}));
-  ASSERT_EQ(data.transfer_metrics.size(), 2u);
-  EXPECT_EQ(data.transfer_metrics[0].name, "zeta_metric");
-  EXPECT_EQ(data.transfer_metrics[1].name, "alpha_metric");
-  EXPECT_DOUBLE_EQ(data.transfer_metrics[0].control_mean, 2.0);
-  ASSERT_TRUE(data.transfer_metrics[0].difference_ci95.has_value());
-  EXPECT_DOUBLE_EQ((*data.transfer_metrics[0].difference_ci95)[1], 1.25);
-  EXPECT_FALSE(data.transfer_metrics[1].difference_ci95.has_value());
-  EXPECT_FALSE(data.transfer_metrics[1].higher_is_better);
 }
 
 TEST(PaperFiguresTest, RegimeBandIsAStudentTIntervalOverWallMeans) {
@@ -292,92 +253,6 @@ TEST(PaperFiguresTest, Fig4ExplainsTheDashedLineOnlyWhenAPlanIsKnownAndTakesATit
   EXPECT_EQ(without.find("dashed"), std::string::npos);
   EXPECT_EQ(without.find("shortest climb"), std::string::npos);
   EXPECT_NE(without.find("Fig. 4: episode lengths"), std::string::npos);
-}
-
-TEST(PaperFiguresTest, MissingKeysAndFilesAreNamed) {
-  Json summary = summary_json();
-  summary.erase("iterations");
-  const fs::path folder = write_folder("paper_figures_missing_key", summary);
-  InputError e = read_error(folder);
-  EXPECT_EQ(e.source(), (folder / "summary.json").string());
-  EXPECT_EQ(e.problem(), "missing key iterations");
-
-  summary = summary_json();
-  summary["run_facts"]["transfer"][2].erase("wall_pair");
-  e = read_error(write_folder("paper_figures_missing_nested", summary));
-  EXPECT_EQ(e.problem(), "missing key run_facts.transfer[2].wall_pair");
-
-  summary = summary_json();
-  summary["qgrid_maps"]["control"]["left_hand"] = {1.0, 2.0};
-  e = read_error(write_folder("paper_figures_short_map", summary));
-  EXPECT_EQ(e.problem(), "qgrid_maps.control.left_hand has 2 values, not 6");
-
-  summary = summary_json();
-  summary["episode_lengths"]["training"][0][1] = "four";
-  e = read_error(write_folder("paper_figures_bad_type", summary));
-  EXPECT_EQ(e.problem(), "episode_lengths.training[0][1] must be an integer");
-
-  const fs::path no_summary = write_folder("paper_figures_no_summary");
-  fs::remove(no_summary / "summary.json");
-  e = read_error(no_summary);
-  EXPECT_EQ(e.source(), (no_summary / "summary.json").string());
-  EXPECT_EQ(e.problem(), "no such file");
-
-  const fs::path not_json = write_folder("paper_figures_not_json");
-  write_file(not_json / "summary.json", "{\"format\": ");
-  e = read_error(not_json);
-  EXPECT_EQ(e.source(), (not_json / "summary.json").string());
-  EXPECT_TRUE(e.problem().starts_with("not JSON")) << e.problem();
-
-  const fs::path no_rows = write_folder("paper_figures_no_rows");
-  std::string config = kConfig;
-  config.erase(config.find("rows = 2\n"), 9);
-  write_file(no_rows / "config.toml", config);
-  e = read_error(no_rows);
-  EXPECT_EQ(e.source(), (no_rows / "config.toml").string());
-  EXPECT_EQ(e.problem(), "missing key grid.rows");
-}
-
-TEST(PaperFiguresTest, BadIterationFilesAreNamedWithTheirLine) {
-  const fs::path header = write_folder("paper_figures_bad_header");
-  const fs::path csv = header / "runs" / "transfer_1" / "iterations.csv";
-  write_file(csv, "iteration,episode,mode\n1,0,random\n");
-  InputError e = read_error(header);
-  EXPECT_EQ(e.source(), csv.string());
-  EXPECT_EQ(e.problem(),
-            "line 1: the header must be 'iteration,episode,regime,hold,success,root_rise_cm,reward', not "
-            "'iteration,episode,mode'");
-
-  const fs::path regime = write_folder("paper_figures_bad_regime");
-  std::vector<std::string> regimes = kRegimes[0];
-  regimes[1] = "greedy";
-  write_file(regime / "runs" / "control_0" / "iterations.csv", iterations_csv(regimes));
-  e = read_error(regime);
-  EXPECT_EQ(e.source(), (regime / "runs" / "control_0" / "iterations.csv").string());
-  EXPECT_EQ(e.problem(), "line 3: unknown regime 'greedy'");
-
-  const fs::path fields = write_folder("paper_figures_bad_fields");
-  write_file(fields / "runs" / "training_2" / "iterations.csv", iterations_csv(kRegimes[2]) + "5,0,random\n");
-  e = read_error(fields);
-  EXPECT_EQ(e.problem(), "line 6: 3 fields, not 7");
-
-  const fs::path order = write_folder("paper_figures_bad_order");
-  std::string text = iterations_csv(kRegimes[2]);
-  text.replace(text.find("\n3,"), 3, "\n7,");
-  write_file(order / "runs" / "training_2" / "iterations.csv", text);
-  e = read_error(order);
-  EXPECT_EQ(e.problem(), "line 4: iteration '7' where 3 was expected");
-
-  const fs::path short_run = write_folder("paper_figures_short_run");
-  write_file(short_run / "runs" / "training_3" / "iterations.csv", iterations_csv({"random", "random"}));
-  e = read_error(short_run);
-  EXPECT_EQ(e.problem(), "has 2 iterations, but summary.json says 4");
-
-  const fs::path missing = write_folder("paper_figures_missing_csv");
-  fs::remove(missing / "runs" / "control_3" / "iterations.csv");
-  e = read_error(missing);
-  EXPECT_EQ(e.source(), (missing / "runs" / "control_3" / "iterations.csv").string());
-  EXPECT_EQ(e.problem(), "no such file");
 }
 
 }  // namespace

@@ -1,0 +1,31 @@
+#pragma once
+// iterations.csv of a learning run read back (docs/OUTPUTS.md): the one reader of the
+// file, for the reports (a run's climbs and replays), the views (Fig. 3's regimes) and
+// the sweeps (their analysis).
+
+#include <filesystem>
+#include <vector>
+
+#include "learning/action_selection.hpp"
+
+namespace crux {
+
+inline constexpr const char* kIterationsHeader = "iteration,episode,regime,hold,success,root_rise_cm,reward";
+
+// A row of iterations.csv.
+struct RunStep {
+  int iteration = 0;  // from 1
+  int episode = 0;
+  Regime regime = Regime::Random;
+  int hold_id = 0;
+  bool success = false;
+  double root_rise_cm = 0.0;
+  double reward = 0.0;
+};
+
+// Every row, each checked: the header, 7 fields, iterations numbered 1, 2, ... in
+// order, episodes from 0 rising by 0 or 1, a known regime, success 0 or 1, integers and
+// finite numbers. InputError(file, "line N: problem") otherwise.
+std::vector<RunStep> read_iterations_file(const std::filesystem::path& file);
+
+}  // namespace crux

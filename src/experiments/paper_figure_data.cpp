@@ -1,0 +1,31 @@
+#include "experiments/paper_figure_data.hpp"
+
+#include <fmt/format.h>
+
+#include "common/input_error.hpp"
+#include "experiments/iterations_file.hpp"
+#include "experiments/run_config_file.hpp"
+#include "experiments/summary_file.hpp"
+
+namespace crux {
+
+PaperFigureData read_paper_figure_data(const std::filesystem::path& folder) {
+  PaperFigureData data;
+  data.grid = read_run_config(folder / "config.toml").settings.learning.climbing.grid;
+  read_paper_summary(folder, data);
+  for (PaperConditionData& condition : data.conditions) {
+    for (std::size_t i = 0; i < condition.runs.size(); ++i) {
+      const std::filesystem::path file =
+          folder / "runs" / fmt::format("{}_{}", condition_name(condition.condition), i) / "iterations.csv";
+      const std::vector<RunStep> steps = read_iterations_file(file);
+      if (static_cast<int>(steps.size()) != data.iterations) {
+        throw InputError(file.string(),
+                         fmt::format("has {} iterations, but summary.json says {}", steps.size(), data.iterations));
+      }
+      for (const RunStep& step : steps) condition.runs[i].regimes.push_back(step.regime);
+    }
+  }
+  return data;
+}
+
+}  // namespace crux

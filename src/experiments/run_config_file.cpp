@@ -1,0 +1,32 @@
+#include "experiments/run_config_file.hpp"
+
+#include <string>
+
+#include <fmt/format.h>
+
+#include "common/input_error.hpp"
+
+namespace crux {
+
+ExperimentConfig read_run_config(const std::filesystem::path& path) {
+  static const ParameterSet kEveryKey{{"experiment", "learning", "reward", "ik", "compare", "filter", "grid", "wall"},
+                                      {}};
+  const std::string file = path.string();
+  ExperimentConfig config;
+  const ConfigLines lines = apply_config_file(file, config, kEveryKey, "the run's config");
+  for (const ConfigField& field : config_fields(config)) {
+    if (field.key.starts_with("grid.") && !lines.contains(field.key)) {
+      throw InputError(file, fmt::format("{} is missing (crux writes every grid key)", field.key));
+    }
+  }
+  try {
+    finalize_config(config);
+  } catch (const InputError& e) {
+    const auto line = lines.find(e.source());
+    throw InputError(line == lines.end() ? file : fmt::format("{}: line {}: {}", file, line->second, e.source()),
+                     e.problem());
+  }
+  return config;
+}
+
+}  // namespace crux

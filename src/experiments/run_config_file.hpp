@@ -1,0 +1,18 @@
+#pragma once
+// The config.toml that `crux paper`, `train` and `transfer` write into their output
+// folder, read back: the one reader of it, through the parameter table's own rules
+// (experiment_config), for the reports (a run's parameters) and the views (the grid).
+
+#include <filesystem>
+
+#include "experiments/experiment_config.hpp"
+
+namespace crux {
+
+// Every key, checked and finalized as a --config file is. crux writes every grid key,
+// and a view cannot draw the grid from defaults, so each must be in the file.
+// InputError(file, problem), or InputError("<file>: line N: <key>", problem) for a
+// value that finalize_config refuses.
+ExperimentConfig read_run_config(const std::filesystem::path& file);
+
+}  // namespace crux
