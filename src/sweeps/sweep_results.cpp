@@ -56,7 +56,7 @@ std::string csv_cell(const std::string& text) {
 
 std::string number_cell(const nlohmann::json& value) {
   if (value.is_null()) return "";
-  if (value.is_number_float()) return fmt::format("{:.17g}", value.get<double>());
+  if (value.is_number_float()) return fmt::format("{}", value.get<double>());
   return value.dump();
 }
 
@@ -115,7 +115,7 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
                            runs.learning_seeds.back());
         for (const std::string& metric : metric_names) {
           const auto m = std::find_if(metrics.begin(), metrics.end(), [&](const EpisodeMetric& e) { return e.name == metric; });
-          csv += m == metrics.end() ? std::string(",") : fmt::format(",{:.17g}", m->of_run(runs.runs.back(), windows));
+          csv += m == metrics.end() ? std::string(",") : fmt::format(",{}", m->of_run(runs.runs.back(), windows));
         }
         for (const char* fact : kRunFacts) csv += fmt::format(",{}", number_cell(facts.at(fact)));
         const nlohmann::json& wall_plan = wall.at("plan");
