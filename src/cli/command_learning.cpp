@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
 #include "cli/progress_bar.hpp"
+#include "common/counted.hpp"
 #include "common/input_error.hpp"
 #include "experiments/learning_parameters.hpp"
 #include "experiments/run_checkpoint.hpp"
@@ -56,8 +57,8 @@ struct PaperCommand {
     const ExperimentSettings& settings = config.settings;
     const std::string config_toml = config_file_text(config, binding.accepted(), provenance);
     check_output_folder(output, inputs_of(config, binding), overwrite);
-    ProgressBar progress(fmt::format("paper: {} walls x {} seeds x 3 conditions", settings.wall_pairs,
-                                     settings.seeds_per_wall),
+    ProgressBar progress(fmt::format("paper: {} x {} x 3 conditions", counted(settings.wall_pairs, "wall"),
+                                     counted(settings.seeds_per_wall, "seed")),
                          3L * settings.runs());
     const ExperimentResult result = run_paper_experiment(model, settings, [&](int done) { progress.update(done); });
     progress.finish();
