@@ -103,8 +103,9 @@ std::vector<EpisodeMetric> episode_metrics(const MetricWindows& w) {
       {"total_reward", "total reward of the run (area under its reward curve)", true, total_reward},
   };
   if (w.iterations >= 2 * w.window) {
-    metrics.push_back({"late_episodes", fmt::format("episodes completed in the last {}", counted(w.window, "iteration")),
-                       true, late_episodes});
+    metrics.push_back({"late_episodes",
+                       fmt::format("episodes completed in the last {}", counted(w.window, "iteration")), true,
+                       late_episodes});
   }
   metrics.push_back({"last_10_length", "mean length of the last 10 episodes (asymptotic performance)", false,
                      last_lengths});

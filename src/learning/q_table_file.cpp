@@ -90,7 +90,8 @@ QTable parse_q_table(const std::string& bytes, const std::string& path, int expe
   const auto actions = get<std::uint32_t>(bytes, at);
   const auto space_size = get<std::uint32_t>(bytes, at);
   if (space_size > kMaxStateSpaceNameBytes || space_size > bytes.size() - kFixedHeaderSize) {
-    throw InputError(path, fmt::format("truncated or corrupted: a state space name of {}", counted(space_size, "byte")));
+    throw InputError(path,
+                     fmt::format("truncated or corrupted: a state space name of {}", counted(space_size, "byte")));
   }
   const std::string state_space = bytes.substr(at, space_size);
   at += space_size;

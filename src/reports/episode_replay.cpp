@@ -75,8 +75,8 @@ std::string shown_climb_reason(const RunFolder& folder, const RecordedClimb& sho
                        counted(shown.steps.size(), "action"));
   }
   if (choice == "greedy") {
-    const std::string unfinished = fmt::format("the greedy policy did not reach the top within {} (experiment.greedy_cap)",
-                                               counted(greedy_cap, "action"));
+    const std::string unfinished = fmt::format(
+        "the greedy policy did not reach the top within {} (experiment.greedy_cap)", counted(greedy_cap, "action"));
     return shown.postures.empty() ? unfinished + " and the run completed no episode"
                                   : fmt::format("{}, since {}", last, unfinished);
   }

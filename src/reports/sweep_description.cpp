@@ -24,7 +24,8 @@ std::string sweep_text(const nlohmann::json& summary, const std::string& folder,
       parameters += fmt::format("{}{} = {}", parameters.empty() ? "" : ", ", key, value.get<std::string>());
     }
     out += fmt::format("\ncell {}{}: {} x {}\n", cell.at("cell").get<int>(),
-                       parameters.empty() ? "" : " (" + parameters + ")", counted(cell.at("wall_pairs").get<int>(), "wall"),
+                       parameters.empty() ? "" : " (" + parameters + ")",
+                       counted(cell.at("wall_pairs").get<int>(), "wall"),
                        counted(cell.at("seeds_per_wall").get<int>(), "seed"));
     for (const auto& [name, metric] : cell.at("transfer_vs_control").items()) {
       const auto& d = metric.at("transfer_minus_control");
