@@ -57,7 +57,10 @@ target_compile_features(crux_web_assets PUBLIC cxx_std_20)
 target_compile_definitions(crux_web_assets PRIVATE
   "CRUX_REPLAY_BUNDLE_FILE=\"${CRUX_REPLAY_BUNDLE}\""
   "CRUX_REPORT_CSS_FILE=\"${CRUX_REPORT_CSS}\"")
-# .incbin is invisible to the compiler's dependency scan: name the embedded files.
+# .incbin is invisible to the compiler's dependency scan: name the embedded files. A unity
+# source would compile it under another name that OBJECT_DEPENDS does not reach, so that an
+# edited web/replay/*.js left the old bundle in crux: this one file is compiled alone.
+set_target_properties(crux_web_assets PROPERTIES UNITY_BUILD OFF)
 set_source_files_properties("${_crux_web_assets_cpp}" PROPERTIES
   OBJECT_DEPENDS "${CRUX_REPLAY_BUNDLE};${CRUX_REPORT_CSS}")
 add_dependencies(crux_web_assets crux_replay_bundle)

@@ -32,7 +32,7 @@ inline void add_climb_option(CLI::App* command, std::string& choice) {
       ->add_option("--climb", choice,
                    "The run's climb: greedy (the learnt policy's, after learning; the last episode's when it does "
                    "not finish), last (the last completed episode, with its exploration) or an episode number N "
-                   "(replayed from the run's actions)")
+                   "(from 1, as in Fig. 4; replayed from the run's actions)")
       ->capture_default_str();
 }
 

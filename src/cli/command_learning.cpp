@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
 #include "cli/progress_bar.hpp"
+#include "common/counted.hpp"
 #include "common/input_error.hpp"
 #include "jobs/command_keys.hpp"
 #include "experiments/run_checkpoint.hpp"
@@ -40,8 +41,8 @@ struct PaperCommand {
   void run() {
     PaperJob job{binding.resolve(), binding.config_path(), output, overwrite};
     const ExperimentSettings settings = job.config.settings;  // the job takes the config
-    ProgressBar progress(fmt::format("paper: {} walls x {} seeds x 3 conditions", settings.wall_pairs,
-                                     settings.seeds_per_wall),
+    ProgressBar progress(fmt::format("paper: {} x {} x 3 conditions", counted(settings.wall_pairs, "wall"),
+                                     counted(settings.seeds_per_wall, "seed")),
                          3L * settings.runs());
     const PaperJobOutcome outcome =
         run_paper_job(std::move(job), {"crux paper", [&](int done) { progress.update(done); }, {}, {}});

@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
 #include "cli/progress_bar.hpp"
+#include "common/counted.hpp"
 #include "common/input_error.hpp"
 #include "common/sha256.hpp"
 #include "experiments/run_inputs.hpp"
@@ -111,7 +112,8 @@ struct SweepCommand {
   void run_job(const SweepJob& job, const BodyModel& model, MpiCluster* cluster, bool coordinator) {
     std::optional<ProgressBar> progress;
     if (coordinator) {
-      progress.emplace(fmt::format("sweep: {} cells, {} tasks", job.plan.cells.size(), job.plan.tasks.size()),
+      progress.emplace(fmt::format("sweep: {}, {}", counted(job.plan.cells.size(), "cell"),
+                                   counted(job.plan.tasks.size(), "task")),
                        static_cast<long>(job.plan.tasks.size()), true);
     }
     bool started = false;

@@ -4,6 +4,7 @@
 
 #include "agent_space/agent_descriptor.hpp"
 #include "body/urdf_loader.hpp"
+#include "common/counted.hpp"
 #include "common/input_error.hpp"
 #include "learning/q_table_file.hpp"
 #include "wall/wall_file.hpp"
@@ -24,8 +25,8 @@ Wall load_configured_wall(const ExperimentConfig& config) {
 
 void check_q_grid(const QTable& q_grid, const GridParameters& grid, const std::string& source) {
   if (q_grid.action_count() != grid.tile_count()) {
-    throw InputError(source, fmt::format("has {} actions, but the grid has {} tiles", q_grid.action_count(),
-                                         grid.tile_count()));
+    throw InputError(source, fmt::format("has {}, but the grid has {}", counted(q_grid.action_count(), "action"),
+                                         counted(grid.tile_count(), "tile")));
   }
   // Codes beyond this grid's would be read as states of another shape.
   q_grid.for_each_row([&](StateCode state, auto, auto) {

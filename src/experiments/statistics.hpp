@@ -80,8 +80,9 @@ ClusteredDifference clustered_paired_difference(const std::vector<double>& a, co
 // solved by trying n upward (the z version of the formula, without the n-dependence,
 // would underestimate n for small samples). Returns -1 when effect is 0 or not finite,
 // when sd is negative or not finite, or when n would exceed max_clusters.
+inline constexpr int kMaxClustersForPower = 100000;
 int clusters_for_power(double effect, double standard_deviation, double power = 0.8, double alpha = 0.05,
-                       int max_clusters = 100000);
+                       int max_clusters = kMaxClustersForPower);
 
 // Holm's step-down adjustment of p-values for m comparisons (Holm 1979): the i-th
 // smallest becomes max over j <= i of min(1, (m - j + 1) p_(j)), in the input's order.

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
+
 namespace crux {
 
 namespace {
@@ -90,7 +92,8 @@ int first_divergence(const RunResult& a, const RunResult& b) {
 
 std::vector<EpisodeMetric> episode_metrics(const MetricWindows& w) {
   std::vector<EpisodeMetric> metrics{
-      {"early_episodes", fmt::format("episodes completed in the first {} iterations", w.window), true, early_episodes},
+      {"early_episodes", fmt::format("episodes completed in the first {}", counted(w.window, "iteration")), true,
+       early_episodes},
       {"jumpstart", "length of the first episode (iterations; the run's length if none)", false, jumpstart},
       {"time_to_threshold",
        fmt::format("iterations to the end of the first episode of at most {} (the run's length if none)",
@@ -100,7 +103,8 @@ std::vector<EpisodeMetric> episode_metrics(const MetricWindows& w) {
       {"total_reward", "total reward of the run (area under its reward curve)", true, total_reward},
   };
   if (w.iterations >= 2 * w.window) {
-    metrics.push_back({"late_episodes", fmt::format("episodes completed in the last {} iterations", w.window), true,
+    metrics.push_back({"late_episodes",
+                       fmt::format("episodes completed in the last {}", counted(w.window, "iteration")), true,
                        late_episodes});
   }
   metrics.push_back({"last_10_length", "mean length of the last 10 episodes (asymptotic performance)", false,

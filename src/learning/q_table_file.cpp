@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "common/atomic_file.hpp"
+#include "common/counted.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
 #include "common/printable.hpp"
@@ -89,7 +90,8 @@ QTable parse_q_table(const std::string& bytes, const std::string& path, int expe
   const auto actions = get<std::uint32_t>(bytes, at);
   const auto space_size = get<std::uint32_t>(bytes, at);
   if (space_size > kMaxStateSpaceNameBytes || space_size > bytes.size() - kFixedHeaderSize) {
-    throw InputError(path, fmt::format("truncated or corrupted: a state space name of {} bytes", space_size));
+    throw InputError(path,
+                     fmt::format("truncated or corrupted: a state space name of {}", counted(space_size, "byte")));
   }
   const std::string state_space = bytes.substr(at, space_size);
   at += space_size;
@@ -97,22 +99,22 @@ QTable parse_q_table(const std::string& bytes, const std::string& path, int expe
   const std::size_t header_size = kFixedHeaderSize + space_size;
   const std::uint64_t row_size = 8 + 12 * static_cast<std::uint64_t>(actions);
   if (actions == 0 || rows > (bytes.size() - header_size) / row_size) {
-    throw InputError(path, fmt::format("truncated or corrupted: {} rows of {} actions do not fit in {} bytes", rows,
-                                       actions, bytes.size()));
+    throw InputError(path, fmt::format("truncated or corrupted: {} of {} do not fit in {}", counted(rows, "row"),
+                                       counted(actions, "action"), counted(bytes.size(), "byte")));
   }
   const std::uint64_t expected_size = header_size + rows * row_size + 8;
   if (bytes.size() != expected_size) {
-    throw InputError(path, fmt::format("{}: expected {} bytes for {} rows, found {}",
-                                       bytes.size() < expected_size ? "truncated" : "trailing data", expected_size,
-                                       rows, bytes.size()));
+    throw InputError(path, fmt::format("{}: expected {} for {}, found {}",
+                                       bytes.size() < expected_size ? "truncated" : "trailing data",
+                                       counted(expected_size, "byte"), counted(rows, "row"), bytes.size()));
   }
   std::size_t checksum_at = bytes.size() - 8;
   if (get<std::uint64_t>(bytes, checksum_at) != q_table_checksum(bytes, bytes.size() - 8)) {
     throw InputError(path, "corrupted: the checksum does not match the contents");
   }
   if (static_cast<int>(actions) != expected_action_count) {
-    throw InputError(path, fmt::format("the table has {} actions where {} are expected (a different grid?)", actions,
-                                       expected_action_count));
+    throw InputError(path, fmt::format("the table has {} where {} are expected (a different grid?)",
+                                       counted(actions, "action"), expected_action_count));
   }
   if (state_space != expected_state_space) {
     throw InputError(path, fmt::format("the table was learnt on {}, this run uses {}", printable(state_space),

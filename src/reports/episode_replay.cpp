@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "common/input_error.hpp"
 
 namespace crux {
@@ -12,7 +13,8 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
                              int episode, const std::string& flag) {
   const int episodes = folder.steps.empty() ? 0 : folder.steps.back().episode + 1;
   if (episode < 0 || episode >= episodes) {
-    throw InputError(flag, fmt::format("the run has episodes 0 to {}, not {}", episodes - 1, episode));
+    throw InputError(flag, episodes == 0 ? std::string("the run has no episode")
+                                         : fmt::format("the run has episodes 1 to {}, not {}", episodes, episode + 1));
   }
   const std::string iterations_file = (folder.directory / "iterations.csv").string();
   ClimbingMdp mdp(model, folder.wall, parameters);
@@ -51,12 +53,35 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
 RecordedClimb climb_to_show(const RunFolder& folder, const BodyModel& model, const ClimbingParameters& parameters,
                             const std::string& choice, const std::string& flag) {
   if (choice == "greedy" || choice == "last") return chosen_climb(folder, choice);
-  int episode = -1;
-  const auto [end, error] = std::from_chars(choice.data(), choice.data() + choice.size(), episode);
+  int number = 0;
+  const auto [end, error] = std::from_chars(choice.data(), choice.data() + choice.size(), number);
   if (error != std::errc() || end != choice.data() + choice.size() || choice.empty()) {
-    throw InputError(flag, fmt::format("expected greedy, last or an episode number, got '{}'", choice.substr(0, 40)));
+    throw InputError(flag, fmt::format("expected greedy, last or an episode number (from 1), got '{}'",
+                                       choice.substr(0, 40)));
   }
-  return replay_episode(folder, model, parameters, episode, flag);
+  if (number < 1) throw InputError(flag, fmt::format("episodes are numbered from 1, not {}", number));
+  return replay_episode(folder, model, parameters, number - 1, flag);
+}
+
+std::string shown_climb_reason(const RunFolder& folder, const RecordedClimb& shown, const std::string& choice,
+                               int greedy_cap, const std::string& flag) {
+  const std::string last = fmt::format("the last completed episode (episode {})", folder.last.episode + 1);
+  if (shown.kind == "greedy") {
+    return fmt::format("the greedy policy's climb after learning, which reaches the top in {}",
+                       counted(shown.steps.size(), "action"));
+  }
+  if (choice == "greedy") {
+    const std::string unfinished = fmt::format(
+        "the greedy policy did not reach the top within {} (experiment.greedy_cap)", counted(greedy_cap, "action"));
+    return shown.postures.empty() ? unfinished + " and the run completed no episode"
+                                  : fmt::format("{}, since {}", last, unfinished);
+  }
+  if (choice == "last") {
+    return shown.postures.empty() ? std::string("the run completed no episode")
+                                  : fmt::format("{}, as {} last asks", last, flag);
+  }
+  return fmt::format("episode {}, as {} {} asks{}", shown.episode + 1, flag, choice,
+                     shown.finished ? "" : "; the run ended during it, so it does not reach the top");
 }
 
 }  // namespace crux

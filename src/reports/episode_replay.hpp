@@ -12,14 +12,23 @@
 
 namespace crux {
 
-// Episode `episode` (from 0) of `folder`, whose climb was read (read_run_climb); the
-// last episode may be unfinished. InputError naming `flag` for an episode the run does
-// not have, or the folder's iterations.csv when its actions are not the MDP's.
+// Episode `episode` of `folder` (an index from 0, as in iterations.csv), whose climb was
+// read (read_run_climb); the last episode may be unfinished. InputError naming `flag`
+// for an episode the run does not have (numbered from 1 there, as the user gives it), or
+// the folder's iterations.csv when its actions are not the MDP's.
 RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, const ClimbingParameters& parameters,
                              int episode, const std::string& flag);
 
-// The climb named by `choice`: "greedy", "last" (chosen_climb) or an episode number.
+// The climb named by `choice`: "greedy", "last" (chosen_climb) or an episode number N,
+// counted from 1 as the paper's Fig. 4 and crux's figures count episodes.
 RecordedClimb climb_to_show(const RunFolder& folder, const BodyModel& model, const ClimbingParameters& parameters,
                             const std::string& choice, const std::string& flag);
+
+// Which climb `shown` (climb_to_show's for `choice`) is and why it is the one, for the
+// reader of a report: the greedy climb, or the last completed episode because the greedy
+// policy did not reach the top within `greedy_cap` actions, or the episode `flag` asked
+// for. With no climb to show (no postures), why there is none.
+std::string shown_climb_reason(const RunFolder& folder, const RecordedClimb& shown, const std::string& choice,
+                               int greedy_cap, const std::string& flag);
 
 }  // namespace crux

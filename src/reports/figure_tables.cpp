@@ -35,7 +35,7 @@ std::string fig2b_csv(const ExperimentResult& result, const GridParameters& grid
     const auto maps = mean_q_grid_maps(c, grid);
     for (int l = 0; l < kLimbCount; ++l) {
       for (int t = 0; t < grid.tile_count(); ++t) {
-        csv += fmt::format("{},{},{},{},{},{:.17g}\n", condition_name(condition), limb_name(static_cast<Limb>(l)), t,
+        csv += fmt::format("{},{},{},{},{},{}\n", condition_name(condition), limb_name(static_cast<Limb>(l)), t,
                            t % grid.columns, t / grid.columns, maps[t][l]);
       }
     }
@@ -57,7 +57,7 @@ std::string fig3_csv(const ExperimentResult& result, int iterations) {
       }
     }
     for (int i = 0; i < iterations; ++i) {
-      csv += fmt::format("{},{},{:.17g},{:.17g},{:.17g}\n", condition_name(condition), i + 1, cumulative[i][0],
+      csv += fmt::format("{},{},{},{},{}\n", condition_name(condition), i + 1, cumulative[i][0],
                          cumulative[i][1], cumulative[i][2]);
     }
   }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "reports/paper_reference.hpp"
 
 namespace crux {
@@ -45,8 +46,8 @@ std::string filter_text(const FilterReport& report) {
   const std::size_t chosen = selected_reading(report);
   const FilterCounts& c = report.counts[chosen];
   std::string out =
-      fmt::format("{} random walls (seed {}), span <= {} m, crossed arms and legs rejected\n", report.wall_count,
-                  report.wall_seed, report.parameters.max_span_m) +
+      fmt::format("{} (seed {}), span <= {} m, crossed arms and legs rejected\n",
+                  counted(report.wall_count, "random wall"), report.wall_seed, report.parameters.max_span_m) +
       fmt::format("{:<34} {:>14} {:>14}\n", "reading of 'both feet above the hands'", "3-configs", "4-configs");
   for (std::size_t r = 0; r < report.counts.size(); ++r) {
     out += fmt::format("{:<34} {:>13.2f}% {:>13.2f}%{}\n", reading_name(kFeetAboveHandsReadings[r]),

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "learning/action_selection.hpp"
 #include "reports/paper_reference.hpp"
 #include "views/svg_document.hpp"
@@ -34,6 +35,13 @@ std::string number(const Json& value, const char* format = "{:.3g}") {
   return fmt::format(fmt::runtime(format), value.get<double>());
 }
 
+// A count from the summary with its noun ("1 seed", "6 seeds"); a dash for the count
+// when the summary lacks it.
+std::string counted_value(const Json& value, std::string_view singular) {
+  return value.is_number_integer() ? counted(value.get<long long>(), singular)
+                                   : "&ndash; " + counted_noun(2, singular);
+}
+
 std::string interval(const Json& value, const char* format = "{:.3g}") {
   if (!value.is_array() || value.size() != 2) return "&ndash;";
   return fmt::format("[{}, {}]", number(value[0], format), number(value[1], format));
@@ -62,7 +70,7 @@ class Page {
       write_run_facts();
     }
     write_figures();
-    if (!page_.replay.is_null()) write_replay();
+    write_replay();
     out_ += "</main>\n";
     if (!page_.replay.is_null()) {
       std::string data = page_.replay.dump();
@@ -92,9 +100,10 @@ class Page {
     fact("crux", text(at(s, {"provenance", "crux_version"})) + " (" + text(at(s, {"provenance", "git_commit"})) + ")");
     fact("body model", text(at(s, {"provenance", "urdf"})));
     fact("seed", text(at(s, {"seed"})));
-    fact("design", fmt::format("{} wall pair(s) &times; {} seed(s) per wall, {} iterations per run, {} IK solver",
-                               text(at(s, {"wall_pairs"})), text(at(s, {"seeds_per_wall"})),
-                               text(at(s, {"iterations"})), text(at(s, {"solver"}))));
+    fact("design", fmt::format("{} &times; {} per wall, {} per run, {} IK solver",
+                               counted_value(at(s, {"wall_pairs"}), "wall pair"),
+                               counted_value(at(s, {"seeds_per_wall"}), "seed"),
+                               counted_value(at(s, {"iterations"}), "iteration"), text(at(s, {"solver"}))));
     out_ += "</dl>\n";
   }
 
@@ -104,9 +113,9 @@ class Page {
     out_ += "<section id=\"table-one\">\n<h2>Table I: actions by regime</h2>\n";
     append_format(out_,
         "<p>Pooled over the runs of each condition; the paper's values in brackets (section IV, Table I). "
-        "Beginning = the first {} iterations. The control condition, absent from the paper, learns on the transfer "
+        "Beginning = the first {}. The control condition, absent from the paper, learns on the transfer "
         "walls without transferred knowledge.</p>\n",
-        number(at(page_.summary, {"beginning_iterations"}), "{:.0f}"));
+        counted_value(at(page_.summary, {"beginning_iterations"}), "iteration"));
     static const char* const metrics[3] = {"vertical rise of e0 (cm)", "success rate (%)", "actions per run"};
     for (int w = 0; w < 2; ++w) {
       append_format(out_, "<table class=\"numbers\">\n<caption>{}</caption>\n<thead><tr><th></th><th></th>", kWindowNames[w]);
@@ -147,9 +156,9 @@ class Page {
     out_ += "<section id=\"statistics\">\n<h2>Transfer minus control</h2>\n";
     append_format(out_,
         "<p>Each transfer run is paired with a control run on the same wall and seed. Differences are averaged per "
-        "wall, then over the {} walls: 95&nbsp;% intervals by Student's t over walls and by a cluster bootstrap over "
+        "wall, then over the {}: 95&nbsp;% intervals by Student's t over walls and by a cluster bootstrap over "
         "walls; p from a two-sided t-test over walls, not corrected for the number of metrics.</p>\n",
-        number(at(page_.summary, {"wall_pairs"}), "{:.0f}"));
+        counted_value(at(page_.summary, {"wall_pairs"}), "wall"));
     out_ +=
         "<table class=\"numbers\">\n<thead><tr><th>metric</th><th>better</th><th>transfer</th><th>control</th>"
         "<th>difference</th><th>95&nbsp;% CI (t)</th><th>95&nbsp;% CI (bootstrap)</th><th>p</th><th>walls</th>"
@@ -195,13 +204,22 @@ class Page {
     out_ += "</section>\n";
   }
 
+  // The replay names the climb it shows and why that one (the greedy policy's may not
+  // reach the top); without a climb to show, the section says why there is none.
   void write_replay() {
-    append_format(out_,
-        "<section id=\"replay\">\n<h2>Replay: {}</h2>\n<p>The climb move by move. Between two recorded "
-        "postures the body follows the path of the paper's gradient-descent IK (Algorithm 1). Drag to orbit, "
-        "scroll to zoom; space plays and pauses, the arrow keys step.</p>\n<div id=\"crux-replay\"></div>\n"
-        "</section>\n",
-        xml_escaped(page_.replay_title));
+    if (page_.replay.is_null()) {
+      if (!page_.replay_reason.empty()) {
+        append_format(out_, "<section id=\"replay\">\n<h2>Replay</h2>\n<p>No replay: {}.</p>\n</section>\n",
+                      xml_escaped(page_.replay_reason));
+      }
+      return;
+    }
+    append_format(out_, "<section id=\"replay\">\n<h2>Replay: {}</h2>\n", xml_escaped(page_.replay_title));
+    if (!page_.replay_reason.empty()) append_format(out_, "<p>Replayed: {}.</p>\n", xml_escaped(page_.replay_reason));
+    out_ +=
+        "<p>The climb move by move. Between two recorded postures the body follows the path of the paper's "
+        "gradient-descent IK (Algorithm 1). Drag to orbit, scroll to zoom; space plays and pauses, the arrow keys "
+        "step.</p>\n<div id=\"crux-replay\"></div>\n</section>\n";
   }
 
   const ReportPage& page_;

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "ik/reach_queries.hpp"
 
 namespace crux {
@@ -63,9 +64,10 @@ std::string ik_demo_text(const BodyModel& model, const std::vector<IkDemoSolve>&
   for (std::size_t i = 0; i < solves.size(); ++i) {
     const IkDemoSolve& s = solves[i];
     if (i == 0 || solves[i - 1].query != s.query) out += fmt::format("\n{}:\n", s.query);
-    out += fmt::format("  {:<5} {:<11} {:5d} iterations, {:5.2f} s simulated, residual {:.3f} m, {:8.1f} us\n",
+    out += fmt::format("  {:<5} {:<11} {:5d} {}, {:5.2f} s simulated, residual {:.3f} m, {:8.1f} us\n",
                        ik_solver_name(s.solver), s.result.reached ? "reached" : "NOT reached", s.result.iterations,
-                       s.result.simulated_time_s, s.result.residual_m, s.wall_clock_us);
+                       counted_noun(s.result.iterations, "iteration"), s.result.simulated_time_s, s.result.residual_m,
+                       s.wall_clock_us);
   }
   return out;
 }

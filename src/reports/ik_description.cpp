@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "body/kinematics.hpp"
+#include "common/counted.hpp"
 
 namespace crux {
 
@@ -38,8 +39,8 @@ std::string ik_result_text(const BodyModel& model, IkSolverKind solver, const Re
   BodyData data(model);
   forward_kinematics(model, data, result.posture);
   std::string out =
-      fmt::format("solver {}: {} after {} iterations ({:.2f} s simulated), residual {:.4f} m\n",
-                  ik_solver_name(solver), result.reached ? "reached" : "NOT reached", result.iterations,
+      fmt::format("solver {}: {} after {} ({:.2f} s simulated), residual {:.4f} m\n", ik_solver_name(solver),
+                  result.reached ? "reached" : "NOT reached", counted(result.iterations, "iteration"),
                   result.simulated_time_s, result.residual_m) +
       fmt::format("root target H(C4) = ({:.3f}, {:.3f}, {:.3f}); root at ({:.3f}, {:.3f}, {:.3f})\n", target.root.x(),
                   target.root.y(), target.root.z(), data.points[0].x(), data.points[0].y(), data.points[0].z());
@@ -65,12 +66,13 @@ nlohmann::ordered_json solver_agreement_json(const SolverAgreement& a, std::uint
 }
 
 std::string solver_agreement_text(const SolverAgreement& a, std::uint64_t seed) {
-  return fmt::format("{} climbing-like queries (seed {}, {} of them clearly unreachable)\n", a.queries, seed,
-                     a.far_queries) +
+  return fmt::format("{} (seed {}, {} of them clearly unreachable)\n",
+                     counted(a.queries, "climbing-like query", "climbing-like queries"), seed, a.far_queries) +
          fmt::format("paper solver reached {} ({:.1f} %), fast solver reached {} ({:.1f} %)\n", a.paper_reached,
                      100.0 * a.paper_reached / a.queries, a.fast_reached, 100.0 * a.fast_reached / a.queries) +
-         fmt::format("verdicts agree on {} queries: {:.2f} % (only paper reached {}, only fast reached {})\n", a.agree,
-                     100.0 * a.agreement(), a.only_paper_reached, a.only_fast_reached) +
+         fmt::format("verdicts agree on {}: {:.2f} % (only paper reached {}, only fast reached {})\n",
+                     counted(a.agree, "query", "queries"), 100.0 * a.agreement(), a.only_paper_reached,
+                     a.only_fast_reached) +
          fmt::format("mean per query: paper {:.1f} iterations, {:.1f} us; fast {:.1f} iterations, {:.1f} us\n",
                      static_cast<double>(a.paper_iterations) / a.queries, 1e6 * a.paper_seconds / a.queries,
                      static_cast<double>(a.fast_iterations) / a.queries, 1e6 * a.fast_seconds / a.queries);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "common/printable.hpp"
 
 namespace crux {
@@ -24,16 +25,17 @@ nlohmann::ordered_json plan_json(const Wall& wall, const Plan& plan) {
 std::string plan_text(const Wall& wall, const Plan& plan) {
   if (plan.stopped_at_limit) {
     return fmt::format(
-        "no climb found on '{}' within {} IK solves ({} states explored); the search stopped at its limit, "
+        "no climb found on '{}' within {} ({} explored); the search stopped at its limit, "
         "--plan-max-solves raises it\n",
-        printable(wall.name), plan.ik_solves, plan.expanded_states);
+        printable(wall.name), counted(plan.ik_solves, "IK solve"), counted(plan.expanded_states, "state"));
   }
   if (!plan.found) {
-    return fmt::format("no climb exists on '{}' ({} states explored, {} IK solves)\n", printable(wall.name),
-                       plan.expanded_states, plan.ik_solves);
+    return fmt::format("no climb exists on '{}' ({} explored, {})\n", printable(wall.name),
+                       counted(plan.expanded_states, "state"), counted(plan.ik_solves, "IK solve"));
   }
-  std::string out = fmt::format("shortest climb on '{}': {} actions ({} states explored, {} IK solves)\n",
-                                printable(wall.name), plan.length, plan.expanded_states, plan.ik_solves);
+  std::string out = fmt::format("shortest climb on '{}': {} ({} explored, {})\n", printable(wall.name),
+                                counted(plan.length, "action"), counted(plan.expanded_states, "state"),
+                                counted(plan.ik_solves, "IK solve"));
   for (int i = 0; i < plan.length; ++i) {
     out += fmt::format("  {:2d}. {:<10} -> hold {}\n", i + 1, limb_name(plan.limbs[i]), plan.hold_ids[i]);
   }

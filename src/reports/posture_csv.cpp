@@ -13,7 +13,7 @@ std::string posture_csv(const BodyModel& model, std::span<const Posture> posture
   for (std::size_t n = 0; n < postures.size(); ++n) {
     csv += fmt::format("{}", n);
     for (const PostureCsvColumn& column : columns) csv += ',' + column.cells.at(n);
-    for (int i = 0; i < kConfigurationDof; ++i) csv += fmt::format(",{:.17g}", postures[n][i]);
+    for (int i = 0; i < kConfigurationDof; ++i) csv += fmt::format(",{}", postures[n][i]);
     csv += '\n';
   }
   return csv;

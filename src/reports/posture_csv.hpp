@@ -1,6 +1,6 @@
 #pragma once
 // A sequence of postures as CSV: one row per posture, one column per joint of the body
-// (the URDF's names), values to 17 significant digits so that they read back exactly.
+// (the URDF's names), each value the shortest text that reads back to the same double.
 // climb.csv and greedy_climb.csv of a run and the IK path of `crux ik -o` share it.
 
 #include <span>

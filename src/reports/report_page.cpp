@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "reports/episode_replay.hpp"
 #include "reports/replay_data.hpp"
 #include "reports/report_figures.hpp"
@@ -20,6 +21,7 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
   page.replay_title = fmt::format("{} on '{}': {}", run.name, run.wall.name, climb_description(climb));
   page.replay_climb = climb.kind;
   page.replay_episode = climb.episode;
+  page.replay_reason = shown_climb_reason(run, climb, climb_choice, recorded.settings.learning.greedy_cap, "--climb");
   if (!climb.postures.empty()) {
     page.replay = replay_data(model, run.wall, climb, climbing.reachability, page.replay_title, run.directory.string());
   }
@@ -44,7 +46,9 @@ nlohmann::ordered_json written_report_json(const ReportPage& page, const std::st
   out["figures"] = page.figures.size();
   out["replay_run"] = run_name;
   out["replay_climb"] = page.replay.is_null() ? nlohmann::ordered_json() : nlohmann::ordered_json(page.replay_climb);
-  out["replay_episode"] = page.replay_episode;
+  // Episodes are numbered from 1 wherever crux shows one, as in the paper's Fig. 4.
+  out["replay_episode"] = page.replay_episode < 0 ? -1 : page.replay_episode + 1;
+  out["replay_reason"] = page.replay_reason;
   out["replay_moves"] = replay_moves(page);
   out["replay_frames"] = replay_frames(page);
   out["seconds"] = seconds;
@@ -53,8 +57,13 @@ nlohmann::ordered_json written_report_json(const ReportPage& page, const std::st
 
 std::string written_report_text(const ReportPage& page, const std::string& run_name, const std::string& file,
                                 std::size_t bytes, double seconds) {
-  return fmt::format("wrote {} ({:.1f} MB, {} figures, a replay of {} with {} moves) in {:.2f} s\n", file,
-                     static_cast<double>(bytes) / 1e6, page.figures.size(), run_name, replay_moves(page), seconds);
+  const std::string written = fmt::format("wrote {} ({:.1f} MB, {}", file, static_cast<double>(bytes) / 1e6,
+                                         counted(page.figures.size(), "figure"));
+  if (page.replay.is_null()) {
+    return fmt::format("{}, no replay) in {:.2f} s\nno replay: {}\n", written, seconds, page.replay_reason);
+  }
+  return fmt::format("{}, a replay of {} with {}) in {:.2f} s\nreplayed: {}\n", written, run_name,
+                     counted(replay_moves(page), "move"), seconds, page.replay_reason);
 }
 
 }  // namespace crux

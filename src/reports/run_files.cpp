@@ -14,7 +14,7 @@ void write_run_files(const std::filesystem::path& directory, const RunResult& ru
   std::string iterations = "iteration,episode,regime,hold,success,root_rise_cm,reward\n";
   for (std::size_t i = 0; i < run.iterations.size(); ++i) {
     const IterationRecord& r = run.iterations[i];
-    iterations += fmt::format("{},{},{},{},{},{:.17g},{:.17g}\n", i + 1, r.episode, regime_name(r.regime), r.hold_id,
+    iterations += fmt::format("{},{},{},{},{},{},{}\n", i + 1, r.episode, regime_name(r.regime), r.hold_id,
                               r.success ? 1 : 0, 100.0 * r.root_rise_m, r.reward);
   }
   write_file_atomically(directory / "iterations.csv", iterations);
@@ -29,7 +29,7 @@ void write_run_files(const std::filesystem::path& directory, const RunResult& ru
   PostureCsvColumn holds{"hold", {"0"}}, rewards{"reward", {"0"}};
   for (const ClimbMove& move : run.greedy_moves) {
     holds.cells.push_back(fmt::format("{}", move.hold_id));
-    rewards.cells.push_back(fmt::format("{:.17g}", move.reward));
+    rewards.cells.push_back(fmt::format("{}", move.reward));
   }
   write_file_atomically(directory / "greedy_climb.csv", posture_csv(model, run.greedy_climb, "step", {holds, rewards}));
 }

@@ -56,7 +56,7 @@ std::string paper_run_names(const fs::path& folder) {
 
 std::string climb_description(const RecordedClimb& climb) {
   return climb.kind == "greedy" ? std::string("the greedy policy's climb after learning")
-                                : fmt::format("the climb of episode {}{}", climb.episode,
+                                : fmt::format("the climb of episode {}{}", climb.episode + 1,  // from 1, as in Fig. 4
                                               climb.finished ? "" : " (unfinished)");
 }
 

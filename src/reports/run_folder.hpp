@@ -20,7 +20,7 @@ namespace crux {
 // A climb the run recorded, with the moves between its postures.
 struct RecordedClimb {
   std::string kind;  // "last": the last completed episode; "greedy": the learnt policy's climb
-  int episode = -1;  // of the last climb; -1 for the greedy climb, or when no episode ended
+  int episode = -1;  // its index from 0, as in iterations.csv; -1 for the greedy climb, or when no episode ended
   bool finished = true;  // false for a replayed episode that the run's iterations cut off
   std::vector<RunStep> steps;     // every move; a greedy move has iteration 0
   std::vector<Posture> postures;  // the start, then one per reached move
@@ -62,8 +62,8 @@ std::vector<int> read_episode_lengths(const std::filesystem::path& directory);
 // iterations.csv into `folder`; InputError naming the file and the problem.
 void read_run_climb(RunFolder& folder, const BodyModel& model);
 
-// "the greedy policy's climb after learning" or "the climb of episode N" (with
-// "unfinished" when the run ended during it).
+// "the greedy policy's climb after learning" or "the climb of episode N" (N from 1, as
+// the paper's Fig. 4 counts episodes; with "unfinished" when the run ended during it).
 std::string climb_description(const RecordedClimb& climb);
 
 // The climb to show: "greedy" is the greedy climb when it finishes, else the last

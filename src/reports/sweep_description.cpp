@@ -2,13 +2,15 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
+
 namespace crux {
 
 std::string sweep_text(const nlohmann::json& summary, const std::string& folder, std::size_t tasks, std::size_t kept,
                        double seconds) {
   std::string out;
   const auto& cells = summary.at("cells");
-  out += fmt::format("crux sweep: {} cell{}", cells.size(), cells.size() == 1 ? "" : "s");
+  out += "crux sweep: " + counted(cells.size(), "cell");
   const auto& keys = summary.at("listed_keys");
   if (!keys.empty()) {
     std::string names;
@@ -21,9 +23,10 @@ std::string sweep_text(const nlohmann::json& summary, const std::string& folder,
     for (const auto& [key, value] : cell.at("parameters").items()) {
       parameters += fmt::format("{}{} = {}", parameters.empty() ? "" : ", ", key, value.get<std::string>());
     }
-    out += fmt::format("\ncell {}{}: {} walls x {} seeds\n", cell.at("cell").get<int>(),
-                       parameters.empty() ? "" : " (" + parameters + ")", cell.at("wall_pairs").get<int>(),
-                       cell.at("seeds_per_wall").get<int>());
+    out += fmt::format("\ncell {}{}: {} x {}\n", cell.at("cell").get<int>(),
+                       parameters.empty() ? "" : " (" + parameters + ")",
+                       counted(cell.at("wall_pairs").get<int>(), "wall"),
+                       counted(cell.at("seeds_per_wall").get<int>(), "seed"));
     for (const auto& [name, metric] : cell.at("transfer_vs_control").items()) {
       const auto& d = metric.at("transfer_minus_control");
       const auto& interval = d.at("ci95_t_over_walls");
@@ -34,7 +37,8 @@ std::string sweep_text(const nlohmann::json& summary, const std::string& folder,
                          number(interval.at(1)), number(d.at("p_value")), number(d.at("p_value_holm_over_cells")));
     }
   }
-  out += fmt::format("\nwrote {} ({:.1f} s; {} of {} tasks kept from an earlier start)\n", folder, seconds, kept, tasks);
+  out += fmt::format("\nwrote {} ({:.1f} s; {} of {} kept from an earlier start)\n", folder, seconds, kept,
+                     counted(tasks, "task"));
   return out;
 }
 

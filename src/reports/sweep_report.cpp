@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "views/svg_document.hpp"
 
 namespace crux {
@@ -44,9 +45,9 @@ std::string sweep_report_html(const nlohmann::ordered_json& summary, const std::
       ".figures svg{width:100%;height:auto}\n</style>\n</head>\n<body>\n<h1>crux sweep</h1>\n";
   std::string keys;
   for (const auto& key : summary.at("listed_keys")) keys += (keys.empty() ? "" : ", ") + key.get<std::string>();
-  html += fmt::format("<p>{} cells over {}. Transfer minus control per metric: mean over walls, Student-t 95 % "
+  html += fmt::format("<p>{} over {}. Transfer minus control per metric: mean over walls, Student-t 95 % "
                       "interval over walls, p-value, and the p-value Holm-adjusted over the cells.</p>\n",
-                      cells.size(), xml_escaped(keys.empty() ? std::string("no listed key") : keys));
+                      counted(cells.size(), "cell"), xml_escaped(keys.empty() ? std::string("no listed key") : keys));
   html += "<table>\n<tr><th>cell</th>";
   for (const std::string& metric : metrics) {
     html += fmt::format("<th title=\"{}\">{}</th>",

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "experiments/table_one.hpp"
 #include "reports/paper_reference.hpp"
 
@@ -14,8 +15,8 @@ std::string table_one_text(const ExperimentResult& result, const ExperimentSetti
     ours[static_cast<int>(c)] = table_one(result.conditions[static_cast<int>(c)].runs, settings.analysis.beginning);
   }
   std::string text = fmt::format(
-      "\nTable I: ours (paper's in brackets), over {} runs per condition; beginning = first {} iterations\n",
-      settings.runs(), settings.analysis.beginning);
+      "\nTable I: ours (paper's in brackets), over {} per condition; beginning = first {}\n",
+      counted(settings.runs(), "run"), counted(settings.analysis.beginning, "iteration"));
   for (const Window w : {Window::Beginning, Window::Overall}) {
     text += fmt::format("\n{:<26}{:>16}{:>16}{:>10}\n", window_name(w), "training", "transfer", "control");
     for (int metric = 0; metric < 3; ++metric) {

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "common/printable.hpp"
 #include "reports/paper_reference.hpp"
 #include "reports/table_one_text.hpp"
@@ -23,9 +24,9 @@ std::string episode_text(const ExperimentResult& result, const ExperimentSetting
       episodes += static_cast<double>(r.episode_lengths.size()) / total;
       if (r.greedy_length > 0) greedy += r.greedy_length, ++greedy_ok;
     }
-    text += fmt::format("  {:<9} {:6.1f} episodes per run; greedy climb {} ({} of {} runs finish)\n",
-                        condition_name(c), episodes,
-                        greedy_ok ? fmt::format("{:.1f}", greedy / greedy_ok) : std::string("-"), greedy_ok, total);
+    text += fmt::format("  {:<9} {:6.1f} episodes per run; greedy climb finishes in {} of {}{}\n", condition_name(c),
+                        episodes, greedy_ok, counted(total, "run"),
+                        greedy_ok ? fmt::format(", in {:.1f} actions on average", greedy / greedy_ok) : "");
   }
   if (settings.plan) {
     double plan = 0;
@@ -35,21 +36,35 @@ std::string episode_text(const ExperimentResult& result, const ExperimentSetting
       if (w.plan.found) plan += w.plan.length, ++found;
       if (w.plan.stopped_at_limit) ++stopped;
     }
-    text += fmt::format("  exact shortest climb: {:.1f} actions on average ({} of {} walls; the paper: about {})\n",
-                        found ? plan / found : 0.0, found, result.walls.size(), kPaperOptimalClimbLength);
+    text += fmt::format("  exact shortest climb: {} ({} of {}; the paper: about {})\n",
+                        found ? fmt::format("{:.1f} actions on average", plan / found) : std::string("none found"),
+                        found, counted(result.walls.size(), "wall"), kPaperOptimalClimbLength);
     if (stopped > 0) {
-      text += fmt::format("  the exact planner stopped at its limit of {} IK solves on {} walls (--plan-max-solves)\n",
-                          settings.plan_search.max_ik_solves, stopped);
+      text += fmt::format("  the exact planner stopped at its limit of {} on {} (--plan-max-solves)\n",
+                          counted(settings.plan_search.max_ik_solves, "IK solve"), counted(stopped, "wall"));
     }
   }
   return text;
 }
 
+// The walls for 80 % power, or why there is no such number (clusters_for_power's -1).
+std::string walls_for_power_text(const MetricComparison& m) {
+  if (m.walls_for_power > 0) return std::to_string(m.walls_for_power);
+  const ClusteredDifference& d = m.transfer_minus_control;
+  if (d.clusters < 2) {
+    return "not estimable (needs at least 2 walls: with one, the difference has no spread to plan from)";
+  }
+  if (d.mean == 0.0) return "not estimable (the mean difference is 0: no effect to detect)";
+  if (!std::isfinite(d.mean) || !std::isfinite(d.standard_deviation)) {
+    return "not estimable (the difference is not finite)";
+  }
+  return fmt::format("more than {} (the difference is tiny against its spread over walls)", kMaxClustersForPower);
+}
+
 std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentSettings& settings) {
   std::string text = fmt::format(
-      "\nTransfer against control, paired by wall and seed ({} walls x {} seeds); means over walls with 95 % "
-      "intervals:\n",
-      settings.wall_pairs, settings.seeds_per_wall);
+      "\nTransfer against control, paired by wall and seed ({} x {}); means over walls with 95 % intervals:\n",
+      counted(settings.wall_pairs, "wall"), counted(settings.seeds_per_wall, "seed"));
   for (const MetricComparison& m : analysis.metrics) {
     const auto& tr = m.per_condition[static_cast<int>(Condition::Transfer)];
     const auto& co = m.per_condition[static_cast<int>(Condition::Control)];
@@ -61,31 +76,32 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentSe
         "{}\n",
         tr.mean, tr.half_width, co.mean, co.half_width, d.mean, 100 * m.relative_difference, d.t_low, d.t_high,
         d.bootstrap_low, d.bootstrap_high, d.p_value,
-        std::isfinite(m.paired_correlation) ? fmt::format("{:.2f}", m.paired_correlation) : "-",
-        m.walls_for_power > 0 ? std::to_string(m.walls_for_power) : "-");
+        std::isfinite(m.paired_correlation) ? fmt::format("{:.2f}", m.paired_correlation)
+                                            : "undefined (needs 2 pairs or more and spread in both conditions)",
+        walls_for_power_text(m));
   }
-  text += fmt::format("\nTake-off (first episode of at most {} iterations, at least half w-greedy):\n",
-                      settings.analysis.threshold_length);
+  text += fmt::format("\nTake-off (first episode of at most {}, at least half w-greedy):\n",
+                      counted(settings.analysis.threshold_length, "iteration"));
   for (const Condition c : kConditions) {
     const ExperimentAnalysis::TakeOff& t = analysis.take_off[static_cast<int>(c)];
-    text += fmt::format("  {:<9} {} of {} runs take off; median iteration {}\n", condition_name(c), t.taken_off, t.runs,
-                        t.taken_off > 0 ? fmt::format("{:.0f}", t.median_iteration) : "-");
+    text += fmt::format("  {:<9} {} of {} take off{}\n", condition_name(c), t.taken_off, counted(t.runs, "run"),
+                        t.taken_off > 0 ? fmt::format("; median iteration {:.0f}", t.median_iteration) : "");
   }
   text += fmt::format("Transfer and control runs first differ at iteration {:.1f} (median over pairs)\n",
                       analysis.median_first_divergence);
-  text += fmt::format("\nTransfer's choices in its first {} iterations (evidence: earlier tries of the same "
+  text += fmt::format("\nTransfer's choices in its first {} (evidence: earlier tries of the same "
                       "agent-space pair; far: more than {:.0f} cm from them in the tile):\n",
-                      settings.analysis.beginning, 100 * kFarFromEvidence);
+                      counted(settings.analysis.beginning, "iteration"), 100 * kFarFromEvidence);
   const auto share = [](int part, int whole) {
     return whole > 0 ? fmt::format("{:.0f} %", 100.0 * part / whole) : std::string("-");
   };
   for (int r = 0; r < kRegimeCount; ++r) {
     const ChoiceProfile& p = analysis.transfer_choices[r];
     text += fmt::format(
-        "  {:<9} {:6d} actions, {} reachable; back to the hold just left {} (reachable {}); the hold that failed "
+        "  {:<9} {:6d} {}, {} reachable; back to the hold just left {} (reachable {}); the hold that failed "
         "just before {} (reachable {}); of the others, with evidence {} "
         "(which succeeded {}); far {} (reachable {}), near {} (reachable {}); median distance {}\n",
-        regime_name(static_cast<Regime>(r)), p.actions, share(p.successes, p.actions),
+        regime_name(static_cast<Regime>(r)), p.actions, counted_noun(p.actions, "action"), share(p.successes, p.actions),
         share(p.back_to_left_hold, p.actions), share(p.back_to_left_hold_successes, p.back_to_left_hold),
         share(p.repeats_of_failure, p.actions), share(p.repeats_of_failure_successes, p.repeats_of_failure),
         share(p.with_evidence, p.actions - p.repeats_of_failure), fmt::format("{:.0f} %", 100 * p.evidence_success_rate),
@@ -108,11 +124,10 @@ std::string run_text(const ExperimentResult& result, int iterations, const std::
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];
     if (c.runs.empty()) continue;
     const RunResult& run = c.runs.front();
-    return fmt::format("{} on '{}': {} episodes in {} iterations; greedy climb: {}; wrote {}\n",
+    return fmt::format("{} on '{}': {} in {}; greedy climb: {}; wrote {}\n",
                        condition == Condition::Transfer ? "transfer" : "training", printable(result.walls.front().wall.name),
-                       run.episode_lengths.size(), iterations,
-                       run.greedy_length > 0 ? fmt::format("{} actions", run.greedy_length) : "does not finish",
-                       output);
+                       counted(run.episode_lengths.size(), "episode"), counted(iterations, "iteration"),
+                       run.greedy_length > 0 ? counted(run.greedy_length, "action") : "does not finish", output);
   }
   return {};
 }

@@ -3,13 +3,14 @@
 #include <fmt/format.h>
 
 #include "body/kinematics.hpp"
+#include "common/counted.hpp"
 
 namespace crux {
 
 ViewCaption run_view_caption(const RunFolder& folder, const RecordedClimb& climb, int step, const std::string& svg) {
   return {svg, fmt::format("{} on '{}'", folder.name, folder.wall.name),
-          fmt::format("step {} of {} ({} postures, the start is step 0)", step, climb_description(climb),
-                      climb.postures.size())};
+          fmt::format("step {} of {} ({}, the start is step 0)", step, climb_description(climb),
+                      counted(climb.postures.size(), "posture"))};
 }
 
 ViewCaption wall_view_caption(const Wall& wall, const std::string& svg) {

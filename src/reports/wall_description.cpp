@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "common/printable.hpp"
 
 namespace crux {
@@ -37,7 +38,7 @@ std::string generated_wall_text(const std::string& file, const Wall& wall, const
   return fmt::format("wrote {}: '{}', {} holds, finish height {} m\n", file, printable(wall.name), wall.hold_count(),
                      wall.finish_height) +
          fmt::format("start configuration ({}): ", start_holds_text(wall)) +
-         (start.reached ? fmt::format("reachable ({} solver, {} iterations)\n", solver, start.iterations)
+         (start.reached ? fmt::format("reachable ({} solver, {})\n", solver, counted(start.iterations, "iteration"))
                         : std::string("NOT reachable\n"));
 }
 

@@ -61,7 +61,7 @@ std::string csv_cell(const std::string& text) {
 template <typename Json>
 std::string number_cell(const Json& value) {
   if (value.is_null()) return "";
-  if (value.is_number_float()) return fmt::format("{:.17g}", value.template get<double>());
+  if (value.is_number_float()) return fmt::format("{}", value.get<double>());
   return value.dump();
 }
 
@@ -121,7 +121,7 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
                            runs.learning_seeds.back());
         for (const std::string& metric : metric_names) {
           const auto m = std::find_if(metrics.begin(), metrics.end(), [&](const EpisodeMetric& e) { return e.name == metric; });
-          csv += m == metrics.end() ? std::string(",") : fmt::format(",{:.17g}", m->of_run(runs.runs.back(), windows));
+          csv += m == metrics.end() ? std::string(",") : fmt::format(",{}", m->of_run(runs.runs.back(), windows));
         }
         for (const char* fact : kRunFacts) csv += fmt::format(",{}", number_cell(facts[fact].json()));
         const nlohmann::json& wall_plan = wall.at("plan");

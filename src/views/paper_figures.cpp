@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "common/counted.hpp"
 #include "experiments/statistics.hpp"
 #include "views/plot_svg.hpp"
 #include "views/palette.hpp"
@@ -92,7 +93,7 @@ struct Header {
 };
 
 std::string runs_phrase(int runs, int walls) {
-  return fmt::format("{} run{} on {} wall{}", runs, runs == 1 ? "" : "s", walls, walls == 1 ? "" : "s");
+  return fmt::format("{} on {}", counted(runs, "run"), counted(walls, "wall"));
 }
 
 std::string band_phrase(const PaperFigureData& data) {
@@ -419,9 +420,9 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
   const Header header{
       "Transfer minus control, per metric",
       {"point: mean over walls of each wall's mean paired difference (transfer run minus its control run)",
-       fmt::format("bar: Student-t 95 % interval over {} wall{}; both in % of |control's mean|, so that metrics of "
+       fmt::format("bar: Student-t 95 % interval over {}; both in % of |control's mean|, so that metrics of "
                    "different units share one axis",
-                   walls, walls == 1 ? "" : "s")}};
+                   counted(walls, "wall"))}};
   constexpr const char* kFavoursTransfer = kOkabeItoBlue;
   constexpr const char* kFavoursControl = kOkabeItoVermillion;
   constexpr const char* kNoDifference = "#777777";
@@ -499,7 +500,7 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
     const double text_left = panel.left + panel.width + 16;
     draw_text(svg, text_left, row_top + 19, notes[i], {.size = kPlotTickFontSize});
     const std::string p = m.p_value < 0.001 ? "p < 0.001" : fmt::format("p = {:.3f}", m.p_value);
-    draw_text(svg, text_left, row_top + 36, fmt::format("{}, {} wall{}", p, m.walls, m.walls == 1 ? "" : "s"),
+    draw_text(svg, text_left, row_top + 36, fmt::format("{}, {}", p, counted(m.walls, "wall")),
               {.size = kPlotTickFontSize, .colour = kSubtitleColour});
     if (!row.available) {
       draw_text(svg, panel.left + panel.width / 2, panel.y_pixel(centre) + 4, "not available: control's mean is 0",

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/atomic_file.hpp"
+#include "common/counted.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
 #include "common/json_field.hpp"
@@ -247,8 +248,8 @@ class WallReader {
   std::vector<Hold> holds(const Json& value) const {
     if (!value.is_array()) fail("holds must be an array, got " + json_value_description(value));
     if (value.size() < kMinimumHoldCount) {
-      fail(fmt::format("holds has {} entries; a wall needs at least {} holds (one per limb)", value.size(),
-                       kMinimumHoldCount));
+      fail(fmt::format("holds has {}; a wall needs at least {} holds (one per limb)",
+                       counted(value.size(), "entry", "entries"), kMinimumHoldCount));
     }
     if (value.size() > static_cast<std::size_t>(kMaxHoldCount)) {
       fail(fmt::format("holds has {} entries; crux supports at most {} holds on a wall", value.size(), kMaxHoldCount));

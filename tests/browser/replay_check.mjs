@@ -5,7 +5,8 @@
 //
 // Fails (exit 1, with the reasons) on any console error or warning, page error, or network request
 // other than the page's own file URL; checks that the replay becomes ready, draws a non-blank
-// canvas, draws frame 0 and the middle frame differently, puts the grasp points where the C++
+// canvas, draws frame 0 and the middle frame differently, shows the first move's reward as it is
+// (the shortest text of the number, not a fixed count of decimals), puts the grasp points where the C++
 // forward kinematics put them (data.check, within 1e-6 m), shows at least N SVG figures in
 // #figures, plays when Play is clicked and steps with the keyboard. Saves replay_start.png,
 // replay_middle.png and page.png into DIR. With --fps, plays one replay frame per animation frame
@@ -179,7 +180,7 @@ async function main() {
 
     const info = await page.evaluate(() => {
       const data = JSON.parse(document.getElementById('crux-replay-data').textContent);
-      return { check: data.check, frameCount: data.frames.count, moves: data.moves.length, firstMoveEnd: data.moves.length ? data.moves[0].last_frame : 0 };
+      return { check: data.check, frameCount: data.frames.count, moves: data.moves.length, firstMoveEnd: data.moves.length ? data.moves[0].last_frame : 0, firstReward: data.moves.length ? data.moves[0].reward : null };
     });
     const count = await page.evaluate(() => window.cruxReplay.frameCount);
     if (count !== info.frameCount) fail(`cruxReplay.frameCount ${count} != frames.count ${info.frameCount}`);
@@ -193,6 +194,8 @@ async function main() {
     await panel.screenshot({ path: path.join(args.out, 'replay_start.png') });
     const startInfo = await page.locator('.crux-replay-info').textContent();
     if (info.moves > 0 && !/Move 1 of \d+/.test(startInfo)) fail(`info line at frame 0 does not say "Move 1 of M": ${startInfo}`);
+    // The reward as it is (200000, not 200000.000): the shortest text that reads back to it.
+    if (info.moves > 0 && !startInfo.includes(` · reward ${String(info.firstReward)} · `)) fail(`info line at frame 0 does not show the reward ${info.firstReward} as it is: ${startInfo}`);
     await page.evaluate((f) => window.cruxReplay.setFrame(f), middle);
     const shotMiddle = await canvas.screenshot();
     await panel.screenshot({ path: path.join(args.out, 'replay_middle.png') });

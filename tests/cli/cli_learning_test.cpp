@@ -292,9 +292,19 @@ TEST(CliLearning, ViewAndReportReadTheRunsOwnConfig) {
   const auto summary = nlohmann::json::parse(report.out);
   EXPECT_EQ(summary["replay_climb"], "episode");
   EXPECT_EQ(summary["replay_episode"], 2);
+  EXPECT_EQ(summary["replay_reason"], "episode 2, as --climb 2 asks");
+  // Episode 2 counts from 1, as Fig. 4 does: the second row of episodes.csv (its episode 1).
+  std::ifstream episodes(train / "episodes.csv");
+  std::string row;
+  for (int line = 0; line < 3; ++line) std::getline(episodes, row);
+  ASSERT_EQ(row.rfind("1,", 0), 0u) << row;
+  EXPECT_EQ(summary["replay_moves"], std::stoi(row.substr(2)));
   const auto bad = run_crux("report " + train.string() + " --climb 100000 -o " + html.string());
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_EQ(bad.err.rfind("crux: --climb: the run has episodes 0 to ", 0), 0u) << bad.err;
+  EXPECT_EQ(bad.err.rfind("crux: --climb: the run has episodes 1 to ", 0), 0u) << bad.err;
+  const auto zero = run_crux("view --run " + train.string() + " --climb 0 -o " + svg.string());
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_EQ(zero.err, "crux: --climb: episodes are numbered from 1, not 0\n");
 
   for (const auto& [old_name, command] : std::vector<std::pair<std::string, std::string>>{
            {"--svg", "view --svg x.svg"}, {"--replay-run", "report . --replay-run training_1 -o x.html"},

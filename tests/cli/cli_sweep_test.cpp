@@ -54,7 +54,7 @@ TEST(CliSweep, WritesEachRunAndTheResultsAndPrintsEachCell) {
   const auto outcome = run_crux(sweep_arguments(out, 2));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("crux sweep: 2 cells (learning.epsilon)"), std::string::npos) << outcome.out;
-  EXPECT_NE(outcome.out.find("cell 1 (learning.epsilon = 0.3): 3 walls x 1 seeds"), std::string::npos);
+  EXPECT_NE(outcome.out.find("cell 1 (learning.epsilon = 0.3): 3 walls x 1 seed"), std::string::npos);
   EXPECT_NE(outcome.out.find("0 of 24 tasks kept from an earlier start"), std::string::npos);
   for (const char* file : {"sweep.toml", "results.csv", "summary.json", "runs/c1/transfer_2/q_grid.bin",
                            "runs/c0/control_0/config.toml", "walls/g0/transfer_2/wall_facts.json",

@@ -84,6 +84,12 @@ TEST(RunInputs, AQGridInMemoryIsCheckedLikeAFile) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "table: has 34 actions, but the grid has 35 tiles");
   }
+  try {
+    check_q_grid(QTable(1), grid, "table");
+    FAIL() << "a table of 1 action passed for a 35-tile grid";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "table: has 1 action, but the grid has 35 tiles");
+  }
   QTable foreign(grid.tile_count());
   foreign.set_value(agent_state_count(grid), 0, 1.0);
   EXPECT_THROW(check_q_grid(foreign, grid, "table"), InputError);

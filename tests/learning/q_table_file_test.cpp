@@ -134,6 +134,15 @@ TEST(QTableFile, WrongActionCountMissingFileAndDirectory) {
   EXPECT_THROW(load_q_table(path.string(), 40, kSpace), InputError);
   EXPECT_THROW(load_q_table("/nonexistent/q.bin", 35, kSpace), InputError);
   EXPECT_THROW(load_q_table(std::filesystem::temp_directory_path().string(), 35, kSpace), InputError);
+  const auto single = testing::write_temporary("q_1.bin", "");
+  save_q_table(single.string(), QTable(1), kSpace);
+  try {
+    load_q_table(single.string(), 35, kSpace);
+    FAIL() << "loaded a table of 1 action for 35";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the table has 1 action where 35 are expected"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

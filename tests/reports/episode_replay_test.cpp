@@ -1,8 +1,10 @@
 #include "reports/episode_replay.hpp"
 
-
 #include <filesystem>
+#include <utility>
+#include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "common/input_error.hpp"
@@ -26,7 +28,7 @@ ClimbingParameters run_parameters(const RunFolder& folder) {
 }
 
 // Replaying the last completed episode from the run's actions gives back climb.csv's
-// postures bit for bit (the CSV keeps 17 significant digits) and its moves.
+// postures bit for bit (the CSV keeps the shortest text that reads back exactly) and its moves.
 TEST(EpisodeReplay, TheLastEpisodeReplayedIsTheRecordedClimb) {
   const RunFolder folder = read_folder(testing::trained_run_folder());
   ASSERT_GE(folder.last.episode, 1);
@@ -42,12 +44,14 @@ TEST(EpisodeReplay, TheLastEpisodeReplayedIsTheRecordedClimb) {
   for (std::size_t i = 0; i < replayed.postures.size(); ++i) EXPECT_EQ(replayed.postures[i], folder.last.postures[i]) << i;
 }
 
-// Episode 0 ends with the finishing move; the run's last episode, cut off by its
-// iterations, is replayed as unfinished.
+// Episode 1, iterations.csv's episode 0 (--climb counts from 1, as Fig. 4 does), ends
+// with the finishing move; the run's last episode, cut off by its iterations, is
+// replayed as unfinished.
 TEST(EpisodeReplay, EpisodesEndWhereTheRunFinishedThem) {
   const RunFolder folder = read_folder(testing::trained_run_folder());
   const ClimbingParameters parameters = run_parameters(folder);
-  const RecordedClimb first = climb_to_show(folder, testing::human_model(), parameters, "0", "--climb");
+  const RecordedClimb first = climb_to_show(folder, testing::human_model(), parameters, "1", "--climb");
+  EXPECT_EQ(first.episode, 0);
   std::size_t rows = 0;
   for (const RunStep& step : folder.steps) rows += step.episode == 0 ? 1 : 0;
   ASSERT_EQ(first.steps.size(), rows);
@@ -65,7 +69,7 @@ TEST(EpisodeReplay, NamedClimbsAndBadChoicesNameTheFlag) {
   const ClimbingParameters parameters = run_parameters(folder);
   EXPECT_EQ(climb_to_show(folder, testing::human_model(), parameters, "greedy", "--climb").kind, "greedy");
   EXPECT_EQ(climb_to_show(folder, testing::human_model(), parameters, "last", "--climb").kind, "last");
-  for (const std::string choice : {"-1", "99999", "2x", "", "best"}) {
+  for (const std::string choice : {"-1", "0", "99999", "2x", "", "best"}) {
     try {
       climb_to_show(folder, testing::human_model(), parameters, choice, "--climb");
       ADD_FAILURE() << "accepted --climb '" << choice << "'";
@@ -73,6 +77,55 @@ TEST(EpisodeReplay, NamedClimbsAndBadChoicesNameTheFlag) {
       EXPECT_EQ(e.source(), "--climb") << choice;
     }
   }
+  // Episodes are named from 1 in what the user reads too.
+  const int episodes = folder.steps.back().episode + 1;
+  for (const auto& [choice, problem] : std::vector<std::pair<std::string, std::string>>{
+           {"0", "episodes are numbered from 1, not 0"},
+           {std::to_string(episodes + 1),
+            fmt::format("the run has episodes 1 to {}, not {}", episodes, episodes + 1)}}) {
+    try {
+      climb_to_show(folder, testing::human_model(), parameters, choice, "--climb");
+      ADD_FAILURE() << "accepted --climb " << choice;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.problem(), problem);
+    }
+  }
+  EXPECT_EQ(climb_to_show(folder, testing::human_model(), parameters, std::to_string(episodes), "--climb").episode,
+            episodes - 1)
+      << "the last episode, numbered from 1";
+}
+
+// Why the climb shown is the one: the greedy climb when it finishes, else the last
+// completed episode, saying that the greedy policy did not reach the top and within how
+// many actions (experiment.greedy_cap); an episode asked for by number.
+TEST(EpisodeReplay, TheReasonForTheClimbShownNamesItAndWhy) {
+  RunFolder folder = read_folder(testing::trained_run_folder());
+  const ClimbingParameters parameters = run_parameters(folder);
+  ASSERT_FALSE(folder.greedy.postures.empty()) << "the trained run's greedy policy finishes";
+  const RecordedClimb greedy = climb_to_show(folder, testing::human_model(), parameters, "greedy", "--climb");
+  EXPECT_EQ(shown_climb_reason(folder, greedy, "greedy", 500, "--climb"),
+            fmt::format("the greedy policy's climb after learning, which reaches the top in {} actions",
+                        folder.greedy.steps.size()));
+  const std::string last = fmt::format("the last completed episode (episode {})", folder.last.episode + 1);
+  EXPECT_EQ(shown_climb_reason(folder, folder.last, "last", 500, "--climb"), last + ", as --climb last asks");
+  const RecordedClimb second = climb_to_show(folder, testing::human_model(), parameters, "2", "--climb");
+  EXPECT_EQ(shown_climb_reason(folder, second, "2", 500, "--climb"), "episode 2, as --climb 2 asks");
+  const std::string unfinished = std::to_string(folder.steps.back().episode + 1);
+  const RecordedClimb cut = climb_to_show(folder, testing::human_model(), parameters, unfinished, "--climb");
+  EXPECT_EQ(shown_climb_reason(folder, cut, unfinished, 500, "--climb"),
+            fmt::format("episode {0}, as --climb {0} asks; the run ended during it, so it does not reach the top",
+                        unfinished));
+
+  // The same folder as if its greedy policy had not finished (greedy_climb.csv then holds
+  // the header only): the last completed episode, and why.
+  folder.greedy = {};
+  const RecordedClimb fallback = climb_to_show(folder, testing::human_model(), parameters, "greedy", "--climb");
+  EXPECT_EQ(fallback.kind, "last");
+  EXPECT_EQ(shown_climb_reason(folder, fallback, "greedy", 1, "--climb"),
+            last + ", since the greedy policy did not reach the top within 1 action (experiment.greedy_cap)");
+  EXPECT_EQ(shown_climb_reason(folder, RecordedClimb{"last", -1, true, {}, {}}, "greedy", 500, "--climb"),
+            "the greedy policy did not reach the top within 500 actions (experiment.greedy_cap) and the run "
+            "completed no episode");
 }
 
 // A folder whose actions the MDP does not reproduce (here a move's verdict flipped) is

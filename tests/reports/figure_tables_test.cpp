@@ -33,6 +33,17 @@ TEST(FigureTables, Fig3CountsActionsPerRegimeCumulativelyAveragedOverRuns) {
   EXPECT_EQ(fig4_csv(result), "condition,run,episode,length\ntraining,0,0,2\n");
 }
 
+// A mean is written as the shortest text that reads back to it: 0.3333333333333333, not
+// the 17 digits 0.33333333333333331.
+TEST(FigureTables, MeansAreTheShortestTextThatReadsBack) {
+  ExperimentResult result;
+  auto& training = result.conditions[static_cast<int>(Condition::Training)];
+  training.runs = {run_of({Regime::WGreedy}, {}), run_of({Regime::Random}, {}), run_of({Regime::Random}, {})};
+  EXPECT_EQ(fig3_csv(result, 1),
+            "condition,iteration,w_greedy,g_greedy,random\n"
+            "training,1,0.3333333333333333,0,0.6666666666666666\n");
+}
+
 TEST(FigureTables, QGridMapsSumEachFreeLimbsStatesPerTile) {
   const GridParameters grid;
   QTable q(grid.tile_count());

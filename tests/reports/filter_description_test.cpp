@@ -36,6 +36,9 @@ TEST(FilterDescription, TheSelectedReadingIsTheHeadlineBesideThePapers) {
   EXPECT_NE(text.find("selected: 101 of 1000 3-configurations and 41 of 2000 4-configurations pass\n"),
             std::string::npos)
       << text;
+  EXPECT_EQ(text.rfind("2 random walls (seed 9),", 0), 0u) << text;
+  report.wall_count = 1;
+  EXPECT_EQ(filter_text(report).rfind("1 random wall (seed 9),", 0), 0u);
 }
 
 }  // namespace

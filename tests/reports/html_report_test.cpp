@@ -81,10 +81,43 @@ TEST(HtmlReport, ARunPageHasNoTableOneAndNoReplayWhenThereIsNoClimb) {
   ReportPage page = experiment_page();
   page.summary["kind"] = "run";
   page.replay = nullptr;
+  page.replay_reason = "the greedy policy did not reach the top within 500 actions and the run completed no episode";
   const std::string html = html_report(page);
   EXPECT_EQ(html.find("id=\"table-one\""), std::string::npos);
   EXPECT_EQ(html.find("crux-replay"), std::string::npos);
   EXPECT_NE(html.find("id=\"run\""), std::string::npos);
+  EXPECT_NE(html.find("<h2>Replay</h2>\n<p>No replay: the greedy policy did not reach the top within 500 actions and "
+                      "the run completed no episode.</p>"),
+            std::string::npos)
+      << "why there is none";
+}
+
+// The replay says which climb it shows and why: here the last episode, standing in for
+// a greedy climb that does not finish.
+TEST(HtmlReport, TheReplaySaysWhichClimbItShowsAndWhy) {
+  ReportPage page = experiment_page();
+  page.replay_title = "training_0 on 'w': the climb of episode 42";
+  page.replay_reason = "the last completed episode (episode 42), since the greedy policy did not reach the top "
+                       "within 500 actions (experiment.greedy_cap)";
+  const std::string html = html_report(page);
+  EXPECT_NE(html.find("<h2>Replay: training_0 on &apos;w&apos;: the climb of episode 42</h2>\n<p>Replayed: the last "
+                      "completed episode (episode 42), since the greedy policy did not reach the top within 500 "
+                      "actions (experiment.greedy_cap).</p>"),
+            std::string::npos)
+      << html.substr(html.find("<section id=\"replay\">"), 400);
+}
+
+TEST(HtmlReport, TheDesignCountsAgreeWithTheirNouns) {
+  ReportPage page = experiment_page();
+  EXPECT_NE(html_report(page).find("<dd>6 wall pairs &times; 1 seed per wall, 8000 iterations per run, fast IK "
+                                   "solver</dd>"),
+            std::string::npos);
+  page.summary["wall_pairs"] = 1;
+  page.summary["beginning_iterations"] = 1;
+  const std::string html = html_report(page);
+  EXPECT_NE(html.find("<dd>1 wall pair &times; 1 seed per wall,"), std::string::npos);
+  EXPECT_NE(html.find("Beginning = the first 1 iteration."), std::string::npos);
+  EXPECT_NE(html.find("then over the 1 wall:"), std::string::npos);
 }
 
 }  // namespace

@@ -64,6 +64,11 @@ TEST(IkDescription, AgreementIsCountedPerQuery) {
             std::string::npos)
       << text;
   EXPECT_NE(text.find("paper 100.0 iterations, 1000.0 us; fast 15.0 iterations, 50.0 us"), std::string::npos) << text;
+  a.queries = 1;
+  a.agree = 1;
+  const std::string one = solver_agreement_text(a, 7);
+  EXPECT_EQ(one.rfind("1 climbing-like query (seed 7,", 0), 0u) << one;
+  EXPECT_NE(one.find("verdicts agree on 1 query: "), std::string::npos) << one;
 }
 
 }  // namespace

@@ -40,5 +40,22 @@ TEST(PlanDescription, NoPlanSaysWhy) {
   EXPECT_EQ(plan_json(named_wall(), none)["stopped_at_limit"], true);
 }
 
+TEST(PlanDescription, CountsOfOneAreSingular) {
+  Plan plan;
+  plan.found = true;
+  plan.length = 1;
+  plan.hold_ids = {7};
+  plan.limbs = {Limb::RightHand};
+  plan.expanded_states = 1;
+  plan.ik_solves = 1;
+  EXPECT_EQ(plan_text(named_wall(), plan),
+            "shortest climb on 'w': 1 action (1 state explored, 1 IK solve)\n"
+            "   1. right_hand -> hold 7\n");
+  plan.found = false;
+  EXPECT_EQ(plan_text(named_wall(), plan), "no climb exists on 'w' (1 state explored, 1 IK solve)\n");
+  plan.stopped_at_limit = true;
+  EXPECT_EQ(plan_text(named_wall(), plan).rfind("no climb found on 'w' within 1 IK solve (1 state explored);", 0), 0u);
+}
+
 }  // namespace
 }  // namespace crux

@@ -33,5 +33,13 @@ TEST(PostureCsv, NamesEveryJointAndReadsBackExactly) {
   }
 }
 
+// Each value is the shortest text that reads back to it: 0.1, not 0.10000000000000001.
+TEST(PostureCsv, ValuesAreTheShortestTextThatReadsBack) {
+  const std::vector<Posture> postures{standing_posture(Eigen::Vector3d(0.1, 196.6, 1.0 / 3.0))};
+  const std::string csv = posture_csv(testing::human_model(), postures, "step");
+  const std::string row = csv.substr(csv.find('\n') + 1);
+  EXPECT_EQ(row.rfind("0,0.1,196.6,0.3333333333333333,", 0), 0u) << row;
+}
+
 }  // namespace
 }  // namespace crux

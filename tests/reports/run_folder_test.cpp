@@ -154,9 +154,10 @@ TEST(RunFolder, AMissingRunOfAPaperFolderListsTheRunsItHas) {
 
 TEST(RunFolder, AClimbIsDescribedByItsKind) {
   EXPECT_EQ(climb_description({"greedy", -1, true, {}, {}}), "the greedy policy's climb after learning");
-  EXPECT_EQ(climb_description({"last", 7, true, {}, {}}), "the climb of episode 7");
-  EXPECT_EQ(climb_description({"episode", 2, true, {}, {}}), "the climb of episode 2");
-  EXPECT_EQ(climb_description({"episode", 9, false, {}, {}}), "the climb of episode 9 (unfinished)");
+  // Episode indices from 0 (iterations.csv's) are shown from 1, as the paper's Fig. 4 counts them.
+  EXPECT_EQ(climb_description({"last", 7, true, {}, {}}), "the climb of episode 8");
+  EXPECT_EQ(climb_description({"episode", 0, true, {}, {}}), "the climb of episode 1");
+  EXPECT_EQ(climb_description({"episode", 9, false, {}, {}}), "the climb of episode 10 (unfinished)");
 }
 
 }  // namespace

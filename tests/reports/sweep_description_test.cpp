@@ -20,5 +20,15 @@ TEST(SweepDescription, EachCellWithItsParametersAndEachMetricsDifference) {
   EXPECT_NE(text.find("wrote out/sweep (2.5 s; 10 of 40 tasks kept from an earlier start)"), std::string::npos);
 }
 
+TEST(SweepDescription, CountsOfOneAreSingular) {
+  const auto summary = nlohmann::json::parse(R"({
+    "listed_keys": [],
+    "cells": [{"cell": 0, "parameters": {}, "wall_pairs": 1, "seeds_per_wall": 1, "transfer_vs_control": {}}]})");
+  const std::string text = sweep_text(summary, "out/sweep", 1, 0, 2.5);
+  EXPECT_EQ(text.rfind("crux sweep: 1 cell\n", 0), 0u) << text;
+  EXPECT_NE(text.find("\ncell 0: 1 wall x 1 seed\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("wrote out/sweep (2.5 s; 0 of 1 task kept from an earlier start)"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace crux

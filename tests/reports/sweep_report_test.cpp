@@ -39,5 +39,11 @@ TEST(SweepReport, ThePageTabulatesEachCellAndEmbedsTheFiguresInOrder) {
   EXPECT_LT(html.find("cell 0: experiment.transfer = paper"), html.find("cell 1: experiment.transfer = prior"));
 }
 
+TEST(SweepReport, OneCellIsSingular) {
+  auto summary = nlohmann::ordered_json::parse(kSummary);
+  summary["cells"].erase(1);
+  EXPECT_NE(sweep_report_html(summary, {"<svg></svg>"}).find("<p>1 cell over experiment.transfer."), std::string::npos);
+}
+
 }  // namespace
 }  // namespace crux

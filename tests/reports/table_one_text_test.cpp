@@ -19,7 +19,11 @@ TEST(TableOneText, PrintsThePapersValuesInBrackets) {
   EXPECT_EQ(paper.vertical_cm[0][0][0], 7.3);
   EXPECT_NE(text.find("( 7.3)"), std::string::npos) << text;
   EXPECT_NE(text.find("(100.0)"), std::string::npos) << text;
-  EXPECT_NE(text.find("beginning = first 2000 iterations"), std::string::npos);
+  EXPECT_NE(text.find("over 1 run per condition; beginning = first 2000 iterations\n"), std::string::npos) << text;
+  settings.wall_pairs = 2;
+  settings.analysis.beginning = 1;
+  EXPECT_NE(table_one_text(empty, settings).find("over 2 runs per condition; beginning = first 1 iteration\n"),
+            std::string::npos);
 }
 
 RunResult run_of(std::vector<IterationRecord> iterations) {
@@ -60,7 +64,7 @@ TEST(TableOneText, OursBesideThePapersByHand) {
   settings.wall_pairs = 1;
   settings.analysis.beginning = 2;
   const std::string text = table_one_text(one_run_each(), settings);
-  EXPECT_NE(text.find("over 1 runs per condition; beginning = first 2 iterations"), std::string::npos) << text;
+  EXPECT_NE(text.find("over 1 run per condition; beginning = first 2 iterations"), std::string::npos) << text;
   // Vertical e0, w-greedy: 5 cm in training's first 2 iterations, 10 cm over its run;
   // transfer and control never chose w-greedy.
   EXPECT_TRUE(has_line(text, "    w_greedy" + spaces(20) + "5.0 ( 7.3)" + spaces(8) + "- (12.0)" + spaces(9) + "-"))

@@ -28,10 +28,14 @@ TEST(ViewDescription, CaptionsNameTheRunItsClimbAndStep) {
   RunFolder folder;
   folder.name = "training_2";
   folder.wall.name = "w";
+  // Episode index 3 (iterations.csv's) is episode 4: crux shows episodes from 1, as Fig. 4 does.
   RecordedClimb climb{"episode", 3, false, {}, {Posture::Zero(), Posture::Zero()}};
   const ViewCaption run = run_view_caption(folder, climb, 1, "a.svg");
   EXPECT_EQ(run.title, "training_2 on 'w'");
-  EXPECT_EQ(run.subtitle, "step 1 of the climb of episode 3 (unfinished) (2 postures, the start is step 0)");
+  EXPECT_EQ(run.subtitle, "step 1 of the climb of episode 4 (unfinished) (2 postures, the start is step 0)");
+  climb.postures.pop_back();
+  EXPECT_EQ(run_view_caption(folder, climb, 0, "a.svg").subtitle,
+            "step 0 of the climb of episode 4 (unfinished) (1 posture, the start is step 0)");
   const ViewCaption wall = wall_view_caption(folder.wall, "b.svg");
   EXPECT_EQ(wall.title, "'w'");
   EXPECT_EQ(wall.svg, "b.svg");

@@ -25,6 +25,10 @@ TEST(WallDescription, AGeneratedWallNamesItsFileSeedAndStart) {
   EXPECT_EQ(text.rfind("wrote w.json: '" + wall.name + "'", 0), 0u) << text;
   EXPECT_NE(text.find("reachable (fast solver, 12 iterations)\n"), std::string::npos) << text;
   EXPECT_NE(generated_wall_text("w.json", wall, IkResult{}, "fast").find("NOT reachable\n"), std::string::npos);
+  IkResult at_once = reached_start();
+  at_once.iterations = 1;
+  EXPECT_NE(generated_wall_text("w.json", wall, at_once, "fast").find("reachable (fast solver, 1 iteration)\n"),
+            std::string::npos);
 }
 
 // A two-hold wall: its extent, and the grid placed so that each hold falls in a known tile.

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -64,6 +66,20 @@ TEST(SweepResults, ACellsAnalysisIsCruxPapersOnTheSameRuns) {
   const ConditionResult& transfer = paper.conditions[static_cast<int>(Condition::Transfer)];
   EXPECT_EQ(rows[4].rfind(fmt::format("0,transfer,0,0,0,{},{},", paper.walls[3].seed, transfer.learning_seeds[0]), 0), 0u)
       << rows[4];
+  // Every fraction is the shortest text that reads back to it (std::to_chars' form):
+  // 196.6, not the 17 digits 196.59999999999999.
+  int fractions = 0;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    std::istringstream row(rows[r]);
+    for (std::string cell; std::getline(row, cell, ',');) {
+      if (cell.find('.') == std::string::npos) continue;
+      ++fractions;
+      char shortest[32];
+      const auto written = std::to_chars(shortest, shortest + sizeof shortest, std::stod(cell));
+      EXPECT_EQ(cell, std::string(shortest, written.ptr)) << rows[r];
+    }
+  }
+  EXPECT_GT(fractions, 0);
 }
 
 TEST(SweepResults, PValuesAreHolmAdjustedOverTheCells) {

@@ -29,6 +29,11 @@ function fmt(x, digits) {
   return typeof x === 'number' && Number.isFinite(x) ? x.toFixed(digits) : '–';
 }
 
+// A value as it is (200000, -1, 0.25): JavaScript's shortest text that reads back to the number.
+function exact(x) {
+  return typeof x === 'number' && Number.isFinite(x) ? String(x) : '–';
+}
+
 export class ReplayViewer {
   constructor(container, data) {
     this.data = data;
@@ -275,7 +280,7 @@ export class ReplayViewer {
         LIMB_NAMES[move.limb] || move.limb,
         `hold ${move.hold}`,
         move.success ? 'reached' : 'unreachable',
-        `reward ${fmt(move.reward, 3)}`,
+        `reward ${exact(move.reward)}`,
         `root rise ${typeof rise === 'number' && rise > 0 ? '+' : ''}${fmt(rise, 1)} cm`,
       ].join(' · ');
     }
