@@ -8,8 +8,8 @@
 #include <kdl/treeiksolverpos_nr_jl.hpp>
 #include <kdl/treeiksolvervel_wdls.hpp>
 
-#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
+#include "body/urdf_loader.hpp"
 #include "ik/ik_solver.hpp"
 #include "ik/reach_queries.hpp"
 #include "support/kdl_reference.hpp"
@@ -19,15 +19,15 @@ namespace {
 
 constexpr int kBatch = 200;
 
-IkSettings paper_walk() {
-  IkSettings walk;
+IkParameters paper_walk() {
+  IkParameters walk;
   walk.solver = IkSolverKind::Paper;  // the walk of crux ik-compare
   return walk;
 }
 
 struct Fixture {
   BodyModel model = load_body_model(default_body_model_path());
-  IkSettings settings;
+  IkParameters settings;
   std::vector<ReachQuery> queries = climbing_reach_queries(model, paper_walk(), kBatch, 2026);
 };
 
@@ -39,12 +39,13 @@ const Fixture& fixture() {
 void report(benchmark::State& state, long reached) {
   const double attempted = static_cast<double>(state.iterations()) * kBatch;
   state.counters["solve_rate"] = reached / attempted;
-  state.counters["per_query"] = benchmark::Counter(attempted, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["per_query"] =
+      benchmark::Counter(attempted, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void run_crux_solver(benchmark::State& state, IkSolverKind kind) {
   const Fixture& f = fixture();
-  IkSettings settings = f.settings;
+  IkParameters settings = f.settings;
   settings.solver = kind;
   BodyData data(f.model);
   long reached = 0;

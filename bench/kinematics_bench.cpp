@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
+#include "body/urdf_loader.hpp"
 #include "common/random.hpp"
 #include "support/kdl_reference.hpp"
 
@@ -17,7 +17,8 @@ std::vector<Posture> random_postures(const BodyModel& model, int count) {
   std::vector<Posture> out(count);
   for (Posture& g : out) {
     for (int i = 0; i < kRootDof; ++i) g[i] = random.uniform(-0.5, 0.5);
-    for (int i = kRootDof; i < kConfigurationDof; ++i) g[i] = random.uniform(model.lower_limits[i], model.upper_limits[i]);
+    for (int i = kRootDof; i < kConfigurationDof; ++i)
+      g[i] = random.uniform(model.lower_limits[i], model.upper_limits[i]);
   }
   return out;
 }

@@ -37,7 +37,7 @@ std::vector<Experience> synthetic_experiences() {
 }
 
 void plan(benchmark::State& state, Planner planner) {
-  DynaSettings settings;
+  DynaParameters settings;
   settings.planner = planner;
   DynaQAgent agent(kActions, kActions, settings, 1);
   std::vector<ActionCandidate> all;

@@ -9,24 +9,24 @@
 #include <fmt/format.h>
 
 #include "bindings.hpp"
-#include "conversions.hpp"
 #include "body/kinematics.hpp"
 #include "climbing/climbing_mdp.hpp"
 #include "common/input_error.hpp"
+#include "conversions.hpp"
 #include "python_config.hpp"
 
 namespace crux::python {
 
 namespace {
 
-const ParameterSet kEnvParameters{{"experiment.urdf", "reward", "ik", "filter", "grid"}, {}};
+const ParameterSet kEnvKeys{{"experiment.urdf", "reward", "ik", "filter", "grid"}, {}};
 
 class ClimbEnv {
  public:
   ClimbEnv(Wall wall, const py::handle& config, const py::handle& max_steps, const py::handle& model)
       : wall_(std::move(wall)),
         max_steps_(static_cast<int>(integer_from(max_steps, 1, std::numeric_limits<int>::max(), "max_steps"))) {
-    const ExperimentConfig c = config_from_python(config, kEnvParameters, "ClimbEnv");
+    const ExperimentConfig c = config_from_python(config, kEnvKeys, "ClimbEnv");
     model_ = body_from(model, c.urdf);
     {
       py::gil_scoped_release release;
@@ -106,8 +106,8 @@ class ClimbEnv {
     double* h = holds.mutable_data();
     for (int limb = 0; limb < kLimbCount; ++limb) {
       for (int k = 0; k < 3; ++k) {
-        h[3 * limb + k] = c.holds[limb] == kFree ? std::numeric_limits<double>::quiet_NaN()
-                                                 : wall_.holds[c.holds[limb]].position[k];
+        h[3 * limb + k] =
+            c.holds[limb] == kFree ? std::numeric_limits<double>::quiet_NaN() : wall_.holds[c.holds[limb]].position[k];
       }
     }
     py::dict obs;
@@ -131,8 +131,8 @@ class ClimbEnv {
   int checked_action(const py::handle& handle) const {
     const auto action = static_cast<int>(integer_from(handle, 0, wall_.hold_count() - 1, "action"));
     if (mdp_->offers(action)) return action;
-    throw InputError("action", fmt::format("hold {} is not a possible action of this state (see action_mask())",
-                                           action));
+    throw InputError("action",
+                     fmt::format("hold {} is not a possible action of this state (see action_mask())", action));
   }
 
   BodyModelPtr model_;

@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
-#include "conversions.hpp"
 #include "common/input_error.hpp"
+#include "conversions.hpp"
 #include "interruption.hpp"
 #include "jobs/command_keys.hpp"
 #include "jobs/learning_job.hpp"
@@ -134,12 +134,14 @@ void bind_experiment(py::module_& m) {
                                return py::array_t<int>(static_cast<py::ssize_t>(r.run.episode_lengths.size()),
                                                        r.run.episode_lengths.data());
                              })
-      .def_property_readonly("iterations", [](const LearningRun& r) { return iterations_dict(r.run); },
-                             "per iteration: episode, regime, hold_id, success, reward, root_rise_m")
+      .def_property_readonly(
+          "iterations", [](const LearningRun& r) { return iterations_dict(r.run); },
+          "per iteration: episode, regime, hold_id, success, reward, root_rise_m")
       .def_property_readonly(
           "q_grid", [](LearningRun& r) -> QTable& { return r.run.q_grid; }, py::return_value_policy::reference_internal)
-      .def_property_readonly("greedy_length", [](const LearningRun& r) { return r.run.greedy_length; },
-                             "actions of the learnt greedy policy's climb, -1 if it did not finish")
+      .def_property_readonly(
+          "greedy_length", [](const LearningRun& r) { return r.run.greedy_length; },
+          "actions of the learnt greedy policy's climb, -1 if it did not finish")
       .def_property_readonly("greedy_climb", [](const LearningRun& r) { return postures_array(r.run.greedy_climb); })
       .def_property_readonly("last_climb", [](const LearningRun& r) { return postures_array(r.run.last_climb); });
 

@@ -7,18 +7,17 @@
 #include <fmt/format.h>
 
 #include "bindings.hpp"
-#include "conversions.hpp"
 #include "body/body_data.hpp"
 #include "common/input_error.hpp"
+#include "conversions.hpp"
 #include "ik/ik_solver.hpp"
 #include "ik/root_target.hpp"
+#include "jobs/command_keys.hpp"
 #include "python_config.hpp"
 
 namespace crux::python {
 
 namespace {
-
-const ParameterSet kIkParameters{{"ik"}, {"ik.cache_unreachable"}};
 
 struct PythonIkResult {
   IkResult result;
@@ -46,10 +45,12 @@ void bind_ik(py::module_& m) {
       .def_property_readonly("reached", [](const PythonIkResult& r) { return r.result.reached; })
       .def_property_readonly("iterations", [](const PythonIkResult& r) { return r.result.iterations; })
       .def_property_readonly("simulated_time_s", [](const PythonIkResult& r) { return r.result.simulated_time_s; })
-      .def_property_readonly("residual_m", [](const PythonIkResult& r) { return r.result.residual_m; },
-                             "largest grasp-point-to-hold distance at the last iterate")
-      .def_property_readonly("posture", [](const PythonIkResult& r) { return to_array(r.result.posture); },
-                             "the reached posture, or the start posture when not reached")
+      .def_property_readonly(
+          "residual_m", [](const PythonIkResult& r) { return r.result.residual_m; },
+          "largest grasp-point-to-hold distance at the last iterate")
+      .def_property_readonly(
+          "posture", [](const PythonIkResult& r) { return to_array(r.result.posture); },
+          "the reached posture, or the start posture when not reached")
       .def_property_readonly("root_target", [](const PythonIkResult& r) { return to_array(r.root_target); })
       .def_property_readonly(
           "path",
@@ -71,9 +72,9 @@ void bind_ik(py::module_& m) {
   m.def(
       "root_target",
       [](const py::handle& model, const py::handle& holds, const py::handle& config) {
-        const ExperimentConfig c = config_from_python(config, kIkParameters, "root_target");
-        return to_array(root_target(*body_or_default(model), holds_from(holds),
-                                    c.settings.learning.climbing.reachability.root));
+        const ExperimentConfig c = config_from_python(config, kIkKeys, "root_target");
+        return to_array(
+            root_target(*body_or_default(model), holds_from(holds), c.settings.learning.climbing.reachability.root));
       },
       py::arg("model"), py::arg("holds"), py::arg("config") = py::none(),
       "The root target H(C4) of four hold centres (4, 3) in limb order");
@@ -83,7 +84,7 @@ void bind_ik(py::module_& m) {
       [](const py::handle& model_handle, const py::handle& holds, const py::handle& start, const py::handle& radii,
          const py::handle& config, int path_every) {
         const BodyModelPtr model = body_or_default(model_handle);
-        const ExperimentConfig c = config_from_python(config, kIkParameters, "solve_ik");
+        const ExperimentConfig c = config_from_python(config, kIkKeys, "solve_ik");
         const ReachabilityParameters& reachability = c.settings.learning.climbing.reachability;
         if (path_every < 0) throw InputError("path_every", "must be 0 (no path) or positive");
         ReachTarget target;

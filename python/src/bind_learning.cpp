@@ -9,8 +9,8 @@
 
 #include "agent_space/moving_grid.hpp"
 #include "bindings.hpp"
-#include "conversions.hpp"
 #include "common/input_error.hpp"
+#include "conversions.hpp"
 #include "learning/q_table.hpp"
 #include "learning/q_table_file.hpp"
 #include "python_config.hpp"
@@ -80,8 +80,7 @@ ActionCode action_from(const QTable& table, const py::handle& action) {
 }  // namespace
 
 void bind_learning(py::module_& m) {
-  py::class_<QTable>(m, "QTable",
-                     "A Q-table over integer states and actions, sparse in states; unwritten values are 0")
+  py::class_<QTable>(m, "QTable", "A Q-table over integer states and actions, sparse in states; unwritten values are 0")
       .def(py::init([](const py::handle& action_count) {
              return QTable(static_cast<int>(integer_from(action_count, 1, 1 << 20, "action_count")));
            }),
@@ -127,8 +126,7 @@ void bind_learning(py::module_& m) {
   m.def(
       "grid_state_space",
       [](const py::handle& config) {
-        return describe_grid(config_from_python(config, kGridParameters, "grid_state_space")
-                                 .settings.learning.climbing.grid);
+        return describe_grid(config_from_python(config, kGridKeys, "grid_state_space").settings.learning.climbing.grid);
       },
       py::arg("config") = py::none(), "The state space a Q_grid file records for the configured moving grid");
 }

@@ -1,8 +1,8 @@
 #include "conversions.hpp"
 
 #include <limits>
-#include <optional>
 #include <mutex>
+#include <optional>
 
 #include <fmt/format.h>
 

@@ -83,8 +83,7 @@ void assign(const ConfigField& field, const py::handle& value) {
 
 }  // namespace
 
-ExperimentConfig config_from_python(const py::handle& config, const ParameterSet& accepted,
-                                    const std::string& caller) {
+ExperimentConfig config_from_python(const py::handle& config, const ParameterSet& accepted, const std::string& caller) {
   ExperimentConfig out;
   if (config.is_none()) {
     // the defaults

@@ -13,8 +13,8 @@
 namespace crux::python {
 
 // The keys of one config section: what the functions over the grid or the filter take.
-inline const ParameterSet kGridParameters{{"grid"}, {}};
-inline const ParameterSet kFilterParameters{{"filter"}, {}};
+inline const ParameterSet kGridKeys{{"grid"}, {}};
+inline const ParameterSet kFilterKeys{{"filter"}, {}};
 
 // `caller` names the Python function in errors: "ClimbEnv" gives "crux.ClimbEnv does
 // not take wall.seed".

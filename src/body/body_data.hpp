@@ -31,7 +31,7 @@ struct JointTrigonometry {
 struct BodyData {
   explicit BodyData(const BodyModel& model);
 
-  std::vector<JointPlacement> placements;  // one per joint of the model
+  std::vector<JointPlacement> placements;       // one per joint of the model
   std::vector<JointTrigonometry> trigonometry;  // one per joint of the model
   // e0 (root) then the grasp points in limb order.
   std::array<Eigen::Vector3d, kOperationalPointCount> points;

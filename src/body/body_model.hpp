@@ -24,23 +24,22 @@ using Posture = Eigen::Matrix<double, kConfigurationDof, 1>;
 // The URDF frames that stand for the grasp points; another humanoid is mapped onto
 // crux by naming its own frames here.
 struct GraspFrameNames {
-  std::array<std::string, kLimbCount> frames{"right_palm", "left_palm", "right_foot_ball",
-                                             "left_foot_ball"};
+  std::array<std::string, kLimbCount> frames{"right_palm", "left_palm", "right_foot_ball", "left_foot_ball"};
 };
 
 struct BodyJoint {
   std::string name;
-  int parent = -1;                 // index into BodyModel::joints, -1 for the world
+  int parent = -1;                  // index into BodyModel::joints, -1 for the world
   Eigen::Matrix3d origin_rotation;  // joint frame in the parent joint's frame
   Eigen::Vector3d origin_translation;
   bool origin_rotation_is_identity = true;  // lets FK skip a 3 x 3 product
-  Eigen::Vector3d axis;            // unit, in the joint frame
+  Eigen::Vector3d axis;                     // unit, in the joint frame
   // When the axis is +-x, +-y or +-z: its index (else -1) and sign, for a cheaper FK.
   int principal_axis = -1;
   double principal_sign = 1.0;
   bool prismatic = false;
-  double lower = 0.0, upper = 0.0;  // radians or metres
-  double mass = 0.0;               // of the links rigidly attached after this joint
+  double lower = 0.0, upper = 0.0;                                 // radians or metres
+  double mass = 0.0;                                               // of the links rigidly attached after this joint
   Eigen::Vector3d centre_of_mass_local = Eigen::Vector3d::Zero();  // in the joint frame
 };
 

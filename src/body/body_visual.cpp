@@ -4,9 +4,12 @@ namespace crux {
 
 const char* visual_shape_name(VisualShape shape) {
   switch (shape) {
-    case VisualShape::Box: return "box";
-    case VisualShape::Cylinder: return "cylinder";
-    case VisualShape::Sphere: return "sphere";
+    case VisualShape::Box:
+      return "box";
+    case VisualShape::Cylinder:
+      return "cylinder";
+    case VisualShape::Sphere:
+      return "sphere";
   }
   return "sphere";
 }

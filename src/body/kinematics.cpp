@@ -8,8 +8,7 @@
 
 namespace crux {
 
-BodyData::BodyData(const BodyModel& model)
-    : placements(model.joints.size()), trigonometry(model.joints.size()) {
+BodyData::BodyData(const BodyModel& model) : placements(model.joints.size()), trigonometry(model.joints.size()) {
   for (auto& p : points) p.setZero();
   for (auto& j : jacobians) j.setZero();
 }

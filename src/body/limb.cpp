@@ -4,10 +4,14 @@ namespace crux {
 
 const char* limb_name(Limb limb) {
   switch (limb) {
-    case Limb::RightHand: return "right_hand";
-    case Limb::LeftHand: return "left_hand";
-    case Limb::RightFoot: return "right_foot";
-    case Limb::LeftFoot: return "left_foot";
+    case Limb::RightHand:
+      return "right_hand";
+    case Limb::LeftHand:
+      return "left_hand";
+    case Limb::RightFoot:
+      return "right_foot";
+    case Limb::LeftFoot:
+      return "left_foot";
   }
   return "?";
 }

@@ -26,7 +26,8 @@ ReachEnvelope compute_reach_envelope(const BodyModel& model) {
       // The first joint's origin follows the root's translation only; every later origin
       // and the grasp point sit at fixed distances along rotated links.
       envelope.chain_base[limb] = data.placements[*first].origin - data.points[0];
-      for (auto joint = first + 1; joint != chain.end(); ++joint) radius += model.joints[*joint].origin_translation.norm();
+      for (auto joint = first + 1; joint != chain.end(); ++joint)
+        radius += model.joints[*joint].origin_translation.norm();
       // A sliding joint, or a chain hanging off an intermediate root axis, has no such bound.
       const bool bounded = model.joints[*first].parent == kRootDof - 1 &&
                            std::none_of(first, chain.end(), [&](int joint) { return model.joints[joint].prismatic; });

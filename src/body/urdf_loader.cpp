@@ -10,10 +10,10 @@
 
 #include <console_bridge/console.h>
 #include <dlfcn.h>
-#include <link.h>
-#include <Eigen/Geometry>
 #include <fmt/format.h>
+#include <link.h>
 #include <urdf_parser/urdf_parser.h>
+#include <Eigen/Geometry>
 
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
@@ -73,13 +73,20 @@ struct RigidTransform {
 
 const char* joint_type_name(int type) {
   switch (type) {
-    case urdf::Joint::REVOLUTE: return "revolute";
-    case urdf::Joint::CONTINUOUS: return "continuous";
-    case urdf::Joint::PRISMATIC: return "prismatic";
-    case urdf::Joint::FLOATING: return "floating";
-    case urdf::Joint::PLANAR: return "planar";
-    case urdf::Joint::FIXED: return "fixed";
-    default: return "unknown";
+    case urdf::Joint::REVOLUTE:
+      return "revolute";
+    case urdf::Joint::CONTINUOUS:
+      return "continuous";
+    case urdf::Joint::PRISMATIC:
+      return "prismatic";
+    case urdf::Joint::FLOATING:
+      return "floating";
+    case urdf::Joint::PLANAR:
+      return "planar";
+    case urdf::Joint::FIXED:
+      return "fixed";
+    default:
+      return "unknown";
   }
 }
 
@@ -106,13 +113,13 @@ class ModelBuilder {
     static const char* const axis_names[kRootDof] = {"x", "y", "z"};
     for (int i = 0; i < kRootDof; ++i) {
       if (link->child_joints.size() != 1) {
-        fail(fmt::format("root link '{}' must have exactly one child joint (prismatic along {}), found {}",
-                         link->name, axis_names[i], link->child_joints.size()));
+        fail(fmt::format("root link '{}' must have exactly one child joint (prismatic along {}), found {}", link->name,
+                         axis_names[i], link->child_joints.size()));
       }
       const urdf::Joint& joint = *link->child_joints.front();
       if (joint.type != urdf::Joint::PRISMATIC) {
-        fail(fmt::format("joint '{}' has type {}, expected the root translation along {} (prismatic)",
-                         joint.name, joint_type_name(joint.type), axis_names[i]));
+        fail(fmt::format("joint '{}' has type {}, expected the root translation along {} (prismatic)", joint.name,
+                         joint_type_name(joint.type), axis_names[i]));
       }
       Eigen::Vector3d expected = Eigen::Vector3d::Zero();
       expected[i] = 1.0;
@@ -211,8 +218,9 @@ class ModelBuilder {
     frames_.push_back({link.name, {carrier, in_carrier.translation}});
     for (const urdf::JointSharedPtr& joint : link.child_joints) {
       const urdf::LinkConstSharedPtr child = urdf_.getLink(joint->child_link_name);
-      if (!child) fail(fmt::format("joint '{}' names a child link '{}' that does not exist", joint->name,
-                                   joint->child_link_name));
+      if (!child)
+        fail(
+            fmt::format("joint '{}' names a child link '{}' that does not exist", joint->name, joint->child_link_name));
       const RigidTransform origin = in_carrier.then(joint->parent_to_joint_origin_transform);
       switch (joint->type) {
         case urdf::Joint::FIXED:
@@ -246,9 +254,10 @@ class ModelBuilder {
           break;
         }
         default:
-          fail(fmt::format("joint '{}' has type {}; crux accepts revolute and fixed joints below the root "
-                           "(and exactly 3 prismatic root joints)",
-                           joint->name, joint_type_name(joint->type)));
+          fail(
+              fmt::format("joint '{}' has type {}; crux accepts revolute and fixed joints below the root "
+                          "(and exactly 3 prismatic root joints)",
+                          joint->name, joint_type_name(joint->type)));
       }
     }
   }

@@ -6,9 +6,9 @@
 #include <sstream>
 #include <string>
 
+#include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
-#include <fmt/format.h>
 
 #include "body/body_model.hpp"
 #include "common/input_error.hpp"

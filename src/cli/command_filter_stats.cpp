@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cli/progress_bar.hpp"
 #include "cli/parameter_binding.hpp"
+#include "cli/progress_bar.hpp"
 #include "common/random.hpp"
 #include "reports/filter_description.hpp"
 #include "wall/random_wall.hpp"
@@ -15,8 +15,8 @@ namespace crux::cli {
 namespace {
 
 // Random walls from wall.seed (wall i from a seed derived from it and i) and the filter.
-const ParameterSet kFilterStatsParameters{{"wall", "filter"},
-                                          {"wall.file", "wall.name", "wall.hold_radius", "wall.finish_height"}};
+const ParameterSet kFilterStatsKeys{{"wall", "filter"},
+                                    {"wall.file", "wall.name", "wall.hold_radius", "wall.finish_height"}};
 
 ExperimentConfig filter_stats_defaults() {
   ExperimentConfig defaults;
@@ -25,7 +25,7 @@ ExperimentConfig filter_stats_defaults() {
 }
 
 struct FilterStatsCommand {
-  ParameterBinding binding{"filter-stats", kFilterStatsParameters, filter_stats_defaults()};
+  ParameterBinding binding{"filter-stats", kFilterStatsKeys, filter_stats_defaults()};
   bool json = false;
 
   void run() {

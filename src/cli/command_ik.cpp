@@ -20,12 +20,12 @@ namespace crux::cli {
 namespace {
 
 // The IK parameters; ik-compare runs both solvers, so it takes no ik.solver.
-const ParameterSet kIkParameters{{"experiment.urdf", "ik"}, {"ik.cache_unreachable"}};
-const ParameterSet kIkCompareParameters{{"experiment.urdf", "experiment.seed", "ik", "compare"},
-                                        {"ik.solver", "ik.cache_unreachable"}};
+const ParameterSet kIkCommandKeys{{"experiment.urdf", "ik"}, {"ik.cache_unreachable"}};
+const ParameterSet kIkCompareKeys{{"experiment.urdf", "experiment.seed", "ik", "compare"},
+                                  {"ik.solver", "ik.cache_unreachable"}};
 
 struct IkCommand {
-  ParameterBinding binding{"ik", kIkParameters};
+  ParameterBinding binding{"ik", kIkCommandKeys};
   std::array<std::string, kLimbCount> holds;
   int path_every = 10;
   std::string path_output;
@@ -33,12 +33,13 @@ struct IkCommand {
 
   void run() {
     const ExperimentConfig config = binding.resolve();
-    const IkSettings& settings = config.settings.learning.climbing.reachability.ik;
+    const IkParameters& settings = config.settings.learning.climbing.reachability.ik;
     if (path_every <= 0) throw InputError("--path-every", "must be positive");
     const BodyModel model = load_configured_body(config);
     static const char* const flags[kLimbCount] = {"--rh", "--lh", "--rf", "--lf"};
     ReachTarget target;
-    for (int limb = 0; limb < kLimbCount; ++limb) target.hold_centres[limb] = parse_wall_point(holds[limb], flags[limb]);
+    for (int limb = 0; limb < kLimbCount; ++limb)
+      target.hold_centres[limb] = parse_wall_point(holds[limb], flags[limb]);
     target.root = root_target(model, target.hold_centres, config.settings.learning.climbing.reachability.root);
     BodyData data(model);
     std::vector<Posture> path;
@@ -51,18 +52,19 @@ struct IkCommand {
 };
 
 struct IkCompareCommand {
-  ParameterBinding binding{"ik-compare", kIkCompareParameters};
+  ParameterBinding binding{"ik-compare", kIkCompareKeys};
   bool json = false;
 
   void run() {
     const ExperimentConfig config = binding.resolve();
-    const IkSettings& settings = config.settings.learning.climbing.reachability.ik;
+    const IkParameters& settings = config.settings.learning.climbing.reachability.ik;
     const BodyModel model = load_configured_body(config);
-    IkSettings walk = settings;
+    IkParameters walk = settings;
     walk.solver = config.compare_walk_solver_kind;
-    ReachQuerySettings query_settings;
+    ReachQueryParameters query_settings;
     query_settings.root = config.settings.learning.climbing.reachability.root;
-    const auto batch = climbing_reach_queries(model, walk, config.compare_queries, config.settings.seed, query_settings);
+    const auto batch =
+        climbing_reach_queries(model, walk, config.compare_queries, config.settings.seed, query_settings);
     ProgressBar progress("ik-compare", config.compare_queries);
     const SolverAgreement a = compare_solvers(model, batch, settings, [&](int done) { progress.update(done); });
     progress.finish();
@@ -80,7 +82,8 @@ void add_ik_commands(CLI::App& app) {
   static const char* const limb_help[kLimbCount] = {"Right hand hold centre Y,Z (m)", "Left hand hold centre Y,Z (m)",
                                                     "Right foot hold centre Y,Z (m)", "Left foot hold centre Y,Z (m)"};
   static const char* const flags[kLimbCount] = {"--rh", "--lh", "--rf", "--lf"};
-  for (int limb = 0; limb < kLimbCount; ++limb) command->add_option(flags[limb], ik->holds[limb], limb_help[limb])->required();
+  for (int limb = 0; limb < kLimbCount; ++limb)
+    command->add_option(flags[limb], ik->holds[limb], limb_help[limb])->required();
   ik->binding.bind(command);
   command->add_flag("--json", ik->json, "Print JSON instead of text");
   command->add_option("-o,--output", ik->path_output, "Write the posture path (CSV, one sample per row) to this file");

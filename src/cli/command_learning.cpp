@@ -12,9 +12,9 @@
 #include "cli/progress_bar.hpp"
 #include "common/counted.hpp"
 #include "common/input_error.hpp"
-#include "jobs/command_keys.hpp"
 #include "experiments/run_checkpoint.hpp"
 #include "experiments/run_inputs.hpp"
+#include "jobs/command_keys.hpp"
 #include "jobs/learning_job.hpp"
 #include "jobs/paper_job.hpp"
 #include "reports/plan_description.hpp"
@@ -24,7 +24,8 @@ namespace crux::cli {
 
 namespace {
 
-const ParameterSet kPlanKeys{{"experiment.urdf", "experiment.plan_max_solves", "ik", "filter", "wall"}, {"wall.name", "wall.count"}};
+const ParameterSet kPlanKeys{{"experiment.urdf", "experiment.plan_max_solves", "ik", "filter", "wall"},
+                             {"wall.name", "wall.count"}};
 
 void require_wall(const ExperimentConfig& config) {
   if (config.wall_file.empty() && !config.wall_seed) {
@@ -40,7 +41,7 @@ struct PaperCommand {
 
   void run() {
     PaperJob job{binding.resolve(), binding.config_path(), output, overwrite};
-    const ExperimentSettings settings = job.config.settings;  // the job takes the config
+    const ExperimentParameters settings = job.config.settings;  // the job takes the config
     ProgressBar progress(fmt::format("paper: {} x {} x 3 conditions", counted(settings.wall_pairs, "wall"),
                                      counted(settings.seeds_per_wall, "seed")),
                          3L * settings.runs());
@@ -78,10 +79,14 @@ struct SingleRunCommand {
     const int iterations = job.config.settings.learning.iterations;
     ProgressBar progress(condition_name(condition), iterations);
     const std::string caller = condition == Condition::Transfer ? "crux transfer" : "crux train";
-    const JobHooks hooks{caller, [&](int done) { progress.update(done); }, {}, [&](int iteration) {
+    const JobHooks hooks{caller,
+                         [&](int done) { progress.update(done); },
+                         {},
+                         [&](int iteration) {
                            progress.start_at(iteration);
                            std::cerr << fmt::format("{}: resumed at iteration {} of {} from {}\n", caller, iteration,
-                                                    iterations, (std::filesystem::path(output) / kCheckpointFile).string());
+                                                    iterations,
+                                                    (std::filesystem::path(output) / kCheckpointFile).string());
                          }};
     const LearningJobOutcome outcome = run_learning_job(std::move(job), hooks);
     progress.finish();
@@ -129,8 +134,7 @@ void add_learning_commands(CLI::App& app) {
       ->excludes(paper->binding.option("experiment.seeds_per_wall"));
   p->callback([paper] { paper->run(); });
 
-  add_single_run_command(app, "train", "Learn to climb one wall from empty tables", Condition::Training,
-                         kTrainKeys);
+  add_single_run_command(app, "train", "Learn to climb one wall from empty tables", Condition::Training, kTrainKeys);
   add_single_run_command(app, "transfer", "Learn to climb one wall starting from a Q_grid learnt elsewhere",
                          Condition::Transfer, kTransferKeys);
 

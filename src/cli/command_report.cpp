@@ -20,10 +20,10 @@ namespace crux::cli {
 namespace {
 
 // A folder is reported with its own config.toml; only the body may be named again.
-const ParameterSet kReportParameters{{"experiment.urdf"}, {}};
+const ParameterSet kReportKeys{{"experiment.urdf"}, {}};
 
 struct ReportCommand {
-  ParameterBinding binding{"report", kReportParameters};
+  ParameterBinding binding{"report", kReportKeys};
   std::string folder;
   std::string output;
   std::string run_name = "training_0";
@@ -65,17 +65,19 @@ struct FiguresCommand {
 void add_report_commands(CLI::App& app) {
   auto figures = std::make_shared<FiguresCommand>();
   auto* f = app.add_subcommand(
-      "figures", "Redraw the SVG figures of a crux paper folder into its figures/ from its files: Figs. 2b, 3, 4\n"
-                 "and the transfer-minus-control plot (crux paper writes them too)");
+      "figures",
+      "Redraw the SVG figures of a crux paper folder into its figures/ from its files: Figs. 2b, 3, 4\n"
+      "and the transfer-minus-control plot (crux paper writes them too)");
   f->add_option("folder", figures->folder, "The crux paper output folder")->required();
   f->add_flag("--json", figures->json, "Print JSON instead of text");
   f->callback([figures] { figures->run(); });
 
   auto report = std::make_shared<ReportCommand>();
   auto* r = app.add_subcommand(
-      "report", "Write one self-contained HTML page for an output folder of crux paper, train or transfer: Table I\n"
-                "beside the paper's, the statistics, the figures and a 3D replay of a climb (works offline); the\n"
-                "folder is read with its own config.toml");
+      "report",
+      "Write one self-contained HTML page for an output folder of crux paper, train or transfer: Table I\n"
+      "beside the paper's, the statistics, the figures and a 3D replay of a climb (works offline); the\n"
+      "folder is read with its own config.toml");
   r->add_option("folder", report->folder, "The output folder")->required();
   r->add_option("-o,--output", report->output, "The HTML file to write")->required();
   r->add_option("--run", report->run_name, "For a crux paper folder: the run whose climb is replayed, <condition>_<i>")

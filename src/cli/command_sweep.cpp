@@ -8,9 +8,9 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <utility>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -45,10 +45,12 @@ int report(const std::exception_ptr& failure) {
 
 // The first 64 bits of the sweep file's SHA-256: processes that hold different sweeps
 // (config files, flags or crux builds) are told apart.
-std::uint64_t job_digest(const std::string& sweep_toml) { return std::stoull(sha256_hex(sweep_toml).substr(0, 16), nullptr, 16); }
+std::uint64_t job_digest(const std::string& sweep_toml) {
+  return std::stoull(sha256_hex(sweep_toml).substr(0, 16), nullptr, 16);
+}
 
 struct SweepCommand {
-  ParameterBinding binding{"sweep", kSweepParameters};
+  ParameterBinding binding{"sweep", kSweepKeys};
   std::string output = "out/sweep";
   bool json = false;
   bool overwrite = false;
@@ -76,8 +78,9 @@ struct SweepCommand {
           code = report(failure);
         } else if (!failure && coordinator) {
           report(std::make_exception_ptr(
-              InputError("mpirun", "another process of this sweep failed to read it, or was given another sweep (its "
-                                   "config file, flags or crux build differ)")));
+              InputError("mpirun",
+                         "another process of this sweep failed to read it, or was given another sweep (its "
+                         "config file, flags or crux build differ)")));
         }
         cluster->barrier();
         throw CLI::RuntimeError(code);
@@ -112,9 +115,9 @@ struct SweepCommand {
   void run_job(const SweepJob& job, const BodyModel& model, MpiCluster* cluster, bool coordinator) {
     std::optional<ProgressBar> progress;
     if (coordinator) {
-      progress.emplace(fmt::format("sweep: {}, {}", counted(job.plan.cells.size(), "cell"),
-                                   counted(job.plan.tasks.size(), "task")),
-                       static_cast<long>(job.plan.tasks.size()), true);
+      progress.emplace(
+          fmt::format("sweep: {}, {}", counted(job.plan.cells.size(), "cell"), counted(job.plan.tasks.size(), "task")),
+          static_cast<long>(job.plan.tasks.size()), true);
     }
     bool started = false;
     const SweepOutcome outcome = run_sweep(job, model, cluster, [&](std::size_t done, std::size_t) {
@@ -138,11 +141,11 @@ void add_sweep_command(CLI::App& app) {
       "sweep",
       "Run crux paper's experiment for every combination of the values listed in --config (key = [a, b]); "
       "resumable, and across processes under mpirun");
-  s->add_option("-o,--output", sweep->output,
-                "Output folder; the same command started again there resumes the sweep")
+  s->add_option("-o,--output", sweep->output, "Output folder; the same command started again there resumes the sweep")
       ->capture_default_str();
   s->add_flag("--json", sweep->json, "Print summary.json's contents instead of text");
-  s->add_flag("--overwrite", sweep->overwrite, "Replace another sweep's, or another crux command's, outputs in the output folder");
+  s->add_flag("--overwrite", sweep->overwrite,
+              "Replace another sweep's, or another crux command's, outputs in the output folder");
   sweep->binding.bind(s);
   sweep->binding.option("experiment.runs")
       ->excludes(sweep->binding.option("experiment.walls"))

@@ -24,10 +24,10 @@ namespace crux::cli {
 namespace {
 
 // The IK settings solve a wall file's start; a run is drawn with its own config's.
-const ParameterSet kViewParameters{{"experiment.urdf", "wall.file", "ik"}, {"ik.cache_unreachable"}};
+const ParameterSet kViewKeys{{"experiment.urdf", "wall.file", "ik"}, {"ik.cache_unreachable"}};
 
 struct ViewCommand {
-  ParameterBinding binding{"view", kViewParameters};
+  ParameterBinding binding{"view", kViewKeys};
   std::string run;
   int step = 0;
   std::string climb_choice = "greedy";
@@ -93,8 +93,9 @@ struct ViewCommand {
 void add_view_command(CLI::App& app) {
   auto view = std::make_shared<ViewCommand>();
   auto* v = app.add_subcommand(
-      "view", "Draw the climber on the wall at one posture, front and side (paper Fig. 1), as SVG: step K of a run's\n"
-              "climb (--run DIR --step K), or the start posture of a wall file (--wall-file FILE)");
+      "view",
+      "Draw the climber on the wall at one posture, front and side (paper Fig. 1), as SVG: step K of a run's\n"
+      "climb (--run DIR --step K), or the start posture of a wall file (--wall-file FILE)");
   v->add_option("--run", view->run,
                 "A run folder: that of crux train or transfer, or runs/<condition>_<i> of a crux paper folder; it is "
                 "drawn with its own body and config.toml");

@@ -9,10 +9,10 @@
 #include "cli/cli_parsing.hpp"
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
-#include "experiments/run_inputs.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "configurations/reachability.hpp"
+#include "experiments/run_inputs.hpp"
 #include "reports/wall_description.hpp"
 #include "views/wall_svg.hpp"
 #include "wall/random_wall.hpp"
@@ -23,9 +23,9 @@ namespace crux::cli {
 namespace {
 
 // The wall keys of each command, and the IK that checks the start as the learning does.
-const ParameterSet kGenerateParameters{{"experiment.urdf", "wall", "ik"},
-                                       {"wall.file", "wall.count", "ik.cache_unreachable"}};
-const ParameterSet kShowParameters{{"experiment.urdf", "wall.file", "grid", "ik"}, {"ik.cache_unreachable"}};
+const ParameterSet kGenerateKeys{{"experiment.urdf", "wall", "ik"},
+                                 {"wall.file", "wall.count", "ik.cache_unreachable"}};
+const ParameterSet kShowKeys{{"experiment.urdf", "wall.file", "grid", "ik"}, {"ik.cache_unreachable"}};
 
 ExperimentConfig generate_defaults() {
   ExperimentConfig defaults;
@@ -40,7 +40,7 @@ IkResult check_start(const ExperimentConfig& config, const Wall& wall) {
 }
 
 struct GenerateCommand {
-  ParameterBinding binding{"wall generate", kGenerateParameters, generate_defaults()};
+  ParameterBinding binding{"wall generate", kGenerateKeys, generate_defaults()};
   std::string output;
   bool json = false;
 
@@ -63,7 +63,7 @@ struct GenerateCommand {
 };
 
 struct ShowCommand {
-  ParameterBinding binding{"wall show", kShowParameters};
+  ParameterBinding binding{"wall show", kShowKeys};
   bool json = false;
   std::string svg;
   std::string grid_limb;
@@ -77,7 +77,9 @@ struct ShowCommand {
     std::optional<PlacedGrid> grid;
     if (!grid_limb.empty()) {
       const auto limb = parse_limb(grid_limb);
-      if (!limb) throw InputError("--limb", fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", grid_limb));
+      if (!limb)
+        throw InputError("--limb",
+                         fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", grid_limb));
       Eigen::Vector3d at = wall.holds[wall.start[static_cast<int>(*limb)]].position;
       if (!grid_at.empty()) at = parse_wall_point(grid_at, "--at");
       const GridParameters& parameters = config.settings.learning.climbing.grid;
@@ -114,7 +116,8 @@ void add_wall_command(CLI::App& app) {
   g->callback([generate] { generate->run(); });
 
   auto show = std::make_shared<ShowCommand>();
-  auto* s = wall->add_subcommand("show", "Summarise a wall file; draw it (-o FILE.svg), with the moving grid on a limb (--limb)");
+  auto* s = wall->add_subcommand(
+      "show", "Summarise a wall file; draw it (-o FILE.svg), with the moving grid on a limb (--limb)");
   s->add_flag("--json", show->json, "Print JSON instead of text");
   s->add_option("-o,--output", show->svg, "Write an SVG front view to this file");
   s->add_option("--limb", show->grid_limb, "Place the moving grid on this free limb (right_hand, left_hand, ...)");

@@ -3,12 +3,12 @@
 #include <cstdio>
 #include <exception>
 #include <map>
-#include <string_view>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/suggestion.hpp"
@@ -38,23 +38,44 @@ std::string hint(const std::string& nearest) {
 
 // Flags of crux 0.1 before every parameter took its config key's name.
 const std::map<std::string, std::string>& renamed_flags() {
-  static const std::map<std::string, std::string> renamed{
-      {"--solver", "--ik-solver"}, {"--alpha", "--ik-alpha"}, {"--time-step", "--ik-time-step"},
-      {"--timeout", "--ik-timeout"}, {"--fast-max-iterations", "--ik-fast-max-iterations"},
-      {"--fast-stall-decrease", "--ik-fast-stall-decrease"}, {"--fast-stall-iterations", "--ik-fast-stall-iterations"},
-      {"--fast-aim", "--ik-fast-aim"}, {"--grasp-radius", "--ik-grasp-radius"},
-      {"--root-tolerance", "--ik-root-tolerance"}, {"--wall-distance", "--ik-wall-distance"},
-      {"--cache-unreachable", "--ik-cache-unreachable"}, {"--learning-rate", "--learning-alpha"},
-      {"--gamma", "--learning-gamma"}, {"--epsilon", "--learning-epsilon"},
-      {"--planning-steps", "--learning-planning-steps"}, {"--planner", "--learning-planner"},
-      {"--priority-threshold", "--learning-priority-threshold"}, {"--max-span", "--filter-max-span"},
-      {"--reading", "--filter-reading"}, {"--hold-radius", "--wall-hold-radius"},
-      {"--finish-height", "--wall-finish-height"}, {"--wall", "--wall-file"}, {"--qgrid", "--q-grid"},
-      {"--columns", "--wall-columns"}, {"--rows", "--wall-rows"}, {"--tile-width", "--wall-tile-width"},
-      {"--tile-height", "--wall-tile-height"}, {"--sigma", "--wall-sigma"}, {"--name", "--wall-name"},
-      {"--grid", "--limb"}, {"--walls", "--wall-count"}, {"--seed", "--wall-seed"}, {"--svg", "--output"},
-      {"--path-out", "--output"}, {"--replay-run", "--run"}, {"--queries", "--compare-queries"},
-      {"--walk-solver", "--compare-walk-solver"}};
+  static const std::map<std::string, std::string> renamed{{"--solver", "--ik-solver"},
+                                                          {"--alpha", "--ik-alpha"},
+                                                          {"--time-step", "--ik-time-step"},
+                                                          {"--timeout", "--ik-timeout"},
+                                                          {"--fast-max-iterations", "--ik-fast-max-iterations"},
+                                                          {"--fast-stall-decrease", "--ik-fast-stall-decrease"},
+                                                          {"--fast-stall-iterations", "--ik-fast-stall-iterations"},
+                                                          {"--fast-aim", "--ik-fast-aim"},
+                                                          {"--grasp-radius", "--ik-grasp-radius"},
+                                                          {"--root-tolerance", "--ik-root-tolerance"},
+                                                          {"--wall-distance", "--ik-wall-distance"},
+                                                          {"--cache-unreachable", "--ik-cache-unreachable"},
+                                                          {"--learning-rate", "--learning-alpha"},
+                                                          {"--gamma", "--learning-gamma"},
+                                                          {"--epsilon", "--learning-epsilon"},
+                                                          {"--planning-steps", "--learning-planning-steps"},
+                                                          {"--planner", "--learning-planner"},
+                                                          {"--priority-threshold", "--learning-priority-threshold"},
+                                                          {"--max-span", "--filter-max-span"},
+                                                          {"--reading", "--filter-reading"},
+                                                          {"--hold-radius", "--wall-hold-radius"},
+                                                          {"--finish-height", "--wall-finish-height"},
+                                                          {"--wall", "--wall-file"},
+                                                          {"--qgrid", "--q-grid"},
+                                                          {"--columns", "--wall-columns"},
+                                                          {"--rows", "--wall-rows"},
+                                                          {"--tile-width", "--wall-tile-width"},
+                                                          {"--tile-height", "--wall-tile-height"},
+                                                          {"--sigma", "--wall-sigma"},
+                                                          {"--name", "--wall-name"},
+                                                          {"--grid", "--limb"},
+                                                          {"--walls", "--wall-count"},
+                                                          {"--seed", "--wall-seed"},
+                                                          {"--svg", "--output"},
+                                                          {"--path-out", "--output"},
+                                                          {"--replay-run", "--run"},
+                                                          {"--queries", "--compare-queries"},
+                                                          {"--walk-solver", "--compare-walk-solver"}};
   return renamed;
 }
 
@@ -76,10 +97,10 @@ int check_names(const CLI::App& app, int argc, char** argv, const CLI::App*& com
       }
       const auto renamed = renamed_flags().find(name);
       const bool known_rename = renamed != renamed_flags().end() && command->get_option_no_throw(renamed->second);
-      return refuse(fmt::format("unknown option {} of '{}'{} (see '{} --help')", name, command_path(command),
-                                known_rename ? fmt::format(" (it is now {})", renamed->second)
-                                             : hint(crux::cli::nearest_name(name, flags)),
-                                command_path(command)));
+      return refuse(fmt::format(
+          "unknown option {} of '{}'{} (see '{} --help')", name, command_path(command),
+          known_rename ? fmt::format(" (it is now {})", renamed->second) : hint(crux::cli::nearest_name(name, flags)),
+          command_path(command)));
     }
     if (arg.rfind('-', 0) == 0) continue;  // a short option or a negative number
     if (after_command) continue;           // a value

@@ -21,10 +21,14 @@ const CLI::Validator kSeedDigits(
 }  // namespace
 
 ParameterBinding::ParameterBinding(std::string command, ParameterSet accepted, ExperimentConfig defaults)
-    : command_(std::move(command)), accepted_(std::move(accepted)), defaults_(defaults), from_flags_(std::move(defaults)) {}
+    : command_(std::move(command)),
+      accepted_(std::move(accepted)),
+      defaults_(defaults),
+      from_flags_(std::move(defaults)) {}
 
 void ParameterBinding::bind(CLI::App* command) {
-  command->add_option("--config", config_path_, "TOML config file, keys as in the config.toml crux writes (flags override it)");
+  command->add_option("--config", config_path_,
+                      "TOML config file, keys as in the config.toml crux writes (flags override it)");
   for (const ConfigField& field : config_fields(from_flags_)) {
     if (!accepted_.accepts(field.key)) continue;
     std::visit(

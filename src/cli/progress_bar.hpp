@@ -17,7 +17,11 @@ namespace crux::cli {
 class ProgressBar {
  public:
   ProgressBar(std::string label, long total, bool timed = false)
-      : label_(std::move(label)), total_(total), terminal_(::isatty(2) == 1), timed_(timed), enabled_(terminal_ || timed) {}
+      : label_(std::move(label)),
+        total_(total),
+        terminal_(::isatty(2) == 1),
+        timed_(timed),
+        enabled_(terminal_ || timed) {}
   ~ProgressBar() { finish(); }
 
   // `first`: where a resumed job starts, left out of the rate.

@@ -24,8 +24,9 @@ ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const Climbin
   // Every later state offers at least the hold its free limb just left; the start must
   // be checked (a wall file or the filter's parameters can leave it without actions).
   if (candidate_count_ == 0) {
-    throw InputError(wall_.name, "the start configuration with the right hand free has no possible action under the "
-                                 "geometric filter");
+    throw InputError(wall_.name,
+                     "the start configuration with the right hand free has no possible action under the "
+                     "geometric filter");
   }
 }
 

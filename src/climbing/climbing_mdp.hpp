@@ -29,10 +29,10 @@ struct ClimbingParameters {
 };
 
 struct StepOutcome {
-  bool reached = false;    // the 4-configuration was C-reachable
-  bool finished = false;   // ... and the centre of mass passed the finishing height
+  bool reached = false;   // the 4-configuration was C-reachable
+  bool finished = false;  // ... and the centre of mass passed the finishing height
   double reward = 0.0;
-  double root_rise_m = 0.0;  // change of e0's height (0 when not reached)
+  double root_rise_m = 0.0;                                  // change of e0's height (0 when not reached)
   Eigen::Vector3d centre_of_mass = Eigen::Vector3d::Zero();  // at the new posture (zero when not reached)
   // The posture that grasps the new 4-configuration, also on the finishing move (after
   // which the MDP is back at the start); null when not reached. Owned by the MDP's cache.

@@ -28,7 +28,8 @@ void PostureCache::save_state(CheckpointWriter& out) const {
 
 void PostureCache::load_state(CheckpointReader& in) {
   reached_.clear();
-  for (const std::uint64_t configuration : in.vector<std::uint64_t>()) reached_.emplace(configuration, load_posture(in));
+  for (const std::uint64_t configuration : in.vector<std::uint64_t>())
+    reached_.emplace(configuration, load_posture(in));
   const std::vector<std::uint64_t> unreachable = in.vector<std::uint64_t>();
   unreachable_ = {unreachable.begin(), unreachable.end()};
 }

@@ -4,8 +4,6 @@
 
 namespace crux {
 
-void CheckpointReader::fail() const {
-  throw InputError(source_, "the checkpoint is truncated or not one crux wrote");
-}
+void CheckpointReader::fail() const { throw InputError(source_, "the checkpoint is truncated or not one crux wrote"); }
 
 }  // namespace crux

@@ -17,12 +17,10 @@ namespace crux {
 class CheckpointWriter {
  public:
   template <typename T>
-    requires std::is_trivially_copyable_v<T>
-  void value(const T& v) {
-    bytes_.append(reinterpret_cast<const char*>(&v), sizeof v);
-  }
+  requires std::is_trivially_copyable_v<T>
+  void value(const T& v) { bytes_.append(reinterpret_cast<const char*>(&v), sizeof v); }
   template <typename T>
-    requires std::is_trivially_copyable_v<T>
+  requires std::is_trivially_copyable_v<T>
   void values(const T* data, std::size_t count) {
     value<std::uint64_t>(count);
     bytes_.append(reinterpret_cast<const char*>(data), count * sizeof(T));
@@ -46,15 +44,13 @@ class CheckpointReader {
   CheckpointReader(std::string_view bytes, std::string source) : bytes_(bytes), source_(std::move(source)) {}
 
   template <typename T>
-    requires std::is_trivially_copyable_v<T>
-  T value() {
+  requires std::is_trivially_copyable_v<T> T value() {
     T v;
     std::memcpy(&v, take(sizeof v), sizeof v);
     return v;
   }
   template <typename T>
-    requires std::is_trivially_copyable_v<T>
-  std::vector<T> vector() {
+  requires std::is_trivially_copyable_v<T> std::vector<T> vector() {
     const std::uint64_t count = value<std::uint64_t>();
     if (count > (bytes_.size() - at_) / sizeof(T)) fail();
     std::vector<T> v(count);

@@ -36,8 +36,8 @@ std::string read_input_file(const std::string& path, std::string_view kind) {
   if (S_ISDIR(status.st_mode)) throw InputError(path, fmt::format("is a directory, not a {}", kind));
   if (!S_ISREG(status.st_mode)) throw InputError(path, fmt::format("is not a regular file, so not a {}", kind));
   if (status.st_size > static_cast<off_t>(kMaxInputFileBytes)) {
-    throw InputError(path, fmt::format("is {} bytes; a {} may be at most {} bytes", status.st_size, kind,
-                                       kMaxInputFileBytes));
+    throw InputError(
+        path, fmt::format("is {} bytes; a {} may be at most {} bytes", status.st_size, kind, kMaxInputFileBytes));
   }
   std::string bytes;
   char buffer[1 << 16];

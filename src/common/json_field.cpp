@@ -51,11 +51,10 @@ double JsonField::number() const {
 }
 
 int JsonField::integer(std::int64_t min, std::int64_t max) const {
-  const bool in_range = value_.is_number_unsigned()
-                            ? value_.get<std::uint64_t>() <= static_cast<std::uint64_t>(max) &&
-                                  static_cast<std::int64_t>(value_.get<std::uint64_t>()) >= min
-                            : value_.is_number_integer() && value_.get<std::int64_t>() >= min &&
-                                  value_.get<std::int64_t>() <= max;
+  const bool in_range = value_.is_number_unsigned() ? value_.get<std::uint64_t>() <= static_cast<std::uint64_t>(max) &&
+                                                          static_cast<std::int64_t>(value_.get<std::uint64_t>()) >= min
+                                                    : value_.is_number_integer() && value_.get<std::int64_t>() >= min &&
+                                                          value_.get<std::int64_t>() <= max;
   if (!in_range) {
     fail(fmt::format("{} must be an integer from {} to {}, got {}", path_, min, max, json_value_description(value_)));
   }

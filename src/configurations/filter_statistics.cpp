@@ -8,8 +8,8 @@ using ReadingCounts = std::array<FilterCounts, kFeetAboveHandsReadings.size()>;
 
 // Rules that do not depend on the reading, evaluated once per configuration.
 bool passes_common_rules(const Wall& wall, const HoldConfiguration& c, const FilterParameters& p) {
-  return (!p.reject_crossed_arms || arms_not_crossed(wall, c)) && (!p.reject_crossed_legs || legs_not_crossed(wall, c)) &&
-         span_within_reach(wall, c, p.max_span_m);
+  return (!p.reject_crossed_arms || arms_not_crossed(wall, c)) &&
+         (!p.reject_crossed_legs || legs_not_crossed(wall, c)) && span_within_reach(wall, c, p.max_span_m);
 }
 
 void count(const Wall& wall, const HoldConfiguration& c, const FilterParameters& p, bool complete,
@@ -24,8 +24,9 @@ void count(const Wall& wall, const HoldConfiguration& c, const FilterParameters&
 
 }  // namespace
 
-std::array<FilterCounts, kFeetAboveHandsReadings.size()> filter_statistics(
-    const std::vector<Wall>& walls, const FilterParameters& parameters, const std::function<void(int)>& progress) {
+std::array<FilterCounts, kFeetAboveHandsReadings.size()> filter_statistics(const std::vector<Wall>& walls,
+                                                                           const FilterParameters& parameters,
+                                                                           const std::function<void(int)>& progress) {
   ReadingCounts counts{};
   int done = 0;
   for (const Wall& wall : walls) {

@@ -31,10 +31,14 @@ bool crossed(const Wall& wall, int right, int left) {
 
 const char* reading_name(FeetAboveHandsReading reading) {
   switch (reading) {
-    case FeetAboveHandsReading::LowestFootAboveHighestHand: return "lowest-foot-above-highest-hand";
-    case FeetAboveHandsReading::LowestFootAboveLowestHand: return "lowest-foot-above-lowest-hand";
-    case FeetAboveHandsReading::HighestFootAboveLowestHand: return "highest-foot-above-lowest-hand";
-    case FeetAboveHandsReading::MeanFeetAboveMeanHands: return "mean-feet-above-mean-hands";
+    case FeetAboveHandsReading::LowestFootAboveHighestHand:
+      return "lowest-foot-above-highest-hand";
+    case FeetAboveHandsReading::LowestFootAboveLowestHand:
+      return "lowest-foot-above-lowest-hand";
+    case FeetAboveHandsReading::HighestFootAboveLowestHand:
+      return "highest-foot-above-lowest-hand";
+    case FeetAboveHandsReading::MeanFeetAboveMeanHands:
+      return "mean-feet-above-mean-hands";
   }
   return "?";
 }
@@ -68,10 +72,14 @@ bool feet_not_above_hands(const Wall& wall, const HoldConfiguration& c, FeetAbov
   }
   if (hands.count == 0 || feet.count == 0) return true;
   switch (reading) {
-    case FeetAboveHandsReading::LowestFootAboveHighestHand: return !(feet.low > hands.high);
-    case FeetAboveHandsReading::LowestFootAboveLowestHand: return !(feet.low > hands.low);
-    case FeetAboveHandsReading::HighestFootAboveLowestHand: return !(feet.high > hands.low);
-    case FeetAboveHandsReading::MeanFeetAboveMeanHands: return !(feet.mean() > hands.mean());
+    case FeetAboveHandsReading::LowestFootAboveHighestHand:
+      return !(feet.low > hands.high);
+    case FeetAboveHandsReading::LowestFootAboveLowestHand:
+      return !(feet.low > hands.low);
+    case FeetAboveHandsReading::HighestFootAboveLowestHand:
+      return !(feet.high > hands.low);
+    case FeetAboveHandsReading::MeanFeetAboveMeanHands:
+      return !(feet.mean() > hands.mean());
   }
   return true;
 }
@@ -87,7 +95,8 @@ bool legs_not_crossed(const Wall& wall, const HoldConfiguration& c) {
 bool passes_filter(const Wall& wall, const HoldConfiguration& c, const FilterParameters& parameters) {
   return (!parameters.reject_crossed_arms || arms_not_crossed(wall, c)) &&
          (!parameters.reject_crossed_legs || legs_not_crossed(wall, c)) &&
-         feet_not_above_hands(wall, c, parameters.feet_above_hands) && span_within_reach(wall, c, parameters.max_span_m);
+         feet_not_above_hands(wall, c, parameters.feet_above_hands) &&
+         span_within_reach(wall, c, parameters.max_span_m);
 }
 
 }  // namespace crux

@@ -24,7 +24,8 @@ Posture start_guess(const BodyModel& model, const Wall& wall, const RootTargetPa
   return standing_posture(reach_target(model, wall, start_configuration(wall), root).root);
 }
 
-IkResult solve_start(const BodyModel& model, BodyData& data, const Wall& wall, const ReachabilityParameters& parameters) {
+IkResult solve_start(const BodyModel& model, BodyData& data, const Wall& wall,
+                     const ReachabilityParameters& parameters) {
   const ReachTarget target = reach_target(model, wall, start_configuration(wall), parameters.root);
   return solve_ik(model, data, start_guess(model, wall, parameters.root), target, parameters.ik);
 }

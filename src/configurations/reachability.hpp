@@ -12,7 +12,7 @@ namespace crux {
 // How C-reachability is decided: the IK solver and its settings, the root heuristic,
 // and whether unreachable verdicts are cached (docs/MODEL.md, choice C11).
 struct ReachabilityParameters {
-  IkSettings ik;
+  IkParameters ik;
   RootTargetParameters root;
   bool cache_unreachable = true;
 };
@@ -28,6 +28,7 @@ Posture start_guess(const BodyModel& model, const Wall& wall, const RootTargetPa
 
 // Whether the wall's start configuration is C-reachable from start_guess: the one start
 // check of crux (wall generate, wall show, the learning and the experiment's wall draws).
-IkResult solve_start(const BodyModel& model, BodyData& data, const Wall& wall, const ReachabilityParameters& parameters);
+IkResult solve_start(const BodyModel& model, BodyData& data, const Wall& wall,
+                     const ReachabilityParameters& parameters);
 
 }  // namespace crux

@@ -6,7 +6,7 @@
 
 namespace crux {
 
-std::uint64_t bootstrap_seed(const ExperimentSettings& settings) {
+std::uint64_t bootstrap_seed(const ExperimentParameters& settings) {
   return RandomStream(settings.seed, "bootstrap").bits(0, 0);
 }
 
@@ -20,11 +20,11 @@ double median(std::vector<double> values) {
 
 }  // namespace
 
-MetricWindows metric_windows(const ExperimentSettings& settings) {
+MetricWindows metric_windows(const ExperimentParameters& settings) {
   return {settings.learning.iterations, settings.analysis.beginning, settings.analysis.threshold_length};
 }
 
-ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const ExperimentSettings& settings) {
+ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const ExperimentParameters& settings) {
   ExperimentAnalysis out;
   out.metrics = compare_transfer(result, metric_windows(settings), bootstrap_seed(settings),
                                  settings.analysis.bootstrap_resamples);

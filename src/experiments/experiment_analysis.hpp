@@ -12,10 +12,10 @@
 namespace crux {
 
 // The seed of the cluster bootstrap: its own named stream of the experiment seed.
-std::uint64_t bootstrap_seed(const ExperimentSettings& settings);
+std::uint64_t bootstrap_seed(const ExperimentParameters& settings);
 
 // The windows of the transfer metrics under `settings`.
-MetricWindows metric_windows(const ExperimentSettings& settings);
+MetricWindows metric_windows(const ExperimentParameters& settings);
 
 // What summary.json reports of the transfer metrics, take-off and paired divergence,
 // computed once for the file and the printed report.
@@ -26,11 +26,11 @@ struct ExperimentAnalysis {
     int runs = 0, taken_off = 0;
     double median_iteration = -1.0;  // over the runs that took off; -1 if none
   };
-  std::array<TakeOff, 3> take_off;      // per condition
-  std::vector<int> first_divergence;    // per transfer/control pair; -1: never
-  double median_first_divergence = 0.0;  // "never" counted as the run's length + 1
+  std::array<TakeOff, 3> take_off;                           // per condition
+  std::vector<int> first_divergence;                         // per transfer/control pair; -1: never
+  double median_first_divergence = 0.0;                      // "never" counted as the run's length + 1
   std::array<ChoiceProfile, kRegimeCount> transfer_choices;  // transfer's beginning, per regime
 };
-ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const ExperimentSettings& settings);
+ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const ExperimentParameters& settings);
 
 }  // namespace crux

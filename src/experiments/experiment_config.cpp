@@ -16,16 +16,15 @@
 namespace crux {
 
 std::vector<ConfigField> config_fields(ExperimentConfig& c) {
-  ExperimentSettings& s = c.settings;
+  ExperimentParameters& s = c.settings;
   LearningParameters& l = s.learning;
   ClimbingParameters& m = l.climbing;
-  IkSettings& ik = m.reachability.ik;
+  IkParameters& ik = m.reachability.ik;
   return {
       {"experiment.urdf", "URDF file of the body (default: the installed crux_human.urdf)", &c.urdf},
       {"experiment.seed", "Seed: the experiment's walls and runs, a run's learning or the queries derive from it",
        &s.seed},
-      {"experiment.runs", "N walls with one seed each: sets walls = N and seeds_per_wall = 1",
-       &c.runs},
+      {"experiment.runs", "N walls with one seed each: sets walls = N and seeds_per_wall = 1", &c.runs},
       {"experiment.walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs},
       {"experiment.seeds_per_wall", "Learning seeds per wall pair", &s.seeds_per_wall},
       {"experiment.threads", "Worker threads (0: all cores); results do not depend on it", &s.threads},
@@ -49,7 +48,8 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        &c.checkpoint_every},
       {"experiment.q_grid", "Q_grid file (q_grid.bin of a training run) that transfer starts from", &c.q_grid},
       {"experiment.transfer",
-       "How transfer uses its Q_grid (docs/TRANSFER.md): paper (Algorithm 3), informed, prior, seeded or shaping; control "
+       "How transfer uses its Q_grid (docs/TRANSFER.md): paper (Algorithm 3), informed, prior, seeded or shaping; "
+       "control "
        "follows the same rule from an empty Q_grid",
        &c.transfer},
       {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha},
@@ -257,8 +257,8 @@ ConfigLines apply_config_text(const std::string& text, const std::string& path, 
   for (const auto& [section, section_node] : table) {
     const toml::table* entries = section_node.as_table();
     if (entries == nullptr) {
-      throw InputError(path, fmt::format("line {}: '{}' must be a [section]", section_node.source().begin.line,
-                                         section.str()));
+      throw InputError(
+          path, fmt::format("line {}: '{}' must be a [section]", section_node.source().begin.line, section.str()));
     }
     for (const auto& [name, node] : *entries) {
       const std::string key = std::string(section.str()) + "." + std::string(name.str());
@@ -317,7 +317,7 @@ bool is_wall_generator_key(const std::string& key) {
 }
 
 void finalize_config(ExperimentConfig& config) {
-  ExperimentSettings& s = config.settings;
+  ExperimentParameters& s = config.settings;
   if (!config.wall_file.empty()) {
     for (const std::string& key : config.given) {
       if (is_wall_generator_key(key)) {
@@ -332,7 +332,8 @@ void finalize_config(ExperimentConfig& config) {
     }
   }
   const auto solver = parse_ik_solver(config.solver);
-  if (!solver) throw InputError("ik.solver", fmt::format("unknown solver '{}' (expected fast or paper)", config.solver));
+  if (!solver)
+    throw InputError("ik.solver", fmt::format("unknown solver '{}' (expected fast or paper)", config.solver));
   s.learning.climbing.reachability.ik.solver = *solver;
   const auto walk_solver = parse_ik_solver(config.compare_walk_solver);
   if (!walk_solver) {
@@ -372,7 +373,7 @@ void finalize_config(ExperimentConfig& config) {
   require(config.beginning <= s.learning.iterations, "experiment.beginning",
           "must not exceed the run's iterations (the window lies inside the run)");
   s.analysis.beginning =
-      config.beginning > 0 ? config.beginning : std::min(AnalysisSettings{}.beginning, s.learning.iterations);
+      config.beginning > 0 ? config.beginning : std::min(AnalysisParameters{}.beginning, s.learning.iterations);
   require(s.analysis.threshold_length > 0, "experiment.threshold_length", "must be positive");
   require(s.analysis.bootstrap_resamples >= 100 && s.analysis.bootstrap_resamples <= 10000000,
           "experiment.bootstrap_resamples", "must be in [100, 10000000]");
@@ -380,7 +381,7 @@ void finalize_config(ExperimentConfig& config) {
   require(s.learning.greedy_cap > 0, "experiment.greedy_cap", "must be positive");
   require(config.checkpoint_every >= 0, "experiment.checkpoint_every", "must be 0 (none) or positive");
   require(config.wall_count > 0, "wall.count", "must be positive");
-  const DynaSettings& dyna = s.learning.dyna;
+  const DynaParameters& dyna = s.learning.dyna;
   require(dyna.rates.alpha > 0 && dyna.rates.alpha <= 1, "learning.alpha", "must be in (0, 1]");
   require(dyna.rates.gamma >= 0 && dyna.rates.gamma < 1, "learning.gamma", "must be in [0, 1)");
   require(dyna.planning_steps >= 0, "learning.planning_steps", "must be 0 or positive");
@@ -398,7 +399,8 @@ void finalize_config(ExperimentConfig& config) {
   }
   require(grid.tile_width > 0, "grid.tile_width", "must be positive");
   require(grid.tile_height > 0, "grid.tile_height", "must be positive");
-  const double state_codes = 4.0 * std::pow(static_cast<double>(grid.columns) * grid.rows + 1.0, 3.0);  // no int overflow
+  const double state_codes =
+      4.0 * std::pow(static_cast<double>(grid.columns) * grid.rows + 1.0, 3.0);  // no int overflow
   require(state_codes < 4294967296.0, "grid.columns", "the grid has too many tiles for 32-bit agent-state codes");
   int start_columns = 0, start_rows = 0;
   for (const auto& vertex : s.walls.start_vertices) {
@@ -413,7 +415,7 @@ void finalize_config(ExperimentConfig& config) {
   require(s.walls.tile_height > 0, "wall.tile_height", "must be positive");
   require(s.walls.sigma >= 0, "wall.sigma", "must be 0 or positive");
   require(s.walls.hold_radius > 0, "wall.hold_radius", "must be positive");
-  const IkSettings& ik = s.learning.climbing.reachability.ik;
+  const IkParameters& ik = s.learning.climbing.reachability.ik;
   require(ik.paper.step_size > 0, "ik.alpha", "must be positive");
   require(ik.time_step_s > 0, "ik.time_step", "must be positive");
   require(ik.paper.timeout_s > 0, "ik.timeout", "must be positive");

@@ -18,14 +18,14 @@
 namespace crux {
 
 struct ExperimentConfig {
-  ExperimentSettings settings;
+  ExperimentParameters settings;
   std::string urdf;    // empty: the default body model
   std::string q_grid;  // transfer: the Q_grid learnt by a training run
   std::string wall_file;
   std::optional<std::uint64_t> wall_seed;
   int checkpoint_every = 0;  // train, transfer: iterations between checkpoints (run_checkpoint.hpp)
-  std::string wall_name;  // wall generate: the name stored in the file
-  int wall_count = 20;    // filter-stats: random walls counted
+  std::string wall_name;     // wall generate: the name stored in the file
+  int wall_count = 20;       // filter-stats: random walls counted
   // N walls with one seed each, the paper's design, when given: finalize_config turns it
   // into walls = N, seeds_per_wall = 1 and clears it.
   std::optional<int> runs;
@@ -53,8 +53,8 @@ struct ExperimentConfig {
 // gives its holds and finishing height itself, so none applies to it.
 bool is_wall_generator_key(const std::string& key);
 
-using ConfigTarget =
-    std::variant<double*, int*, std::optional<int>*, std::uint64_t*, std::optional<std::uint64_t>*, bool*, std::string*>;
+using ConfigTarget = std::variant<double*, int*, std::optional<int>*, std::uint64_t*, std::optional<std::uint64_t>*,
+                                  bool*, std::string*>;
 
 struct ConfigField {
   std::string key;  // TOML "section.name"
@@ -91,8 +91,7 @@ ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config,
                               const std::string& command, const ListChoice& choice = {});
 // The same for TOML text already read; `source` names it in errors.
 ConfigLines apply_config_text(const std::string& text, const std::string& source, ExperimentConfig& config,
-                              const ParameterSet& accepted, const std::string& command,
-                              const ListChoice& choice = {});
+                              const ParameterSet& accepted, const std::string& command, const ListChoice& choice = {});
 
 // The accepted keys given a list of values in TOML `text`, in the order of
 // config_fields: InputError(source, ...) for an empty list or a key that takes one value.

@@ -34,9 +34,12 @@ std::vector<RunStep> read_iterations_file(const std::filesystem::path& path) {
     if (cells[4] != "0" && cells[4] != "1") {
       throw InputError(file, fmt::format("line {}: success must be 0 or 1", line));
     }
-    const RunStep step{csv_integer(cells[0], file, line), csv_integer(cells[1], file, line),
-                       iteration_regime(cells[2], file, line),  csv_integer(cells[3], file, line),
-                       cells[4] == "1",                         csv_number(cells[5], file, line),
+    const RunStep step{csv_integer(cells[0], file, line),
+                       csv_integer(cells[1], file, line),
+                       iteration_regime(cells[2], file, line),
+                       csv_integer(cells[3], file, line),
+                       cells[4] == "1",
+                       csv_number(cells[5], file, line),
                        csv_number(cells[6], file, line)};
     if (step.iteration != static_cast<int>(i) + 1) {
       throw InputError(file, fmt::format("line {}: iteration {} where {} was due", line, step.iteration, i + 1));

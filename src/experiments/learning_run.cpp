@@ -17,7 +17,8 @@ void greedy_climb(ClimbingMdp& mdp, const QTable& q_wall, int cap, RunResult& re
     if (candidates.empty()) return;
     std::size_t best = 0;
     for (std::size_t i = 1; i < candidates.size(); ++i) {
-      if (q_wall.value(mdp.state().wall, candidates[i].wall) > q_wall.value(mdp.state().wall, candidates[best].wall)) best = i;
+      if (q_wall.value(mdp.state().wall, candidates[i].wall) > q_wall.value(mdp.state().wall, candidates[best].wall))
+        best = i;
     }
     const ActionCode hold = candidates[best].wall;  // step() refills the candidates
     const StepOutcome outcome = mdp.step(hold);
@@ -130,8 +131,8 @@ LoopState load_state(const RunCheckpoints& checkpoints, int iterations, RunResul
 }  // namespace
 
 RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningParameters& parameters,
-                       std::uint64_t seed, const QTable* initial_q_grid,
-                       const std::function<void(int)>& progress, const RunCheckpoints* checkpoints) {
+                       std::uint64_t seed, const QTable* initial_q_grid, const std::function<void(int)>& progress,
+                       const RunCheckpoints* checkpoints) {
   ClimbingMdp mdp(model, wall, parameters.climbing);
   DynaQAgent agent(mdp.wall_action_count(), mdp.grid_action_count(), parameters.dyna, seed);
   if (initial_q_grid != nullptr) agent.set_q_grid(*initial_q_grid);

@@ -15,7 +15,7 @@ namespace crux {
 
 struct LearningParameters {
   ClimbingParameters climbing;
-  DynaSettings dyna;
+  DynaParameters dyna;
   int iterations = 8000;
   int greedy_cap = 500;  // actions allowed to the greedy policy's evaluation climb
 };
@@ -50,7 +50,7 @@ struct RunResult {
   // finishing move's included.
   std::vector<Posture> last_climb;
   std::size_t reached_configurations = 0, unreachable_configurations = 0, ik_solves = 0;
-  std::size_t explored_pairs = 0;    // distinct problem-space (state, action) pairs taken
+  std::size_t explored_pairs = 0;      // distinct problem-space (state, action) pairs taken
   std::uint64_t planning_updates = 0;  // Dyna's model updates, over the run
   // Length of one climb by the learnt greedy policy (best Q_wall action, ties to the
   // first candidate) after learning; -1 if it does not finish within greedy_cap actions.
@@ -70,8 +70,8 @@ struct RunResult {
 struct RunCheckpoints {
   int every = 0;
   std::function<void(std::string state, int iterations_done)> save;
-  std::string resume;  // empty: from the start
-  std::string source;  // names the resumed state in errors
+  std::string resume;                                // empty: from the start
+  std::string source;                                // names the resumed state in errors
   std::function<void(int iterations_done)> resumed;  // told where a resumed run goes on from
 };
 

@@ -2,8 +2,8 @@
 
 #include "common/input_error.hpp"
 
-#include <mutex>
 #include <chrono>
+#include <mutex>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -18,9 +18,12 @@ namespace crux {
 
 const char* condition_name(Condition condition) {
   switch (condition) {
-    case Condition::Training: return "training";
-    case Condition::Transfer: return "transfer";
-    case Condition::Control: return "control";
+    case Condition::Training:
+      return "training";
+    case Condition::Transfer:
+      return "transfer";
+    case Condition::Control:
+      return "control";
   }
   return "?";
 }
@@ -48,7 +51,7 @@ std::uint64_t learning_seed(std::uint64_t seed, Condition condition, int run) {
   return derive_seed(derive_seed(seed, 1000 + stream), static_cast<std::uint64_t>(run));
 }
 
-ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& settings, int role, int run) {
+ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& settings, int role, int run) {
   ExperimentWall out;
   const std::uint64_t stream = derive_seed(derive_seed(settings.seed, static_cast<std::uint64_t>(role)), run);
   for (int attempt = 0; attempt < kWallAttempts; ++attempt) {
@@ -69,7 +72,7 @@ ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& setti
                    fmt::format("no random wall drawn with them has a reachable start ({} tried)", kWallAttempts));
 }
 
-ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSettings& settings,
+ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& settings,
                                       const std::function<void(int)>& progress,
                                       const std::function<void()>& interruption_point) {
   const auto started = std::chrono::steady_clock::now();

@@ -28,22 +28,22 @@ const char* condition_name(Condition condition);
 
 // How runs are analysed (docs/OUTPUTS.md): Table I's beginning window, the episode
 // length that counts as climbing well, and the cluster bootstrap's size.
-struct AnalysisSettings {
+struct AnalysisParameters {
   int beginning = 2000;       // iterations; also the early and late windows of the metrics
   int threshold_length = 60;  // time to threshold and take-off
   int bootstrap_resamples = 10000;
 };
 
-struct ExperimentSettings {
+struct ExperimentParameters {
   LearningParameters learning;
-  AnalysisSettings analysis;
+  AnalysisParameters analysis;
   RandomWallParameters walls;
   int wall_pairs = 6;      // training wall w and transfer wall w
   int seeds_per_wall = 1;  // learning seeds per wall pair
   std::uint64_t seed = 1;
-  int threads = 0;  // 0: all cores
+  int threads = 0;   // 0: all cores
   bool plan = true;  // compute each wall's exact shortest climb
-  PlanSettings plan_search;
+  PlanParameters plan_search;
 
   int runs() const { return wall_pairs * seeds_per_wall; }  // per condition
 };
@@ -58,7 +58,7 @@ struct ExperimentWall {
 
 struct ConditionResult {
   std::vector<RunResult> runs;
-  std::vector<std::size_t> wall_of_run;   // index into ExperimentResult::walls
+  std::vector<std::size_t> wall_of_run;     // index into ExperimentResult::walls
   std::vector<std::size_t> cluster_of_run;  // the wall pair w of run r
   std::vector<std::uint64_t> learning_seeds;
 };
@@ -72,7 +72,7 @@ struct ExperimentResult {
 // Progress: the number of runs finished out of 3 x runs() (called under a lock).
 // `interruption_point` is called often from the worker threads (before each wall and at
 // every learning iteration); an exception it throws stops the experiment and leaves it.
-ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentSettings& settings,
+ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& settings,
                                       const std::function<void(int runs_done)>& progress = {},
                                       const std::function<void()>& interruption_point = {});
 
@@ -81,7 +81,7 @@ inline constexpr int kTrainingWalls = 0, kTransferWalls = 1;
 
 // Draws the wall of (role, wall pair) from the experiment seed, skipping candidates
 // whose start configuration is unreachable (they are recorded, never used).
-ExperimentWall draw_wall(const BodyModel& model, const ExperimentSettings& settings, int role, int pair);
+ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& settings, int role, int pair);
 
 // The learning seed of run `run` of `condition`: its own stream of the experiment seed.
 // Transfer and control share run r's seed (common random numbers for the paired test).

@@ -27,19 +27,21 @@ std::optional<std::string> read_checkpoint(const std::filesystem::path& file, co
   std::error_code error;
   if (!std::filesystem::exists(file, error)) return std::nullopt;
   const std::string bytes = read_input_file(file.string(), "checkpoint");
-  if (bytes.compare(0, kCheckpointMagic.size(), kCheckpointMagic) != 0) throw InputError(file.string(), "not a crux checkpoint");
+  if (bytes.compare(0, kCheckpointMagic.size(), kCheckpointMagic) != 0)
+    throw InputError(file.string(), "not a crux checkpoint");
   const std::string_view rest = std::string_view(bytes).substr(kCheckpointMagic.size());
   const std::string_view payload = rest.size() >= kDigestLine ? rest.substr(kDigestLine) : std::string_view();
-  if (rest.size() < kDigestLine || rest.substr(0, 7) != "sha256 " ||
-      rest.substr(7, 64) != sha256_hex(payload)) {
-    throw InputError(file.string(), "the checkpoint is damaged (its SHA-256 does not match); pass --overwrite to start "
-                                    "afresh");
+  if (rest.size() < kDigestLine || rest.substr(0, 7) != "sha256 " || rest.substr(7, 64) != sha256_hex(payload)) {
+    throw InputError(file.string(),
+                     "the checkpoint is damaged (its SHA-256 does not match); pass --overwrite to start "
+                     "afresh");
   }
   CheckpointReader in(payload, file.string());
   if (in.text() != identity) {
-    throw InputError(file.string(), "is the checkpoint of another run (other parameters or inputs, or another crux "
-                                    "build); pass --overwrite to start afresh, or give the parameters it was written "
-                                    "with");
+    throw InputError(file.string(),
+                     "is the checkpoint of another run (other parameters or inputs, or another crux "
+                     "build); pass --overwrite to start afresh, or give the parameters it was written "
+                     "with");
   }
   std::string state = in.text();
   if (!in.at_end()) in.fail();

@@ -31,8 +31,8 @@ void check_q_grid(const QTable& q_grid, const GridParameters& grid, const std::s
   // Codes beyond this grid's would be read as states of another shape.
   q_grid.for_each_row([&](StateCode state, auto, auto) {
     if (state >= agent_state_count(grid)) {
-      throw InputError(source, fmt::format("state code {} does not exist on a {} x {} grid", state, grid.columns,
-                                           grid.rows));
+      throw InputError(source,
+                       fmt::format("state code {} does not exist on a {} x {} grid", state, grid.columns, grid.rows));
     }
   });
 }

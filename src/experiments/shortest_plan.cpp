@@ -17,7 +17,7 @@ struct Node {
 }  // namespace
 
 Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
-                   const PlanSettings& settings) {
+                   const PlanParameters& settings) {
   ConfigurationReacher reacher(model, wall, parameters.reachability);
   const Posture* start = &reacher.require_start(wall.name);
   std::vector<Node> nodes{{start_configuration(wall).with(Limb::RightHand, kFree), start, -1, -1}};

@@ -15,21 +15,21 @@ namespace crux {
 // IK solves dominate the search's time and every stored state costs one, so a budget of
 // solves bounds both time and memory on a wall of any size (12-20 us per solve on average
 // on this machine, since a query the reach envelope rules out does not iterate).
-struct PlanSettings {
+struct PlanParameters {
   int max_ik_solves = 50000;
 };
 
 struct Plan {
   bool found = false;
-  bool stopped_at_limit = false;   // the budget ran out before a climb was found or ruled out
-  int length = 0;                  // actions
-  std::vector<int> hold_ids;       // the hold taken by each action, in order
-  std::vector<Limb> limbs;         // the limb that moved at each action
+  bool stopped_at_limit = false;  // the budget ran out before a climb was found or ruled out
+  int length = 0;                 // actions
+  std::vector<int> hold_ids;      // the hold taken by each action, in order
+  std::vector<Limb> limbs;        // the limb that moved at each action
   std::size_t expanded_states = 0;
   std::size_t ik_solves = 0;
 };
 
 Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
-                   const PlanSettings& settings = {});
+                   const PlanParameters& settings = {});
 
 }  // namespace crux

@@ -1,10 +1,10 @@
 #include "experiments/statistics.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include <boost/math/distributions/students_t.hpp>
 
@@ -53,7 +53,8 @@ PairedTest one_sample_t_test(const std::vector<double>& values) {
   if (out.difference.n < 2) return out;
   const double standard_error = out.difference.standard_deviation / std::sqrt(out.difference.n);
   if (standard_error == 0.0) {
-    out.t = out.difference.mean == 0.0 ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), out.difference.mean);
+    out.t =
+        out.difference.mean == 0.0 ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), out.difference.mean);
     out.p_value = out.difference.mean == 0.0 ? 1.0 : 0.0;
     return out;
   }

@@ -51,12 +51,12 @@ double percentile(std::span<const double> sorted, double q);
 // the unit of inference is the cluster. Each cluster is reduced to the mean of its
 // differences a_i - b_i and every cluster weighs the same, whatever its number of pairs.
 struct ClusteredDifference {
-  int clusters = 0;                 // distinct cluster ids (walls)
-  int pairs = 0;                    // run pairs
-  double mean = 0.0;                // mean over clusters of the per-cluster mean difference
-  double standard_deviation = 0.0;  // sample sd of the per-cluster mean differences
-  double t_low = 0.0, t_high = 0.0;  // 95 % Student-t interval, df = clusters - 1
-  double t = 0.0, p_value = 1.0;     // two-sided one-sample t-test of the cluster means
+  int clusters = 0;                                  // distinct cluster ids (walls)
+  int pairs = 0;                                     // run pairs
+  double mean = 0.0;                                 // mean over clusters of the per-cluster mean difference
+  double standard_deviation = 0.0;                   // sample sd of the per-cluster mean differences
+  double t_low = 0.0, t_high = 0.0;                  // 95 % Student-t interval, df = clusters - 1
+  double t = 0.0, p_value = 1.0;                     // two-sided one-sample t-test of the cluster means
   double bootstrap_low = 0.0, bootstrap_high = 0.0;  // 95 % cluster-bootstrap percentile interval
 };
 // cluster_of_pair[i] is the cluster id (any value) of pair i. Clusters are ordered by

@@ -10,8 +10,8 @@ RegimeStats regime_stats(std::span<const RunResult> runs, Regime regime, int ite
   RegimeStats stats;
   double rise_m = 0.0;
   for (const RunResult& run : runs) {
-    const std::size_t end = iterations < 0 ? run.iterations.size()
-                                           : std::min(run.iterations.size(), static_cast<std::size_t>(iterations));
+    const std::size_t end =
+        iterations < 0 ? run.iterations.size() : std::min(run.iterations.size(), static_cast<std::size_t>(iterations));
     for (std::size_t i = 0; i < end; ++i) {
       const IterationRecord& record = run.iterations[i];
       if (record.regime != regime) continue;

@@ -107,8 +107,8 @@ std::vector<EpisodeMetric> episode_metrics(const MetricWindows& w) {
                        fmt::format("episodes completed in the last {}", counted(w.window, "iteration")), true,
                        late_episodes});
   }
-  metrics.push_back({"last_10_length", "mean length of the last 10 episodes (asymptotic performance)", false,
-                     last_lengths});
+  metrics.push_back(
+      {"last_10_length", "mean length of the last 10 episodes (asymptotic performance)", false, last_lengths});
   return metrics;
 }
 
@@ -131,8 +131,9 @@ std::vector<MetricComparison> compare_transfer(const ExperimentResult& result, c
     comparison.transfer_minus_control =
         clustered_paired_difference(t, c, transfer.cluster_of_run, bootstrap_seed, bootstrap_resamples);
     const double control_mean = comparison.per_condition[static_cast<int>(Condition::Control)].mean;
-    comparison.relative_difference = control_mean != 0.0 ? comparison.transfer_minus_control.mean / std::abs(control_mean)
-                                                         : std::numeric_limits<double>::quiet_NaN();
+    comparison.relative_difference = control_mean != 0.0
+                                         ? comparison.transfer_minus_control.mean / std::abs(control_mean)
+                                         : std::numeric_limits<double>::quiet_NaN();
     comparison.paired_correlation = pearson_correlation(t, c);
     comparison.wall_correlation =
         pearson_correlation(cluster_means(t, transfer.cluster_of_run), cluster_means(c, transfer.cluster_of_run));

@@ -24,10 +24,10 @@ struct ChoiceProfile {
   // before, with that success, at that distance.
   int with_evidence = 0;
   double evidence_success_rate = 0;  // pooled success of those earlier tries
-  int far = 0, far_successes = 0;   // the hold lies more than kFarFromEvidence from them
+  int far = 0, far_successes = 0;    // the hold lies more than kFarFromEvidence from them
   int near = 0, near_successes = 0;
-  double median_distance_cm = -1;   // over the actions with evidence; -1 if none
-  double mean_root_rise_cm = 0;     // over the successful actions
+  double median_distance_cm = -1;  // over the actions with evidence; -1 if none
+  double mean_root_rise_cm = 0;    // over the successful actions
 };
 
 inline constexpr double kFarFromEvidence = 0.10;  // m: beyond the 8 cm of a grasp

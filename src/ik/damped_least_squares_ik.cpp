@@ -14,24 +14,23 @@ namespace {
 // exerts no pull, so the solver seeks the feasible set that the termination test
 // accepts rather than the exact centres, where five conflicting pulls may balance just
 // outside it.
-void task_error(const BodyData& data, const ReachTarget& target, const ReachTolerances& tolerances,
-                double aim_fraction, TaskVector& error) {
+void task_error(const BodyData& data, const ReachTarget& target, const ReachTolerances& tolerances, double aim_fraction,
+                TaskVector& error) {
   for (int k = 0; k < kOperationalPointCount; ++k) {
     const Eigen::Vector3d offset = data.points[k] - (k == 0 ? target.root : target.hold_centres[k - 1]);
     const double radius =
         aim_fraction * (k == 0 ? tolerances.root_radius : tolerances.grasp_radius + target.hold_radii[k - 1]);
     const double distance = offset.norm();
-    error.segment<3>(3 * k) = distance > radius ? Eigen::Vector3d(offset * (1.0 - radius / distance))
-                                                : Eigen::Vector3d::Zero();
+    error.segment<3>(3 * k) =
+        distance > radius ? Eigen::Vector3d(offset * (1.0 - radius / distance)) : Eigen::Vector3d::Zero();
   }
 }
 
 }  // namespace
 
 IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, const Posture& g_init,
-                                       const ReachTarget& target, const ReachTolerances& tolerances,
-                                       double time_step_s, const DampedLeastSquaresSettings& settings,
-                                       const PathRecorder& recorder) {
+                                       const ReachTarget& target, const ReachTolerances& tolerances, double time_step_s,
+                                       const DampedLeastSquaresParameters& settings, const PathRecorder& recorder) {
   TaskVector error;
   TaskMatrix normal;
   Eigen::LLT<TaskMatrix> factor;

@@ -8,7 +8,7 @@
 
 namespace crux {
 
-int GradientDescentSettings::max_iterations(double time_step_s) const {
+int GradientDescentParameters::max_iterations(double time_step_s) const {
   return static_cast<int>(std::floor(timeout_s / time_step_s + 1e-9));
 }
 
@@ -28,7 +28,7 @@ void cost_gradient(const BodyModel& model, const BodyData& data, const ReachTarg
 
 IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const Posture& g_init,
                                    const ReachTarget& target, const ReachTolerances& tolerances, double time_step_s,
-                                   const GradientDescentSettings& settings, const PathRecorder& recorder) {
+                                   const GradientDescentParameters& settings, const PathRecorder& recorder) {
   const int max_iterations = settings.max_iterations(time_step_s);
   Posture g = g_init;
   Posture gradient;
@@ -56,7 +56,8 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
     if (window == 0 || reached) continue;
     const double cost = reach_cost(data.points, target);
     recent_costs[iteration % (window + 1)] = cost;
-    if (iteration >= window && recent_costs[(iteration - window) % (window + 1)] - cost < settings.stall_decrease * cost &&
+    if (iteration >= window &&
+        recent_costs[(iteration - window) % (window + 1)] - cost < settings.stall_decrease * cost &&
         tolerance_excess(data.points, target, tolerances) > settings.stall_margin_m) {
       break;
     }

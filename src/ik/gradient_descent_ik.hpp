@@ -17,7 +17,7 @@
 
 namespace crux {
 
-struct GradientDescentSettings {
+struct GradientDescentParameters {
   double step_size = 0.25;  // alpha (calibration: docs/DESIGN.md)
   double timeout_s = 5.5;   // Delta_t
   // The stall exit: f fell by less than `stall_decrease` x f over the last
@@ -32,6 +32,6 @@ struct GradientDescentSettings {
 // `time_step_s`: simulated time per iteration (docs/MODEL.md, choice C9).
 IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const Posture& g_init,
                                    const ReachTarget& target, const ReachTolerances& tolerances, double time_step_s,
-                                   const GradientDescentSettings& settings, const PathRecorder& recorder = {});
+                                   const GradientDescentParameters& settings, const PathRecorder& recorder = {});
 
 }  // namespace crux

@@ -13,7 +13,7 @@ std::optional<IkSolverKind> parse_ik_solver(std::string_view name) {
 }
 
 IkResult solve_ik(const BodyModel& model, BodyData& data, const Posture& g_init, const ReachTarget& target,
-                  const IkSettings& settings, const PathRecorder& recorder) {
+                  const IkParameters& settings, const PathRecorder& recorder) {
   if (settings.rule_out_beyond_reach && beyond_reach(model.reach_envelope, target, settings.tolerances)) {
     forward_kinematics(model, data, g_init);  // as the solvers leave data: the returned posture
     recorder.start(g_init);

@@ -15,7 +15,7 @@ enum class IkSolverKind { Paper, Fast };
 const char* ik_solver_name(IkSolverKind kind);
 std::optional<IkSolverKind> parse_ik_solver(std::string_view name);
 
-struct IkSettings {
+struct IkParameters {
   IkSolverKind solver = IkSolverKind::Fast;
   // What both solvers share: the termination test and the simulated time per iteration
   // (docs/MODEL.md, choice C9; the paper's time-out is counted in it).
@@ -24,12 +24,12 @@ struct IkSettings {
   // Give up before the first iteration when a hold is beyond its limb's reach envelope
   // (beyond_reach): the verdict cannot change, only the time spent reaching it.
   bool rule_out_beyond_reach = true;
-  GradientDescentSettings paper;
-  DampedLeastSquaresSettings fast;
+  GradientDescentParameters paper;
+  DampedLeastSquaresParameters fast;
 };
 
 // Dispatches to the chosen solver, after the reach envelope's check.
 IkResult solve_ik(const BodyModel& model, BodyData& data, const Posture& g_init, const ReachTarget& target,
-                  const IkSettings& settings, const PathRecorder& recorder = {});
+                  const IkParameters& settings, const PathRecorder& recorder = {});
 
 }  // namespace crux

@@ -28,7 +28,7 @@ bool natural_layout(const std::array<Eigen::Vector3d, kLimbCount>& h) {
 
 }  // namespace
 
-Posture start_layout_posture(const BodyModel& model, const IkSettings& settings, const RootTargetParameters& root) {
+Posture start_layout_posture(const BodyModel& model, const IkParameters& settings, const RootTargetParameters& root) {
   ReachTarget target;
   target.hold_centres = start_layout_holds();
   target.root = root_target(model, target.hold_centres, root);
@@ -38,8 +38,8 @@ Posture start_layout_posture(const BodyModel& model, const IkSettings& settings,
   return result.posture;
 }
 
-std::vector<ReachQuery> climbing_reach_queries(const BodyModel& model, const IkSettings& walk_settings, int count,
-                                               std::uint64_t seed, const ReachQuerySettings& settings) {
+std::vector<ReachQuery> climbing_reach_queries(const BodyModel& model, const IkParameters& walk_settings, int count,
+                                               std::uint64_t seed, const ReachQueryParameters& settings) {
   Random random(seed);
   BodyData data(model);
   const Posture home = start_layout_posture(model, walk_settings, settings.root);

@@ -20,7 +20,7 @@ struct ReachQuery {
   bool far_move = false;  // generated as a clearly unreachable query
 };
 
-struct ReachQuerySettings {
+struct ReachQueryParameters {
   double max_move_m = 1.0;
   double far_share = 0.15;
   double far_move_min_m = 2.5;
@@ -35,12 +35,12 @@ std::array<Eigen::Vector3d, kLimbCount> start_layout_holds();
 
 // Solves the start layout from the standing posture placed at H(C4); throws
 // std::runtime_error if the solver cannot reach it.
-Posture start_layout_posture(const BodyModel& model, const IkSettings& settings,
+Posture start_layout_posture(const BodyModel& model, const IkParameters& settings,
                              const RootTargetParameters& root = {});
 
 // `count` queries of a random climbing walk driven by `walk_settings` (its successful
 // moves become the next start postures). Deterministic in `seed`.
-std::vector<ReachQuery> climbing_reach_queries(const BodyModel& model, const IkSettings& walk_settings, int count,
-                                               std::uint64_t seed, const ReachQuerySettings& settings = {});
+std::vector<ReachQuery> climbing_reach_queries(const BodyModel& model, const IkParameters& walk_settings, int count,
+                                               std::uint64_t seed, const ReachQueryParameters& settings = {});
 
 }  // namespace crux

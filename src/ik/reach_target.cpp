@@ -4,8 +4,7 @@
 
 namespace crux {
 
-double grasp_residual(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
-                      const ReachTarget& target) {
+double grasp_residual(const std::array<Eigen::Vector3d, kOperationalPointCount>& points, const ReachTarget& target) {
   double worst = 0.0;
   for (int limb = 0; limb < kLimbCount; ++limb) {
     worst = std::max(worst, (points[operational_point(limb)] - target.hold_centres[limb]).norm());
@@ -13,13 +12,14 @@ double grasp_residual(const std::array<Eigen::Vector3d, kOperationalPointCount>&
   return worst;
 }
 
-bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
-                    const ReachTarget& target, const ReachTolerances& tolerances) {
+bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& points, const ReachTarget& target,
+                    const ReachTolerances& tolerances) {
   // Written as "within" tests so that a NaN posture never passes.
   if (!((points[0] - target.root).squaredNorm() <= tolerances.root_radius * tolerances.root_radius)) return false;
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const double contact = tolerances.grasp_radius + target.hold_radii[limb];
-    if (!((points[operational_point(limb)] - target.hold_centres[limb]).squaredNorm() <= contact * contact)) return false;
+    if (!((points[operational_point(limb)] - target.hold_centres[limb]).squaredNorm() <= contact * contact))
+      return false;
   }
   return true;
 }
@@ -46,8 +46,7 @@ double tolerance_excess(const std::array<Eigen::Vector3d, kOperationalPointCount
   return worst;
 }
 
-double reach_cost(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
-                  const ReachTarget& target) {
+double reach_cost(const std::array<Eigen::Vector3d, kOperationalPointCount>& points, const ReachTarget& target) {
   double cost = 0.5 * (points[0] - target.root).squaredNorm();
   for (int limb = 0; limb < kLimbCount; ++limb) {
     cost += 0.5 * (points[operational_point(limb)] - target.hold_centres[limb]).squaredNorm();

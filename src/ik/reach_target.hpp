@@ -22,13 +22,12 @@ struct ReachTolerances {
 };
 
 // Largest distance from a grasp point to its hold centre.
-double grasp_residual(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
-                      const ReachTarget& target);
+double grasp_residual(const std::array<Eigen::Vector3d, kOperationalPointCount>& points, const ReachTarget& target);
 
 // Algorithm 1's termination test: every grasp sphere intersects its hold sphere and the
 // root lies inside its tolerance sphere.
-bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
-                    const ReachTarget& target, const ReachTolerances& tolerances);
+bool target_reached(const std::array<Eigen::Vector3d, kOperationalPointCount>& points, const ReachTarget& target,
+                    const ReachTolerances& tolerances);
 
 // True when some hold lies beyond its limb's reach envelope from every root inside the
 // root's tolerance sphere: then no posture passes target_reached, and IK need not run.
@@ -40,7 +39,6 @@ double tolerance_excess(const std::array<Eigen::Vector3d, kOperationalPointCount
                         const ReachTolerances& tolerances);
 
 // f(E) = sum over the 5 operational points of 1/2 |e_i - e_i_des|^2 (paper, III-B).
-double reach_cost(const std::array<Eigen::Vector3d, kOperationalPointCount>& points,
-                  const ReachTarget& target);
+double reach_cost(const std::array<Eigen::Vector3d, kOperationalPointCount>& points, const ReachTarget& target);
 
 }  // namespace crux

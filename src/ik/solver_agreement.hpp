@@ -22,6 +22,6 @@ struct SolverAgreement {
 // Runs both solvers on every query from its start posture. `settings` gives the shared
 // tolerances and each solver's parameters; its `solver` field is ignored.
 SolverAgreement compare_solvers(const BodyModel& model, const std::vector<ReachQuery>& queries,
-                                const IkSettings& settings, const std::function<void(int done)>& progress = {});
+                                const IkParameters& settings, const std::function<void(int done)>& progress = {});
 
 }  // namespace crux

@@ -34,8 +34,7 @@ using ChainCoordinates = std::array<CoordinateSet, kOperationalPointCount>;
 ChainCoordinates chain_coordinates(const BodyModel& model);
 
 // J J^T, with J stacked from data.jacobians and the `frozen` coordinates' columns taken as 0.
-void task_normal_matrix(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
-                        TaskMatrix& normal);
+void task_normal_matrix(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen, TaskMatrix& normal);
 
 // J^T v, with the `frozen` coordinates' columns taken as 0.
 void task_transpose_product(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,

@@ -8,10 +8,10 @@
 namespace crux {
 
 struct JobHooks {
-  std::string caller;                                    // "crux train", "crux.run_learning", ...
-  std::function<void(int done)> progress;                // learning iterations (or runs) done so far
-  std::function<void()> interruption_point;             // may throw to stop the job
-  std::function<void(int iteration)> resumed;            // a checkpoint was found: learning resumes after it
+  std::string caller;                          // "crux train", "crux.run_learning", ...
+  std::function<void(int done)> progress;      // learning iterations (or runs) done so far
+  std::function<void()> interruption_point;    // may throw to stop the job
+  std::function<void(int iteration)> resumed;  // a checkpoint was found: learning resumes after it
 };
 
 }  // namespace crux

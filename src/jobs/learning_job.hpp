@@ -40,7 +40,7 @@ struct LearningJob {
 };
 
 struct LearningJobOutcome {
-  ExperimentResult result;  // the one run, as single_run_result makes it, under the job's condition
+  ExperimentResult result;         // the one run, as single_run_result makes it, under the job's condition
   nlohmann::ordered_json summary;  // what summary.json holds
   int resumed_at = 0;              // the checkpoint's iteration it resumed from; 0 from the start
 };

@@ -6,9 +6,12 @@ namespace crux {
 
 const char* regime_name(Regime regime) {
   switch (regime) {
-    case Regime::WGreedy: return "w_greedy";
-    case Regime::GGreedy: return "g_greedy";
-    case Regime::Random: return "random";
+    case Regime::WGreedy:
+      return "w_greedy";
+    case Regime::GGreedy:
+      return "g_greedy";
+    case Regime::Random:
+      return "random";
   }
   return "?";
 }
@@ -48,13 +51,13 @@ long best_candidate(std::span<const ActionCandidate> candidates, Value value, Co
 }  // namespace
 
 ActionChoice select_action(const QTable& q_wall, const QTable& q_grid, const StateCouple& state,
-                           std::span<const ActionCandidate> candidates, double epsilon,
-                           const SelectionStreams& streams, std::uint64_t iteration, const SelectionRule& rule) {
+                           std::span<const ActionCandidate> candidates, double epsilon, const SelectionStreams& streams,
+                           std::uint64_t iteration, const SelectionRule& rule) {
   if (candidates.empty()) throw std::invalid_argument("select_action: a state without possible actions");
   const long w = best_candidate(
       candidates, [&](const ActionCandidate& c) { return q_wall.value(state.wall, c.wall); },
-      [](const ActionCandidate& c) { return c.wall; }, [](const ActionCandidate&) { return true; },
-      streams.tie_break, iteration, kWallTable);
+      [](const ActionCandidate& c) { return c.wall; }, [](const ActionCandidate&) { return true; }, streams.tie_break,
+      iteration, kWallTable);
   if (streams.epsilon.uniform(iteration, 0) > epsilon &&
       (!rule.wall_requires_taken || q_wall.taken(state.wall, candidates[w].wall))) {
     return {static_cast<std::size_t>(w), Regime::WGreedy};

@@ -56,8 +56,8 @@ struct SelectionStreams {
 
 // Algorithm 3 by default.
 struct SelectionRule {
-  bool wall_requires_taken = true;  // w-greedy only when its best action was taken before
-  bool grid_greedy = true;          // the g-greedy regime; without it, w-greedy's refusal is random
+  bool wall_requires_taken = true;      // w-greedy only when its best action was taken before
+  bool grid_greedy = true;              // the g-greedy regime; without it, w-greedy's refusal is random
   std::span<const char> grid_excluded;  // per candidate, non-zero: g-greedy may not choose it
   // g-greedy's best among the agent-space actions already taken, instead of its best
   // action being required to have been taken.
@@ -66,8 +66,7 @@ struct SelectionRule {
 
 // Throws std::invalid_argument when there is no candidate.
 ActionChoice select_action(const QTable& q_wall, const QTable& q_grid, const StateCouple& state,
-                           std::span<const ActionCandidate> candidates, double epsilon,
-                           const SelectionStreams& streams, std::uint64_t iteration,
-                           const SelectionRule& rule = {});
+                           std::span<const ActionCandidate> candidates, double epsilon, const SelectionStreams& streams,
+                           std::uint64_t iteration, const SelectionRule& rule = {});
 
 }  // namespace crux

@@ -12,11 +12,14 @@ const Experience* DeterministicModel::find(StateCode wall_state, ActionCode wall
 }
 
 std::size_t DeterministicModel::record(const Experience& experience) {
-  const auto [it, inserted] = index_.try_emplace(PairKey{experience.wall_state, experience.wall_action}, entries_.size());
+  const auto [it, inserted] =
+      index_.try_emplace(PairKey{experience.wall_state, experience.wall_action}, entries_.size());
   const std::size_t index = it->second;
   if (!track_predecessors_) {
-    if (inserted) entries_.push_back(experience);
-    else entries_[index] = experience;
+    if (inserted)
+      entries_.push_back(experience);
+    else
+      entries_[index] = experience;
     return index;
   }
   if (inserted) {

@@ -15,7 +15,7 @@ std::optional<Planner> parse_planner(std::string_view name) {
   return std::nullopt;
 }
 
-DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaSettings& settings, std::uint64_t seed)
+DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaParameters& settings, std::uint64_t seed)
     : settings_(settings),
       selection_streams_(seed),
       planning_stream_(seed, "planning"),
@@ -57,7 +57,8 @@ ActionChoice DynaQAgent::choose(const StateCouple& state, std::span<const Action
       if (!candidates[i].represents_grid_action) continue;
       // The deterministic model's outcome of the pair; a failed move leaves the state.
       const Experience* known = model_.find(state.wall, candidates[i].wall);
-      grid_excluded_[i] = (known != nullptr && known->next_wall_state == state.wall) || candidates[i].returns_to_left_hold;
+      grid_excluded_[i] =
+          (known != nullptr && known->next_wall_state == state.wall) || candidates[i].returns_to_left_hold;
     }
     rule.grid_excluded = grid_excluded_;
     rule.grid_taken_only = settings_.transfer == TransferMode::Prior;
@@ -111,7 +112,8 @@ void DynaQAgent::plan_uniformly() {
 void DynaQAgent::prioritize(std::size_t entry, bool exact) {
   const Experience& e = model_.at(entry);
   const double target =
-      wall_reward(e) + settings_.rates.gamma * q_wall_.best_value(e.next_wall_state, available(wall_actions_, e.next_wall_state));
+      wall_reward(e) +
+      settings_.rates.gamma * q_wall_.best_value(e.next_wall_state, available(wall_actions_, e.next_wall_state));
   const double priority = std::abs(target - q_wall_.value(e.wall_state, e.wall_action));
   if (priority > settings_.priority_threshold) {
     exact ? queue_.set(entry, priority) : queue_.push(entry, priority);

@@ -27,7 +27,7 @@ enum class Planner { Uniform, Prioritized };
 const char* planner_name(Planner planner);
 std::optional<Planner> parse_planner(std::string_view name);
 
-struct DynaSettings {
+struct DynaParameters {
   QLearningRates rates;
   int planning_steps = 50;  // model updates per real step
   double epsilon = 0.1;     // Algorithm 3; the paper gives no value (docs/MODEL.md, choice C19)
@@ -41,7 +41,7 @@ struct DynaSettings {
 // their draws iteration by iteration.
 class DynaQAgent {
  public:
-  DynaQAgent(int wall_action_count, int grid_action_count, const DynaSettings& settings, std::uint64_t seed);
+  DynaQAgent(int wall_action_count, int grid_action_count, const DynaParameters& settings, std::uint64_t seed);
 
   // Starts from a Q_grid learnt elsewhere (transfer); its visit counts say what has
   // "already been taken" in agent space. The seeded and shaping modes also keep it
@@ -84,7 +84,7 @@ class DynaQAgent {
   std::span<const ActionCode> available(const absl::flat_hash_map<StateCode, std::vector<ActionCode>>& known,
                                         StateCode state) const;
 
-  DynaSettings settings_;
+  DynaParameters settings_;
   SelectionStreams selection_streams_;
   RandomStream planning_stream_;
   std::uint64_t steps_ = 0, planning_updates_ = 0;
@@ -92,8 +92,8 @@ class DynaQAgent {
   DeterministicModel model_;  // tracks predecessors for prioritized sweeping only
   PriorityQueue queue_;
   absl::flat_hash_map<StateCode, std::vector<ActionCode>> wall_actions_, grid_actions_;
-  std::optional<QTable> seeds_;  // seeded mode: the transferred Q_grid
-  GridPotential potential_;      // shaping mode: of the transferred Q_grid (0 without one)
+  std::optional<QTable> seeds_;      // seeded mode: the transferred Q_grid
+  GridPotential potential_;          // shaping mode: of the transferred Q_grid (0 without one)
   std::vector<char> grid_excluded_;  // informed mode: choose()'s per-candidate buffer
 };
 

@@ -41,7 +41,7 @@ class PriorityQueue {
 
   void insert(std::size_t entry, double priority);
 
-  std::vector<Item> heap_;          // may hold stale items, superseded by a later priority
+  std::vector<Item> heap_;           // may hold stale items, superseded by a later priority
   std::vector<double> priority_of_;  // per entry: its queued priority, or -1 when not queued
   std::size_t queued_ = 0;
 };

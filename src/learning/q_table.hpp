@@ -59,8 +59,8 @@ class QTable {
   void load_state(CheckpointReader& in);
 
   // Every stored row, in increasing state order (for files and maps).
-  void for_each_row(const std::function<void(StateCode, std::span<const double>, std::span<const std::uint32_t>)>&
-                        visit) const;
+  void for_each_row(
+      const std::function<void(StateCode, std::span<const double>, std::span<const std::uint32_t>)>& visit) const;
 
  private:
   std::size_t row_of(StateCode s);  // creates the row

@@ -29,7 +29,8 @@ void put(std::string& out, T value) {
 template <typename T>
 T get(const std::string& in, std::size_t& at) {
   std::uint64_t bits = 0;
-  for (std::size_t i = 0; i < sizeof(T); ++i) bits |= static_cast<std::uint64_t>(static_cast<unsigned char>(in[at + i])) << (8 * i);
+  for (std::size_t i = 0; i < sizeof(T); ++i)
+    bits |= static_cast<std::uint64_t>(static_cast<unsigned char>(in[at + i])) << (8 * i);
   at += sizeof(T);
   T value;
   std::memcpy(&value, &bits, sizeof(T));
@@ -48,7 +49,8 @@ std::uint64_t q_table_checksum(const std::string& bytes, std::size_t length) {
 }
 
 void save_q_table(const std::string& path, const QTable& table, const std::string& state_space) {
-  if (state_space.size() > kMaxStateSpaceNameBytes) throw std::invalid_argument("save_q_table: state space name too long");
+  if (state_space.size() > kMaxStateSpaceNameBytes)
+    throw std::invalid_argument("save_q_table: state space name too long");
   std::string out(kQTableMagic, sizeof(kQTableMagic));
   put<std::uint32_t>(out, kQTableFileVersion);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(table.action_count()));
@@ -125,10 +127,12 @@ QTable parse_q_table(const std::string& bytes, const std::string& path, int expe
     const auto state = get<std::uint64_t>(bytes, at);
     for (std::uint32_t a = 0; a < actions; ++a) {
       const double value = get<double>(bytes, at);
-      if (!std::isfinite(value)) throw InputError(path, fmt::format("corrupted: a value of state {} is not finite", state));
+      if (!std::isfinite(value))
+        throw InputError(path, fmt::format("corrupted: a value of state {} is not finite", state));
       table.set_value(state, static_cast<ActionCode>(a), value);
     }
-    for (std::uint32_t a = 0; a < actions; ++a) table.set_visits(state, static_cast<ActionCode>(a), get<std::uint32_t>(bytes, at));
+    for (std::uint32_t a = 0; a < actions; ++a)
+      table.set_visits(state, static_cast<ActionCode>(a), get<std::uint32_t>(bytes, at));
   }
   return table;
 }

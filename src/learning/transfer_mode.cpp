@@ -4,19 +4,23 @@ namespace crux {
 
 const char* transfer_mode_name(TransferMode mode) {
   switch (mode) {
-    case TransferMode::Paper: return "paper";
-    case TransferMode::Informed: return "informed";
-    case TransferMode::Prior: return "prior";
-    case TransferMode::Seeded: return "seeded";
-    case TransferMode::Shaping: return "shaping";
+    case TransferMode::Paper:
+      return "paper";
+    case TransferMode::Informed:
+      return "informed";
+    case TransferMode::Prior:
+      return "prior";
+    case TransferMode::Seeded:
+      return "seeded";
+    case TransferMode::Shaping:
+      return "shaping";
   }
   return "?";
 }
 
 std::optional<TransferMode> parse_transfer_mode(std::string_view name) {
-  for (const TransferMode mode :
-       {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior, TransferMode::Seeded,
-        TransferMode::Shaping}) {
+  for (const TransferMode mode : {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior,
+                                  TransferMode::Seeded, TransferMode::Shaping}) {
     if (name == transfer_mode_name(mode)) return mode;
   }
   return std::nullopt;

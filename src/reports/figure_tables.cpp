@@ -57,8 +57,8 @@ std::string fig3_csv(const ExperimentResult& result, int iterations) {
       }
     }
     for (int i = 0; i < iterations; ++i) {
-      csv += fmt::format("{},{},{},{},{}\n", condition_name(condition), i + 1, cumulative[i][0],
-                         cumulative[i][1], cumulative[i][2]);
+      csv += fmt::format("{},{},{},{},{}\n", condition_name(condition), i + 1, cumulative[i][0], cumulative[i][1],
+                         cumulative[i][2]);
     }
   }
   return csv;

@@ -15,7 +15,7 @@ namespace crux {
 struct FilterReport {
   int wall_count = 0;
   std::uint64_t wall_seed = 0;
-  FilterParameters parameters;  // its reading is the selected one
+  FilterParameters parameters;                                      // its reading is the selected one
   std::array<FilterCounts, kFeetAboveHandsReadings.size()> counts;  // per reading, in that order
 };
 

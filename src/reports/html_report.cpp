@@ -38,8 +38,7 @@ std::string number(const Json& value, const char* format = "{:.3g}") {
 // A count from the summary with its noun ("1 seed", "6 seeds"); a dash for the count
 // when the summary lacks it.
 std::string counted_value(const Json& value, std::string_view singular) {
-  return value.is_number_integer() ? counted(value.get<long long>(), singular)
-                                   : "&ndash; " + counted_noun(2, singular);
+  return value.is_number_integer() ? counted(value.get<long long>(), singular) : "&ndash; " + counted_noun(2, singular);
 }
 
 std::string interval(const Json& value, const char* format = "{:.3g}") {
@@ -60,7 +59,7 @@ class Page {
         "style-src 'unsafe-inline'; img-src data: blob:\">\n";
     out_ += "<link rel=\"icon\" href=\"data:,\">\n";  // or the browser asks the server for /favicon.ico
     append_format(out_, "<title>{}</title>\n<style>\n{}\n</style>\n</head>\n<body>\n<main>\n", xml_escaped(page_.title),
-         page_.style);
+                  page_.style);
     write_header();
     const bool experiment = at(page_.summary, {"kind"}) == "experiment";
     if (experiment) {
@@ -94,8 +93,9 @@ class Page {
       append_format(out_, "<dt>{}</dt><dd>{}</dd>\n", name, value);
     };
     const auto text = [](const Json& value) {
-      return value.is_string() ? xml_escaped(value.get<std::string>()) : value.is_null() ? std::string("&ndash;")
-                                                                                        : xml_escaped(value.dump());
+      return value.is_string() ? xml_escaped(value.get<std::string>())
+             : value.is_null() ? std::string("&ndash;")
+                               : xml_escaped(value.dump());
     };
     fact("crux", text(at(s, {"provenance", "crux_version"})) + " (" + text(at(s, {"provenance", "git_commit"})) + ")");
     fact("body model", text(at(s, {"provenance", "urdf"})));
@@ -112,13 +112,14 @@ class Page {
     const PaperTableOne& paper = paper_table_one();
     out_ += "<section id=\"table-one\">\n<h2>Table I: actions by regime</h2>\n";
     append_format(out_,
-        "<p>Pooled over the runs of each condition; the paper's values in brackets (section IV, Table I). "
-        "Beginning = the first {}. The control condition, absent from the paper, learns on the transfer "
-        "walls without transferred knowledge.</p>\n",
-        counted_value(at(page_.summary, {"beginning_iterations"}), "iteration"));
+                  "<p>Pooled over the runs of each condition; the paper's values in brackets (section IV, Table I). "
+                  "Beginning = the first {}. The control condition, absent from the paper, learns on the transfer "
+                  "walls without transferred knowledge.</p>\n",
+                  counted_value(at(page_.summary, {"beginning_iterations"}), "iteration"));
     static const char* const metrics[3] = {"vertical rise of e0 (cm)", "success rate (%)", "actions per run"};
     for (int w = 0; w < 2; ++w) {
-      append_format(out_, "<table class=\"numbers\">\n<caption>{}</caption>\n<thead><tr><th></th><th></th>", kWindowNames[w]);
+      append_format(out_, "<table class=\"numbers\">\n<caption>{}</caption>\n<thead><tr><th></th><th></th>",
+                    kWindowNames[w]);
       for (const char* condition : kConditionNames) append_format(out_, "<th>{}</th>", condition);
       out_ += "</tr></thead>\n<tbody>\n";
       for (int metric = 0; metric < 3; ++metric) {
@@ -127,8 +128,8 @@ class Page {
           if (r == 0) append_format(out_, "<th rowspan=\"3\">{}</th>", metrics[metric]);
           append_format(out_, "<th>{}</th>", regime_name(static_cast<Regime>(r)));
           for (int c = 0; c < 3; ++c) {
-            const Json& stats = at(page_.summary, {"table1", kConditionNames[c], kWindowNames[w],
-                                                   regime_name(static_cast<Regime>(r))});
+            const Json& stats =
+                at(page_.summary, {"table1", kConditionNames[c], kWindowNames[w], regime_name(static_cast<Regime>(r))});
             std::string value;
             if (metric == 0) value = number(at(stats, {"vertical_cm"}), "{:.1f}");
             if (metric == 1) {
@@ -154,7 +155,8 @@ class Page {
     const Json& comparisons = at(page_.summary, {"transfer_vs_control"});
     if (!comparisons.is_object()) return;
     out_ += "<section id=\"statistics\">\n<h2>Transfer minus control</h2>\n";
-    append_format(out_,
+    append_format(
+        out_,
         "<p>Each transfer run is paired with a control run on the same wall and seed. Differences are averaged per "
         "wall, then over the {}: 95&nbsp;% intervals by Student's t over walls and by a cluster bootstrap over "
         "walls; p from a two-sided t-test over walls, not corrected for the number of metrics.</p>\n",
@@ -165,7 +167,8 @@ class Page {
         "</tr></thead>\n<tbody>\n";
     for (const auto& [metric, values] : comparisons.items()) {
       const Json& difference = at(values, {"transfer_minus_control"});
-      append_format(out_,
+      append_format(
+          out_,
           "<tr><th title=\"{}\">{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
           "<td>{}</td></tr>\n",
           xml_escaped(at(values, {"description"}).is_string() ? at(values, {"description"}).get<std::string>() : ""),
@@ -198,8 +201,8 @@ class Page {
     for (const ReportFigure& figure : page_.figures) {
       std::string_view svg = figure.svg;
       if (svg.starts_with("<?xml")) svg.remove_prefix(svg.find("?>") + 2);
-      append_format(out_, "<figure>\n<h3>{}</h3>\n{}\n<figcaption>{}</figcaption>\n</figure>\n", xml_escaped(figure.title), svg,
-           xml_escaped(figure.caption));
+      append_format(out_, "<figure>\n<h3>{}</h3>\n{}\n<figcaption>{}</figcaption>\n</figure>\n",
+                    xml_escaped(figure.title), svg, xml_escaped(figure.caption));
     }
     out_ += "</section>\n";
   }

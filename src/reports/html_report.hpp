@@ -23,9 +23,9 @@ struct ReportPage {
   nlohmann::json summary;  // the folder's summary.json
   std::vector<ReportFigure> figures;
   std::string replay_title;
-  std::string replay_climb;  // its kind: greedy, last or episode (RecordedClimb)
-  int replay_episode = -1;   // its episode's index from 0; -1 for the greedy climb
-  std::string replay_reason;  // which climb it is and why, or why there is no replay (shown_climb_reason)
+  std::string replay_climb;       // its kind: greedy, last or episode (RecordedClimb)
+  int replay_episode = -1;        // its episode's index from 0; -1 for the greedy climb
+  std::string replay_reason;      // which climb it is and why, or why there is no replay (shown_climb_reason)
   nlohmann::ordered_json replay;  // replay_data(); null for none
   std::string_view style;         // the page's CSS
   std::string_view script;        // the replay's script (three.js bundled in)

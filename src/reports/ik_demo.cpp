@@ -27,7 +27,7 @@ std::vector<IkDemoSolve> run_ik_demo(const BodyModel& model) {
       {"right foot 0.5 m up", Limb::RightFoot, {0, 0, 0.5}},
       {"left hand 3 m up (no body can)", Limb::LeftHand, {0, 0, 3.0}},
   };
-  IkSettings settings;
+  IkParameters settings;
   const Posture start = start_layout_posture(model, settings);
   BodyData data(model);
   std::vector<IkDemoSolve> solves;
@@ -51,9 +51,13 @@ std::vector<IkDemoSolve> run_ik_demo(const BodyModel& model) {
 nlohmann::ordered_json ik_demo_json(const std::vector<IkDemoSolve>& solves) {
   nlohmann::ordered_json out = nlohmann::json::array();
   for (const IkDemoSolve& s : solves) {
-    out.push_back({{"query", s.query}, {"solver", ik_solver_name(s.solver)}, {"reached", s.result.reached},
-                   {"iterations", s.result.iterations}, {"simulated_time_s", s.result.simulated_time_s},
-                   {"residual_m", s.result.residual_m}, {"wall_clock_us", s.wall_clock_us}});
+    out.push_back({{"query", s.query},
+                   {"solver", ik_solver_name(s.solver)},
+                   {"reached", s.result.reached},
+                   {"iterations", s.result.iterations},
+                   {"simulated_time_s", s.result.simulated_time_s},
+                   {"residual_m", s.result.residual_m},
+                   {"wall_clock_us", s.wall_clock_us}});
   }
   return out;
 }

@@ -41,20 +41,20 @@ nlohmann::ordered_json model_json(const BodyModel& model) {
     out["joints"].push_back({{"name", j.name}, {"lower", j.lower}, {"upper", j.upper}});
   }
   out["segments"] = nlohmann::json::array();
-  for (const auto& s : segment_lengths(model)) out["segments"].push_back({{"between", s.name}, {"length_m", s.length_m}});
+  for (const auto& s : segment_lengths(model))
+    out["segments"].push_back({{"between", s.name}, {"length_m", s.length_m}});
   return out;
 }
 
 std::string model_text(const BodyModel& model) {
-  std::string out =
-      fmt::format("body '{}' from {}\n", model.name, model.source) +
-      fmt::format("degrees of freedom: {} root translations + {} revolute = {}\n", kRootDof, kRevoluteDof,
-                  kConfigurationDof) +
-      fmt::format("height {:.3f} m, mass {:.2f} kg, root {:.3f} m above the soles when standing\n", model.stature,
-                  model.total_mass, model.root_height_above_soles) +
-      fmt::format("grasp frames: {}, {}, {}, {}\n", model.grasp_frame_names[0], model.grasp_frame_names[1],
-                  model.grasp_frame_names[2], model.grasp_frame_names[3]) +
-      "joints (limits in degrees):\n";
+  std::string out = fmt::format("body '{}' from {}\n", model.name, model.source) +
+                    fmt::format("degrees of freedom: {} root translations + {} revolute = {}\n", kRootDof, kRevoluteDof,
+                                kConfigurationDof) +
+                    fmt::format("height {:.3f} m, mass {:.2f} kg, root {:.3f} m above the soles when standing\n",
+                                model.stature, model.total_mass, model.root_height_above_soles) +
+                    fmt::format("grasp frames: {}, {}, {}, {}\n", model.grasp_frame_names[0],
+                                model.grasp_frame_names[1], model.grasp_frame_names[2], model.grasp_frame_names[3]) +
+                    "joints (limits in degrees):\n";
   for (int i = kRootDof; i < kConfigurationDof; ++i) {
     const BodyJoint& j = model.joints[i];
     out += fmt::format("  {:2d} {:<26} [{:7.1f}, {:6.1f}]\n", i, j.name, j.lower * 180 / M_PI, j.upper * 180 / M_PI);

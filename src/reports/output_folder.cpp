@@ -21,9 +21,9 @@ namespace {
 // Everything a crux command writes into an output folder but a long run's checkpoint,
 // which stays until the folder is complete: a kill while the folder is written leaves
 // it to resume from.
-constexpr const char* kOutputNames[] = {"config.toml", "summary.json", "runs",      "walls",    "figures",
-                                        "iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv", "wall.json",
-                                        kIncompleteMarker};
+constexpr const char* kOutputNames[] = {"config.toml", "summary.json",     "runs",         "walls",
+                                        "figures",     "iterations.csv",   "episodes.csv", "q_grid.bin",
+                                        "climb.csv",   "greedy_climb.csv", "wall.json",    kIncompleteMarker};
 constexpr const char* kCheckpointOnly[] = {kCheckpointFile};
 
 // Complete, then without a checkpoint: a kill between the two resumes from it again.
@@ -81,7 +81,6 @@ void mark_complete(const fs::path& directory) {
   fs::remove(directory / kIncompleteMarker, error);
 }
 
-
 void check_output_folder(const fs::path& directory, const std::vector<std::string>& inputs, bool overwrite) {
   if (directory.empty()) throw InputError("--output", "the output folder name is empty");
   std::error_code error;
@@ -110,16 +109,17 @@ std::string config_file_text(ExperimentConfig& config, const ParameterSet& accep
 }
 
 void write_experiment_folder(const fs::path& directory, const ExperimentResult& result,
-                             const ExperimentSettings& settings, const BodyModel& model, const std::string& config_toml,
-                             const nlohmann::ordered_json& summary) {
+                             const ExperimentParameters& settings, const BodyModel& model,
+                             const std::string& config_toml, const nlohmann::ordered_json& summary) {
   begin_output_folder(directory);
   write_file_atomically(directory / "config.toml", config_toml);
   make_output_directory(directory / "walls");
   for (std::size_t w = 0; w < result.walls.size(); ++w) {
     const bool training = static_cast<int>(w) < settings.wall_pairs;
-    save_wall((directory / "walls" / fmt::format("{}_{}.json", training ? "training" : "transfer",
-                                                  w % settings.wall_pairs)).string(),
-              result.walls[w].wall);
+    save_wall(
+        (directory / "walls" / fmt::format("{}_{}.json", training ? "training" : "transfer", w % settings.wall_pairs))
+            .string(),
+        result.walls[w].wall);
   }
   for (const Condition condition : kConditions) {
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];

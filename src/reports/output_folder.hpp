@@ -44,8 +44,8 @@ std::string config_file_text(ExperimentConfig& config, const ParameterSet& accep
 // A `crux paper` folder: config.toml, walls/, runs/<condition>_<r>/, figures/ (the CSVs
 // of Figs. 2b, 3 and 4) and summary.json.
 void write_experiment_folder(const std::filesystem::path& directory, const ExperimentResult& result,
-                             const ExperimentSettings& settings, const BodyModel& model, const std::string& config_toml,
-                             const nlohmann::ordered_json& summary);
+                             const ExperimentParameters& settings, const BodyModel& model,
+                             const std::string& config_toml, const nlohmann::ordered_json& summary);
 
 // Writes a long run's checkpoint file (run_checkpoint.hpp) atomically into `directory`,
 // which it marks incomplete until write_run_folder completes it (and removes the file).

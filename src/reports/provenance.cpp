@@ -4,10 +4,10 @@
 
 #include <fmt/format.h>
 
-#include "experiments/run_inputs.hpp"
 #include "common/build_info.hpp"
 #include "common/input_error.hpp"
 #include "common/sha256.hpp"
+#include "experiments/run_inputs.hpp"
 
 namespace crux {
 

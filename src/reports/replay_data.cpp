@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <fmt/format.h>
+#include <Eigen/Geometry>
 
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
@@ -34,10 +34,11 @@ nlohmann::ordered_json configuration_json(const Wall& wall, const HoldConfigurat
 
 class FrameWriter {
  public:
-  FrameWriter(const ReplaySettings& settings) : settings_(settings) {}
+  FrameWriter(const ReplayOptions& settings) : settings_(settings) {}
 
   void add(const Posture& posture) {
-    for (int i = 0; i < kConfigurationDof; ++i) values_.push_back(std::round(posture[i] * settings_.decimals) / settings_.decimals);
+    for (int i = 0; i < kConfigurationDof; ++i)
+      values_.push_back(std::round(posture[i] * settings_.decimals) / settings_.decimals);
     ++count_;
   }
   int count() const { return count_; }
@@ -47,7 +48,7 @@ class FrameWriter {
   const std::vector<double>& values() const { return values_; }
 
  private:
-  const ReplaySettings& settings_;
+  const ReplayOptions& settings_;
   std::vector<double> values_;
   int count_ = 0;
 };
@@ -90,9 +91,15 @@ nlohmann::ordered_json body_model_json(const BodyModel& model) {
   for (const BodyVisual& visual : model.visuals) {
     nlohmann::ordered_json size;
     switch (visual.shape) {
-      case VisualShape::Box: size = vector_json(visual.size); break;
-      case VisualShape::Cylinder: size = {visual.size.x(), visual.size.y()}; break;
-      case VisualShape::Sphere: size = {visual.size.x()}; break;
+      case VisualShape::Box:
+        size = vector_json(visual.size);
+        break;
+      case VisualShape::Cylinder:
+        size = {visual.size.x(), visual.size.y()};
+        break;
+      case VisualShape::Sphere:
+        size = {visual.size.x()};
+        break;
     }
     body["visuals"].push_back({{"link", visual.link},
                                {"joint", visual.joint},
@@ -111,7 +118,7 @@ nlohmann::ordered_json body_model_json(const BodyModel& model) {
 
 nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, const RecordedClimb& climb,
                                    const ReachabilityParameters& reach, const std::string& title,
-                                   const std::string& source, const ReplaySettings& settings) {
+                                   const std::string& source, const ReplayOptions& settings) {
   nlohmann::ordered_json out;
   out["format"] = "crux-replay";
   out["version"] = 1;
@@ -128,7 +135,7 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
                  {"holds", holds},
                  {"start", configuration_json(wall, start_configuration(wall))}};
 
-  IkSettings ik = reach.ik;
+  IkParameters ik = reach.ik;
   ik.solver = IkSolverKind::Paper;
   BodyData data(model);
   FrameWriter frames(settings);

@@ -14,10 +14,10 @@
 
 namespace crux {
 
-struct ReplaySettings {
-  int frames_per_move = 16;     // a reached move: IK path samples, ending on the recorded posture
-  int frames_per_failure = 8;   // an unreachable move: the body stays, the tried hold is shown
-  double decimals = 1e5;        // postures are rounded to 1e-5 (m, rad) to keep the report small
+struct ReplayOptions {
+  int frames_per_move = 16;    // a reached move: IK path samples, ending on the recorded posture
+  int frames_per_failure = 8;  // an unreachable move: the body stays, the tried hold is shown
+  double decimals = 1e5;       // postures are rounded to 1e-5 (m, rad) to keep the report small
 };
 
 // `climb` is one of a folder read by read_run_climb with `model`, on `wall`. `reach`
@@ -26,7 +26,7 @@ struct ReplaySettings {
 // names a hold the wall does not have.
 nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, const RecordedClimb& climb,
                                    const ReachabilityParameters& reach, const std::string& title,
-                                   const std::string& source, const ReplaySettings& settings = {});
+                                   const std::string& source, const ReplayOptions& settings = {});
 
 // The body part of it: joints (parents first), visuals and grasp points.
 nlohmann::ordered_json body_model_json(const BodyModel& model);

@@ -38,8 +38,8 @@ std::size_t replay_moves(const ReportPage& page) { return page.replay.is_null() 
 
 }  // namespace
 
-nlohmann::ordered_json written_report_json(const ReportPage& page, const std::string& run_name,
-                                           const std::string& file, std::size_t bytes, double seconds) {
+nlohmann::ordered_json written_report_json(const ReportPage& page, const std::string& run_name, const std::string& file,
+                                           std::size_t bytes, double seconds) {
   nlohmann::ordered_json out;
   out["report"] = file;
   out["bytes"] = bytes;
@@ -58,7 +58,7 @@ nlohmann::ordered_json written_report_json(const ReportPage& page, const std::st
 std::string written_report_text(const ReportPage& page, const std::string& run_name, const std::string& file,
                                 std::size_t bytes, double seconds) {
   const std::string written = fmt::format("wrote {} ({:.1f} MB, {}", file, static_cast<double>(bytes) / 1e6,
-                                         counted(page.figures.size(), "figure"));
+                                          counted(page.figures.size(), "figure"));
   if (page.replay.is_null()) {
     return fmt::format("{}, no replay) in {:.2f} s\nno replay: {}\n", written, seconds, page.replay_reason);
   }

@@ -19,8 +19,8 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
                        const BodyModel& model, const ExperimentConfig& recorded, const std::string& climb_choice);
 
 // What crux report says once `page` is written to `file`: its size, figures and replay.
-nlohmann::ordered_json written_report_json(const ReportPage& page, const std::string& run_name,
-                                           const std::string& file, std::size_t bytes, double seconds);
+nlohmann::ordered_json written_report_json(const ReportPage& page, const std::string& run_name, const std::string& file,
+                                           std::size_t bytes, double seconds);
 std::string written_report_text(const ReportPage& page, const std::string& run_name, const std::string& file,
                                 std::size_t bytes, double seconds);
 

@@ -79,7 +79,8 @@ RunFolder locate_run_folder(const fs::path& directory) {
   } else {
     std::smatch match;
     const fs::path experiment = folder.directory.parent_path().parent_path();
-    if (!std::regex_match(folder.name, match, run_name_pattern()) || folder.directory.parent_path().filename() != "runs") {
+    if (!std::regex_match(folder.name, match, run_name_pattern()) ||
+        folder.directory.parent_path().filename() != "runs") {
       throw InputError(directory.string(),
                        "not a run folder: it holds no wall.json (crux train, crux transfer) and is not "
                        "runs/<condition>_<i> of a crux paper folder");
@@ -121,8 +122,8 @@ ReportedRun locate_reported_run(const fs::path& folder, const std::string& run_n
   }
   out.run_directory = folder / "runs" / run_name;
   if (!fs::is_directory(out.run_directory, error)) {
-    throw InputError(flag, fmt::format("'{}' is not a run of {}; it has {}", run_name, folder.string(),
-                                       paper_run_names(folder)));
+    throw InputError(
+        flag, fmt::format("'{}' is not a run of {}; it has {}", run_name, folder.string(), paper_run_names(folder)));
   }
   return out;
 }
@@ -130,7 +131,8 @@ ReportedRun locate_reported_run(const fs::path& folder, const std::string& run_n
 namespace {
 
 // The postures of a climb file: `columns` before the joints, returned as text.
-std::vector<Posture> read_postures(const fs::path& file, const BodyModel& model, const std::vector<std::string>& columns,
+std::vector<Posture> read_postures(const fs::path& file, const BodyModel& model,
+                                   const std::vector<std::string>& columns,
                                    std::vector<std::vector<std::string_view>>& cells, std::string& text) {
   text = read_input_file(file.string(), "climb file");
   std::string header = "step";
@@ -174,7 +176,8 @@ std::vector<int> read_episode_lengths(const fs::path& directory) {
       throw InputError(episodes_file.string(), fmt::format("line {}: episode {} was due", i + 2, i));
     }
     lengths.push_back(csv_integer(cells[1], episodes_file.string(), i + 2));
-    if (lengths.back() <= 0) throw InputError(episodes_file.string(), fmt::format("line {}: length must be positive", i + 2));
+    if (lengths.back() <= 0)
+      throw InputError(episodes_file.string(), fmt::format("line {}: length must be positive", i + 2));
   }
   return lengths;
 }

@@ -19,8 +19,8 @@ namespace crux {
 
 // A climb the run recorded, with the moves between its postures.
 struct RecordedClimb {
-  std::string kind;  // "last": the last completed episode; "greedy": the learnt policy's climb
-  int episode = -1;  // its index from 0, as in iterations.csv; -1 for the greedy climb, or when no episode ended
+  std::string kind;      // "last": the last completed episode; "greedy": the learnt policy's climb
+  int episode = -1;      // its index from 0, as in iterations.csv; -1 for the greedy climb, or when no episode ended
   bool finished = true;  // false for a replayed episode that the run's iterations cut off
   std::vector<RunStep> steps;     // every move; a greedy move has iteration 0
   std::vector<Posture> postures;  // the start, then one per reached move
@@ -28,16 +28,16 @@ struct RecordedClimb {
 
 struct RunFolder {
   std::filesystem::path directory;
-  std::string name;  // "training_3" in an experiment, else the folder's name
+  std::string name;                   // "training_3" in an experiment, else the folder's name
   std::filesystem::path config_file;  // the config.toml the run was written with
   std::filesystem::path wall_file;
   Wall wall;
   std::filesystem::path summary_file;
-  nlohmann::json summary;  // its contents: the run's, or its experiment's
-  std::string urdf;  // the body model recorded in the summary's provenance ("" if none)
+  nlohmann::json summary;      // its contents: the run's, or its experiment's
+  std::string urdf;            // the body model recorded in the summary's provenance ("" if none)
   std::vector<RunStep> steps;  // every row of iterations.csv
-  RecordedClimb last;    // climb.csv and its episode's rows of iterations.csv
-  RecordedClimb greedy;  // greedy_climb.csv; empty when the greedy policy does not finish
+  RecordedClimb last;          // climb.csv and its episode's rows of iterations.csv
+  RecordedClimb greedy;        // greedy_climb.csv; empty when the greedy policy does not finish
 };
 
 // Where the folder's wall and summary are, and the body model it recorded; InputError

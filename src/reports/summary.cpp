@@ -83,7 +83,8 @@ nlohmann::ordered_json table_one_over_runs_json(const ExperimentResult& result, 
                                       {"success_rate", rates},
                                       {"vertical_cm", rises}}) {
           const MeanInterval m = mean_interval(cluster_means(v.values, v.walls));
-          cell[name] = {{"mean", m.mean}, {"ci95_over_walls", interval_json(m)}, {"runs", v.values.size()}, {"walls", m.n}};
+          cell[name] = {
+              {"mean", m.mean}, {"ci95_over_walls", interval_json(m)}, {"runs", v.values.size()}, {"walls", m.n}};
         }
         intervals[condition_name(condition)][window_name(window)][regime_name(static_cast<Regime>(r))] = cell;
       }
@@ -106,7 +107,8 @@ nlohmann::ordered_json transfer_choices_json(const ExperimentAnalysis& analysis)
         {"repeats_of_failure_successes", p.repeats_of_failure_successes},
         {"with_evidence", p.with_evidence},
         {"evidence_success_rate", p.evidence_success_rate},
-        {"median_distance_from_evidence_cm", p.median_distance_cm >= 0 ? nlohmann::json(p.median_distance_cm) : nullptr},
+        {"median_distance_from_evidence_cm",
+         p.median_distance_cm >= 0 ? nlohmann::json(p.median_distance_cm) : nullptr},
         {"far_from_evidence", p.far},
         {"far_successes", p.far_successes},
         {"near_evidence", p.near},
@@ -148,10 +150,11 @@ nlohmann::ordered_json take_off_json(const ExperimentAnalysis& analysis) {
   nlohmann::ordered_json take_off;
   for (const Condition c : kConditions) {
     const ExperimentAnalysis::TakeOff& t = analysis.take_off[static_cast<int>(c)];
-    take_off[condition_name(c)] = {{"runs", t.runs},
-                                   {"taken_off", t.taken_off},
-                                   {"share", t.runs > 0 ? static_cast<double>(t.taken_off) / t.runs : 0.0},
-                                   {"median_iteration", t.taken_off > 0 ? nlohmann::json(t.median_iteration) : nullptr}};
+    take_off[condition_name(c)] = {
+        {"runs", t.runs},
+        {"taken_off", t.taken_off},
+        {"share", t.runs > 0 ? static_cast<double>(t.taken_off) / t.runs : 0.0},
+        {"median_iteration", t.taken_off > 0 ? nlohmann::json(t.median_iteration) : nullptr}};
   }
   return take_off;
 }
@@ -162,7 +165,7 @@ nlohmann::ordered_json divergence_json(const ExperimentAnalysis& analysis) {
 }
 
 nlohmann::ordered_json summary_json(const ExperimentResult& result, const ExperimentAnalysis* analysis,
-                                    const ExperimentSettings& settings, const Provenance& provenance) {
+                                    const ExperimentParameters& settings, const Provenance& provenance) {
   const int beginning = settings.analysis.beginning;
   // A wall read from a file has no seed.
   const auto wall_seed_json = [&](const ExperimentWall& wall) {

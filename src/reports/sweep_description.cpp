@@ -23,10 +23,9 @@ std::string sweep_text(const nlohmann::json& summary, const std::string& folder,
     for (const auto& [key, value] : cell.at("parameters").items()) {
       parameters += fmt::format("{}{} = {}", parameters.empty() ? "" : ", ", key, value.get<std::string>());
     }
-    out += fmt::format("\ncell {}{}: {} x {}\n", cell.at("cell").get<int>(),
-                       parameters.empty() ? "" : " (" + parameters + ")",
-                       counted(cell.at("wall_pairs").get<int>(), "wall"),
-                       counted(cell.at("seeds_per_wall").get<int>(), "seed"));
+    out += fmt::format(
+        "\ncell {}{}: {} x {}\n", cell.at("cell").get<int>(), parameters.empty() ? "" : " (" + parameters + ")",
+        counted(cell.at("wall_pairs").get<int>(), "wall"), counted(cell.at("seeds_per_wall").get<int>(), "seed"));
     for (const auto& [name, metric] : cell.at("transfer_vs_control").items()) {
       const auto& d = metric.at("transfer_minus_control");
       const auto& interval = d.at("ci95_t_over_walls");

@@ -45,21 +45,24 @@ std::string sweep_report_html(const nlohmann::ordered_json& summary, const std::
       ".figures svg{width:100%;height:auto}\n</style>\n</head>\n<body>\n<h1>crux sweep</h1>\n";
   std::string keys;
   for (const auto& key : summary.at("listed_keys")) keys += (keys.empty() ? "" : ", ") + key.get<std::string>();
-  html += fmt::format("<p>{} over {}. Transfer minus control per metric: mean over walls, Student-t 95 % "
-                      "interval over walls, p-value, and the p-value Holm-adjusted over the cells.</p>\n",
-                      counted(cells.size(), "cell"), xml_escaped(keys.empty() ? std::string("no listed key") : keys));
+  html += fmt::format(
+      "<p>{} over {}. Transfer minus control per metric: mean over walls, Student-t 95 % "
+      "interval over walls, p-value, and the p-value Holm-adjusted over the cells.</p>\n",
+      counted(cells.size(), "cell"), xml_escaped(keys.empty() ? std::string("no listed key") : keys));
   html += "<table>\n<tr><th>cell</th>";
   for (const std::string& metric : metrics) {
-    html += fmt::format("<th title=\"{}\">{}</th>",
-                        xml_escaped(cells.at(0).at("transfer_vs_control").at(metric).at("description").get<std::string>()),
-                        xml_escaped(metric));
+    html +=
+        fmt::format("<th title=\"{}\">{}</th>",
+                    xml_escaped(cells.at(0).at("transfer_vs_control").at(metric).at("description").get<std::string>()),
+                    xml_escaped(metric));
   }
   html += "</tr>\n";
   for (const auto& cell : cells) {
     html += fmt::format("<tr><td>{}</td>", xml_escaped(sweep_cell_title(cell)));
     for (const std::string& metric : metrics) {
       const auto& comparisons = cell.at("transfer_vs_control");
-      html += "<td>" + (comparisons.contains(metric) ? difference_cell(comparisons.at(metric)) : std::string()) + "</td>";
+      html +=
+          "<td>" + (comparisons.contains(metric) ? difference_cell(comparisons.at(metric)) : std::string()) + "</td>";
     }
     html += "</tr>\n";
   }

@@ -7,6 +7,6 @@
 
 namespace crux {
 
-std::string table_one_text(const ExperimentResult& result, const ExperimentSettings& settings);
+std::string table_one_text(const ExperimentResult& result, const ExperimentParameters& settings);
 
 }  // namespace crux

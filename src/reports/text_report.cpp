@@ -13,7 +13,7 @@ namespace crux {
 
 namespace {
 
-std::string episode_text(const ExperimentResult& result, const ExperimentSettings& settings) {
+std::string episode_text(const ExperimentResult& result, const ExperimentParameters& settings) {
   const int total = settings.runs();
   std::string text = "\nEpisode lengths (mean over runs):\n";
   for (const Condition c : kConditions) {
@@ -61,7 +61,7 @@ std::string walls_for_power_text(const MetricComparison& m) {
   return fmt::format("more than {} (the difference is tiny against its spread over walls)", kMaxClustersForPower);
 }
 
-std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentSettings& settings) {
+std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentParameters& settings) {
   std::string text = fmt::format(
       "\nTransfer against control, paired by wall and seed ({} x {}); means over walls with 95 % intervals:\n",
       counted(settings.wall_pairs, "wall"), counted(settings.seeds_per_wall, "seed"));
@@ -71,7 +71,8 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentSe
     const ClusteredDifference& d = m.transfer_minus_control;
     text += fmt::format("  {} ({} is better)\n", m.metric.description, m.metric.higher_is_better ? "higher" : "lower");
     text += fmt::format(
-        "    transfer {:.4g} +- {:.3g}, control {:.4g} +- {:.3g}; difference {:+.4g} ({:+.0f} %), t-interval over walls "
+        "    transfer {:.4g} +- {:.3g}, control {:.4g} +- {:.3g}; difference {:+.4g} ({:+.0f} %), t-interval over "
+        "walls "
         "[{:.4g}, {:.4g}], cluster bootstrap [{:.4g}, {:.4g}], p = {:.3g}; paired r = {}; walls for 80 % power: "
         "{}\n",
         tr.mean, tr.half_width, co.mean, co.half_width, d.mean, 100 * m.relative_difference, d.t_low, d.t_high,
@@ -89,9 +90,10 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentSe
   }
   text += fmt::format("Transfer and control runs first differ at iteration {:.1f} (median over pairs)\n",
                       analysis.median_first_divergence);
-  text += fmt::format("\nTransfer's choices in its first {} (evidence: earlier tries of the same "
-                      "agent-space pair; far: more than {:.0f} cm from them in the tile):\n",
-                      counted(settings.analysis.beginning, "iteration"), 100 * kFarFromEvidence);
+  text += fmt::format(
+      "\nTransfer's choices in its first {} (evidence: earlier tries of the same "
+      "agent-space pair; far: more than {:.0f} cm from them in the tile):\n",
+      counted(settings.analysis.beginning, "iteration"), 100 * kFarFromEvidence);
   const auto share = [](int part, int whole) {
     return whole > 0 ? fmt::format("{:.0f} %", 100.0 * part / whole) : std::string("-");
   };
@@ -101,12 +103,13 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentSe
         "  {:<9} {:6d} {}, {} reachable; back to the hold just left {} (reachable {}); the hold that failed "
         "just before {} (reachable {}); of the others, with evidence {} "
         "(which succeeded {}); far {} (reachable {}), near {} (reachable {}); median distance {}\n",
-        regime_name(static_cast<Regime>(r)), p.actions, counted_noun(p.actions, "action"), share(p.successes, p.actions),
-        share(p.back_to_left_hold, p.actions), share(p.back_to_left_hold_successes, p.back_to_left_hold),
-        share(p.repeats_of_failure, p.actions), share(p.repeats_of_failure_successes, p.repeats_of_failure),
-        share(p.with_evidence, p.actions - p.repeats_of_failure), fmt::format("{:.0f} %", 100 * p.evidence_success_rate),
-        share(p.far, p.with_evidence), share(p.far_successes, p.far), share(p.near, p.with_evidence),
-        share(p.near_successes, p.near),
+        regime_name(static_cast<Regime>(r)), p.actions, counted_noun(p.actions, "action"),
+        share(p.successes, p.actions), share(p.back_to_left_hold, p.actions),
+        share(p.back_to_left_hold_successes, p.back_to_left_hold), share(p.repeats_of_failure, p.actions),
+        share(p.repeats_of_failure_successes, p.repeats_of_failure),
+        share(p.with_evidence, p.actions - p.repeats_of_failure),
+        fmt::format("{:.0f} %", 100 * p.evidence_success_rate), share(p.far, p.with_evidence),
+        share(p.far_successes, p.far), share(p.near, p.with_evidence), share(p.near_successes, p.near),
         p.median_distance_cm >= 0 ? fmt::format("{:.1f} cm", p.median_distance_cm) : std::string("-"));
   }
   return text;
@@ -115,7 +118,7 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentSe
 }  // namespace
 
 std::string experiment_text(const ExperimentResult& result, const ExperimentAnalysis& analysis,
-                            const ExperimentSettings& settings) {
+                            const ExperimentParameters& settings) {
   return table_one_text(result, settings) + episode_text(result, settings) + transfer_text(analysis, settings);
 }
 
@@ -125,8 +128,9 @@ std::string run_text(const ExperimentResult& result, int iterations, const std::
     if (c.runs.empty()) continue;
     const RunResult& run = c.runs.front();
     return fmt::format("{} on '{}': {} in {}; greedy climb: {}; wrote {}\n",
-                       condition == Condition::Transfer ? "transfer" : "training", printable(result.walls.front().wall.name),
-                       counted(run.episode_lengths.size(), "episode"), counted(iterations, "iteration"),
+                       condition == Condition::Transfer ? "transfer" : "training",
+                       printable(result.walls.front().wall.name), counted(run.episode_lengths.size(), "episode"),
+                       counted(iterations, "iteration"),
                        run.greedy_length > 0 ? counted(run.greedy_length, "action") : "does not finish", output);
   }
   return {};

@@ -77,11 +77,10 @@ std::string wall_summary_text(const std::string& file, const Wall& wall, const I
     low = low.cwiseMin(h.position);
     high = high.cwiseMax(h.position);
   }
-  std::string out =
-      fmt::format("'{}' ({}): {} holds, y from {:.2f} to {:.2f} m, z from {:.2f} to {:.2f} m\n", printable(wall.name),
-                  file, wall.hold_count(), low.y(), high.y(), low.z(), high.z()) +
-      fmt::format("finish height {} m; start configuration: {} ({})\n", wall.finish_height, start_holds_text(wall),
-                  start.reached ? "reachable" : "NOT reachable");
+  std::string out = fmt::format("'{}' ({}): {} holds, y from {:.2f} to {:.2f} m, z from {:.2f} to {:.2f} m\n",
+                                printable(wall.name), file, wall.hold_count(), low.y(), high.y(), low.z(), high.z()) +
+                    fmt::format("finish height {} m; start configuration: {} ({})\n", wall.finish_height,
+                                start_holds_text(wall), start.reached ? "reachable" : "NOT reachable");
   if (grid) {
     out += "grid tiles -> holds (tile: hold id):";
     for (int tile = 0; tile < grid->parameters.tile_count(); ++tile) {

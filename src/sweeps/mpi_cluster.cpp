@@ -42,9 +42,7 @@ class MpiCoordinatorLink final : public CoordinatorLink {
 
 class MpiWorkerLink final : public WorkerLink {
  public:
-  void request(long long finished) override {
-    MPI_Send(&finished, 1, MPI_LONG_LONG, 0, kRequestTag, MPI_COMM_WORLD);
-  }
+  void request(long long finished) override { MPI_Send(&finished, 1, MPI_LONG_LONG, 0, kRequestTag, MPI_COMM_WORLD); }
   void poll(std::vector<long long>& orders) override {
     for (;;) {
       int arrived = 0;

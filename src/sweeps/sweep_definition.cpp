@@ -6,7 +6,7 @@
 
 namespace crux {
 
-const ParameterSet kSweepParameters = kPaperKeys;
+const ParameterSet kSweepKeys = kPaperKeys;
 
 SweepDefinition define_sweep(const SweepGrid& grid, const std::function<ExperimentConfig(const ListChoice&)>& resolve) {
   std::vector<std::string> keys;
@@ -34,7 +34,7 @@ SweepDefinition define_sweep(const SweepGrid& grid, const std::function<Experime
   }
   ExperimentConfig& first = cells.front().config;
   out.provenance = record_provenance(first);
-  ParameterSet written = kSweepParameters;
+  ParameterSet written = kSweepKeys;
   written.exclude.push_back("experiment.threads");
   out.sweep_toml = config_to_toml(first, written, lists) + provenance_toml(out.provenance);
   out.plan = plan_sweep(std::move(keys), std::move(cells));

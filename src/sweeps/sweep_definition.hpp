@@ -13,7 +13,7 @@
 namespace crux {
 
 // The keys crux sweep takes: crux paper's.
-extern const ParameterSet kSweepParameters;
+extern const ParameterSet kSweepKeys;
 
 struct SweepDefinition {
   SweepPlan plan;

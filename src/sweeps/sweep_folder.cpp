@@ -14,8 +14,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kSweepOutputs[] = {"sweep.toml", "walls", "runs", "results.csv", "summary.json", kPartialFolder,
-                                         kIncompleteMarker};
+constexpr const char* kSweepOutputs[] = {"sweep.toml",   "walls",        "runs",           "results.csv",
+                                         "summary.json", kPartialFolder, kIncompleteMarker};
 
 }  // namespace
 
@@ -29,8 +29,9 @@ void prepare_sweep_folder(const fs::path& folder, const std::string& sweep_toml,
   const bool recorded_exists = fs::is_regular_file(recorded, error);
   const bool resume = recorded_exists && read_input_file(recorded.string(), "sweep file") == sweep_toml;
   if (recorded_exists && !resume && !overwrite) {
-    throw InputError(folder.string(), "holds another sweep (its sweep.toml differs: other parameters, or another crux "
-                                      "build); choose another folder, or pass --overwrite to replace it");
+    throw InputError(folder.string(),
+                     "holds another sweep (its sweep.toml differs: other parameters, or another crux "
+                     "build); choose another folder, or pass --overwrite to replace it");
   }
   check_output_folder(folder, inputs, overwrite || resume);
   make_output_directory(folder);
@@ -41,7 +42,8 @@ void prepare_sweep_folder(const fs::path& folder, const std::string& sweep_toml,
     write_file_atomically(recorded, sweep_toml);
   }
   fs::remove_all(folder / kPartialFolder, error);
-  if (error) throw InputError((folder / kPartialFolder).string(), "cannot remove the half-written tasks: " + error.message());
+  if (error)
+    throw InputError((folder / kPartialFolder).string(), "cannot remove the half-written tasks: " + error.message());
   write_file_atomically(folder / kIncompleteMarker,
                         "crux is running the sweep of this folder; start the same command again to resume it.\n");
 }
@@ -49,7 +51,8 @@ void prepare_sweep_folder(const fs::path& folder, const std::string& sweep_toml,
 std::vector<bool> finished_tasks(const SweepPlan& plan, const fs::path& folder) {
   std::vector<bool> finished(plan.tasks.size());
   std::error_code error;
-  for (std::size_t t = 0; t < plan.tasks.size(); ++t) finished[t] = fs::is_directory(folder / plan.tasks[t].folder, error);
+  for (std::size_t t = 0; t < plan.tasks.size(); ++t)
+    finished[t] = fs::is_directory(folder / plan.tasks[t].folder, error);
   return finished;
 }
 

@@ -12,15 +12,15 @@ namespace crux {
 bool shapes_walls(const std::string& key) {
   // The walls derive from the experiment seed and the wall and reachability keys; the
   // plan adds its budget and the filter (crux plan's keys).
-  static const ParameterSet kWallKeys{{"experiment.seed", "experiment.urdf", "experiment.plan",
-                                       "experiment.plan_max_solves", "ik", "filter", "wall"},
-                                      {}};
+  static const ParameterSet kWallKeys{
+      {"experiment.seed", "experiment.urdf", "experiment.plan", "experiment.plan_max_solves", "ik", "filter", "wall"},
+      {}};
   return kWallKeys.accepts(key);
 }
 
 std::size_t SweepPlan::run_tasks() const {
-  return static_cast<std::size_t>(std::count_if(tasks.begin(), tasks.end(),
-                                                [](const SweepTask& t) { return t.kind == SweepTaskKind::Run; }));
+  return static_cast<std::size_t>(
+      std::count_if(tasks.begin(), tasks.end(), [](const SweepTask& t) { return t.kind == SweepTaskKind::Run; }));
 }
 
 SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells, std::size_t max_tasks) {
@@ -37,7 +37,7 @@ SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells
     }
     const auto [group, inserted] = groups.emplace(identity, groups.size());
     cells[c].wall_group = group->second;
-    const ExperimentSettings& s = cells[c].config.settings;
+    const ExperimentParameters& s = cells[c].config.settings;
     if (inserted) {
       first_cell.push_back(c);
       group_walls.push_back(0);
@@ -47,17 +47,17 @@ SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells
   }
   for (const std::size_t walls : group_walls) total += 2 * walls;
   if (total > max_tasks) {
-    throw InputError("experiment.walls", fmt::format("the sweep has {} walls and runs; at most {} are allowed", total,
-                                                     max_tasks));
+    throw InputError("experiment.walls",
+                     fmt::format("the sweep has {} walls and runs; at most {} are allowed", total, max_tasks));
   }
   plan.wall_groups = groups.size();
   plan.tasks.reserve(total);
   for (std::size_t g = 0; g < plan.wall_groups; ++g) {
     for (const Condition role : {Condition::Training, Condition::Transfer}) {
       for (std::size_t w = 0; w < group_walls[g]; ++w) {
-        plan.tasks.push_back({SweepTaskKind::Wall, first_cell[g], role, static_cast<int>(w), -1,
-                              std::filesystem::path("walls") / fmt::format("g{}", g) /
-                                  fmt::format("{}_{}", condition_name(role), w)});
+        plan.tasks.push_back(
+            {SweepTaskKind::Wall, first_cell[g], role, static_cast<int>(w), -1,
+             std::filesystem::path("walls") / fmt::format("g{}", g) / fmt::format("{}_{}", condition_name(role), w)});
       }
     }
   }

@@ -31,11 +31,11 @@ enum class SweepTaskKind { Wall, Run };
 
 struct SweepTask {
   SweepTaskKind kind = SweepTaskKind::Run;
-  std::size_t cell = 0;  // a run's cell; for a wall, the first cell of its group
+  std::size_t cell = 0;                       // a run's cell; for a wall, the first cell of its group
   Condition condition = Condition::Training;  // a wall: Training for a training wall, else Transfer
-  int index = 0;         // a run's r, a wall's pair w
-  int depends_on = -1;   // the task that must finish first (a transfer run's training run)
-  std::filesystem::path folder;  // relative to the sweep folder
+  int index = 0;                              // a run's r, a wall's pair w
+  int depends_on = -1;                        // the task that must finish first (a transfer run's training run)
+  std::filesystem::path folder;               // relative to the sweep folder
 };
 
 struct SweepPlan {
@@ -50,8 +50,7 @@ struct SweepPlan {
 
 // The tasks of `cells` (their wall_group set here); InputError("experiment.walls") when
 // the sweep exceeds `max_tasks`.
-SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells,
-                     std::size_t max_tasks = 10000000);
+SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells, std::size_t max_tasks = 10000000);
 
 // The task of run r of `condition` in `cell`.
 std::size_t run_task_index(const SweepPlan& plan, std::size_t cell, Condition condition, int run);

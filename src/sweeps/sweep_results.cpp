@@ -61,14 +61,19 @@ std::string csv_cell(const std::string& text) {
 template <typename Json>
 std::string number_cell(const Json& value) {
   if (value.is_null()) return "";
-  if (value.is_number_float()) return fmt::format("{}", value.get<double>());
+  if (value.is_number_float()) return fmt::format("{}", value.template get<double>());
   return value.dump();
 }
 
 // The facts results.csv copies from a run's summary.json, in column order.
-constexpr const char* kRunFacts[] = {"episodes",        "take_off_iteration",     "greedy_length",
-                                     "explored_pairs",  "ik_solves",              "reached_configurations",
-                                     "unreachable_configurations", "planning_updates_per_step"};
+constexpr const char* kRunFacts[] = {"episodes",
+                                     "take_off_iteration",
+                                     "greedy_length",
+                                     "explored_pairs",
+                                     "ik_solves",
+                                     "reached_configurations",
+                                     "unreachable_configurations",
+                                     "planning_updates_per_step"};
 
 }  // namespace
 
@@ -93,7 +98,7 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
   nlohmann::ordered_json cells = nlohmann::json::array();
   for (std::size_t c = 0; c < plan.cells.size(); ++c) {
     const SweepCell& cell = plan.cells[c];
-    const ExperimentSettings& settings = cell.config.settings;
+    const ExperimentParameters& settings = cell.config.settings;
     const MetricWindows windows = metric_windows(settings);
     const std::vector<EpisodeMetric> metrics = episode_metrics(windows);
     ExperimentResult result;
@@ -111,16 +116,18 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
         const OrderedJson summary = read_summary(directory);
         const JsonField facts = JsonField(summary_file, summary)["run_facts"][name][0];
         runs.learning_seeds.push_back(facts["learning_seed"].unsigned_integer());
-        const fs::path wall_folder = folder / "walls" / fmt::format("g{}", cell.wall_group) /
-                                     fmt::format("{}_{}", condition == Condition::Training ? "training" : "transfer", pair);
+        const fs::path wall_folder =
+            folder / "walls" / fmt::format("g{}", cell.wall_group) /
+            fmt::format("{}_{}", condition == Condition::Training ? "training" : "transfer", pair);
         const nlohmann::json wall = read_json_file(wall_folder / kWallFactsFile);
 
         csv += fmt::format("{}", c);
         for (const std::string& value : cell.values) csv += fmt::format(",{}", csv_cell(value));
-        csv += fmt::format(",{},{},{},{},{},{}", name, r, pair, r % settings.seeds_per_wall, facts["wall_seed"].json().dump(),
-                           runs.learning_seeds.back());
+        csv += fmt::format(",{},{},{},{},{},{}", name, r, pair, r % settings.seeds_per_wall,
+                           facts["wall_seed"].json().dump(), runs.learning_seeds.back());
         for (const std::string& metric : metric_names) {
-          const auto m = std::find_if(metrics.begin(), metrics.end(), [&](const EpisodeMetric& e) { return e.name == metric; });
+          const auto m =
+              std::find_if(metrics.begin(), metrics.end(), [&](const EpisodeMetric& e) { return e.name == metric; });
           csv += m == metrics.end() ? std::string(",") : fmt::format(",{}", m->of_run(runs.runs.back(), windows));
         }
         for (const char* fact : kRunFacts) csv += fmt::format(",{}", number_cell(facts[fact].json()));
@@ -157,7 +164,8 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
     }
     const std::vector<double> adjusted = holm_adjusted(p_values);
     for (std::size_t i = 0; i < holders.size(); ++i) {
-      cells[holders[i]]["transfer_vs_control"][metric]["transfer_minus_control"]["p_value_holm_over_cells"] = adjusted[i];
+      cells[holders[i]]["transfer_vs_control"][metric]["transfer_minus_control"]["p_value_holm_over_cells"] =
+          adjusted[i];
     }
   }
   nlohmann::ordered_json summary;
@@ -177,7 +185,7 @@ std::vector<fs::path> write_sweep_report(const SweepPlan& plan, const fs::path& 
   std::vector<std::string> figures;
   fs::create_directories(folder / "figures");
   for (std::size_t c = 0; c < plan.cells.size(); ++c) {
-    const ExperimentSettings& settings = plan.cells[c].config.settings;
+    const ExperimentParameters& settings = plan.cells[c].config.settings;
     PaperFigureData data;
     data.grid = settings.learning.climbing.grid;
     data.iterations = settings.learning.iterations;

@@ -42,10 +42,9 @@ SweepOutcome run_sweep(const SweepJob& job, const BodyModel& model, SweepCluster
   outcome.already_finished = schedule.finished_count();
   if (progress) progress(schedule.finished_count(), outcome.tasks);
   try {
-    coordinate_sweep(schedule, job.threads, run, others.get(),
-                     [&](std::size_t done) {
-                       if (progress) progress(done, outcome.tasks);
-                     });
+    coordinate_sweep(schedule, job.threads, run, others.get(), [&](std::size_t done) {
+      if (progress) progress(done, outcome.tasks);
+    });
     outcome.summary = write_sweep_results(job.plan, job.folder, job.provenance);
     write_sweep_report(job.plan, job.folder, outcome.summary);
   } catch (const std::exception& e) {

@@ -47,8 +47,8 @@ class SweepCluster {
 
 struct SweepJob {
   SweepPlan plan;
-  std::filesystem::path folder;  // absolute: every process resolves transfer inputs in it
-  std::string sweep_toml;        // the effective sweep file, written to the folder
+  std::filesystem::path folder;     // absolute: every process resolves transfer inputs in it
+  std::string sweep_toml;           // the effective sweep file, written to the folder
   std::vector<std::string> inputs;  // files the sweep reads: not inside the folder
   nlohmann::ordered_json provenance;
   bool overwrite = false;
@@ -56,7 +56,7 @@ struct SweepJob {
 };
 
 struct SweepOutcome {
-  bool coordinator = false;  // this process wrote the results
+  bool coordinator = false;                     // this process wrote the results
   std::size_t tasks = 0, already_finished = 0;  // of the plan; kept from an earlier start
   double seconds = 0.0;
   nlohmann::ordered_json summary;  // summary.json's contents (the coordinator's)

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 void write_wall_task(const SweepTask& task, const SweepCell& cell, const BodyModel& model, const fs::path& folder) {
-  const ExperimentSettings& settings = cell.config.settings;
+  const ExperimentParameters& settings = cell.config.settings;
   const int role = task.condition == Condition::Training ? kTrainingWalls : kTransferWalls;
   const ExperimentWall drawn = draw_wall(model, settings, role, task.index);
   nlohmann::ordered_json facts;
@@ -32,8 +32,8 @@ void write_wall_task(const SweepTask& task, const SweepCell& cell, const BodyMod
   facts["filtered_pairs"] = filtered_pairs(drawn.wall, settings.learning.climbing.filter);
   facts["plan"] = nullptr;
   if (settings.plan) {
-    facts["plan"] = plan_json(drawn.wall, shortest_plan(model, drawn.wall, settings.learning.climbing,
-                                                         settings.plan_search));
+    facts["plan"] =
+        plan_json(drawn.wall, shortest_plan(model, drawn.wall, settings.learning.climbing, settings.plan_search));
   }
   save_wall((folder / "wall.json").string(), drawn.wall);
   write_file_atomically(folder / kWallFactsFile, facts.dump(2) + "\n");
@@ -42,7 +42,7 @@ void write_wall_task(const SweepTask& task, const SweepCell& cell, const BodyMod
 void write_run_task(const SweepPlan& plan, const SweepTask& task, const BodyModel& model, const fs::path& sweep_folder,
                     const fs::path& folder) {
   const SweepCell& cell = plan.cells[task.cell];
-  const ExperimentSettings& settings = cell.config.settings;
+  const ExperimentParameters& settings = cell.config.settings;
   const int pair = task.index / settings.seeds_per_wall;
   const bool training_wall = task.condition == Condition::Training;
   // The run's own config.toml replays it with crux train or crux transfer: the job reads

@@ -18,7 +18,7 @@ class CoordinatorLink {
  public:
   virtual ~CoordinatorLink() = default;
   struct Request {
-    int worker = 0;          // the process that asks
+    int worker = 0;           // the process that asks
     long long finished = -1;  // the task its slot just finished (-1: its first request)
   };
   virtual std::size_t slots() const = 0;  // slots of all the other processes

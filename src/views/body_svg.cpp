@@ -25,7 +25,7 @@ constexpr double kHeaderHeight = 52;
 constexpr double kAxisRoom = 44;    // left of each panel: z tick labels and title
 constexpr double kBelowPanel = 40;  // horizontal tick labels and axis title
 constexpr double kPanelGap = 30;
-constexpr double kPadding = 0.15;   // metres of wall around what is drawn
+constexpr double kPadding = 0.15;  // metres of wall around what is drawn
 // The legend flows across the page under the panels, items 14 pixels apart.
 constexpr LegendLayout kBodyLegendLayout{11, 30, 24, true};
 constexpr double kBodyLegendGap = 14;
@@ -75,8 +75,8 @@ std::vector<PlacedVisual> place_visuals(const BodyModel& model, const BodyData& 
   std::vector<PlacedVisual> placed;
   for (const BodyVisual& visual : model.visuals) {
     const JointPlacement& carrier = data.placements[visual.joint];
-    PlacedVisual p{&visual, carrier.origin + carrier.rotation * visual.translation, carrier.rotation * visual.rotation,
-                   {}};
+    PlacedVisual p{
+        &visual, carrier.origin + carrier.rotation * visual.translation, carrier.rotation * visual.rotation, {}};
     const Eigen::Vector3d& s = visual.size;
     if (visual.shape == VisualShape::Box) {
       for (int corner = 0; corner < 8; ++corner) {
@@ -127,10 +127,10 @@ class BodyFigure {
   }
 
   std::string render() {
-    append_format(out_, "<text x=\"{}\" y=\"{}\" font-size=\"15\" font-weight=\"bold\" fill=\"{}\">{}</text>\n", kBodyMargin,
-                  kBodyMargin + 14, kTitleColour, xml_escaped(options_.title));
-    append_format(out_, "<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"{}\">{}</text>\n", kBodyMargin, kBodyMargin + 32,
-                  kSubtitleColour, xml_escaped(options_.subtitle));
+    append_format(out_, "<text x=\"{}\" y=\"{}\" font-size=\"15\" font-weight=\"bold\" fill=\"{}\">{}</text>\n",
+                  kBodyMargin, kBodyMargin + 14, kTitleColour, xml_escaped(options_.title));
+    append_format(out_, "<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"{}\">{}</text>\n", kBodyMargin,
+                  kBodyMargin + 32, kSubtitleColour, xml_escaped(options_.subtitle));
     for (const View& view : views_) write_panel(view);
     draw_legend_at(out_, kBodyMargin + kHeaderHeight + panel_height_ + kBelowPanel, legend_, legend_places_,
                    kBodyLegendLayout);
@@ -195,7 +195,7 @@ class BodyFigure {
     panel_height_ = (z_top_ - z_low_) * scale;
     width_ = std::ceil(std::max(left - kPanelGap + kBodyMargin,
                                 2 * kBodyMargin + std::max(estimated_text_width(options_.title, 15),
-                                                       estimated_text_width(options_.subtitle, 11))));
+                                                           estimated_text_width(options_.subtitle, 11))));
     for (const View& view : views_) {
       width_ = std::max(width_, std::ceil(view.left + estimated_text_width(view.title, 12) + kBodyMargin));
     }
@@ -227,15 +227,16 @@ class BodyFigure {
       draw_plain_text(out_, view.x_of(u), bottom + 14, metre_tick_label(view.horizontal_sign * u), "middle");
     }
     out_ += "</g>\n";
-    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"11\" fill=\"{}\" text-anchor=\"middle\">{}</text>\n",
+    append_format(out_,
+                  "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"11\" fill=\"{}\" text-anchor=\"middle\">{}</text>\n",
                   view.left + view.width() / 2, bottom + 32, kTextColour, view.axis_title);
     append_format(out_,
                   "<text x=\"{0:.2f}\" y=\"{1:.2f}\" font-size=\"11\" fill=\"{2}\" text-anchor=\"middle\" "
                   "transform=\"rotate(-90 {0:.2f} {1:.2f})\">z (m), up</text>\n",
                   view.left - 32, view.top + panel_height_ / 2, kTextColour);
     append_format(out_,
-        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\"/>\n",
-        view.left, view.top, view.width(), panel_height_, kViewFrameColour);
+                  "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\"/>\n",
+                  view.left, view.top, view.width(), panel_height_, kViewFrameColour);
     if (view.horizontal_axis == 0) {  // the wall plane, seen edge on
       const double x = view.x_of(0.0);
       draw_line(out_, x, view.top, x, bottom, {kWallColour, 3, ""}, "wall");
@@ -253,7 +254,7 @@ class BodyFigure {
     for (const Hold& hold : wall_.holds) {
       const Point c = view.project(hold.position);
       append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", c[0], c[1],
-           std::max(1.5, hold.radius * view.scale));
+                    std::max(1.5, hold.radius * view.scale));
     }
     out_ += "</g>\n";
   }
@@ -273,15 +274,16 @@ class BodyFigure {
       const std::string fill = colour(v->visual->rgba, 1.0), stroke = colour(v->visual->rgba, 0.55);
       if (v->outline.empty()) {
         const Point c = view.project(v->centre);
-        append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\" stroke=\"{}\"/>\n", c[0], c[1],
-             v->visual->size.x() * view.scale, fill, stroke);
+        append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\" stroke=\"{}\"/>\n", c[0],
+                      c[1], v->visual->size.x() * view.scale, fill, stroke);
         continue;
       }
       std::vector<Point> points;
       for (const Eigen::Vector3d& p : v->outline) points.push_back(view.project(p));
       append_format(out_, "<polygon fill=\"{}\" stroke=\"{}\" points=\"", fill, stroke);
       const std::vector<Point> hull = convex_hull(std::move(points));
-      for (std::size_t i = 0; i < hull.size(); ++i) append_format(out_, "{}{:.2f},{:.2f}", i == 0 ? "" : " ", hull[i][0], hull[i][1]);
+      for (std::size_t i = 0; i < hull.size(); ++i)
+        append_format(out_, "{}{:.2f},{:.2f}", i == 0 ? "" : " ", hull[i][0], hull[i][1]);
       out_ += "\"/>\n";
     }
     out_ += "</g>\n";
@@ -291,8 +293,8 @@ class BodyFigure {
     out_ += "<g class=\"grasp-spheres\" fill-opacity=\"0.35\" stroke-width=\"1.5\">\n";
     for (int limb = 0; limb < kLimbCount; ++limb) {
       const Point c = view.project(grasp_point(limb));
-      append_format(out_, "<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"{2:.2f}\" fill=\"{3}\" stroke=\"{3}\"/>\n", c[0], c[1],
-           options_.grasp_radius * view.scale, kLimbStyles[limb].colour);
+      append_format(out_, "<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"{2:.2f}\" fill=\"{3}\" stroke=\"{3}\"/>\n", c[0],
+                    c[1], options_.grasp_radius * view.scale, kLimbStyles[limb].colour);
     }
     out_ += "</g>\n";
   }
@@ -300,15 +302,16 @@ class BodyFigure {
   // A hold, each limb's grasp sphere, the finishing height.
   std::vector<LegendItem> legend_items() const {
     std::vector<LegendItem> items{{"hold", [](std::string& svg, double x, double y) {
-                                     append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\"/>\n", x + 12,
-                                                   y, kHoldBesideBodyColour);
+                                     append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\"/>\n",
+                                                   x + 12, y, kHoldBesideBodyColour);
                                    }}};
     for (const LimbStyle& style : kLimbStyles) {
       items.push_back({fmt::format("{} grasp sphere", style.name), [&style](std::string& svg, double x, double y) {
-                         append_format(svg,
-                                       "<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"6\" fill=\"{2}\" fill-opacity=\"0.35\" "
-                                       "stroke=\"{2}\" stroke-width=\"1.5\"/>\n",
-                                       x + 12, y, style.colour);
+                         append_format(
+                             svg,
+                             "<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"6\" fill=\"{2}\" fill-opacity=\"0.35\" "
+                             "stroke=\"{2}\" stroke-width=\"1.5\"/>\n",
+                             x + 12, y, style.colour);
                        }});
     }
     items.push_back({fmt::format("finish height, {:.2f} m", wall_.finish_height),

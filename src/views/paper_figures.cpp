@@ -12,8 +12,8 @@
 
 #include "common/counted.hpp"
 #include "experiments/statistics.hpp"
-#include "views/plot_svg.hpp"
 #include "views/palette.hpp"
+#include "views/plot_svg.hpp"
 
 namespace crux {
 namespace {
@@ -84,7 +84,8 @@ struct Header {
     return widest;
   }
   void draw(std::string& svg) const {
-    draw_text(svg, kFigureMargin, kFigureMargin + 14, title, {.size = kPlotTitleFontSize, .colour = kTitleColour, .bold = true});
+    draw_text(svg, kFigureMargin, kFigureMargin + 14, title,
+              {.size = kPlotTitleFontSize, .colour = kTitleColour, .bold = true});
     for (std::size_t i = 0; i < subtitles.size(); ++i) {
       draw_text(svg, kFigureMargin, kFigureMargin + 34 + 16 * static_cast<double>(i), subtitles[i],
                 {.size = kPlotSubtitleFontSize, .colour = kSubtitleColour});
@@ -260,7 +261,8 @@ std::string fig2b_svg(const PaperFigureData& data) {
   }
   const double maps_right = maps_left + slot * kLimbCount - 32;
   draw_text(svg, (maps_left + maps_right) / 2, y + 22, "grid column (0 = the climber's right)", {.anchor = "middle"});
-  draw_text(svg, kFigureMargin + 12, (rows_top + y - 14) / 2, "grid row (0 = bottom)", {.anchor = "middle", .rotation = -90});
+  draw_text(svg, kFigureMargin + 12, (rows_top + y - 14) / 2, "grid row (0 = bottom)",
+            {.anchor = "middle", .rotation = -90});
   y += 42;
 
   const double bar_width = std::min(360.0, maps_right - maps_left);
@@ -270,7 +272,8 @@ std::string fig2b_svg(const PaperFigureData& data) {
   const double legend_left = maps_left + bar_width + 32;
   draw_legend(svg, legend_left, y - 3, legend);
 
-  const double width = std::max({maps_right, legend_left + legend_width(legend), kFigureMargin + header.width()}) + kFigureMargin;
+  const double width =
+      std::max({maps_right, legend_left + legend_width(legend), kFigureMargin + header.width()}) + kFigureMargin;
   return svg_document(width, y + kColourBarRoom + kFigureMargin, header.title, svg);
 }
 
@@ -481,7 +484,8 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
   const double right_edge = panel.left + panel.width + 16 + std::max(note_width, 120.0);
   for (std::size_t i = 0; i < rows.size(); i += 2) {  // every other row shaded, to guide the eye
     svg += fmt::format("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"#f4f4f4\"/>\n",
-                       kFigureMargin, panel.top + kRowHeight * static_cast<double>(i), right_edge - kFigureMargin, kRowHeight);
+                       kFigureMargin, panel.top + kRowHeight * static_cast<double>(i), right_edge - kFigureMargin,
+                       kRowHeight);
   }
   draw_axes(svg, panel);
   draw_reference_line(svg, panel, Direction::Vertical, 0, {kDarkGrey, 1.2, "5 4"});
@@ -496,7 +500,8 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
     const double row_top = panel.top + kRowHeight * static_cast<double>(i);
     draw_text(svg, kFigureMargin + 4, row_top + 19,
               m.name + (m.higher_is_better ? " (higher is better)" : " (lower is better)"), {.bold = true});
-    draw_text(svg, kFigureMargin + 4, row_top + 36, m.description, {.size = kPlotTickFontSize, .colour = kSubtitleColour});
+    draw_text(svg, kFigureMargin + 4, row_top + 36, m.description,
+              {.size = kPlotTickFontSize, .colour = kSubtitleColour});
     const double text_left = panel.left + panel.width + 16;
     draw_text(svg, text_left, row_top + 19, notes[i], {.size = kPlotTickFontSize});
     const std::string p = m.p_value < 0.001 ? "p < 0.001" : fmt::format("p = {:.3f}", m.p_value);
@@ -517,7 +522,8 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
                                         {LegendMark::Line, kDarkGrey, "5 4", "no difference"}};
   const double legend_top = panel.top + panel.height + kXAxisRoom + 6;
   draw_legend(svg, panel.left, legend_top, legend);
-  const double width = std::max({right_edge, panel.left + legend_width(legend), kFigureMargin + header.width()}) + kFigureMargin;
+  const double width =
+      std::max({right_edge, panel.left + legend_width(legend), kFigureMargin + header.width()}) + kFigureMargin;
   return svg_document(width, legend_top + legend_height(legend) + kFigureMargin, header.title, svg);
 }
 

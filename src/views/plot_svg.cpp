@@ -133,13 +133,14 @@ void draw_axes(std::string& svg, const Panel& panel) {
   for (const double tick : panel.y.ticks) draw_horizontal_line(svg, panel.left, right, panel.y_pixel(tick));
   svg += "</g>\n";
   append_format(svg,
-       "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
-       "stroke-width=\"1\"/>\n",
-       panel.left, panel.top, panel.width, panel.height, kPlotFrameColour);
+                "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
+                "stroke-width=\"1\"/>\n",
+                panel.left, panel.top, panel.width, panel.height, kPlotFrameColour);
 
   append_format(svg, "<g class=\"ticks\" stroke=\"{}\" stroke-width=\"1\">\n", kPlotFrameColour);
   for (const double tick : panel.x.ticks) draw_vertical_line(svg, panel.x_pixel(tick), bottom, bottom + kTickLength);
-  for (const double tick : panel.y.ticks) draw_horizontal_line(svg, panel.left - kTickLength, panel.left, panel.y_pixel(tick));
+  for (const double tick : panel.y.ticks)
+    draw_horizontal_line(svg, panel.left - kTickLength, panel.left, panel.y_pixel(tick));
   svg += "</g>\n";
 
   append_format(svg, "<g class=\"tick-labels\" font-size=\"{}\" fill=\"{}\">\n", kPlotTickFontSize, kDarkGrey);
@@ -170,15 +171,15 @@ void draw_polyline(std::string& svg, const Panel& panel, const std::vector<doubl
   for (const auto& [begin, end] : runs) {
     if (end - begin == 1) {  // a lone point would draw nothing as a line
       append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\"/>\n", panel.x_pixel(x[begin]),
-           panel.y_pixel(y[begin]), stroke.width, stroke.colour);
+                    panel.y_pixel(y[begin]), stroke.width, stroke.colour);
       continue;
     }
     svg += "<polyline points=\"";
     for (std::size_t i = begin; i < end; ++i) {
       append_format(svg, "{}{:.2f},{:.2f}", i == begin ? "" : " ", panel.x_pixel(x[i]), panel.y_pixel(y[i]));
     }
-    append_format(svg, "\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.2f}\" stroke-linejoin=\"round\"{}/>\n", stroke.colour,
-         stroke.width, dash_attribute(stroke.dash));
+    append_format(svg, "\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.2f}\" stroke-linejoin=\"round\"{}/>\n",
+                  stroke.colour, stroke.width, dash_attribute(stroke.dash));
   }
 }
 
@@ -195,7 +196,8 @@ void draw_band(std::string& svg, const Panel& panel, const std::vector<double>& 
     for (std::size_t i = begin; i < end; ++i) {
       append_format(svg, "{}{:.2f},{:.2f}", i == begin ? "" : " ", panel.x_pixel(x[i]), panel.y_pixel(high[i]));
     }
-    for (std::size_t i = end; i-- > begin;) append_format(svg, " {:.2f},{:.2f}", panel.x_pixel(x[i]), panel.y_pixel(low[i]));
+    for (std::size_t i = end; i-- > begin;)
+      append_format(svg, " {:.2f},{:.2f}", panel.x_pixel(x[i]), panel.y_pixel(low[i]));
     append_format(svg, "\" fill=\"{}\" fill-opacity=\"{:.2f}\" stroke=\"none\"/>\n", colour, opacity);
   }
 }
@@ -208,8 +210,9 @@ void draw_reference_line(std::string& svg, const Panel& panel, Direction directi
   } else {
     x1 = x2 = panel.x_pixel(value);
   }
-  append_format(svg, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{:.2f}\"{}/>\n",
-       x1, y1, x2, y2, stroke.colour, stroke.width, dash_attribute(stroke.dash));
+  append_format(
+      svg, "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{:.2f}\"{}/>\n",
+      x1, y1, x2, y2, stroke.colour, stroke.width, dash_attribute(stroke.dash));
 }
 
 void draw_point_with_error_bar(std::string& svg, const Panel& panel, double x, double x_low, double x_high, double y,
@@ -222,8 +225,9 @@ void draw_point_with_error_bar(std::string& svg, const Panel& panel, double x, d
     draw_vertical_line(svg, end, py - kCap, py + kCap);
   }
   svg += "</g>\n";
-  append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\" stroke=\"white\" stroke-width=\"1.2\"/>\n",
-       panel.x_pixel(x), py, colour);
+  append_format(svg,
+                "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"5\" fill=\"{}\" stroke=\"white\" stroke-width=\"1.2\"/>\n",
+                panel.x_pixel(x), py, colour);
 }
 
 double legend_width(const std::vector<LegendEntry>& entries) {
@@ -248,7 +252,9 @@ void draw_legend(std::string& svg, double left, double top, const std::vector<Le
                                          "fill-opacity=\"0.22\"/>\n",
                                          x1, y - 6, x2 - x1, entry.colour);
                            [[fallthrough]];
-                         case LegendMark::Line: draw_line(out, x1, y, x2, y, {entry.colour, 2, entry.dash}); break;
+                         case LegendMark::Line:
+                           draw_line(out, x1, y, x2, y, {entry.colour, 2, entry.dash});
+                           break;
                          case LegendMark::PointWithBar:
                            draw_line(out, x1, y, x2, y, {entry.colour, 1.8, ""});
                            [[fallthrough]];
@@ -278,8 +284,8 @@ void draw_cells(std::string& svg, const std::vector<Cell>& cells, const Divergin
   // A light outline keeps cells of value 0, as white as the page, visible as cells.
   svg += "<g class=\"cells\" stroke=\"#d0d0d0\" stroke-width=\"0.6\">\n";
   for (const Cell& cell : cells) {
-    append_format(svg, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"/>\n", cell.x, cell.y,
-         cell.width, cell.height, diverging_colour(scale, cell.value));
+    append_format(svg, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"/>\n", cell.x,
+                  cell.y, cell.width, cell.height, diverging_colour(scale, cell.value));
   }
   svg += "</g>\n";
 }
@@ -297,12 +303,12 @@ void draw_colour_bar(std::string& svg, double left, double top, double width, co
     const double position = first + (last - first) * (i + 0.5) / kSlices;
     // Slices overlap by a fraction of a pixel so that no seam shows between them.
     append_format(svg, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{}\" fill=\"{}\"/>\n",
-         left + width * i / kSlices, top, width / kSlices + 0.4, kColourBarHeight, colour_at(position));
+                  left + width * i / kSlices, top, width / kSlices + 0.4, kColourBarHeight, colour_at(position));
   }
   append_format(svg,
-       "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{}\" fill=\"none\" stroke=\"{}\" "
-       "stroke-width=\"0.8\"/>\n",
-       left, top, width, kColourBarHeight, kPlotFrameColour);
+                "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{}\" fill=\"none\" stroke=\"{}\" "
+                "stroke-width=\"0.8\"/>\n",
+                left, top, width, kColourBarHeight, kPlotFrameColour);
 
   // 0 first, then each side's nice ticks from 0 outwards, each kept if its label has room.
   struct Candidate {
@@ -324,13 +330,14 @@ void draw_colour_bar(std::string& svg, double left, double top, double width, co
   if (scale.low < 0) add_side(scale.low);
   if (scale.high > 0) add_side(scale.high);
   std::vector<LabelSpan> kept;
-  append_format(svg, "<g class=\"colour-bar-ticks\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">\n", kPlotTickFontSize,
-       kDarkGrey);
+  append_format(svg, "<g class=\"colour-bar-ticks\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">\n",
+                kPlotTickFontSize, kDarkGrey);
   for (const Candidate& candidate : candidates) {
     const LabelSpan span{bar_x(candidate.value), estimated_text_width(candidate.label, kPlotTickFontSize) / 2};
     if (std::any_of(kept.begin(), kept.end(), [&](const LabelSpan& k) { return span.overlaps(k, 6); })) continue;
     kept.push_back(span);
-    draw_line(svg, span.x, top + kColourBarHeight, span.x, top + kColourBarHeight + kTickLength, {kPlotFrameColour, 1, ""});
+    draw_line(svg, span.x, top + kColourBarHeight, span.x, top + kColourBarHeight + kTickLength,
+              {kPlotFrameColour, 1, ""});
     draw_plain_text(svg, span.x, top + kColourBarHeight + kTickLength + 12, candidate.label);
   }
   svg += "</g>\n";

@@ -10,11 +10,21 @@ std::string xml_escaped(std::string_view text) {
   escaped.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': escaped += "&amp;"; break;
-      case '<': escaped += "&lt;"; break;
-      case '>': escaped += "&gt;"; break;
-      case '"': escaped += "&quot;"; break;
-      case '\'': escaped += "&apos;"; break;
+      case '&':
+        escaped += "&amp;";
+        break;
+      case '<':
+        escaped += "&lt;";
+        break;
+      case '>':
+        escaped += "&gt;";
+        break;
+      case '"':
+        escaped += "&quot;";
+        break;
+      case '\'':
+        escaped += "&apos;";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
           escaped += "\xEF\xBF\xBD";  // U+FFFD REPLACEMENT CHARACTER
@@ -63,8 +73,8 @@ void draw_line(std::string& svg, double x1, double y1, double x2, double y2, con
                std::string_view css_class) {
   svg += "<line";
   if (!css_class.empty()) append_format(svg, " class=\"{}\"", css_class);
-  append_format(svg, " x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{}\"", x1, y1, x2,
-                y2, stroke.colour, stroke.width);
+  append_format(svg, " x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{}\"", x1,
+                y1, x2, y2, stroke.colour, stroke.width);
   if (!stroke.dash.empty()) append_format(svg, " stroke-dasharray=\"{}\"", stroke.dash);
   svg += "/>\n";
 }

@@ -178,8 +178,9 @@ class WallFigure {
       header_width = std::max(header_width, estimated_text_width(line, kSubtitleFontSize));
     }
     page_width_ = std::ceil(std::max(legend_left_ + legend_width, kPageMargin + header_width) + kPageMargin);
-    page_height_ = std::ceil(std::max(plot_top + plot_height_ + kBelowPlot,
-                                      plot_top + kWallLegendLayout.row_height * static_cast<double>(legend_.size()) + kPageMargin));
+    page_height_ = std::ceil(
+        std::max(plot_top + plot_height_ + kBelowPlot,
+                 plot_top + kWallLegendLayout.row_height * static_cast<double>(legend_.size()) + kPageMargin));
 
     tick_spacing_ = metre_tick_spacing(scale);
   }
@@ -196,10 +197,12 @@ class WallFigure {
 
   void fill_legend() {
     const auto disc = [](std::string& svg, double x, double y, const char* colour) {
-      append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"{}\"/>\n", x, y, kWallLegendDiscRadius, colour);
+      append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"{}\"/>\n", x, y, kWallLegendDiscRadius,
+                    colour);
     };
     const auto ring = [](std::string& svg, double x, double y, double ring_radius, const char* colour, double width) {
-      append_format(svg, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"/>\n",
+      append_format(svg,
+                    "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"/>\n",
                     x, y, ring_radius, colour, width);
     };
     add_legend_item(options_.number_holds ? "hold, with its id" : "hold",
@@ -225,7 +228,8 @@ class WallFigure {
                     kTileNumberFontSize, kGridColour);
     });
     add_legend_item("tile a hold lies in", [](std::string& svg, double x, double y) {
-      append_format(svg, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">t12</text>\n",
+      append_format(svg,
+                    "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\">t12</text>\n",
                     x, y + 3, kHoldFontSize, kTileColour);
     });
     add_legend_item("hold its tile maps to (nearest centre)", [disc, ring](std::string& svg, double x, double y) {
@@ -271,7 +275,8 @@ class WallFigure {
                   "stroke-width=\"1\"/>\n",
                   left, top, plot_width_, plot_height_, kViewFrameColour);
 
-    append_format(out_, "<g class=\"tick-labels\" font-size=\"{}\" fill=\"{}\">\n", kLabelFontSize - 1, kSubtitleColour);
+    append_format(out_, "<g class=\"tick-labels\" font-size=\"{}\" fill=\"{}\">\n", kLabelFontSize - 1,
+                  kSubtitleColour);
     for (const double y : y_ticks) draw_plain_text(out_, view_.screen_x(y), bottom + 14, metre_tick_label(y), "middle");
     for (const double z : z_ticks) draw_plain_text(out_, left - 5, view_.screen_y(z) + 3.5, metre_tick_label(z), "end");
     out_ += "</g>\n";
@@ -284,9 +289,11 @@ class WallFigure {
     const double y1 = y0 + grid.columns * grid.tile_width, z1 = z0 + grid.rows * grid.tile_height;
     if (anchor_tile_ != kOutsideGrid) {
       const int column = anchor_tile_ % grid.columns, row = anchor_tile_ / grid.columns;
-      append_format(out_, "<rect class=\"anchor-tile\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"/>\n",
-           view_.screen_x(y0 + (column + 1) * grid.tile_width), view_.screen_y(z0 + (row + 1) * grid.tile_height),
-           grid.tile_width * view_.scale, grid.tile_height * view_.scale, kAnchorTileFill);
+      append_format(
+          out_,
+          "<rect class=\"anchor-tile\" x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"/>\n",
+          view_.screen_x(y0 + (column + 1) * grid.tile_width), view_.screen_y(z0 + (row + 1) * grid.tile_height),
+          grid.tile_width * view_.scale, grid.tile_height * view_.scale, kAnchorTileFill);
     }
     append_format(out_, "<g class=\"moving-grid\" stroke=\"{}\" stroke-width=\"0.8\">\n", kGridColour);
     for (int column = 1; column < grid.columns; ++column) {
@@ -295,16 +302,19 @@ class WallFigure {
     for (int row = 1; row < grid.rows; ++row) {
       draw_horizontal_line(out_, view_.screen_x(y1), view_.screen_x(y0), view_.screen_y(z0 + row * grid.tile_height));
     }
-    append_format(out_, "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke-width=\"1.5\"/>\n",
-         view_.screen_x(y1), view_.screen_y(z1), (y1 - y0) * view_.scale, (z1 - z0) * view_.scale);
+    append_format(
+        out_,
+        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke-width=\"1.5\"/>\n",
+        view_.screen_x(y1), view_.screen_y(z1), (y1 - y0) * view_.scale, (z1 - z0) * view_.scale);
     out_ += "</g>\n";
 
     append_format(out_, "<g class=\"tile-numbers\" font-size=\"{}\" fill=\"{}\">\n", kTileNumberFontSize, kGridColour);
     for (int tile = 0; tile < grid.columns * grid.rows; ++tile) {
       const int column = tile % grid.columns, row = tile / grid.columns;
       // The tile's top corner on the screen's left is its corner of larger y and z.
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", view_.screen_x(y0 + (column + 1) * grid.tile_width) + 3,
-           view_.screen_y(z0 + (row + 1) * grid.tile_height) + kTileNumberFontSize + 1, tile);
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n",
+                    view_.screen_x(y0 + (column + 1) * grid.tile_width) + 3,
+                    view_.screen_y(z0 + (row + 1) * grid.tile_height) + kTileNumberFontSize + 1, tile);
     }
     out_ += "</g>\n";
   }
@@ -313,7 +323,8 @@ class WallFigure {
     const double y = view_.screen_y(wall_.finish_height), right = view_.left + plot_width_;
     draw_line(out_, view_.left, y, right, y, kFinishStroke, "finish");
     // Outside the plot, where no hold label can cover it.
-    append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-style=\"italic\" fill=\"{}\">finish</text>\n",
+    append_format(out_,
+                  "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{}\" font-style=\"italic\" fill=\"{}\">finish</text>\n",
                   right + 4, y + 3.5, kLabelFontSize - 1, kFinishStroke.colour);
   }
 
@@ -321,8 +332,9 @@ class WallFigure {
     out_ += "<g class=\"holds\">\n";
     for (int i = 0; i < wall_.hold_count(); ++i) {
       const Hold& hold = wall_.holds[i];
-      append_format(out_, "<circle id=\"hold-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\"/>\n", hold.id, hold_x(hold),
-           hold_y(hold), hold_radius_pixels(hold), outside_grid(i) ? kGreyedColour : kHoldColour);
+      append_format(out_, "<circle id=\"hold-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"{}\"/>\n", hold.id,
+                    hold_x(hold), hold_y(hold), hold_radius_pixels(hold),
+                    outside_grid(i) ? kGreyedColour : kHoldColour);
     }
     out_ += "</g>\n";
   }
@@ -336,7 +348,7 @@ class WallFigure {
       if (index < 0) continue;
       const Hold& hold = wall_.holds[index];
       append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", hold_x(hold), hold_y(hold),
-           hold_radius_pixels(hold) + chosen_ring_gap(index));
+                    hold_radius_pixels(hold) + chosen_ring_gap(index));
     }
     out_ += "</g>\n";
   }
@@ -350,7 +362,8 @@ class WallFigure {
     out_ += ">\n";
   }
   void end_haloed_labels(std::string_view group_class) {
-    append_format(out_,
+    append_format(
+        out_,
         "</g>\n</defs>\n<use xlink:href=\"#{0}\" stroke=\"white\" stroke-width=\"3\" stroke-linejoin=\"round\"/>\n"
         "<use xlink:href=\"#{0}\"/>\n",
         group_class);
@@ -363,8 +376,9 @@ class WallFigure {
       const Hold& hold = wall_.holds[index];
       for (std::size_t k = 0; k < limbs.size(); ++k) {
         const LimbStyle& style = kLimbStyles[limbs[k]];
-        append_format(out_, "<circle id=\"start-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" stroke=\"{}\"/>\n", style.code,
-             hold_x(hold), hold_y(hold), hold_radius_pixels(hold) + start_ring_gap(k), style.colour);
+        append_format(out_, "<circle id=\"start-{}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" stroke=\"{}\"/>\n",
+                      style.code, hold_x(hold), hold_y(hold), hold_radius_pixels(hold) + start_ring_gap(k),
+                      style.colour);
       }
     }
     out_ += "</g>\n";
@@ -376,7 +390,7 @@ class WallFigure {
     for (const auto& [index, limbs] : start_limbs_) {
       const Hold& hold = wall_.holds[index];
       append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">",
-           hold_x(hold) - hold_radius_pixels(hold) - chosen_ring_gap(index) - kLabelGap, hold_y(hold) + 3.5);
+                    hold_x(hold) - hold_radius_pixels(hold) - chosen_ring_gap(index) - kLabelGap, hold_y(hold) + 3.5);
       for (std::size_t k = 0; k < limbs.size(); ++k) {
         const LimbStyle& style = kLimbStyles[limbs[k]];
         append_format(out_, "{}<tspan fill=\"{}\">{}</tspan>", k == 0 ? "" : "/", style.colour, style.code);
@@ -387,13 +401,13 @@ class WallFigure {
   }
 
   void write_hold_ids() {
-    begin_haloed_labels("hold-ids", "font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\"", kHoldFontSize,
-                        kDarkGrey);
+    begin_haloed_labels("hold-ids", "font-size=\"{}\" fill=\"{}\" text-anchor=\"middle\"", kHoldFontSize, kDarkGrey);
     for (int i = 0; i < wall_.hold_count(); ++i) {
       const Hold& hold = wall_.holds[i];
       const double radius = hold_radius_pixels(hold);
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\"{}>{}</text>\n", hold_x(hold), hold_y(hold) - radius - label_gap(),
-           outside_grid(i) ? fmt::format(" fill=\"{}\"", kGreyedColour) : "", hold.id);
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\"{}>{}</text>\n", hold_x(hold),
+                    hold_y(hold) - radius - label_gap(),
+                    outside_grid(i) ? fmt::format(" fill=\"{}\"", kGreyedColour) : "", hold.id);
     }
     end_haloed_labels("hold-ids");
   }
@@ -407,8 +421,8 @@ class WallFigure {
       const Hold& hold = wall_.holds[i];
       const double radius = hold_radius_pixels(hold);
       // The baseline sits a cap height below the gap.
-      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">t{}</text>\n", hold_x(hold), hold_y(hold) + radius + label_gap() + 7,
-           hold_tiles_[i]);
+      append_format(out_, "<text x=\"{:.2f}\" y=\"{:.2f}\">t{}</text>\n", hold_x(hold),
+                    hold_y(hold) + radius + label_gap() + 7, hold_tiles_[i]);
     }
     end_haloed_labels("hold-tiles");
   }
@@ -417,9 +431,9 @@ class WallFigure {
   void write_anchor() {
     const Eigen::Vector3d centre = options_.grid->tile_centre(anchor_tile_);
     append_format(out_,
-        "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" "
-        "stroke-width=\"1\"/>\n",
-        view_.screen_x(centre.y()), view_.screen_y(centre.z()), kAnchorColour);
+                  "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"white\" "
+                  "stroke-width=\"1\"/>\n",
+                  view_.screen_x(centre.y()), view_.screen_y(centre.z()), kAnchorColour);
   }
 
   // y is mirrored (see FrontView), so its title carries an arrow pointing left.
@@ -428,14 +442,14 @@ class WallFigure {
     const double z_title_x = 18, z_title_y = view_.top + plot_height_ / 2;
     append_format(out_, "<g class=\"axis-titles\" font-size=\"{}\" fill=\"{}\">\n", kLabelFontSize, kTextColour);
     append_format(out_,
-        "<text x=\"{0:.2f}\" y=\"{1:.2f}\" text-anchor=\"middle\" transform=\"rotate(-90 {0:.2f} {1:.2f})\">"
-        "z (m), up</text>\n",
-        z_title_x, z_title_y);
+                  "<text x=\"{0:.2f}\" y=\"{1:.2f}\" text-anchor=\"middle\" transform=\"rotate(-90 {0:.2f} {1:.2f})\">"
+                  "z (m), up</text>\n",
+                  z_title_x, z_title_y);
     const double title_width = 36 + estimated_text_width(y_axis_title_, kLabelFontSize);
     const double arrow_x = view_.left + std::max(0.0, (plot_width_ - title_width) / 2), arrow_y = bottom + 36;
     draw_line(out_, arrow_x + 4, arrow_y, arrow_x + 30, arrow_y, {kTextColour, 1.2, ""});
-    append_format(out_, "<polygon points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\"/>\n", arrow_x, arrow_y, arrow_x + 8,
-         arrow_y - 4, arrow_x + 8, arrow_y + 4);
+    append_format(out_, "<polygon points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\"/>\n", arrow_x, arrow_y,
+                  arrow_x + 8, arrow_y - 4, arrow_x + 8, arrow_y + 4);
     draw_plain_text(out_, arrow_x + 36, arrow_y + 4, y_axis_title_);
     out_ += "</g>\n";
   }

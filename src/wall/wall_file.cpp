@@ -62,10 +62,12 @@ std::string syntax_problem(const std::string& parser_message) {
   if (at == std::string::npos) return "JSON syntax error: " + shortened(parser_message);
   at += 8;
   const std::string line = number_at(at);
-  if (line.empty() || parser_message.compare(at, 9, ", column ") != 0) return "JSON syntax error: " + shortened(parser_message);
+  if (line.empty() || parser_message.compare(at, 9, ", column ") != 0)
+    return "JSON syntax error: " + shortened(parser_message);
   at += 9;
   const std::string column = number_at(at);
-  if (column.empty() || parser_message.compare(at, 2, ": ") != 0) return "JSON syntax error: " + shortened(parser_message);
+  if (column.empty() || parser_message.compare(at, 2, ": ") != 0)
+    return "JSON syntax error: " + shortened(parser_message);
   at += 2;
   std::string problem = parser_message.substr(at);
   constexpr std::string_view kWhileParsing = "syntax error while parsing ";
@@ -127,7 +129,8 @@ class JsonStructureCheck final : public Json::json_sax_t {
   std::string path(std::size_t depth) const {
     std::string text;
     for (std::size_t i = 0; i < depth; ++i) {
-      text = frames_[i].is_array ? fmt::format("{}[{}]", text, frames_[i].index) : json_child_path(text, frames_[i].key);
+      text =
+          frames_[i].is_array ? fmt::format("{}[{}]", text, frames_[i].index) : json_child_path(text, frames_[i].key);
     }
     return text;
   }
@@ -172,8 +175,10 @@ class WallReader {
 
   void check_format(const Json& root) const {
     const auto format = root.find("format");
-    if (format == root.end()) fail(fmt::format("format is missing; a wall file has \"format\": {}", json_quoted(kWallFormatName)));
-    if (*format != kWallFormatName) fail(fmt::format("format must be {}, got {}", json_quoted(kWallFormatName), format->dump()));
+    if (format == root.end())
+      fail(fmt::format("format is missing; a wall file has \"format\": {}", json_quoted(kWallFormatName)));
+    if (*format != kWallFormatName)
+      fail(fmt::format("format must be {}, got {}", json_quoted(kWallFormatName), format->dump()));
   }
 
   void check_version(const Json& root) const {
@@ -190,7 +195,8 @@ class WallReader {
                            const std::array<std::string_view, N>& allowed) const {
     for (const auto& [key, value] : object.items()) {
       if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-        fail(fmt::format("unknown key {} {} (allowed: {})", json_quoted(key), location(path), fmt::join(allowed, ", ")));
+        fail(
+            fmt::format("unknown key {} {} (allowed: {})", json_quoted(key), location(path), fmt::join(allowed, ", ")));
       }
     }
   }
@@ -221,7 +227,8 @@ class WallReader {
   }
 
   Eigen::Vector3d position(const Json& value, const std::string& path) const {
-    if (!value.is_array()) fail(fmt::format("{} must be an array of 3 numbers [x, y, z], got {}", path, json_value_description(value)));
+    if (!value.is_array())
+      fail(fmt::format("{} must be an array of 3 numbers [x, y, z], got {}", path, json_value_description(value)));
     if (value.size() != 3) fail(fmt::format("{} must have 3 coordinates [x, y, z], got {}", path, value.size()));
     Eigen::Vector3d result;
     for (int axis = 0; axis < 3; ++axis) {
@@ -241,7 +248,8 @@ class WallReader {
     result.id = hold_id(field(value, path, "id"), path + ".id");
     result.position = position(field(value, path, "position"), path + ".position");
     result.radius = number(value, path, "radius");
-    if (!(result.radius > 0.0)) fail(fmt::format("{}.radius must be positive, got {}", path, Json(result.radius).dump()));
+    if (!(result.radius > 0.0))
+      fail(fmt::format("{}.radius must be positive, got {}", path, Json(result.radius).dump()));
     return result;
   }
 
@@ -259,7 +267,8 @@ class WallReader {
     for (std::size_t i = 0; i < value.size(); ++i) {
       result.push_back(hold(value[i], fmt::format("holds[{}]", i)));
       const auto [first, inserted] = index_of_id.emplace(result.back().id, i);
-      if (!inserted) fail(fmt::format("duplicate hold id {} (holds[{}] and holds[{}])", result.back().id, first->second, i));
+      if (!inserted)
+        fail(fmt::format("duplicate hold id {} (holds[{}] and holds[{}])", result.back().id, first->second, i));
     }
     return result;
   }
@@ -277,7 +286,8 @@ class WallReader {
       if (indices[limb] < 0) fail(fmt::format("{} names hold {}, which is not in holds", path, id));
       for (int earlier = 0; earlier < limb; ++earlier) {
         if (indices[earlier] == indices[limb]) {
-          fail(fmt::format("start.{} and {} both name hold {}; each limb needs its own hold", limbs[earlier], path, id));
+          fail(
+              fmt::format("start.{} and {} both name hold {}; each limb needs its own hold", limbs[earlier], path, id));
         }
       }
     }
@@ -290,14 +300,16 @@ class WallReader {
 std::string number_text(double value) { return Json(value).dump(); }
 
 std::string hold_line(const Hold& hold) {
-  return fmt::format(R"(    {{"id": {}, "position": [{}, {}, {}], "radius": {}}})", hold.id, number_text(hold.position.x()),
-                     number_text(hold.position.y()), number_text(hold.position.z()), number_text(hold.radius));
+  return fmt::format(R"(    {{"id": {}, "position": [{}, {}, {}], "radius": {}}})", hold.id,
+                     number_text(hold.position.x()), number_text(hold.position.y()), number_text(hold.position.z()),
+                     number_text(hold.radius));
 }
 
 std::string start_line(const Wall& wall) {
   std::vector<std::string> members;
   for (int limb = 0; limb < kLimbCount; ++limb) {
-    members.push_back(fmt::format("{}: {}", json_quoted(limb_name(static_cast<Limb>(limb))), wall.holds.at(wall.start[limb]).id));
+    members.push_back(
+        fmt::format("{}: {}", json_quoted(limb_name(static_cast<Limb>(limb))), wall.holds.at(wall.start[limb]).id));
   }
   return fmt::format("  \"start\": {{{}}},\n", fmt::join(members, ", "));
 }
@@ -316,10 +328,11 @@ Wall load_wall(const std::string& path) { return parse_wall(read_input_file(path
 std::string wall_to_json(const Wall& wall) {
   std::vector<std::string> holds;
   for (const Hold& hold : wall.holds) holds.push_back(hold_line(hold));
-  return fmt::format("{{\n  \"format\": {},\n  \"version\": {},\n  \"name\": {},\n  \"finish_height\": {},\n{}"
-                     "  \"holds\": [\n{}\n  ]\n}}\n",
-                     json_quoted(kWallFormatName), kWallFormatVersion, json_quoted(wall.name), number_text(wall.finish_height),
-                     start_line(wall), fmt::join(holds, ",\n"));
+  return fmt::format(
+      "{{\n  \"format\": {},\n  \"version\": {},\n  \"name\": {},\n  \"finish_height\": {},\n{}"
+      "  \"holds\": [\n{}\n  ]\n}}\n",
+      json_quoted(kWallFormatName), kWallFormatVersion, json_quoted(wall.name), number_text(wall.finish_height),
+      start_line(wall), fmt::join(holds, ",\n"));
 }
 
 void save_wall(const std::string& path, const Wall& wall) {

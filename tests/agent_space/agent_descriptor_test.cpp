@@ -58,7 +58,8 @@ TEST(AgentDescriptor, UnchangedWhenWallAndBodyAreTranslatedTogether) {
     state.holds[static_cast<int>(free)] = kFree;
     const GridPlacement here = place_grid(kPaperGrid, free, limb);
     const GridPlacement there = place_grid(kPaperGrid, free, limb + shift);
-    ASSERT_EQ(describe_state(wall, state, here), describe_state(moved, state, there)) << "seed " << seed << " trial " << trial;
+    ASSERT_EQ(describe_state(wall, state, here), describe_state(moved, state, there))
+        << "seed " << seed << " trial " << trial;
     for (int hold = 0; hold < wall.hold_count(); ++hold) {
       ASSERT_EQ(here.tile_of(wall.holds[hold].position), there.tile_of(moved.holds[hold].position))
           << "seed " << seed << " trial " << trial << " hold " << hold;

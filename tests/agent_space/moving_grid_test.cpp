@@ -30,11 +30,11 @@ TEST(MovingGrid, TileEdgesAndCornersBelongToTheTileOfLargerCoordinates) {
   p.origin = {0.0, 0.0};  // exact binary edges: tiles are 0.3 x 0.5 but test on 0.5 multiples
   p.tile_width = 0.5;
   p.tile_height = 0.5;
-  EXPECT_EQ(p.tile_of({0, 0.0, 0.0}), 0);       // the grid's own corner
-  EXPECT_EQ(p.tile_of({0, 0.5, 0.0}), 1);       // vertical edge between tiles 0 and 1
-  EXPECT_EQ(p.tile_of({0, 0.0, 0.5}), 5);       // horizontal edge between tiles 0 and 5
-  EXPECT_EQ(p.tile_of({0, 0.5, 0.5}), 6);       // interior corner shared by 0, 1, 5, 6
-  EXPECT_EQ(p.tile_of({0, 2.4999, 3.4999}), 34);  // just inside the far corner
+  EXPECT_EQ(p.tile_of({0, 0.0, 0.0}), 0);             // the grid's own corner
+  EXPECT_EQ(p.tile_of({0, 0.5, 0.0}), 1);             // vertical edge between tiles 0 and 1
+  EXPECT_EQ(p.tile_of({0, 0.0, 0.5}), 5);             // horizontal edge between tiles 0 and 5
+  EXPECT_EQ(p.tile_of({0, 0.5, 0.5}), 6);             // interior corner shared by 0, 1, 5, 6
+  EXPECT_EQ(p.tile_of({0, 2.4999, 3.4999}), 34);      // just inside the far corner
   EXPECT_EQ(p.tile_of({0, 2.5, 1.0}), kOutsideGrid);  // the far edges are outside
   EXPECT_EQ(p.tile_of({0, 1.0, 3.5}), kOutsideGrid);
   EXPECT_EQ(p.tile_of({0, -1e-12, 1.0}), kOutsideGrid);

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
+#include "body/urdf_loader.hpp"
 #include "support/kdl_reference.hpp"
 #include "support/test_models.hpp"
 
@@ -21,11 +21,13 @@ void expect_agreement(const std::string& urdf_path, const BodyModel& model, std:
     forward_kinematics(model, data, g);
     operational_jacobians(model, data);
     for (int k = 0; k < kOperationalPointCount; ++k) {
-      ASSERT_LT((data.points[k] - kdl.point(g, k)).norm(), 1e-9) << "seed " << seed << " sample " << sample << " point " << k;
+      ASSERT_LT((data.points[k] - kdl.point(g, k)).norm(), 1e-9)
+          << "seed " << seed << " sample " << sample << " point " << k;
       ASSERT_LT((data.jacobians[k] - kdl.jacobian(g, k)).cwiseAbs().maxCoeff(), 1e-9)
           << "seed " << seed << " sample " << sample << " point " << k;
     }
-    ASSERT_LT((centre_of_mass(model, data) - kdl.centre_of_mass(g)).norm(), 1e-9) << "seed " << seed << " sample " << sample;
+    ASSERT_LT((centre_of_mass(model, data) - kdl.centre_of_mass(g)).norm(), 1e-9)
+        << "seed " << seed << " sample " << sample;
   }
 }
 

@@ -148,9 +148,12 @@ void expect_reuse_changes_no_bit(const BodyModel& model, std::uint64_t seed, con
     const Posture other = random_posture(model, random);
     for (int i = 0; i < kConfigurationDof; ++i) {
       const double u = random.uniform();
-      if (u < 0.4) g[i] = other[i];            // moved
-      else if (u < 0.45) g[i] = -g[i];         // mirrored, so +0.0 and -0.0 both occur
-      else if (u < 0.5) g[i] = 0.0;            // at zero
+      if (u < 0.4)
+        g[i] = other[i];  // moved
+      else if (u < 0.45)
+        g[i] = -g[i];  // mirrored, so +0.0 and -0.0 both occur
+      else if (u < 0.5)
+        g[i] = 0.0;  // at zero
     }
     BodyData fresh(model);
     forward_kinematics(model, fresh, g);

@@ -43,7 +43,8 @@ std::array<double, kLimbCount> expect_sound(const BodyModel& model, const ReachE
     const Posture g = testing::random_posture(model, random);
     forward_kinematics(model, data, g);
     for (int limb = 0; limb < kLimbCount; ++limb) {
-      const double distance = (data.points[operational_point(limb)] - data.points[0] - envelope.chain_base[limb]).norm();
+      const double distance =
+          (data.points[operational_point(limb)] - data.points[0] - envelope.chain_base[limb]).norm();
       EXPECT_LE(distance, envelope.radius[limb] + 1e-12) << label << " seed " << seed << " sample " << sample;
       farthest[limb] = std::max(farthest[limb], distance);
     }

@@ -57,7 +57,8 @@ struct BadModelCase {
 };
 
 std::string turn_neck_rotation_fixed(const std::string& u) {
-  return replaced(u, "<joint name=\"neck_rotation\" type=\"revolute\">", "<joint name=\"neck_rotation\" type=\"fixed\">");
+  return replaced(u, "<joint name=\"neck_rotation\" type=\"revolute\">",
+                  "<joint name=\"neck_rotation\" type=\"fixed\">");
 }
 std::string add_toe_joint(const std::string& u) {
   return replaced(u, "</robot>",
@@ -83,9 +84,7 @@ std::string rename_right_palm(const std::string& u) {
 std::string break_xml(const std::string& u) { return u.substr(0, u.size() / 2); }
 std::string not_urdf(const std::string&) { return "<html><body>hello</body></html>"; }
 std::string empty(const std::string&) { return ""; }
-std::string rotate_root(const std::string& u) {
-  return replaced(u, "<axis xyz=\"0 1 0\"/>", "<axis xyz=\"0 0 1\"/>");
-}
+std::string rotate_root(const std::string& u) { return replaced(u, "<axis xyz=\"0 1 0\"/>", "<axis xyz=\"0 0 1\"/>"); }
 std::string inverted_limits(const std::string& u) {
   return replaced(u, "lower=\"-1.047198\" upper=\"1.047198\"", "lower=\"1.047198\" upper=\"-1.047198\"");
 }
@@ -110,8 +109,12 @@ std::string very_long_chain(const std::string& u) {
 // TinyXML would read past the end of the text from this last byte, a UTF-8 lead byte
 // (found by the URDF fuzzer).
 std::string ends_inside_utf8_character(const std::string&) { return "<?xml version=\"1.0\"?><robot a=\"\xd5"; }
-std::string nul_byte(const std::string& u) { return replaced(u, "</robot>", std::string("<!--") + '\0' + "--></robot>"); }
-std::string negative_mass(const std::string& u) { return replaced(u, "<mass value=\"24.14\"/>", "<mass value=\"-24.14\"/>"); }
+std::string nul_byte(const std::string& u) {
+  return replaced(u, "</robot>", std::string("<!--") + '\0' + "--></robot>");
+}
+std::string negative_mass(const std::string& u) {
+  return replaced(u, "<mass value=\"24.14\"/>", "<mass value=\"-24.14\"/>");
+}
 std::string nan_mass(const std::string& u) { return replaced(u, "<mass value=\"24.14\"/>", "<mass value=\"nan\"/>"); }
 
 class BadModel : public ::testing::TestWithParam<BadModelCase> {};
@@ -133,24 +136,21 @@ TEST_P(BadModel, IsOneClearInputError) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, BadModel,
-    ::testing::Values(BadModelCase{"missing_joint", turn_neck_rotation_fixed, "exactly 32 revolute joints, found 31"},
-                      BadModelCase{"extra_joint", add_toe_joint, "exactly 32 revolute joints, found 33"},
-                      BadModelCase{"no_limits", drop_neck_limits, "limits"},
-                      BadModelCase{"continuous", make_neck_continuous, "type continuous"},
-                      BadModelCase{"stray_prismatic", make_neck_prismatic, "type prismatic"},
-                      BadModelCase{"missing_grasp_frame", rename_right_palm, "grasp frame 'right_palm'"},
-                      BadModelCase{"broken_xml", break_xml, "invalid URDF"},
-                      BadModelCase{"not_urdf", not_urdf, "invalid URDF"},
-                      BadModelCase{"empty", empty, "empty"},
-                      BadModelCase{"rotated_root", rotate_root, "must translate along y"},
-                      BadModelCase{"inverted_limits", inverted_limits, "neck_rotation"},
-                      BadModelCase{"cycle", cycle_back_to_torso, "torso"},
-                      BadModelCase{"very_long_chain", very_long_chain, "deeper than 1000 links"},
-                      BadModelCase{"negative_mass", negative_mass, "has mass -24.14"},
-                      BadModelCase{"nan_mass", nan_mass, "mass"},
-                      BadModelCase{"ends_inside_utf8_character", ends_inside_utf8_character,
-                                   "ends inside a UTF-8 character"},
-                      BadModelCase{"nul_byte", nul_byte, "a NUL byte at offset"}),
+    ::testing::Values(
+        BadModelCase{"missing_joint", turn_neck_rotation_fixed, "exactly 32 revolute joints, found 31"},
+        BadModelCase{"extra_joint", add_toe_joint, "exactly 32 revolute joints, found 33"},
+        BadModelCase{"no_limits", drop_neck_limits, "limits"},
+        BadModelCase{"continuous", make_neck_continuous, "type continuous"},
+        BadModelCase{"stray_prismatic", make_neck_prismatic, "type prismatic"},
+        BadModelCase{"missing_grasp_frame", rename_right_palm, "grasp frame 'right_palm'"},
+        BadModelCase{"broken_xml", break_xml, "invalid URDF"}, BadModelCase{"not_urdf", not_urdf, "invalid URDF"},
+        BadModelCase{"empty", empty, "empty"}, BadModelCase{"rotated_root", rotate_root, "must translate along y"},
+        BadModelCase{"inverted_limits", inverted_limits, "neck_rotation"},
+        BadModelCase{"cycle", cycle_back_to_torso, "torso"},
+        BadModelCase{"very_long_chain", very_long_chain, "deeper than 1000 links"},
+        BadModelCase{"negative_mass", negative_mass, "has mass -24.14"}, BadModelCase{"nan_mass", nan_mass, "mass"},
+        BadModelCase{"ends_inside_utf8_character", ends_inside_utf8_character, "ends inside a UTF-8 character"},
+        BadModelCase{"nul_byte", nul_byte, "a NUL byte at offset"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(BadModelFile, MissingFileAndDirectoryAreInputErrors) {
@@ -210,8 +210,8 @@ TEST(BodyModel, LoaderKeepsEachPrimitiveVisualOnTheJointThatCarriesIt) {
 TEST(BodyModel, VisualsOfFixedFramesAreCarriedThroughTheFixedJointAndMeshesAreSkipped) {
   const std::string text =
       replaced(human_urdf_text(), "<link name=\"right_palm\"/>",
-                        "<link name=\"right_palm\"><visual><origin xyz=\"0 0 0.01\"/><geometry><sphere radius=\"0.02\"/>"
-                        "</geometry></visual><visual><geometry><mesh filename=\"hand.stl\"/></geometry></visual></link>");
+               "<link name=\"right_palm\"><visual><origin xyz=\"0 0 0.01\"/><geometry><sphere radius=\"0.02\"/>"
+               "</geometry></visual><visual><geometry><mesh filename=\"hand.stl\"/></geometry></visual></link>");
   const BodyModel model = load_body_model(write_temporary("palm_visual.urdf", text).string());
   ASSERT_EQ(model.visuals.size(), 17u);
   const auto found = std::find_if(model.visuals.begin(), model.visuals.end(),

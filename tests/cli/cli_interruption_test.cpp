@@ -8,10 +8,10 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
-#include <filesystem>
 #include <string>
 #include <thread>
 #include <vector>

@@ -1,16 +1,16 @@
 // crux paper, train, transfer and plan end to end.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
-#include <sys/wait.h>
 #include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
-#include <thread>
 #include <chrono>
+#include <fstream>
 #include <map>
+#include <thread>
 
 #include "support/run_crux.hpp"
 #include "support/test_models.hpp"
@@ -33,9 +33,10 @@ TEST(CliLearning, ShortPaperRunWritesTheOutputFolder) {
   const auto outcome = run_crux("paper --runs 1 --iterations 300 --plan=false --seed 5 -o " + out.string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("Table I"), std::string::npos);
-  for (const char* file : {"config.toml", "summary.json", "runs/training_0/iterations.csv", "runs/transfer_0/episodes.csv",
-                           "runs/control_0/q_grid.bin", "runs/training_0/climb.csv", "walls/transfer_0.json",
-                           "figures/fig3_regimes.csv", "figures/fig4_episode_lengths.csv", "figures/fig2b_qgrid_maps.csv"}) {
+  for (const char* file :
+       {"config.toml", "summary.json", "runs/training_0/iterations.csv", "runs/transfer_0/episodes.csv",
+        "runs/control_0/q_grid.bin", "runs/training_0/climb.csv", "walls/transfer_0.json", "figures/fig3_regimes.csv",
+        "figures/fig4_episode_lengths.csv", "figures/fig2b_qgrid_maps.csv"}) {
     EXPECT_TRUE(fs::exists(out / file)) << file;
   }
   std::ifstream in(out / "summary.json");
@@ -97,7 +98,8 @@ TEST(CliLearning, PlanOnALargeBoardStopsAtItsLimit) {
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("within 3000 IK solves"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("--plan-max-solves"), std::string::npos) << text.out;
-  const auto json = nlohmann::json::parse(run_crux("plan --plan-max-solves 3000 --json --wall-file " + board.string()).out);
+  const auto json =
+      nlohmann::json::parse(run_crux("plan --plan-max-solves 3000 --json --wall-file " + board.string()).out);
   EXPECT_FALSE(json["found"].get<bool>());
   EXPECT_TRUE(json["stopped_at_limit"].get<bool>());
   EXPECT_EQ(json["ik_solves"].get<int>(), 3000);
@@ -139,11 +141,14 @@ TEST(CliLearning, TrainAndTransferReplayFromTheirOwnConfig) {
   const fs::path wall = learning_scratch("replay_wall.json");
   ASSERT_EQ(run_crux("wall generate --wall-seed 6 -o " + wall.string()).exit_code, 0);
   const fs::path train = learning_scratch("replay_train"), train_again = learning_scratch("replay_train_again");
-  ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 200 --seed 4 --learning-epsilon 0.2 -o " + train.string()).exit_code, 0);
+  ASSERT_EQ(
+      run_crux("train --wall-seed 3 --iterations 200 --seed 4 --learning-epsilon 0.2 -o " + train.string()).exit_code,
+      0);
   const auto replayed = run_crux("train --config " + (train / "config.toml").string() + " -o " + train_again.string());
   ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
   expect_same_folder(train, train_again);
-  const fs::path transfer = learning_scratch("replay_transfer"), transfer_again = learning_scratch("replay_transfer_again");
+  const fs::path transfer = learning_scratch("replay_transfer"),
+                 transfer_again = learning_scratch("replay_transfer_again");
   ASSERT_EQ(run_crux("transfer --q-grid " + (train / "q_grid.bin").string() + " --wall-file " + wall.string() +
                      " --iterations 200 -o " + transfer.string())
                 .exit_code,
@@ -153,7 +158,8 @@ TEST(CliLearning, TrainAndTransferReplayFromTheirOwnConfig) {
   EXPECT_NE(config.find("q_grid_sha256 = "), std::string::npos);
   EXPECT_NE(config.find("urdf_sha256 = "), std::string::npos);
   EXPECT_NE(config.find("crux_version = "), std::string::npos);
-  const auto again = run_crux("transfer --config " + (transfer / "config.toml").string() + " -o " + transfer_again.string());
+  const auto again =
+      run_crux("transfer --config " + (transfer / "config.toml").string() + " -o " + transfer_again.string());
   ASSERT_EQ(again.exit_code, 0) << again.err;
   expect_same_folder(transfer, transfer_again);
   // A replay whose input changed since is refused, naming the config and the digest.
@@ -199,10 +205,10 @@ TEST(CliLearning, AnOutputFolderIsNeitherMixedWithEarlierOutputsNorAnInputsHome)
 }
 
 TEST(CliLearning, EachCommandRefusesTheFlagsItDoesNotUse) {
-  for (const char* command : {"plan --wall-seed 3 --iterations 5", "plan --wall-seed 3 --runs 100",
-                                     "train --wall-seed 3 --plan 0", "train --wall-seed 3 --runs 3",
-                                     "train --wall-seed 3 --threads 2", "paper --wall-seed 3", "ik-compare --ik-solver fast",
-                                     "model --iterations 3"}) {
+  for (const char* command :
+       {"plan --wall-seed 3 --iterations 5", "plan --wall-seed 3 --runs 100", "train --wall-seed 3 --plan 0",
+        "train --wall-seed 3 --runs 3", "train --wall-seed 3 --threads 2", "paper --wall-seed 3",
+        "ik-compare --ik-solver fast", "model --iterations 3"}) {
     const auto outcome = run_crux(command);
     EXPECT_EQ(outcome.exit_code, 2) << command;
     EXPECT_NE(outcome.err.find("unknown option --"), std::string::npos) << command << ": " << outcome.err;
@@ -273,10 +279,11 @@ TEST(CliLearning, ViewAndReportReadTheRunsOwnConfig) {
   EXPECT_EQ(ik_flag.exit_code, 2);
   EXPECT_EQ(ik_flag.err, "crux: --ik-timeout: not used with --run: a run is drawn with its own config.toml\n");
   const auto ik_config = testing::write_temporary("cli_view_ik.toml", "[ik]\ntimeout = 1.0\n");
-  const auto from_file = run_crux("view --run " + train.string() + " --config " + ik_config.string() + " -o " +
-                                  svg.string());
-  EXPECT_EQ(from_file.err, "crux: " + ik_config.string() + ": line 2: ik.timeout: not used with --run: a run is "
-                           "drawn with its own config.toml\n");
+  const auto from_file =
+      run_crux("view --run " + train.string() + " --config " + ik_config.string() + " -o " + svg.string());
+  EXPECT_EQ(from_file.err, "crux: " + ik_config.string() +
+                               ": line 2: ik.timeout: not used with --run: a run is "
+                               "drawn with its own config.toml\n");
   EXPECT_FALSE(fs::exists(svg));
   const auto report_ik = run_crux("report " + train.string() + " --ik-solver paper -o " + html.string());
   EXPECT_EQ(report_ik.exit_code, 2);
@@ -306,9 +313,11 @@ TEST(CliLearning, ViewAndReportReadTheRunsOwnConfig) {
   EXPECT_EQ(zero.exit_code, 2);
   EXPECT_EQ(zero.err, "crux: --climb: episodes are numbered from 1, not 0\n");
 
-  for (const auto& [old_name, command] : std::vector<std::pair<std::string, std::string>>{
-           {"--svg", "view --svg x.svg"}, {"--replay-run", "report . --replay-run training_1 -o x.html"},
-           {"--queries", "ik-compare --queries 3"}, {"--walk-solver", "ik-compare --walk-solver fast"}}) {
+  for (const auto& [old_name, command] :
+       std::vector<std::pair<std::string, std::string>>{{"--svg", "view --svg x.svg"},
+                                                        {"--replay-run", "report . --replay-run training_1 -o x.html"},
+                                                        {"--queries", "ik-compare --queries 3"},
+                                                        {"--walk-solver", "ik-compare --walk-solver fast"}}) {
     const auto renamed = run_crux(command);
     EXPECT_EQ(renamed.exit_code, 2) << command;
     EXPECT_NE(renamed.err.find("unknown option " + old_name + " of"), std::string::npos) << renamed.err;
@@ -375,9 +384,14 @@ TEST(CliLearning, MalformedRunFoldersAreRefusedWithOneLine) {
 TEST(CliLearning, EveryCommandPrintsOneJsonDocument) {
   const fs::path wall = learning_scratch("json_wall.json"), train = learning_scratch("json_train");
   const std::vector<std::string> commands{
-      "model", "demo", "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0", "ik-compare --compare-queries 5",
-      "wall generate --wall-seed 5 -o " + wall.string(), "wall show --wall-file " + wall.string(),
-      "filter-stats --wall-count 1", "plan --wall-file " + wall.string(),
+      "model",
+      "demo",
+      "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0",
+      "ik-compare --compare-queries 5",
+      "wall generate --wall-seed 5 -o " + wall.string(),
+      "wall show --wall-file " + wall.string(),
+      "filter-stats --wall-count 1",
+      "plan --wall-file " + wall.string(),
       "train --wall-file " + wall.string() + " --iterations 100 -o " + train.string(),
       "transfer --q-grid " + (train / "q_grid.bin").string() + " --wall-seed 2 --iterations 100 -o " +
           learning_scratch("json_transfer").string(),
@@ -401,7 +415,8 @@ TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
   ASSERT_EQ(run_crux(arguments + whole.string()).exit_code, 0);
   const pid_t pid = ::fork();
   if (pid == 0) {
-    const std::string command = std::string("exec ") + CRUX_BINARY + " " + arguments + killed.string() + " > /dev/null 2>&1";
+    const std::string command =
+        std::string("exec ") + CRUX_BINARY + " " + arguments + killed.string() + " > /dev/null 2>&1";
     ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
@@ -413,7 +428,8 @@ TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
   int status = 0;
   ::waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
-  ASSERT_TRUE(fs::exists(killed / "checkpoint.bin")) << "written before the INCOMPLETE marker, which may not be there yet";
+  ASSERT_TRUE(fs::exists(killed / "checkpoint.bin"))
+      << "written before the INCOMPLETE marker, which may not be there yet";
   const auto other = run_crux(arguments + killed.string() + " --learning-epsilon 0.2");
   EXPECT_EQ(other.exit_code, 2);
   EXPECT_NE(other.err.find("checkpoint.bin: is the checkpoint of another run"), std::string::npos) << other.err;
@@ -423,11 +439,12 @@ TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
   const auto resumed = run_crux(arguments + killed.string());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_NE(resumed.err.find("crux train: resumed at iteration "), std::string::npos) << resumed.err;
-  EXPECT_NE(resumed.err.find(" of 6000 from " + (killed / "checkpoint.bin").string()), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find(" of 6000 from " + (killed / "checkpoint.bin").string()), std::string::npos)
+      << resumed.err;
   EXPECT_FALSE(fs::exists(killed / "checkpoint.bin")) << "a complete folder keeps no checkpoint";
   EXPECT_FALSE(fs::exists(killed / "INCOMPLETE"));
-  for (const char* file : {"iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv", "wall.json",
-                           "config.toml"}) {
+  for (const char* file :
+       {"iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv", "wall.json", "config.toml"}) {
     std::ifstream a(whole / file, std::ios::binary), b(killed / file, std::ios::binary);
     const std::string x((std::istreambuf_iterator<char>(a)), {}), y((std::istreambuf_iterator<char>(b)), {});
     EXPECT_TRUE(!x.empty() && x == y) << file;
@@ -447,11 +464,14 @@ TEST(CliLearning, WallGeneratorFlagsBesideAWallFileAreRefused) {
   const fs::path wall = learning_scratch("generator_wall.json"), out = learning_scratch("generator_out");
   ASSERT_EQ(run_crux("wall generate --wall-seed 5 -o " + wall.string()).exit_code, 0);
   for (const char* flag : {"--wall-sigma 0.2", "--wall-rows 9", "--wall-finish-height 2.5"}) {
-    const auto refused = run_crux("train --wall-file " + wall.string() + " " + flag + " --iterations 100 -o " +
-                                  out.string());
+    const auto refused =
+        run_crux("train --wall-file " + wall.string() + " " + flag + " --iterations 100 -o " + out.string());
     EXPECT_EQ(refused.exit_code, 2) << flag;
-    EXPECT_EQ(refused.err.rfind("crux: " + std::string(flag).substr(0, std::string(flag).find(' ')) + ": shapes a "
-                                "random wall, and the wall file gives the wall itself: drop one of them\n", 0), 0u)
+    EXPECT_EQ(refused.err.rfind("crux: " + std::string(flag).substr(0, std::string(flag).find(' ')) +
+                                    ": shapes a "
+                                    "random wall, and the wall file gives the wall itself: drop one of them\n",
+                                0),
+              0u)
         << refused.err;
     EXPECT_FALSE(fs::exists(out)) << flag;
   }
@@ -463,11 +483,14 @@ TEST(CliLearning, WallGeneratorFlagsBesideAWallFileAreRefused) {
   EXPECT_EQ(config.find("finish_height"), std::string::npos) << config;
   // The folder's own config replays it.
   EXPECT_EQ(run_crux("train --config " + (out / "config.toml").string() + " -o " +
-                     learning_scratch("generator_again").string()).exit_code, 0);
+                     learning_scratch("generator_again").string())
+                .exit_code,
+            0);
 }
 
 TEST(CliLearning, TheTransferModeIsOneFlagWrittenToTheConfigAndAnUnknownOneIsRefused) {
-  const fs::path train = learning_scratch("mode_train"), transfer = learning_scratch("mode_transfer"), again = learning_scratch("mode_again");
+  const fs::path train = learning_scratch("mode_train"), transfer = learning_scratch("mode_transfer"),
+                 again = learning_scratch("mode_again");
   ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 200 --transfer prior -o " + train.string()).exit_code, 0);
   EXPECT_NE(read_text(train / "config.toml").find("transfer = \"prior\""), std::string::npos);
   ASSERT_EQ(run_crux("transfer --q-grid " + (train / "q_grid.bin").string() +
@@ -498,8 +521,9 @@ TEST(CliLearning, ShapingWithoutATransferredTableIsThePaperRule) {
     EXPECT_EQ(read_text(paper / "runs" / run / "iterations.csv"), read_text(shaping / "runs" / run / "iterations.csv"))
         << run;
   }
-  EXPECT_TRUE(read_text(paper / "runs/transfer_0/iterations.csv") + read_text(paper / "runs/transfer_1/iterations.csv") !=
-              read_text(shaping / "runs/transfer_0/iterations.csv") + read_text(shaping / "runs/transfer_1/iterations.csv"))
+  EXPECT_TRUE(
+      read_text(paper / "runs/transfer_0/iterations.csv") + read_text(paper / "runs/transfer_1/iterations.csv") !=
+      read_text(shaping / "runs/transfer_0/iterations.csv") + read_text(shaping / "runs/transfer_1/iterations.csv"))
       << "the transferred potential changes transfer's runs";
 }
 

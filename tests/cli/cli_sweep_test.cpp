@@ -25,9 +25,10 @@ using testing::run_crux;
 
 // Two cells of three wall pairs, 1500 iterations: 12 wall tasks... 6, and 18 runs.
 fs::path sweep_file() {
-  return testing::write_temporary("sweep-" + std::to_string(::getpid()) + ".toml",
-                                  "[experiment]\nwalls = 3\niterations = 1500\nplan = false\nbootstrap_resamples = 200\n"
-                                  "[learning]\nepsilon = [0.1, 0.3]\n");
+  return testing::write_temporary(
+      "sweep-" + std::to_string(::getpid()) + ".toml",
+      "[experiment]\nwalls = 3\niterations = 1500\nplan = false\nbootstrap_resamples = 200\n"
+      "[learning]\nepsilon = [0.1, 0.3]\n");
 }
 
 std::string sweep_arguments(const fs::path& out, int threads) {
@@ -85,8 +86,8 @@ TEST(CliSweep, WritesEachRunAndTheResultsAndPrintsEachCell) {
   expect_same(results, folder_contents(out));
   // A run folder replays with crux transfer from its own config.toml.
   const fs::path replay = testing::sweep_scratch("replay");
-  const auto replayed = run_crux("transfer --config " + (out / "runs/c1/transfer_2/config.toml").string() + " -o " +
-                                 replay.string());
+  const auto replayed =
+      run_crux("transfer --config " + (out / "runs/c1/transfer_2/config.toml").string() + " -o " + replay.string());
   ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
   for (const char* file : {"iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv"}) {
     EXPECT_TRUE(folder_contents(replay).at(file) == results.at(std::string("runs/c1/transfer_2/") + file)) << file;
@@ -97,8 +98,10 @@ TEST(CliSweep, WritesEachRunAndTheResultsAndPrintsEachCell) {
 // cell per mode, each analysed, and the report's table names every mode.
 TEST(CliSweep, TheTransferModesExampleRunsACellPerMode) {
   const fs::path out = testing::sweep_scratch("modes");
-  const auto outcome = run_crux("sweep --config " CRUX_SOURCE_DIR "/examples/sweeps/transfer_modes.toml --walls 2 "
-                                "--seeds-per-wall 1 --iterations 300 --json -o " + out.string());
+  const auto outcome = run_crux("sweep --config " CRUX_SOURCE_DIR
+                                "/examples/sweeps/transfer_modes.toml --walls 2 "
+                                "--seeds-per-wall 1 --iterations 300 --json -o " +
+                                out.string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const auto summary = nlohmann::json::parse(outcome.out);
   ASSERT_EQ(summary.at("cells").size(), 5u);
@@ -142,7 +145,9 @@ TEST(CliSweep, ASweepKilledAtAnyMomentResumesToTheSameBytes) {
       int n = 0;
       for (const char* cell : {"c0", "c1"}) {
         std::error_code error;
-        for (auto it = fs::directory_iterator(out / "runs" / cell, error); !error && it != fs::directory_iterator(); ++it) ++n;
+        for (auto it = fs::directory_iterator(out / "runs" / cell, error); !error && it != fs::directory_iterator();
+             ++it)
+          ++n;
       }
       return n;
     };
@@ -183,14 +188,16 @@ TEST(CliSweep, UnderMpirunAFailureEndsEveryRankAndDifferentSweepsAreRefused) {
   std::ofstream(out / "runs/c0/control_1") << "not a folder";
   const std::string mpirun = "timeout 300 " + std::string(CRUX_MPIEXEC) + " --oversubscribe --allow-run-as-root ";
   const std::string log = out.string() + ".log";
-  int status = std::system((mpirun + "-n 2 " + CRUX_BINARY + " " + sweep_arguments(out, 1) + " > " + log + " 2>&1").c_str());
+  int status =
+      std::system((mpirun + "-n 2 " + CRUX_BINARY + " " + sweep_arguments(out, 1) + " > " + log + " 2>&1").c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2) << "124: a rank hung";
   std::ifstream failed(log);
   const std::string failure((std::istreambuf_iterator<char>(failed)), std::istreambuf_iterator<char>());
   EXPECT_NE(failure.find("control_1: cannot move the finished task here"), std::string::npos) << failure;
 
-  const fs::path other_file = testing::write_temporary("other-sweep.toml", "[experiment]\nwalls = 3\niterations = 1500\n"
+  const fs::path other_file = testing::write_temporary("other-sweep.toml",
+                                                       "[experiment]\nwalls = 3\niterations = 1500\n"
                                                        "plan = false\n[learning]\nepsilon = [0.1, 0.5]\n");
   const fs::path fresh = testing::sweep_scratch("mpi-mismatch");
   status = std::system((mpirun + "-n 1 " + CRUX_BINARY + " " + sweep_arguments(fresh, 1) + " : -n 1 " + CRUX_BINARY +

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,7 +15,6 @@
 
 namespace crux {
 namespace {
-
 
 TEST(Cli, ModelJsonHasTheDocumentedKeys) {
   const testing::Outcome run = testing::run_crux("model --json");
@@ -34,8 +33,9 @@ TEST(Cli, ModelJsonHasTheDocumentedKeys) {
 
 TEST(Cli, BadModelIsOneLineAndExitCode2) {
   const auto bad = testing::write_temporary("cli_bad.urdf", "<robot name='x'><link name='a'/>");
-  for (const std::string& command : std::vector<std::string>{"model --urdf " + bad.string(), "model --urdf /nonexistent.urdf",
-                                    "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --urdf " + bad.string()}) {
+  for (const std::string& command :
+       std::vector<std::string>{"model --urdf " + bad.string(), "model --urdf /nonexistent.urdf",
+                                "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --urdf " + bad.string()}) {
     const testing::Outcome run = testing::run_crux(command);
     EXPECT_EQ(run.exit_code, 2) << command;
     EXPECT_EQ(testing::count_lines(run.err), 1) << run.err;
@@ -45,8 +45,9 @@ TEST(Cli, BadModelIsOneLineAndExitCode2) {
 }
 
 TEST(Cli, BadArgumentsExitWithCode2) {
-  for (const std::string command : {"ik --rh 0.3 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0", "ik --rh 0.3,1.5",
-                                    "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --ik-solver kdl", "frobnicate"}) {
+  for (const std::string command :
+       {"ik --rh 0.3 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0", "ik --rh 0.3,1.5",
+        "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --ik-solver kdl", "frobnicate"}) {
     const testing::Outcome run = testing::run_crux(command);
     EXPECT_EQ(run.exit_code, 2) << command;
     EXPECT_EQ(testing::count_lines(run.err), 1) << run.err;
@@ -62,7 +63,8 @@ TEST(Cli, BadArgumentsExitWithCode2) {
 
 TEST(Cli, IkReportsTheIssuesKeysForBothSolvers) {
   for (const std::string solver : {"paper", "fast"}) {
-    const testing::Outcome run = testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --json --ik-solver " + solver);
+    const testing::Outcome run =
+        testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --json --ik-solver " + solver);
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto json = nlohmann::json::parse(run.out);
     EXPECT_EQ(json["solver"], solver);
@@ -74,7 +76,8 @@ TEST(Cli, IkReportsTheIssuesKeysForBothSolvers) {
 }
 
 TEST(Cli, IkOnUnreachableHoldsSaysSo) {
-  const testing::Outcome run = testing::run_crux("ik --rh 0.3,4.5 --lh 0.9,4.5 --rf 0.3,0 --lf 0.9,0 --json --ik-solver fast");
+  const testing::Outcome run =
+      testing::run_crux("ik --rh 0.3,4.5 --lh 0.9,4.5 --rf 0.3,0 --lf 0.9,0 --json --ik-solver fast");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_FALSE(nlohmann::json::parse(run.out)["reached"].get<bool>());
 }
@@ -94,13 +97,12 @@ TEST(Cli, IkCompareReportsAgreement) {
 TEST(Cli, IkPathIsWrittenAsCsv) {
   const auto out = std::filesystem::temp_directory_path() / "crux-tests" / "path.csv";
   std::filesystem::remove(out);
-  const testing::Outcome run =
-      testing::run_crux("ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --ik-solver paper --path-every 5 -o " + out.string());
+  const testing::Outcome run = testing::run_crux(
+      "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --ik-solver paper --path-every 5 -o " + out.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   ASSERT_TRUE(std::filesystem::exists(out));
   EXPECT_GT(std::filesystem::file_size(out), 100u);
 }
-
 
 // docs/OUTPUTS.md's smallest legal wall, which the wall errors below start from.
 const std::string kFourHoldWall = R"({
@@ -134,20 +136,25 @@ TEST(Cli, TheDocsQuoteErrorLinesAsCruxPrintsThem) {
       {{"README.md"},
        "crux: wall.json: holds[3].radius must be positive, got -0.01",
        "wall show --wall-file wall.json",
-       {{"wall.json", testing::replaced(kFourHoldWall, "0.85, 1.7], \"radius\": 0.04", "0.85, 1.7], \"radius\": -0.01")}}},
+       {{"wall.json",
+         testing::replaced(kFourHoldWall, "0.85, 1.7], \"radius\": 0.04", "0.85, 1.7], \"radius\": -0.01")}}},
       {{"README.md", "docs/DESIGN.md", "docs/OUTPUTS.md"},
        "crux: my.toml: line 3: learning.gamma: must be in [0, 1)",
        train,
        {{"my.toml", "[learning]\nalpha = 0.1\ngamma = 1.5\n"}}},
-      {{"docs/DESIGN.md", "docs/OUTPUTS.md"}, "crux: unknown command 'trian' (did you mean 'train'?) (see 'crux --help')",
-       "trian", {}},
+      {{"docs/DESIGN.md", "docs/OUTPUTS.md"},
+       "crux: unknown command 'trian' (did you mean 'train'?) (see 'crux --help')",
+       "trian",
+       {}},
       {{"docs/OUTPUTS.md"}, "crux: unknown option --runs of 'crux plan' (see 'crux plan --help')", "plan --runs 3", {}},
       {{"docs/OUTPUTS.md"},
        "crux: unknown option --wall-fil of 'crux plan' (did you mean '--wall-file'?) (see 'crux plan --help')",
        "plan --wall-fil wall.json",
        {}},
-      {{"docs/OUTPUTS.md"}, "crux: --ik-solver: unknown solver 'quick' (expected fast or paper)",
-       "plan --wall-seed 3 --ik-solver quick", {}},
+      {{"docs/OUTPUTS.md"},
+       "crux: --ik-solver: unknown solver 'quick' (expected fast or paper)",
+       "plan --wall-seed 3 --ik-solver quick",
+       {}},
       {{"docs/OUTPUTS.md"},
        "crux: my.toml: line 2: crux plan does not take experiment.iterations",
        "plan --wall-seed 3 --config my.toml",
@@ -156,7 +163,9 @@ TEST(Cli, TheDocsQuoteErrorLinesAsCruxPrintsThem) {
        "crux: my.toml: line 2: unknown key walls.sigma (it is now wall.sigma)",
        "plan --wall-seed 3 --config my.toml",
        {{"my.toml", "[walls]\nsigma = 0.1\n"}}},
-      {{"docs/OUTPUTS.md"}, "crux: my.toml: line 2: learning.alpha must be a finite number", train,
+      {{"docs/OUTPUTS.md"},
+       "crux: my.toml: line 2: learning.alpha must be a finite number",
+       train,
        {{"my.toml", "[learning]\nalpha = nan\n"}}},
       {{"docs/OUTPUTS.md"},
        "crux: my.toml: line 5: learning.epsilon must be one value; only crux sweep takes lists",

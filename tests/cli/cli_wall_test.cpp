@@ -51,7 +51,8 @@ TEST(CliWall, ShowDrawsTheGridAsSvg) {
   const auto file = wall_scratch("grid.json");
   ASSERT_EQ(run_crux("wall generate --wall-seed 2 -o " + file.string()).exit_code, 0);
   const auto svg = wall_scratch("grid.svg");
-  const auto outcome = run_crux("wall show --wall-file " + file.string() + " --limb right_hand --at 0.3,1.5 --json -o " + svg.string());
+  const auto outcome =
+      run_crux("wall show --wall-file " + file.string() + " --limb right_hand --at 0.3,1.5 --json -o " + svg.string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const auto json = nlohmann::json::parse(outcome.out);
   EXPECT_EQ(json["grid"]["limb"], "right_hand");
@@ -62,9 +63,11 @@ TEST(CliWall, ShowDrawsTheGridAsSvg) {
 }
 
 TEST(CliWall, BadWallFileIsOneLineAndExitCode2) {
-  const auto file = testing::write_temporary("cli_bad_wall.json", "{\"format\": \"crux-wall\", \"version\": 1,\n  \"holds\": [}");
-  for (const std::string& command : {"wall show --wall-file " + file.string(), std::string("wall show --wall-file /nonexistent/wall.json"),
-                                     "wall show --wall-file " + file.string() + " --limb elbow"}) {
+  const auto file =
+      testing::write_temporary("cli_bad_wall.json", "{\"format\": \"crux-wall\", \"version\": 1,\n  \"holds\": [}");
+  for (const std::string& command :
+       {"wall show --wall-file " + file.string(), std::string("wall show --wall-file /nonexistent/wall.json"),
+        "wall show --wall-file " + file.string() + " --limb elbow"}) {
     const auto outcome = run_crux(command);
     EXPECT_EQ(outcome.exit_code, 2) << command;
     EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
@@ -96,8 +99,8 @@ TEST(CliFilterStats, JsonKeysAreThoseDocsOutputsMdLists) {
 TEST(CliWall, GenerateAndShowCheckTheStartWithTheLearningsIkSettings) {
   const auto file = wall_scratch("strict.json");
   // A grasp sphere of 1 mm: the fast solver stops on its stall rule before reaching it.
-  const auto strict = run_crux("wall generate --wall-seed 4 --ik-grasp-radius 0.001 --ik-fast-max-iterations 3 --json -o " +
-                               file.string());
+  const auto strict = run_crux(
+      "wall generate --wall-seed 4 --ik-grasp-radius 0.001 --ik-fast-max-iterations 3 --json -o " + file.string());
   EXPECT_EQ(strict.exit_code, 3) << strict.err;
   const auto json = nlohmann::json::parse(strict.out);
   EXPECT_FALSE(json["start_reachable"].get<bool>());

@@ -62,13 +62,15 @@ TEST(ConfigurationReacher, ReachEnvelopeChangesNoVerdict) {
     const Wall wall = generate_random_wall(kSeed);
     ConfigurationReacher reacher(model, wall, parameters);
     const Posture from = *reacher.reach_start();
-    IkSettings iterating = parameters.ik;
+    IkParameters iterating = parameters.ik;
     iterating.rule_out_beyond_reach = false;
     BodyData data(model);
     Random random(kSeed);
     int reached = 0, ruled_out = 0;
     for (int sample = 0; sample < samples; ++sample) {
-      const auto any_hold = [&] { return static_cast<int>(random.below(static_cast<std::uint64_t>(wall.hold_count()))); };
+      const auto any_hold = [&] {
+        return static_cast<int>(random.below(static_cast<std::uint64_t>(wall.hold_count())));
+      };
       HoldConfiguration complete = start_configuration(wall);
       if (sample % 3 == 0) {
         for (int& hold : complete.holds) hold = any_hold();

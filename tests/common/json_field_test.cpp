@@ -78,8 +78,9 @@ TEST(JsonField, AValueOutOfRangeIsRefused) {
   EXPECT_EQ(json_problem([&] { root["runs"][2]; }), "runs has 2 values; there is no [2]");
   EXPECT_EQ(json_problem([&] { root["ratio"].unsigned_integer(); }),
             "ratio must be an integer from 0 to 18446744073709551615, got 0.5");
-  EXPECT_EQ(json_problem([&] { JsonField(kJsonFile, OrderedJson::parse("{\"seed\": -1}"))["seed"].unsigned_integer(); }),
-            "seed must be an integer from 0 to 18446744073709551615, got -1");
+  EXPECT_EQ(
+      json_problem([&] { JsonField(kJsonFile, OrderedJson::parse("{\"seed\": -1}"))["seed"].unsigned_integer(); }),
+      "seed must be an integer from 0 to 18446744073709551615, got -1");
   EXPECT_EQ(json_problem([&] { root["runs"][0]["lengths"].expect_size(3); }), "runs[0].lengths has 2 values, not 3");
 }
 

@@ -12,9 +12,7 @@ using testing::wall_with_holds;
 
 // Holds: 0 right hand (0.3, 1.5), 1 left hand (0.9, 1.5), 2 right foot (0.3, 0),
 // 3 left foot (0.9, 0), 4 far up (0.6, 3.0), 5 low middle (0.6, 0.8).
-Wall six_holds() {
-  return wall_with_holds({{0.3, 1.5}, {0.9, 1.5}, {0.3, 0.0}, {0.9, 0.0}, {0.6, 3.0}, {0.6, 0.8}});
-}
+Wall six_holds() { return wall_with_holds({{0.3, 1.5}, {0.9, 1.5}, {0.3, 0.0}, {0.9, 0.0}, {0.6, 3.0}, {0.6, 0.8}}); }
 
 HoldConfiguration config(int rh, int lh, int rf, int lf) {
   HoldConfiguration c;
@@ -51,7 +49,7 @@ TEST(GeometricFilter, EachReadingOfFeetAboveHands) {
   EXPECT_TRUE(feet_not_above_hands(wall, feet_between, R::LowestFootAboveHighestHand));
   EXPECT_FALSE(feet_not_above_hands(wall, feet_between, R::LowestFootAboveLowestHand));
   EXPECT_FALSE(feet_not_above_hands(wall, feet_between, R::HighestFootAboveLowestHand));
-  EXPECT_TRUE(feet_not_above_hands(wall, feet_between, R::MeanFeetAboveMeanHands));  // 1.3 < 1.5
+  EXPECT_TRUE(feet_not_above_hands(wall, feet_between, R::MeanFeetAboveMeanHands));         // 1.3 < 1.5
   EXPECT_FALSE(feet_not_above_hands(wall, config(0, 1, 2, 5), R::MeanFeetAboveMeanHands));  // 1.8 > 1.5
 }
 

@@ -13,7 +13,8 @@ namespace {
 
 TEST(PossibleActions, AreExactlyTheFreeHoldsWhoseConfigurationPasses) {
   const FilterParameters parameters;
-  for (const Wall& wall : {generate_random_wall(3), testing::grid_wall(10, 14, 0.2, 0.2), testing::grid_wall(10, 40, 0.3, 0.5)}) {
+  for (const Wall& wall :
+       {generate_random_wall(3), testing::grid_wall(10, 14, 0.2, 0.2), testing::grid_wall(10, 40, 0.3, 0.5)}) {
     std::vector<int> buffer(wall.hold_count());
     HoldConfiguration state;
     state.holds = wall.start;
@@ -25,7 +26,8 @@ TEST(PossibleActions, AreExactlyTheFreeHoldsWhoseConfigurationPasses) {
         const bool taken = std::find(s.holds.begin(), s.holds.end(), hold) != s.holds.end();
         if (!taken && passes_filter(wall, s.with(free, hold), parameters)) expected.push_back(hold);
       }
-      EXPECT_EQ(std::vector<int>(buffer.begin(), buffer.begin() + count), expected) << wall.name << " " << limb_name(free);
+      EXPECT_EQ(std::vector<int>(buffer.begin(), buffer.begin() + count), expected)
+          << wall.name << " " << limb_name(free);
       EXPECT_GT(count, 0);
     }
   }

@@ -82,7 +82,8 @@ TEST(Reachability, AReachedStartGraspsItsHoldsWithinTheLimits) {
   forward_kinematics(model, data, result.posture);
   const ReachTarget target = reach_target(model, wall, start_configuration(wall), parameters.root);
   EXPECT_TRUE(target_reached(data.points, target, parameters.ik.tolerances));
-  EXPECT_NEAR(grasp_residual(data.points, target), result.residual_m, 1e-12) << "the residual reported is the posture's";
+  EXPECT_NEAR(grasp_residual(data.points, target), result.residual_m, 1e-12)
+      << "the residual reported is the posture's";
   EXPECT_TRUE(within_limits(model, result.posture));
 }
 

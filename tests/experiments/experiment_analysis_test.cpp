@@ -54,15 +54,16 @@ ExperimentResult small_experiment() {
       condition_of({rising_run_of({"rrrrr", "w"}), rising_run_of({}), rising_run_of({"w"})});
   result.conditions[static_cast<int>(Condition::Transfer)] =
       condition_of({rising_run_of({"wrr", "w"}), rising_run_of({"ww", "rrr"}), rising_run_of({"rrrr", "ggg", "w"})});
-  std::vector<RunResult> control{rising_run_of({"wrr", "g"}), rising_run_of({"ww", "rrr"}), rising_run_of({"rrrr", "gww", "w"})};
+  std::vector<RunResult> control{rising_run_of({"wrr", "g"}), rising_run_of({"ww", "rrr"}),
+                                 rising_run_of({"rrrr", "gww", "w"})};
   control[0].iterations[2].hold_id = 99;
   control[2].iterations[5].success = false;
   result.conditions[static_cast<int>(Condition::Control)] = condition_of(std::move(control));
   return result;
 }
 
-ExperimentSettings small_settings() {
-  ExperimentSettings settings;
+ExperimentParameters small_settings() {
+  ExperimentParameters settings;
   settings.learning.iterations = kIterations;
   settings.analysis.beginning = 4;
   settings.analysis.threshold_length = 3;
@@ -119,7 +120,8 @@ TEST(ExperimentAnalysis, FirstDivergenceCountsNeverAsTheRunsLengthPlusOne) {
 
   // Identical pairs throughout: every pair counts as 9.
   ExperimentResult same = small_experiment();
-  same.conditions[static_cast<int>(Condition::Control)].runs = same.conditions[static_cast<int>(Condition::Transfer)].runs;
+  same.conditions[static_cast<int>(Condition::Control)].runs =
+      same.conditions[static_cast<int>(Condition::Transfer)].runs;
   const ExperimentAnalysis never = analyse_experiment(same, small_settings());
   EXPECT_EQ(never.first_divergence, (std::vector<int>{-1, -1, -1}));
   EXPECT_DOUBLE_EQ(never.median_first_divergence, kIterations + 1.0);
@@ -142,7 +144,7 @@ TEST(ExperimentAnalysis, MetricsUseTheSettingsWindowsByHand) {
 
 TEST(ExperimentAnalysis, MetricsAreCompareTransferWithTheExperimentsBootstrapSeed) {
   const ExperimentResult result = small_experiment();
-  const ExperimentSettings settings = small_settings();
+  const ExperimentParameters settings = small_settings();
   const ExperimentAnalysis analysis = analyse_experiment(result, settings);
   const std::vector<MetricComparison> direct =
       compare_transfer(result, {kIterations, 4, 3}, bootstrap_seed(settings), settings.analysis.bootstrap_resamples);
@@ -167,7 +169,7 @@ TEST(ExperimentAnalysis, TransferChoicesProfileTransfersBeginningWindow) {
 }
 
 TEST(ExperimentAnalysis, BootstrapSeedIsAFunctionOfTheExperimentSeedOnly) {
-  ExperimentSettings one, also_one, two;
+  ExperimentParameters one, also_one, two;
   one.seed = also_one.seed = 1;
   two.seed = 2;
   also_one.wall_pairs = 20;

@@ -13,10 +13,10 @@ namespace {
 const ParameterSet kEverything{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"}, {}};
 
 TEST(ExperimentConfig, FileSetsValuesAndTheWrittenConfigReadsBackTheSame) {
-  const auto path = testing::write_temporary(
-      "config.toml",
-      "[experiment]\nwalls = 3\nseeds_per_wall = 2\nseed = 12\n[learning]\nepsilon = 0.2\n"
-      "[ik]\nsolver = \"paper\"\n[wall]\nfinish_height = 2\nseed = 7\n");
+  const auto path =
+      testing::write_temporary("config.toml",
+                               "[experiment]\nwalls = 3\nseeds_per_wall = 2\nseed = 12\n[learning]\nepsilon = 0.2\n"
+                               "[ik]\nsolver = \"paper\"\n[wall]\nfinish_height = 2\nseed = 7\n");
   ExperimentConfig config;
   const ConfigLines lines = apply_config_file(path.string(), config, kEverything, "test");
   EXPECT_EQ(lines.at("learning.epsilon"), 6);
@@ -85,8 +85,8 @@ TEST(ExperimentConfig, TheWrittenConfigHoldsOnlyTheCommandsKeysAndSetValues) {
 }
 
 TEST(ExperimentConfig, TheProvenanceTableIsKeptForTheReplaysCheck) {
-  const auto path = testing::write_temporary("config_provenance.toml",
-                                             "[ik]\nalpha = 0.3\n[provenance]\nurdf_sha256 = \"abc\"\n");
+  const auto path =
+      testing::write_temporary("config_provenance.toml", "[ik]\nalpha = 0.3\n[provenance]\nurdf_sha256 = \"abc\"\n");
   ExperimentConfig config;
   apply_config_file(path.string(), config, ParameterSet{{"ik"}, {}}, "ik");
   EXPECT_EQ(config.recorded_provenance.at("urdf_sha256"), "abc");
@@ -154,21 +154,21 @@ TEST_P(BadConfigFile, IsOneClearInputError) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, BadConfigFile,
-    ::testing::Values(BadConfig{"syntax", "[experiment]\nwalls = = 3\n", "line 2"},
-                      BadConfig{"unknown_key", "[learning]\nalpah = 0.2\n", "unknown key learning.alpah"},
-                      BadConfig{"old_section", "[walls]\nsigma = 0.1\n", "unknown key walls.sigma (it is now wall.sigma)"},
-                      BadConfig{"wrong_type", "[experiment]\nwalls = \"six\"\n", "experiment.walls must be an integer"},
-                      BadConfig{"too_many_runs", "[experiment]\nwalls = 2000000\nseeds_per_wall = 2000000\n",
-                                "at most 1000000 runs"},
-                      BadConfig{"not_a_section", "walls = 3\n", "must be a [section]"},
-                      BadConfig{"bad_solver", "[ik]\nsolver = \"kdl\"\n", "unknown solver 'kdl'"},
-                      BadConfig{"bad_range", "[learning]\ngamma = 1.5\n", "learning.gamma"},
-                      BadConfig{"negative_sigma", "[wall]\nsigma = -1.0\n", "wall.sigma"},
-                      BadConfig{"negative_grasp", "[ik]\ngrasp_radius = -0.04\n", "ik.grasp_radius"},
-                      BadConfig{"negative_seed", "[experiment]\nseed = -4\n", "an integer from 0"},
-                      BadConfig{"signed_seed_text", "[wall]\nseed = \"-4\"\n", "an integer from 0"},
-                      BadConfig{"int_out_of_range", "[experiment]\nplan_max_solves = 9999999999\n",
-                                "an integer from -2147483648 to 2147483647"}),
+    ::testing::Values(
+        BadConfig{"syntax", "[experiment]\nwalls = = 3\n", "line 2"},
+        BadConfig{"unknown_key", "[learning]\nalpah = 0.2\n", "unknown key learning.alpah"},
+        BadConfig{"old_section", "[walls]\nsigma = 0.1\n", "unknown key walls.sigma (it is now wall.sigma)"},
+        BadConfig{"wrong_type", "[experiment]\nwalls = \"six\"\n", "experiment.walls must be an integer"},
+        BadConfig{"too_many_runs", "[experiment]\nwalls = 2000000\nseeds_per_wall = 2000000\n", "at most 1000000 runs"},
+        BadConfig{"not_a_section", "walls = 3\n", "must be a [section]"},
+        BadConfig{"bad_solver", "[ik]\nsolver = \"kdl\"\n", "unknown solver 'kdl'"},
+        BadConfig{"bad_range", "[learning]\ngamma = 1.5\n", "learning.gamma"},
+        BadConfig{"negative_sigma", "[wall]\nsigma = -1.0\n", "wall.sigma"},
+        BadConfig{"negative_grasp", "[ik]\ngrasp_radius = -0.04\n", "ik.grasp_radius"},
+        BadConfig{"negative_seed", "[experiment]\nseed = -4\n", "an integer from 0"},
+        BadConfig{"signed_seed_text", "[wall]\nseed = \"-4\"\n", "an integer from 0"},
+        BadConfig{"int_out_of_range", "[experiment]\nplan_max_solves = 9999999999\n",
+                  "an integer from -2147483648 to 2147483647"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(ExperimentConfig, MissingFileIsAnInputError) {
@@ -220,7 +220,8 @@ TEST(ExperimentConfig, RangesThatWouldBreakWallsOrCodesAreRefusedNamingTheKey) {
 }
 
 TEST(ExperimentConfig, AListTakesTheChosenValueAndOnlyWhenChosen) {
-  const std::string text = "[experiment]\nwalls = 2\n[learning]\nepsilon = [0.1, 0.2, 0.4]\nplanner = [\"uniform\", \"prioritized\"]\n";
+  const std::string text =
+      "[experiment]\nwalls = 2\n[learning]\nepsilon = [0.1, 0.2, 0.4]\nplanner = [\"uniform\", \"prioritized\"]\n";
   const std::vector<ListedKey> listed = listed_keys(text, "sweep.toml", kEverything);
   ASSERT_EQ(listed.size(), 2u);
   EXPECT_EQ(listed[0].key, "learning.epsilon");
@@ -228,7 +229,8 @@ TEST(ExperimentConfig, AListTakesTheChosenValueAndOnlyWhenChosen) {
   EXPECT_EQ(listed[1].key, "learning.planner");
   EXPECT_EQ(listed[1].values, 2u);
   ExperimentConfig config;
-  apply_config_text(text, "sweep.toml", config, kEverything, "sweep", {{"learning.epsilon", 2}, {"learning.planner", 1}});
+  apply_config_text(text, "sweep.toml", config, kEverything, "sweep",
+                    {{"learning.epsilon", 2}, {"learning.planner", 1}});
   finalize_config(config);
   EXPECT_DOUBLE_EQ(config.settings.learning.dyna.epsilon, 0.4);
   EXPECT_EQ(config.planner, "prioritized");
@@ -253,9 +255,11 @@ TEST(ExperimentConfig, ListsThatMakeNoSweepAreRefused) {
     }
     return std::string("accepted");
   };
-  EXPECT_EQ(problem("[experiment]\nthreads = [1, 2]\n"), "sweep.toml: line 2: experiment.threads takes one value, not a list");
+  EXPECT_EQ(problem("[experiment]\nthreads = [1, 2]\n"),
+            "sweep.toml: line 2: experiment.threads takes one value, not a list");
   EXPECT_EQ(problem("[learning]\nepsilon = []\n"), "sweep.toml: line 2: learning.epsilon lists no value");
-  EXPECT_EQ(problem("[experiment]\nruns = [2, 3]\n"), "sweep.toml: line 2: experiment.runs takes one value, not a list");
+  EXPECT_EQ(problem("[experiment]\nruns = [2, 3]\n"),
+            "sweep.toml: line 2: experiment.runs takes one value, not a list");
   ExperimentConfig config;
   EXPECT_THROW(apply_config_text("[learning]\nepsilon = [\"a\"]\n", "sweep.toml", config, kEverything, "sweep",
                                  {{"learning.epsilon", 0}}),

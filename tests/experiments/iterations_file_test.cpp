@@ -28,7 +28,8 @@ std::string iterations_problem(const std::string& name, const std::string& text)
 
 TEST(IterationsFile, ReadsEveryRow) {
   const auto file = testing::write_temporary(
-      "iterations_good.csv", kIterationsCsvHeader + "1,0,w_greedy,12,1,4.5,-1\n2,0,random,7,0,0,-10\n3,1,g_greedy,3,1,-2.25,100\n");
+      "iterations_good.csv",
+      kIterationsCsvHeader + "1,0,w_greedy,12,1,4.5,-1\n2,0,random,7,0,0,-10\n3,1,g_greedy,3,1,-2.25,100\n");
   const std::vector<RunStep> steps = read_iterations_file(file);
   ASSERT_EQ(steps.size(), 3u);
   EXPECT_EQ(steps[0].iteration, 1);

@@ -117,7 +117,8 @@ TEST(LearningRun, ARunResumedFromAnyCheckpointEndsAsTheUnbrokenRun) {
     const RunResult trained = run_learning(model, generate_random_wall(4), parameters, 9);
     for (const QTable* initial : {static_cast<const QTable*>(nullptr), &trained.q_grid}) {
       std::vector<std::pair<int, std::string>> states;
-      RunCheckpoints checkpoints{700, [&](std::string state, int done) { states.emplace_back(done, std::move(state)); }, {}, {}};
+      RunCheckpoints checkpoints{
+          700, [&](std::string state, int done) { states.emplace_back(done, std::move(state)); }, {}, {}};
       const RunResult unbroken = run_learning(model, wall, parameters, 5, initial, {}, &checkpoints);
       ASSERT_EQ(states.size(), 3u) << "at 700, 1400 and 2100; none at the end";
       EXPECT_EQ(states.back().first, 2100);

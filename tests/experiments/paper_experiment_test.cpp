@@ -8,10 +8,10 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
-#include "reports/output_folder.hpp"
-#include "reports/summary.hpp"
 #include "experiments/experiment_config.hpp"
 #include "experiments/table_one.hpp"
+#include "reports/output_folder.hpp"
+#include "reports/summary.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
@@ -19,8 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-ExperimentSettings small_settings(int threads) {
-  ExperimentSettings settings;
+ExperimentParameters small_settings(int threads) {
+  ExperimentParameters settings;
   settings.wall_pairs = 2;
   settings.learning.iterations = 400;
   settings.seed = 77;
@@ -44,7 +44,7 @@ TEST(PaperExperiment, SameSeedGivesIdenticalFilesWithOneOrTwoThreads) {
   const BodyModel& model = testing::human_model();
   const fs::path one = fresh_directory("threads1"), two = fresh_directory("threads2");
   for (const auto& [directory, threads] : {std::pair{one, 1}, std::pair{two, 2}}) {
-    ExperimentSettings settings = small_settings(threads);
+    ExperimentParameters settings = small_settings(threads);
     settings.seeds_per_wall = 2;
     const auto write = [&](const fs::path& folder, const ExperimentResult& result) {
       const ExperimentAnalysis analysis = analyse_experiment(result, settings);
@@ -99,7 +99,7 @@ TEST(PaperExperiment, ControlRunsOnTransferWallsAndTransferStartsFromTraining) {
 
 TEST(PaperExperiment, SeedsPerWallShareTheWallAndFormItsCluster) {
   const BodyModel& model = testing::human_model();
-  ExperimentSettings settings = small_settings(2);
+  ExperimentParameters settings = small_settings(2);
   settings.wall_pairs = 2;
   settings.seeds_per_wall = 2;
   settings.learning.iterations = 150;
@@ -114,7 +114,7 @@ TEST(PaperExperiment, SeedsPerWallShareTheWallAndFormItsCluster) {
     EXPECT_NE(c.learning_seeds[0], c.learning_seeds[1]);
   }
   // With one seed per wall, run r's learning seed does not depend on the number of walls.
-  ExperimentSettings four = small_settings(2), two = small_settings(2);
+  ExperimentParameters four = small_settings(2), two = small_settings(2);
   four.wall_pairs = 4;
   four.learning.iterations = two.learning.iterations = 10;
   EXPECT_EQ(run_paper_experiment(model, four).conditions[0].learning_seeds[1],

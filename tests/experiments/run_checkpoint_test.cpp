@@ -10,7 +10,8 @@ namespace {
 
 TEST(RunCheckpoint, TheFileGivesBackTheStateOfItsOwnRunOnly) {
   const std::string state("\0\1binary\xff", 10);
-  const auto file = testing::write_temporary("checkpoint.bin", checkpoint_file_bytes("[experiment]\nseed = 5\n", state));
+  const auto file =
+      testing::write_temporary("checkpoint.bin", checkpoint_file_bytes("[experiment]\nseed = 5\n", state));
   EXPECT_EQ(read_checkpoint(file, "[experiment]\nseed = 5\n"), state);
   try {
     read_checkpoint(file, "[experiment]\nseed = 6\n");

@@ -73,8 +73,9 @@ TEST(RunConfigFile, AValueOfTheWrongTypeNamesItsLine) {
   const InputError e = run_config_error("run_config_type.toml", edited_run_config("columns = 3", "columns = \"3\""));
   EXPECT_TRUE(e.source().ends_with("run_config_type.toml")) << e.source();
   EXPECT_EQ(e.problem(), "line 5: grid.columns must be an integer");
-  EXPECT_EQ(run_config_error("run_config_inf.toml", edited_run_config("tile_width = 0.3", "tile_width = inf")).problem(),
-            "line 7: grid.tile_width must be a finite number");
+  EXPECT_EQ(
+      run_config_error("run_config_inf.toml", edited_run_config("tile_width = 0.3", "tile_width = inf")).problem(),
+      "line 7: grid.tile_width must be a finite number");
   EXPECT_EQ(run_config_error("run_config_unknown.toml", edited_run_config("[grid]\n", "[grid]\nsize = 3\n")).problem(),
             "line 5: unknown key grid.size");
 }
@@ -89,7 +90,8 @@ TEST(RunConfigFile, AValueOutOfRangeNamesItsLineAndKey) {
   e = run_config_error("run_config_tiles.toml", edited_run_config("columns = 3", "columns = 1000"));
   EXPECT_TRUE(e.source().ends_with(": line 5: grid.columns")) << e.source();
   EXPECT_EQ(e.problem(), "the grid has too many tiles for 32-bit agent-state codes");
-  e = run_config_error("run_config_anchor.toml", edited_run_config("right_hand_anchor_column = 2", "right_hand_anchor_column = 3"));
+  e = run_config_error("run_config_anchor.toml",
+                       edited_run_config("right_hand_anchor_column = 2", "right_hand_anchor_column = 3"));
   EXPECT_TRUE(e.source().ends_with(": line 9: grid.right_hand_anchor_column")) << e.source();
   EXPECT_EQ(e.problem(), "every grid anchor must be a tile of the grid");
 }

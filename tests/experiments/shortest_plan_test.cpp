@@ -43,7 +43,7 @@ TEST(ShortestPlan, IsShortest) {
 TEST(ShortestPlan, StopsAtItsBudgetOfSolves) {
   const BodyModel& model = testing::human_model();
   const Wall wall = generate_random_wall(3);  // its climb takes about 34000 solves to find
-  PlanSettings settings;
+  PlanParameters settings;
   settings.max_ik_solves = 1000;
   const Plan plan = shortest_plan(model, wall, ClimbingParameters{}, settings);
   EXPECT_FALSE(plan.found);
@@ -63,7 +63,7 @@ TEST(ShortestPlan, AnExhaustedSearchIsNotALimit) {
   EXPECT_FALSE(plan.found);
   EXPECT_FALSE(plan.stopped_at_limit);
   EXPECT_GT(plan.expanded_states, 1u);
-  EXPECT_LT(plan.ik_solves, static_cast<std::size_t>(PlanSettings{}.max_ik_solves));
+  EXPECT_LT(plan.ik_solves, static_cast<std::size_t>(PlanParameters{}.max_ik_solves));
 }
 
 }  // namespace

@@ -89,10 +89,10 @@ TEST(Statistics, PearsonCorrelationByHand) {
 
 TEST(Statistics, PearsonCorrelationUndefinedIsNaN) {
   EXPECT_TRUE(std::isnan(pearson_correlation({}, {})));
-  EXPECT_TRUE(std::isnan(pearson_correlation({1}, {2})));                // fewer than 2 pairs
-  EXPECT_TRUE(std::isnan(pearson_correlation({3, 3, 3}, {1, 2, 4})));    // a has no variance
+  EXPECT_TRUE(std::isnan(pearson_correlation({1}, {2})));                 // fewer than 2 pairs
+  EXPECT_TRUE(std::isnan(pearson_correlation({3, 3, 3}, {1, 2, 4})));     // a has no variance
   EXPECT_TRUE(std::isnan(pearson_correlation({1, 2, 4}, {-2, -2, -2})));  // b has no variance
-  EXPECT_FALSE(std::isnan(pearson_correlation({1, 2}, {2, 1})));        // 2 pairs suffice: r = -1
+  EXPECT_FALSE(std::isnan(pearson_correlation({1, 2}, {2, 1})));          // 2 pairs suffice: r = -1
   EXPECT_DOUBLE_EQ(pearson_correlation({1, 2}, {2, 1}), -1.0);
 }
 
@@ -105,8 +105,8 @@ TEST(Statistics, PercentileIsNumpyType7) {
   EXPECT_NEAR(percentile(x, 0.9), 3.7, 1e-12);  // h = 2.7: 3 + 0.7 (4 - 3)
   EXPECT_DOUBLE_EQ(percentile(x, 1.0), 4.0);
   const std::vector<double> y{10, 20, 40};
-  EXPECT_DOUBLE_EQ(percentile(y, 0.25), 15.0);  // h = 0.5: 10 + 0.5 (20 - 10)
-  EXPECT_NEAR(percentile(y, 0.8), 32.0, 1e-12);  // h = 1.6: 20 + 0.6 (40 - 20)
+  EXPECT_DOUBLE_EQ(percentile(y, 0.25), 15.0);     // h = 0.5: 10 + 0.5 (20 - 10)
+  EXPECT_NEAR(percentile(y, 0.8), 32.0, 1e-12);    // h = 1.6: 20 + 0.6 (40 - 20)
   EXPECT_NEAR(percentile(y, 0.025), 10.5, 1e-12);  // h = 0.05: 10 + 0.05 (20 - 10)
   EXPECT_DOUBLE_EQ(percentile(std::vector<double>{7}, 0.3), 7.0);
 }

@@ -66,7 +66,8 @@ std::string summary_problem(const std::string& name, const std::string& summary,
 }
 
 // The same for kSummaryDocument with `edit` applied.
-std::string summary_edit_problem(const std::string& name, const SummaryEdit& edit, const SummaryReader& read = read_paper_summary_of) {
+std::string summary_edit_problem(const std::string& name, const SummaryEdit& edit,
+                                 const SummaryReader& read = read_paper_summary_of) {
   OrderedJson summary = kSummaryDocument;
   edit(summary);
   return summary_problem(name, summary.dump(), read);
@@ -108,13 +109,17 @@ TEST(SummaryFile, RefusesAFileThatIsNotACruxSummary) {
   EXPECT_EQ(summary_problem("summary_array", "[1]", document), "the top level must be an object, got array");
   EXPECT_EQ(summary_problem("summary_no_format", "{}", document),
             "not a crux summary: format is missing, not \"crux-summary\"");
-  EXPECT_EQ(summary_edit_problem("summary_format", [](OrderedJson& s) { s["format"] = "crux-wall"; }, document),
+  EXPECT_EQ(summary_edit_problem(
+                "summary_format", [](OrderedJson& s) { s["format"] = "crux-wall"; }, document),
             "not a crux summary: format is \"crux-wall\", not \"crux-summary\"");
-  EXPECT_EQ(summary_edit_problem("summary_version", [](OrderedJson& s) { s["version"] = 2; }, document),
+  EXPECT_EQ(summary_edit_problem(
+                "summary_version", [](OrderedJson& s) { s["version"] = 2; }, document),
             "version 2 is not the version 3 this crux reads; write the folder again");
-  EXPECT_EQ(summary_edit_problem("summary_version_text", [](OrderedJson& s) { s["version"] = "3"; }, document),
+  EXPECT_EQ(summary_edit_problem(
+                "summary_version_text", [](OrderedJson& s) { s["version"] = "3"; }, document),
             "version must be an integer from -2147483648 to 2147483647, got string");
-  EXPECT_EQ(summary_edit_problem("summary_no_version", [](OrderedJson& s) { s.erase("version"); }, document),
+  EXPECT_EQ(summary_edit_problem(
+                "summary_no_version", [](OrderedJson& s) { s.erase("version"); }, document),
             "version is missing");
   const fs::path nowhere = testing::temporary_path("summary_nowhere");
   EXPECT_THROW(read_summary(nowhere), InputError);
@@ -124,49 +129,68 @@ TEST(SummaryFile, SharedKeysHaveOneRule) {
   const auto seeds = [](const fs::path& folder) {
     summary_seeds_per_wall(read_summary(folder), (folder / "summary.json").string());
   };
-  EXPECT_EQ(summary_edit_problem("summary_seeds_zero", [](OrderedJson& s) { s["seeds_per_wall"] = 0; }, seeds),
+  EXPECT_EQ(summary_edit_problem(
+                "summary_seeds_zero", [](OrderedJson& s) { s["seeds_per_wall"] = 0; }, seeds),
             "seeds_per_wall must be an integer from 1 to 1000000, got 0");
-  EXPECT_EQ(summary_edit_problem("summary_seeds_large", [](OrderedJson& s) { s["seeds_per_wall"] = 1000001; }, seeds),
+  EXPECT_EQ(summary_edit_problem(
+                "summary_seeds_large", [](OrderedJson& s) { s["seeds_per_wall"] = 1000001; }, seeds),
             "seeds_per_wall must be an integer from 1 to 1000000, got 1000001");
-  EXPECT_EQ(summary_edit_problem("summary_seeds_text", [](OrderedJson& s) { s["seeds_per_wall"] = "2"; }, seeds),
+  EXPECT_EQ(summary_edit_problem(
+                "summary_seeds_text", [](OrderedJson& s) { s["seeds_per_wall"] = "2"; }, seeds),
             "seeds_per_wall must be an integer from 1 to 1000000, got string");
-  EXPECT_EQ(summary_edit_problem("summary_seeds_missing", [](OrderedJson& s) { s.erase("seeds_per_wall"); }, seeds),
+  EXPECT_EQ(summary_edit_problem(
+                "summary_seeds_missing", [](OrderedJson& s) { s.erase("seeds_per_wall"); }, seeds),
             "seeds_per_wall is missing");
-  const auto kind = [](const fs::path& folder) { summary_kind(read_summary(folder), (folder / "summary.json").string()); };
-  EXPECT_EQ(summary_edit_problem("summary_kind", [](OrderedJson& s) { s["kind"] = "sweep"; }, kind),
+  const auto kind = [](const fs::path& folder) {
+    summary_kind(read_summary(folder), (folder / "summary.json").string());
+  };
+  EXPECT_EQ(summary_edit_problem(
+                "summary_kind", [](OrderedJson& s) { s["kind"] = "sweep"; }, kind),
             "kind is \"sweep\", not \"experiment\" or \"run\"");
-  EXPECT_EQ(summary_edit_problem("summary_no_kind", [](OrderedJson& s) { s.erase("kind"); }, kind), "kind is missing");
+  EXPECT_EQ(summary_edit_problem(
+                "summary_no_kind", [](OrderedJson& s) { s.erase("kind"); }, kind),
+            "kind is missing");
 }
 
 TEST(SummaryFile, APaperSummaryNamesTheKeyAtFault) {
   EXPECT_EQ(summary_edit_problem("summary_no_iterations", [](OrderedJson& s) { s.erase("iterations"); }),
             "iterations is missing");
-  EXPECT_EQ(summary_edit_problem("summary_no_wall_pair", [](OrderedJson& s) { s["run_facts"]["training"][1].erase("wall_pair"); }),
+  EXPECT_EQ(summary_edit_problem("summary_no_wall_pair",
+                                 [](OrderedJson& s) { s["run_facts"]["training"][1].erase("wall_pair"); }),
             "run_facts.training[1].wall_pair is missing");
-  EXPECT_EQ(summary_edit_problem("summary_length_text", [](OrderedJson& s) { s["episode_lengths"]["training"][0][1] = "one"; }),
+  EXPECT_EQ(summary_edit_problem("summary_length_text",
+                                 [](OrderedJson& s) { s["episode_lengths"]["training"][0][1] = "one"; }),
             "episode_lengths.training[0][1] must be an integer from 1 to 2147483647, got string");
-  EXPECT_EQ(summary_edit_problem("summary_description", [](OrderedJson& s) { s["transfer_vs_control"]["zeta"]["description"] = 4; }),
+  EXPECT_EQ(summary_edit_problem("summary_description",
+                                 [](OrderedJson& s) { s["transfer_vs_control"]["zeta"]["description"] = 4; }),
             "transfer_vs_control.zeta.description must be a string, got 4");
-  EXPECT_EQ(summary_edit_problem("summary_lengths_array", [](OrderedJson& s) { s["episode_lengths"] = OrderedJson::array(); }),
+  EXPECT_EQ(summary_edit_problem("summary_lengths_array",
+                                 [](OrderedJson& s) { s["episode_lengths"] = OrderedJson::array(); }),
             "episode_lengths must be an object, got array");
 }
 
 TEST(SummaryFile, APaperSummaryRefusesValuesOutOfRange) {
-  EXPECT_EQ(summary_edit_problem("summary_length_zero", [](OrderedJson& s) { s["episode_lengths"]["training"][1][0] = 0; }),
-            "episode_lengths.training[1][0] must be an integer from 1 to 2147483647, got 0");
-  EXPECT_EQ(summary_edit_problem("summary_wall_pair", [](OrderedJson& s) { s["run_facts"]["training"][0]["wall_pair"] = -1; }),
+  EXPECT_EQ(
+      summary_edit_problem("summary_length_zero", [](OrderedJson& s) { s["episode_lengths"]["training"][1][0] = 0; }),
+      "episode_lengths.training[1][0] must be an integer from 1 to 2147483647, got 0");
+  EXPECT_EQ(summary_edit_problem("summary_wall_pair",
+                                 [](OrderedJson& s) { s["run_facts"]["training"][0]["wall_pair"] = -1; }),
             "run_facts.training[0].wall_pair must be an integer from 0 to 2147483647, got -1");
   EXPECT_EQ(summary_edit_problem("summary_iterations", [](OrderedJson& s) { s["iterations"] = -4; }),
             "iterations must be an integer from 0 to 2147483647, got -4");
-  EXPECT_EQ(summary_edit_problem("summary_short_map", [](OrderedJson& s) { s["qgrid_maps"]["training"]["left_hand"] = {1.0}; }),
+  EXPECT_EQ(summary_edit_problem("summary_short_map",
+                                 [](OrderedJson& s) { s["qgrid_maps"]["training"]["left_hand"] = {1.0}; }),
             "qgrid_maps.training.left_hand has 1 values, not 2");
   EXPECT_EQ(summary_edit_problem("summary_facts", [](OrderedJson& s) { s["run_facts"]["training"].erase(1); }),
             "run_facts.training has 1 values, not 2");
-  EXPECT_EQ(summary_edit_problem("summary_interval", [](OrderedJson& s) {
-              s["transfer_vs_control"]["zeta"]["transfer_minus_control"]["ci95_t_over_walls"] = {1.0};
-            }),
-            "transfer_vs_control.zeta.transfer_minus_control.ci95_t_over_walls has 1 values, not 2");
-  EXPECT_EQ(summary_edit_problem("summary_no_condition", [](OrderedJson& s) { s["episode_lengths"] = OrderedJson::object(); }),
+  EXPECT_EQ(
+      summary_edit_problem("summary_interval",
+                           [](OrderedJson& s) {
+                             s["transfer_vs_control"]["zeta"]["transfer_minus_control"]["ci95_t_over_walls"] = {1.0};
+                           }),
+      "transfer_vs_control.zeta.transfer_minus_control.ci95_t_over_walls has 1 values, not 2");
+  EXPECT_EQ(summary_edit_problem("summary_no_condition",
+                                 [](OrderedJson& s) { s["episode_lengths"] = OrderedJson::object(); }),
             "episode_lengths holds none of training, transfer, control");
 }
 

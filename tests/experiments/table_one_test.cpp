@@ -28,7 +28,7 @@ RunResult run_with(std::vector<IterationRecord> iterations) {
 // where "|" marks the end of a 3-iteration beginning window.
 std::vector<RunResult> two_runs() {
   return {run_with({action(W, true, 0.10), action(R, false), action(G, true, 0.02), action(R, true, 0.04),
-                  action(W, true, 0.06), action(R, false)}),
+                    action(W, true, 0.06), action(R, false)}),
           run_with({action(R, true, 0.02), action(R, false), action(G, false), action(W, true, 0.12)})};
 }
 

@@ -12,13 +12,16 @@ RunResult run_of(const std::vector<std::string>& episodes, int tail = 0) {
   RunResult run;
   for (std::size_t e = 0; e < episodes.size(); ++e) {
     for (std::size_t i = 0; i < episodes[e].size(); ++i) {
-      const Regime regime = episodes[e][i] == 'w' ? Regime::WGreedy : episodes[e][i] == 'g' ? Regime::GGreedy : Regime::Random;
+      const Regime regime = episodes[e][i] == 'w'   ? Regime::WGreedy
+                            : episodes[e][i] == 'g' ? Regime::GGreedy
+                                                    : Regime::Random;
       const bool last = i + 1 == episodes[e].size();
       run.iterations.push_back({static_cast<int>(e), regime, static_cast<int>(i + 1), true, 0.0, last ? 100.0 : -1.0});
     }
     run.episode_lengths.push_back(static_cast<int>(episodes[e].size()));
   }
-  for (int i = 0; i < tail; ++i) run.iterations.push_back({static_cast<int>(episodes.size()), Regime::Random, 1, false, 0.0, -1.0});
+  for (int i = 0; i < tail; ++i)
+    run.iterations.push_back({static_cast<int>(episodes.size()), Regime::Random, 1, false, 0.0, -1.0});
   return run;
 }
 

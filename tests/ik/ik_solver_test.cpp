@@ -15,8 +15,8 @@ using testing::human_model;
 
 constexpr IkSolverKind kSolvers[] = {IkSolverKind::Paper, IkSolverKind::Fast};
 
-IkSettings settings_for(IkSolverKind kind) {
-  IkSettings settings;
+IkParameters settings_for(IkSolverKind kind) {
+  IkParameters settings;
   settings.solver = kind;
   return settings;
 }
@@ -25,9 +25,9 @@ class EachSolver : public ::testing::TestWithParam<IkSolverKind> {};
 
 TEST_P(EachSolver, NeverLeavesTheJointLimitsAlongThePath) {
   const BodyModel& model = human_model();
-  const IkSettings settings = settings_for(GetParam());
+  const IkParameters settings = settings_for(GetParam());
   constexpr std::uint64_t seed = 77;
-  const auto queries = climbing_reach_queries(model, IkSettings{}, 200, seed);
+  const auto queries = climbing_reach_queries(model, IkParameters{}, 200, seed);
   BodyData data(model);
   std::vector<Posture> path;
   for (std::size_t n = 0; n < queries.size(); ++n) {
@@ -39,8 +39,8 @@ TEST_P(EachSolver, NeverLeavesTheJointLimitsAlongThePath) {
 
 TEST_P(EachSolver, ReachesTargetsBuiltByForwardKinematicsNearTheStart) {
   const BodyModel& model = human_model();
-  const IkSettings settings = settings_for(GetParam());
-  const Posture start = start_layout_posture(model, IkSettings{});
+  const IkParameters settings = settings_for(GetParam());
+  const Posture start = start_layout_posture(model, IkParameters{});
   BodyData data(model);
   constexpr std::uint64_t seed = 2026;
   Random random(seed);
@@ -63,9 +63,9 @@ TEST_P(EachSolver, ReachesTargetsBuiltByForwardKinematicsNearTheStart) {
 
 TEST_P(EachSolver, GivesUpWithinItsTimeOutWhenHoldsAreThreeMetresApart) {
   const BodyModel& model = human_model();
-  IkSettings settings = settings_for(GetParam());
+  IkParameters settings = settings_for(GetParam());
   settings.rule_out_beyond_reach = false;  // the solver's own ways of giving up
-  const Posture start = start_layout_posture(model, IkSettings{});
+  const Posture start = start_layout_posture(model, IkParameters{});
   ReachTarget target;
   target.hold_centres = start_layout_holds();
   for (int hand = 0; hand < 2; ++hand) target.hold_centres[hand].z() += 3.0;  // hands 4.5 m up, feet at 0
@@ -76,7 +76,7 @@ TEST_P(EachSolver, GivesUpWithinItsTimeOutWhenHoldsAreThreeMetresApart) {
   EXPECT_EQ(result.posture, start) << "Algorithm 1 returns G_init when it gives up";
   if (GetParam() == IkSolverKind::Paper) {
     EXPECT_LT(result.iterations, settings.paper.max_iterations(settings.time_step_s) / 10) << "the stall exit";
-    IkSettings as_written = settings;
+    IkParameters as_written = settings;
     as_written.paper.stall_iterations = 0;
     const IkResult timed_out = solve_ik(model, data, start, target, as_written);
     EXPECT_FALSE(timed_out.reached);
@@ -93,10 +93,10 @@ TEST_P(EachSolver, GivesUpWithinItsTimeOutWhenHoldsAreThreeMetresApart) {
 // a full solve and G_init.
 TEST_P(EachSolver, GivesUpBeforeIteratingWhenAHoldIsBeyondReach) {
   const BodyModel& model = human_model();
-  const IkSettings settings = settings_for(GetParam());
-  IkSettings iterating = settings;
+  const IkParameters settings = settings_for(GetParam());
+  IkParameters iterating = settings;
   iterating.rule_out_beyond_reach = false;
-  const Posture start = start_layout_posture(model, IkSettings{});
+  const Posture start = start_layout_posture(model, IkParameters{});
   ReachTarget target;
   target.hold_centres = start_layout_holds();
   for (int hand = 0; hand < 2; ++hand) target.hold_centres[hand].z() += 3.0;
@@ -116,8 +116,8 @@ TEST_P(EachSolver, GivesUpBeforeIteratingWhenAHoldIsBeyondReach) {
 
 TEST_P(EachSolver, SameInputsGiveBitIdenticalOutputs) {
   const BodyModel& model = human_model();
-  const IkSettings settings = settings_for(GetParam());
-  const auto queries = climbing_reach_queries(model, IkSettings{}, 40, 5);
+  const IkParameters settings = settings_for(GetParam());
+  const auto queries = climbing_reach_queries(model, IkParameters{}, 40, 5);
   for (const ReachQuery& q : queries) {
     BodyData first_data(model), second_data(model);
     const IkResult first = solve_ik(model, first_data, q.start, q.target, settings);
@@ -131,7 +131,7 @@ TEST_P(EachSolver, SameInputsGiveBitIdenticalOutputs) {
 
 TEST_P(EachSolver, RecordsThePathEveryKIterations) {
   const BodyModel& model = human_model();
-  const IkSettings settings = settings_for(GetParam());
+  const IkParameters settings = settings_for(GetParam());
   const Posture start = standing_posture({0.3, 0.6, 1.0});
   ReachTarget target;
   target.hold_centres = start_layout_holds();
@@ -158,8 +158,8 @@ INSTANTIATE_TEST_SUITE_P(Solvers, EachSolver, ::testing::ValuesIn(kSolvers),
 TEST(PaperSolver, TheStallExitKeepsTheVerdictsAndPostures) {
   const BodyModel& model = human_model();
   constexpr std::uint64_t seed = 4242;
-  const auto queries = climbing_reach_queries(model, IkSettings{}, 2000, seed);
-  IkSettings with_exit = settings_for(IkSolverKind::Paper), as_written = with_exit;
+  const auto queries = climbing_reach_queries(model, IkParameters{}, 2000, seed);
+  IkParameters with_exit = settings_for(IkSolverKind::Paper), as_written = with_exit;
   as_written.paper.stall_iterations = 0;
   as_written.rule_out_beyond_reach = false;
   BodyData data(model);

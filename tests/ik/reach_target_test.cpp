@@ -206,7 +206,7 @@ TEST(ReachEnvelope, NeverRulesOutATargetThatAPosturePasses) {
 TEST(ReachEnvelope, KeepsEveryReachedQueryAndRulesOutTheFarOnes) {
   const BodyModel& model = testing::human_model();
   const ReachEnvelope& envelope = model.reach_envelope;
-  IkSettings settings;
+  IkParameters settings;
   settings.rule_out_beyond_reach = false;  // the solver iterates on every query
   const auto queries = climbing_reach_queries(model, settings, 400, kQuerySeed);
   BodyData data(model);

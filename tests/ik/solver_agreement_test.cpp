@@ -11,8 +11,8 @@ namespace {
 // reachability verdicts agree on at least 97 %.
 TEST(SolverAgreement, AtLeast97PercentOver2000ClimbingQueries) {
   const BodyModel& model = testing::human_model();
-  const IkSettings settings;
-  IkSettings walk = settings;
+  const IkParameters settings;
+  IkParameters walk = settings;
   walk.solver = IkSolverKind::Paper;  // as crux ik-compare does by default
   constexpr std::uint64_t seed = 1;
   const auto queries = climbing_reach_queries(model, walk, 2000, seed);

@@ -88,7 +88,8 @@ TEST(ActionSelection, TiesAreBrokenUniformly) {
   constexpr std::uint64_t seed = 4;
   const SelectionStreams streams(seed);
   int first = 0;
-  for (int i = 0; i < 10000; ++i) first += select_action(wall, grid, kState, kCandidates, 0.0, streams, i).candidate == 1;
+  for (int i = 0; i < 10000; ++i)
+    first += select_action(wall, grid, kState, kCandidates, 0.0, streams, i).candidate == 1;
   EXPECT_NEAR(first / 10000.0, 0.5, 0.03) << "seed " << seed;
 }
 

@@ -25,7 +25,7 @@ Experience transition(StateCode s, ActionCode a) {
 
 TEST(DynaQ, PlanningConvergesToTheKnownOptimalValuesInBothTables) {
   constexpr std::uint64_t seed = 8;
-  DynaQAgent agent(2, 2, DynaSettings{}, seed);
+  DynaQAgent agent(2, 2, DynaParameters{}, seed);
   const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
   agent.observe({A, A}, both);
   agent.observe({B, B}, both);
@@ -45,7 +45,7 @@ TEST(DynaQ, PlanningConvergesToTheKnownOptimalValuesInBothTables) {
 }
 
 TEST(DynaQ, OneRealStepPlusPlanningOnASingleExperience) {
-  DynaSettings settings;
+  DynaParameters settings;
   settings.planning_steps = 3;
   DynaQAgent agent(2, 2, settings, 1);
   const ActionCandidate one[1] = {{0, 0, true}};
@@ -60,7 +60,7 @@ TEST(DynaQ, OneRealStepPlusPlanningOnASingleExperience) {
 }
 
 TEST(DynaQ, AGridActionOutsideTheGridUpdatesOnlyTheWallTable) {
-  DynaSettings settings;
+  DynaParameters settings;
   settings.planning_steps = 0;
   DynaQAgent agent(2, 2, settings, 1);
   agent.learn({A, A, 1, kNoAction, -1000.0, A, A});
@@ -79,51 +79,51 @@ QTable transferred_table() {
 // An agent restored from a checkpoint continues as the saved one does: the same choices
 // and the same tables after more steps, with either planner.
 TEST(DynaQ, ARestoredAgentContinuesAsTheSavedOne) {
-  for (const TransferMode mode : {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior,
-                                  TransferMode::Seeded, TransferMode::Shaping})
-  for (const Planner planner : {Planner::Uniform, Planner::Prioritized}) {
-    SCOPED_TRACE(transfer_mode_name(mode));
-    DynaSettings settings;
-    settings.planner = planner;
-    settings.epsilon = 0.3;
-    settings.transfer = mode;
-    // A transferred table, given again to the restored agent as a run's resume does.
-    DynaQAgent agent(2, 2, settings, 11);
-    agent.set_q_grid(transferred_table());
-    const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
-    agent.observe({A, A}, both);
-    agent.observe({B, B}, both);
-    StateCode s = A;
-    const auto step = [&](DynaQAgent& a, StateCode& state) {
-      const ActionChoice choice = a.choose({state, state}, both);
-      const Experience e = transition(state, static_cast<ActionCode>(choice.candidate));
-      a.learn(e);
-      state = e.next_wall_state;
-      return choice.candidate;
-    };
-    for (int i = 0; i < 30; ++i) step(agent, s);
-    CheckpointWriter out;
-    agent.save_state(out);
-    const std::string bytes = out.take();
-    DynaQAgent restored(2, 2, settings, 11);
-    restored.set_q_grid(transferred_table());
-    CheckpointReader in(bytes, "test");
-    restored.load_state(in);
-    EXPECT_TRUE(in.at_end());
-    StateCode r = s;
-    for (int i = 0; i < 60; ++i) ASSERT_EQ(step(restored, r), step(agent, s)) << "step " << i;
-    EXPECT_EQ(restored.planning_updates(), agent.planning_updates());
-    for (const StateCode state : {A, B}) {
-      for (const ActionCode action : {0, 1}) {
-        EXPECT_EQ(restored.q_wall().value(state, action), agent.q_wall().value(state, action));
-        EXPECT_EQ(restored.q_grid().visits(state, action), agent.q_grid().visits(state, action));
+  for (const TransferMode mode :
+       {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior, TransferMode::Seeded, TransferMode::Shaping})
+    for (const Planner planner : {Planner::Uniform, Planner::Prioritized}) {
+      SCOPED_TRACE(transfer_mode_name(mode));
+      DynaParameters settings;
+      settings.planner = planner;
+      settings.epsilon = 0.3;
+      settings.transfer = mode;
+      // A transferred table, given again to the restored agent as a run's resume does.
+      DynaQAgent agent(2, 2, settings, 11);
+      agent.set_q_grid(transferred_table());
+      const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
+      agent.observe({A, A}, both);
+      agent.observe({B, B}, both);
+      StateCode s = A;
+      const auto step = [&](DynaQAgent& a, StateCode& state) {
+        const ActionChoice choice = a.choose({state, state}, both);
+        const Experience e = transition(state, static_cast<ActionCode>(choice.candidate));
+        a.learn(e);
+        state = e.next_wall_state;
+        return choice.candidate;
+      };
+      for (int i = 0; i < 30; ++i) step(agent, s);
+      CheckpointWriter out;
+      agent.save_state(out);
+      const std::string bytes = out.take();
+      DynaQAgent restored(2, 2, settings, 11);
+      restored.set_q_grid(transferred_table());
+      CheckpointReader in(bytes, "test");
+      restored.load_state(in);
+      EXPECT_TRUE(in.at_end());
+      StateCode r = s;
+      for (int i = 0; i < 60; ++i) ASSERT_EQ(step(restored, r), step(agent, s)) << "step " << i;
+      EXPECT_EQ(restored.planning_updates(), agent.planning_updates());
+      for (const StateCode state : {A, B}) {
+        for (const ActionCode action : {0, 1}) {
+          EXPECT_EQ(restored.q_wall().value(state, action), agent.q_wall().value(state, action));
+          EXPECT_EQ(restored.q_grid().visits(state, action), agent.q_grid().visits(state, action));
+        }
       }
     }
-  }
 }
 
 TEST(DynaQ, SeededModeStartsANewStatesUntriedPairsAtTheTransferredValues) {
-  DynaSettings settings;
+  DynaParameters settings;
   settings.transfer = TransferMode::Seeded;
   DynaQAgent agent(2, 2, settings, 3);
   agent.set_q_grid(transferred_table());
@@ -145,7 +145,7 @@ TEST(DynaQ, SeededModeStartsANewStatesUntriedPairsAtTheTransferredValues) {
 }
 
 TEST(DynaQ, ShapingModeAddsGammaPhiNextMinusPhiToQWallRewardsOnly) {
-  DynaSettings settings;
+  DynaParameters settings;
   settings.transfer = TransferMode::Shaping;
   settings.planning_steps = 0;
   DynaQAgent agent(2, 2, settings, 3);
@@ -161,7 +161,7 @@ TEST(DynaQ, ShapingModeAddsGammaPhiNextMinusPhiToQWallRewardsOnly) {
 }
 
 TEST(DynaQ, ShapingAlsoShapesThePlanningUpdates) {
-  DynaSettings settings;
+  DynaParameters settings;
   settings.transfer = TransferMode::Shaping;
   settings.planning_steps = 3;
   DynaQAgent agent(2, 2, settings, 3);
@@ -177,7 +177,7 @@ TEST(DynaQ, ShapingAlsoShapesThePlanningUpdates) {
 }
 
 TEST(DynaQ, InformedModeKeepsGGreedyOffAPairThatFailedHere) {
-  DynaSettings settings;
+  DynaParameters settings;
   settings.transfer = TransferMode::Informed;
   settings.epsilon = 0.0;
   settings.planning_steps = 0;

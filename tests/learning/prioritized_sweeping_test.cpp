@@ -40,7 +40,7 @@ TEST(PrioritizedSweeping, QueuePopsHighestFirstRaisesAndNeverLowers) {
 //   pop (1,0) (2.5): Q(1,0) = 8.75, queued at 1.25; (0,0) raised to 6.875 - 4.06640625.
 //   pop (0,0): Q(0,0) = 4.06640625 + 0.5 x 2.80859375 = 5.470703125.
 TEST(PrioritizedSweeping, DynaSweepsPredecessorsAsComputedByHand) {
-  DynaSettings settings;
+  DynaParameters settings;
   settings.rates = {0.5, 0.9};
   settings.planning_steps = 5;
   settings.planner = Planner::Prioritized;
@@ -60,7 +60,7 @@ TEST(PrioritizedSweeping, DynaSweepsPredecessorsAsComputedByHand) {
 }
 
 TEST(PrioritizedSweeping, AQueueThatRunsDryEndsThePlanningEarly) {
-  DynaSettings settings;
+  DynaParameters settings;
   settings.rates = {1.0, 0.9};  // a full backup: nothing is left to replay
   settings.planning_steps = 5;
   settings.planner = Planner::Prioritized;

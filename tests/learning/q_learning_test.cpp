@@ -9,8 +9,8 @@ namespace {
 
 TEST(QLearning, UpdateMatchesHandComputedNumbers) {
   QTable q(3);
-  q.set_value(7, 1, 5.0);   // best available next value
-  q.set_value(7, 2, 9.0);   // larger but not available in the next state
+  q.set_value(7, 1, 5.0);  // best available next value
+  q.set_value(7, 2, 9.0);  // larger but not available in the next state
   const std::vector<ActionCode> next_available{0, 1};
   const QLearningRates rates{0.1, 0.9};
   // 0 + 0.1 * (-1 + 0.9 * 5 - 0) = 0.35

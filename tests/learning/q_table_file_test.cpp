@@ -101,19 +101,17 @@ std::string flip_a_value_bit(const std::string& g) {
 }
 std::string extra_bytes(const std::string& g) { return g + "xx"; }
 
-INSTANTIATE_TEST_SUITE_P(Cases, BadQTableFile,
-                         ::testing::Values(BadFile{"truncated", truncate_half, "truncated"},
-                                           BadFile{"header_only", truncate_header, "truncated"},
-                                           BadFile{"no_checksum", drop_checksum, "truncated"},
-                                           BadFile{"foreign", foreign, "not a crux Q-table file"},
-                                           BadFile{"wall_file", wall_json, "not a crux Q-table file"},
-                                           BadFile{"empty", empty, "empty"},
-                                           BadFile{"wrong_version", future_version, "unsupported Q-table file version 3"},
-                                           BadFile{"first_version", first_version, "does not record the state space"},
-                                           BadFile{"huge_space", huge_space, "a state space name of"},
-                                           BadFile{"corrupted", flip_a_value_bit, "checksum"},
-                                           BadFile{"trailing", extra_bytes, "trailing data"}),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadQTableFile,
+    ::testing::Values(
+        BadFile{"truncated", truncate_half, "truncated"}, BadFile{"header_only", truncate_header, "truncated"},
+        BadFile{"no_checksum", drop_checksum, "truncated"}, BadFile{"foreign", foreign, "not a crux Q-table file"},
+        BadFile{"wall_file", wall_json, "not a crux Q-table file"}, BadFile{"empty", empty, "empty"},
+        BadFile{"wrong_version", future_version, "unsupported Q-table file version 3"},
+        BadFile{"first_version", first_version, "does not record the state space"},
+        BadFile{"huge_space", huge_space, "a state space name of"}, BadFile{"corrupted", flip_a_value_bit, "checksum"},
+        BadFile{"trailing", extra_bytes, "trailing data"}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 TEST(QTableFile, AnotherStateSpaceIsRefusedNamingBoth) {
   const auto path = testing::write_temporary("q_space.bin", "");

@@ -6,9 +6,8 @@ namespace crux {
 namespace {
 
 TEST(TransferMode, EveryModeParsesBackFromItsName) {
-  for (const TransferMode mode :
-       {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior, TransferMode::Seeded,
-        TransferMode::Shaping}) {
+  for (const TransferMode mode : {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior,
+                                  TransferMode::Seeded, TransferMode::Shaping}) {
     EXPECT_EQ(parse_transfer_mode(transfer_mode_name(mode)), mode);
     EXPECT_NE(std::string(transfer_mode_names()).find(transfer_mode_name(mode)), std::string::npos);
   }

@@ -41,7 +41,8 @@ TEST(EpisodeReplay, TheLastEpisodeReplayedIsTheRecordedClimb) {
     EXPECT_EQ(replayed.steps[i].iteration, folder.last.steps[i].iteration);
   }
   ASSERT_EQ(replayed.postures.size(), folder.last.postures.size());
-  for (std::size_t i = 0; i < replayed.postures.size(); ++i) EXPECT_EQ(replayed.postures[i], folder.last.postures[i]) << i;
+  for (std::size_t i = 0; i < replayed.postures.size(); ++i)
+    EXPECT_EQ(replayed.postures[i], folder.last.postures[i]) << i;
 }
 
 // Episode 1, iterations.csv's episode 0 (--climb counts from 1, as Fig. 4 does), ends

@@ -97,8 +97,9 @@ TEST(HtmlReport, ARunPageHasNoTableOneAndNoReplayWhenThereIsNoClimb) {
 TEST(HtmlReport, TheReplaySaysWhichClimbItShowsAndWhy) {
   ReportPage page = experiment_page();
   page.replay_title = "training_0 on 'w': the climb of episode 42";
-  page.replay_reason = "the last completed episode (episode 42), since the greedy policy did not reach the top "
-                       "within 500 actions (experiment.greedy_cap)";
+  page.replay_reason =
+      "the last completed episode (episode 42), since the greedy policy did not reach the top "
+      "within 500 actions (experiment.greedy_cap)";
   const std::string html = html_report(page);
   EXPECT_NE(html.find("<h2>Replay: training_0 on &apos;w&apos;: the climb of episode 42</h2>\n<p>Replayed: the last "
                       "completed episode (episode 42), since the greedy policy did not reach the top within 500 "

@@ -17,7 +17,7 @@ TEST(IkDescription, AResultIsDescribedAtItsPosture) {
   target.hold_centres = start_layout_holds();
   target.root = root_target(model, target.hold_centres);
   BodyData data(model);
-  const IkSettings settings;
+  const IkParameters settings;
   const IkResult result = solve_ik(model, data, standing_posture(target.root), target, settings);
   ASSERT_TRUE(result.reached);
   const auto json = ik_result_json(model, IkSolverKind::Fast, target, result);

@@ -40,9 +40,10 @@ TEST(OutputFolder, ARunFolderHoldsTheRunsFilesItsWallConfigAndSummary) {
   const ExperimentResult result =
       single_run_result(run_learning(model, wall, learning, 8), wall, 3, 8, Condition::Training, 0.0);
   const fs::path folder = testing::temporary_path("run_folder");
-  write_run_folder(folder, result, model, GridParameters{}, "# config\n", summary_json(result, nullptr, ExperimentSettings{}, {}));
-  for (const char* file : {"iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "wall.json", "config.toml",
-                           "summary.json"}) {
+  write_run_folder(folder, result, model, GridParameters{}, "# config\n",
+                   summary_json(result, nullptr, ExperimentParameters{}, {}));
+  for (const char* file :
+       {"iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "wall.json", "config.toml", "summary.json"}) {
     EXPECT_TRUE(fs::exists(folder / file)) << file;
   }
   EXPECT_EQ(read_text(folder / "config.toml"), "# config\n");
@@ -50,7 +51,8 @@ TEST(OutputFolder, ARunFolderHoldsTheRunsFilesItsWallConfigAndSummary) {
   const auto summary = nlohmann::json::parse(read_text(folder / "summary.json"));
   EXPECT_EQ(summary["run_facts"]["training"][0]["learning_seed"], 8);
   std::size_t leftovers = 0;
-  for (const auto& entry : fs::directory_iterator(folder)) leftovers += entry.path().string().find(".tmp.") != std::string::npos;
+  for (const auto& entry : fs::directory_iterator(folder))
+    leftovers += entry.path().string().find(".tmp.") != std::string::npos;
   EXPECT_EQ(leftovers, 0u) << "no temporary file left behind";
 }
 

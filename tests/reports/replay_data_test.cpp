@@ -14,8 +14,8 @@
 #include "configurations/hold_configuration.hpp"
 #include "configurations/reachability.hpp"
 #include "reports/run_folder.hpp"
-#include "support/trained_run.hpp"
 #include "support/test_models.hpp"
+#include "support/trained_run.hpp"
 
 namespace crux {
 namespace {
@@ -32,7 +32,7 @@ Posture frame(const nlohmann::ordered_json& replay, int index) {
 // posture (as rounded), an unreachable one keeps the body still.
 TEST(ReplayData, MovesCoverTheFramesAndEndOnTheRecordedPostures) {
   const RunFolder folder = testing::read_trained_run();
-  const ReplaySettings settings;
+  const ReplayOptions settings;
   const RecordedClimb& climb = folder.last;
   const auto replay = replay_data(testing::human_model(), folder.wall, climb, {}, "test", "test", settings);
   const auto& moves = replay["moves"];
@@ -73,8 +73,8 @@ TEST(ReplayData, EachReachedPostureGraspsTheConfigurationShown) {
         configuration.holds[limb] = folder.wall.index_of(move["configuration"][limb_name(static_cast<Limb>(limb))]);
       }
       forward_kinematics(model, data, climb->postures[++posture]);
-      EXPECT_TRUE(target_reached(data.points, reach_target(model, folder.wall, configuration, reach.root),
-                                 reach.ik.tolerances))
+      EXPECT_TRUE(
+          target_reached(data.points, reach_target(model, folder.wall, configuration, reach.root), reach.ik.tolerances))
           << climb->kind << " climb, move to hold " << move["hold"];
     }
     EXPECT_EQ(posture + 1, climb->postures.size()) << climb->kind;

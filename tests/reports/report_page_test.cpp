@@ -94,11 +94,12 @@ TEST(ReportPage, WhatIsWrittenIsSummarised) {
   EXPECT_EQ(json["replay_frames"], 977);
   EXPECT_EQ(written_report_text(page, "training_0", "r.html", 1150000, 0.25),
             "wrote r.html (1.1 MB, 5 figures, a replay of training_0 with 3 moves) in 0.25 s\n"
-            "replayed: " + page.replay_reason + "\n");
+            "replayed: " +
+                page.replay_reason + "\n");
   page.figures.resize(1);
   page.replay["moves"] = nlohmann::json::array({1});
-  EXPECT_EQ(written_report_text(page, "training_0", "r.html", 1150000, 0.25).rfind(
-                "wrote r.html (1.1 MB, 1 figure, a replay of training_0 with 1 move) in 0.25 s\n", 0),
+  EXPECT_EQ(written_report_text(page, "training_0", "r.html", 1150000, 0.25)
+                .rfind("wrote r.html (1.1 MB, 1 figure, a replay of training_0 with 1 move) in 0.25 s\n", 0),
             0u);
   page.replay_episode = -1;
   EXPECT_EQ(written_report_json(page, "training_0", "r.html", 10, 0.1)["replay_episode"], -1) << "the greedy climb";

@@ -140,7 +140,9 @@ TEST(RunFiles, AnEmptyRunWritesHeadersAndAnEmptyTable) {
   EXPECT_EQ(read_text(dir / "iterations.csv"), "iteration,episode,regime,hold,success,root_rise_cm,reward\n");
   EXPECT_EQ(read_text(dir / "episodes.csv"), "episode,length\n");
   EXPECT_EQ(lines_of(read_text(dir / "climb.csv")).size(), 1u) << "the header only";
-  EXPECT_EQ(load_q_table((dir / "q_grid.bin").string(), empty.q_grid.action_count(), describe_grid(GridParameters{})).state_count(), 0u);
+  EXPECT_EQ(load_q_table((dir / "q_grid.bin").string(), empty.q_grid.action_count(), describe_grid(GridParameters{}))
+                .state_count(),
+            0u);
 }
 
 }  // namespace

@@ -127,8 +127,8 @@ TEST(RunFolder, AReportedRunIsTheFolderOrARunOfAPaperFolder) {
 // condition's consecutive runs as one range.
 TEST(RunFolder, AMissingRunOfAPaperFolderListsTheRunsItHas) {
   const fs::path paper = testing::temporary_path("reported_runs_" + std::to_string(::getpid()));
-  for (const char* run : {"training_0", "training_1", "transfer_0", "transfer_1", "control_0", "control_1",
-                          "control_3", "training_x"}) {
+  for (const char* run :
+       {"training_0", "training_1", "transfer_0", "transfer_1", "control_0", "control_1", "control_3", "training_x"}) {
     fs::create_directories(paper / "runs" / run);
   }
   std::ofstream(paper / "runs" / "transfer_2") << "a file, not a run";

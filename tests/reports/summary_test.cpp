@@ -7,8 +7,8 @@
 namespace crux {
 namespace {
 
-ExperimentSettings small_settings() {
-  ExperimentSettings settings;
+ExperimentParameters small_settings() {
+  ExperimentParameters settings;
   settings.wall_pairs = 2;
   settings.learning.iterations = 400;
   settings.seed = 77;
@@ -35,7 +35,7 @@ RunResult hand_made_run() {
 
 TEST(Summary, ExperimentHasTheDocumentedKeys) {
   const BodyModel& model = testing::human_model();
-  const ExperimentSettings settings = small_settings();
+  const ExperimentParameters settings = small_settings();
   const ExperimentResult result = run_paper_experiment(model, settings);
   const ExperimentAnalysis analysis = analyse_experiment(result, settings);
   const auto summary = summary_json(result, &analysis, settings, {});
@@ -62,7 +62,7 @@ TEST(Summary, ExperimentHasTheDocumentedKeys) {
 }
 
 TEST(Summary, ARunHasTheExperimentsShapeForItsOneCondition) {
-  ExperimentSettings settings;
+  ExperimentParameters settings;
   settings.analysis.beginning = 3;
   Provenance provenance;
   provenance.wall_seed = 5;
@@ -90,10 +90,10 @@ TEST(Summary, ARunHasTheExperimentsShapeForItsOneCondition) {
     for (const auto& item : j.items()) names.push_back(item.key());
     return names;
   };
-  EXPECT_EQ(keys(summary), (std::vector<std::string>{"format", "version", "kind", "provenance", "seed", "wall_pairs",
-                                                     "seeds_per_wall", "runs_per_condition", "iterations",
-                                                     "beginning_iterations", "threshold_length", "solver",
-                                                     "table1", "episode_lengths", "run_facts", "qgrid_maps", "walls"}));
+  EXPECT_EQ(keys(summary),
+            (std::vector<std::string>{"format", "version", "kind", "provenance", "seed", "wall_pairs", "seeds_per_wall",
+                                      "runs_per_condition", "iterations", "beginning_iterations", "threshold_length",
+                                      "solver", "table1", "episode_lengths", "run_facts", "qgrid_maps", "walls"}));
 }
 
 TEST(Summary, AWallFromAFileHasNoSeed) {
@@ -101,7 +101,7 @@ TEST(Summary, AWallFromAFileHasNoSeed) {
   provenance.wall_file = "/walls/w.json";
   const ExperimentResult run =
       single_run_result(hand_made_run(), generate_random_wall(5), std::nullopt, 11, Condition::Training, 0.0);
-  const auto summary = summary_json(run, nullptr, ExperimentSettings{}, provenance);
+  const auto summary = summary_json(run, nullptr, ExperimentParameters{}, provenance);
   EXPECT_TRUE(summary["walls"][0]["seed"].is_null());
   EXPECT_TRUE(summary["run_facts"]["training"][0]["wall_seed"].is_null());
 }

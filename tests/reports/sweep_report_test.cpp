@@ -25,8 +25,8 @@ TEST(SweepReport, ACellIsTitledByItsListedValues) {
 
 TEST(SweepReport, ThePageTabulatesEachCellAndEmbedsTheFiguresInOrder) {
   const auto summary = nlohmann::ordered_json::parse(kSummary);
-  const std::string html = sweep_report_html(
-      summary, {"<?xml version=\"1.0\"?>\n<svg id=\"first\"></svg>", "<svg id=\"second\"></svg>"});
+  const std::string html =
+      sweep_report_html(summary, {"<?xml version=\"1.0\"?>\n<svg id=\"first\"></svg>", "<svg id=\"second\"></svg>"});
   EXPECT_NE(html.find("-110.5 [-264.2, +43]<br>p = 0.152 (Holm 0.303)"), std::string::npos) << html;
   EXPECT_NE(html.find("+12<br>p = 1 (Holm 1)"), std::string::npos) << "no interval: the mean and p only";
   EXPECT_NE(html.find("length of the &lt;first&gt; episode"), std::string::npos) << "descriptions are escaped";

@@ -10,7 +10,7 @@ namespace crux {
 namespace {
 
 TEST(TableOneText, PrintsThePapersValuesInBrackets) {
-  ExperimentSettings settings;
+  ExperimentParameters settings;
   settings.wall_pairs = 1;
   const ExperimentResult empty;
   const std::string text = table_one_text(empty, settings);
@@ -38,14 +38,12 @@ RunResult run_of(std::vector<IterationRecord> iterations) {
 //   control:  r ok 4 cm
 ExperimentResult one_run_each() {
   ExperimentResult result;
-  result.conditions[static_cast<int>(Condition::Training)].runs = {
-      run_of({{0, Regime::WGreedy, 1, true, 0.05, -1.0},
-              {0, Regime::Random, 2, false, 0.0, -1000.0},
-              {0, Regime::WGreedy, 3, true, 0.15, -1.0}})};
+  result.conditions[static_cast<int>(Condition::Training)].runs = {run_of({{0, Regime::WGreedy, 1, true, 0.05, -1.0},
+                                                                           {0, Regime::Random, 2, false, 0.0, -1000.0},
+                                                                           {0, Regime::WGreedy, 3, true, 0.15, -1.0}})};
   result.conditions[static_cast<int>(Condition::Transfer)].runs = {
       run_of({{0, Regime::GGreedy, 1, true, 0.02, -1.0}, {0, Regime::GGreedy, 2, false, 0.0, -1000.0}})};
-  result.conditions[static_cast<int>(Condition::Control)].runs = {
-      run_of({{0, Regime::Random, 1, true, 0.04, -1.0}})};
+  result.conditions[static_cast<int>(Condition::Control)].runs = {run_of({{0, Regime::Random, 1, true, 0.04, -1.0}})};
   return result;
 }
 
@@ -60,7 +58,7 @@ std::string spaces(int n) { return std::string(n, ' '); }
 // actions per run are right-aligned in 16. A cell without a value (no successes for a
 // displacement, no actions for a rate) is "-".
 TEST(TableOneText, OursBesideThePapersByHand) {
-  ExperimentSettings settings;
+  ExperimentParameters settings;
   settings.wall_pairs = 1;
   settings.analysis.beginning = 2;
   const std::string text = table_one_text(one_run_each(), settings);

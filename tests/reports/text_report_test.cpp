@@ -35,8 +35,8 @@ TEST(TextReport, ARunOfOneIterationIsSingular) {
 
 // An experiment of 1 wall pair x 1 seed: a count of 1 takes the singular, and where a
 // number cannot be given (walls for 80 % power, a correlation) the text says why.
-ExperimentSettings one_wall_settings(int wall_pairs) {
-  ExperimentSettings settings;
+ExperimentParameters one_wall_settings(int wall_pairs) {
+  ExperimentParameters settings;
   settings.wall_pairs = wall_pairs;
   settings.learning.iterations = 30;
   settings.analysis.beginning = 1;
@@ -48,7 +48,7 @@ ExperimentSettings one_wall_settings(int wall_pairs) {
 }
 
 TEST(TextReport, OneWallAndOneSeedAreSingularAndTheMissingPowerSaysWhy) {
-  const ExperimentSettings settings = one_wall_settings(1);
+  const ExperimentParameters settings = one_wall_settings(1);
   const ExperimentResult result = run_paper_experiment(testing::human_model(), settings);
   const std::string text = experiment_text(result, analyse_experiment(result, settings), settings);
   EXPECT_NE(text.find("over 1 run per condition; beginning = first 1 iteration\n"), std::string::npos) << text;
@@ -71,7 +71,7 @@ TEST(TextReport, OneWallAndOneSeedAreSingularAndTheMissingPowerSaysWhy) {
 // With transfer's runs standing in for control's, every difference is 0: no number of
 // walls detects it.
 TEST(TextReport, NoDifferenceHasNoPowerAndSaysSo) {
-  const ExperimentSettings settings = one_wall_settings(2);
+  const ExperimentParameters settings = one_wall_settings(2);
   ExperimentResult result = run_paper_experiment(testing::human_model(), settings);
   result.conditions[static_cast<int>(Condition::Control)] = result.conditions[static_cast<int>(Condition::Transfer)];
   const std::string text = experiment_text(result, analyse_experiment(result, settings), settings);

@@ -1,5 +1,5 @@
-#include "body/urdf_loader.hpp"
 #include "support/test_models.hpp"
+#include "body/urdf_loader.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -24,7 +24,8 @@ std::string human_urdf_text() {
 Posture random_posture(const BodyModel& model, Random& random, const Eigen::Vector3d& root) {
   Posture g;
   for (int i = 0; i < kRootDof; ++i) g[i] = root[i] + random.uniform(-0.5, 0.5);
-  for (int i = kRootDof; i < kConfigurationDof; ++i) g[i] = random.uniform(model.lower_limits[i], model.upper_limits[i]);
+  for (int i = kRootDof; i < kConfigurationDof; ++i)
+    g[i] = random.uniform(model.lower_limits[i], model.upper_limits[i]);
   return g;
 }
 

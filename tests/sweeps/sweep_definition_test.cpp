@@ -13,13 +13,13 @@ const std::string kSweepFile =
 
 ExperimentConfig resolved(const ListChoice& choice) {
   ExperimentConfig config;
-  apply_config_text(kSweepFile, "sweep.toml", config, kSweepParameters, "sweep", choice);
+  apply_config_text(kSweepFile, "sweep.toml", config, kSweepKeys, "sweep", choice);
   finalize_config(config);
   return config;
 }
 
 TEST(SweepDefinition, CellsTakeEveryCombinationAndTheSweepFileKeepsTheLists) {
-  const SweepGrid grid{listed_keys(kSweepFile, "sweep.toml", kSweepParameters)};
+  const SweepGrid grid{listed_keys(kSweepFile, "sweep.toml", kSweepKeys)};
   const SweepDefinition definition = define_sweep(grid, resolved);
   ASSERT_EQ(definition.plan.cells.size(), 4u);
   EXPECT_EQ(definition.plan.keys, (std::vector<std::string>{"learning.epsilon", "learning.planner"}));
@@ -32,7 +32,7 @@ TEST(SweepDefinition, CellsTakeEveryCombinationAndTheSweepFileKeepsTheLists) {
   EXPECT_EQ(text.find("threads ="), std::string::npos) << "results do not depend on the threads";
   EXPECT_NE(text.find("[provenance]"), std::string::npos);
   // The written file defines the same sweep.
-  const SweepGrid again{listed_keys(text, "written.toml", kSweepParameters)};
+  const SweepGrid again{listed_keys(text, "written.toml", kSweepKeys)};
   EXPECT_EQ(again.cells(), 4u);
 }
 

@@ -44,8 +44,8 @@ TEST(SweepPlan, CellsThatDrawOtherWallsHaveTheirOwnWallGroup) {
   std::vector<SweepCell> cells;
   for (const char* sigma : {"0.05", "0.1"}) {
     for (const char* epsilon : {"0.1", "0.2"}) {
-      cells.push_back(sweep_cell(small_sweep_config(1, 100, fmt::format("[wall]\nsigma = {}\n", sigma)),
-                                 {epsilon, sigma}));
+      cells.push_back(
+          sweep_cell(small_sweep_config(1, 100, fmt::format("[wall]\nsigma = {}\n", sigma)), {epsilon, sigma}));
     }
   }
   const SweepPlan plan = plan_sweep({"learning.epsilon", "wall.sigma"}, std::move(cells));
@@ -61,7 +61,8 @@ TEST(SweepPlan, CellsThatDrawOtherWallsHaveTheirOwnWallGroup) {
 }
 
 TEST(SweepPlan, AGroupDrawsAsManyWallsAsItsLargestCell) {
-  std::vector<SweepCell> cells{sweep_cell(small_sweep_config(1, 100), {"1"}), sweep_cell(small_sweep_config(3, 100), {"3"})};
+  std::vector<SweepCell> cells{sweep_cell(small_sweep_config(1, 100), {"1"}),
+                               sweep_cell(small_sweep_config(3, 100), {"3"})};
   const SweepPlan plan = plan_sweep({"experiment.walls"}, std::move(cells));
   EXPECT_EQ(plan.wall_groups, 1u);
   EXPECT_EQ(plan.tasks.size() - plan.run_tasks(), 6u);

@@ -64,7 +64,8 @@ TEST(SweepResults, ACellsAnalysisIsCruxPapersOnTheSameRuns) {
   EXPECT_EQ(rows[0].rfind("cell,condition,run,wall_pair,seed_index,wall_seed,learning_seed,", 0), 0u) << rows[0];
   // Row 4 is transfer run 0: its seeds are crux paper's.
   const ConditionResult& transfer = paper.conditions[static_cast<int>(Condition::Transfer)];
-  EXPECT_EQ(rows[4].rfind(fmt::format("0,transfer,0,0,0,{},{},", paper.walls[3].seed, transfer.learning_seeds[0]), 0), 0u)
+  EXPECT_EQ(rows[4].rfind(fmt::format("0,transfer,0,0,0,{},{},", paper.walls[3].seed, transfer.learning_seeds[0]), 0),
+            0u)
       << rows[4];
   // Every fraction is the shortest text that reads back to it (std::to_chars' form):
   // 196.6, not the 17 digits 196.59999999999999.
@@ -85,8 +86,8 @@ TEST(SweepResults, ACellsAnalysisIsCruxPapersOnTheSameRuns) {
 TEST(SweepResults, PValuesAreHolmAdjustedOverTheCells) {
   std::vector<SweepCell> cells;
   for (const char* epsilon : {"0.05", "0.3", "0.6"}) {
-    cells.push_back(sweep_cell(small_sweep_config(2, 800, fmt::format("[learning]\nepsilon = {}\n", epsilon)),
-                               {epsilon}));
+    cells.push_back(
+        sweep_cell(small_sweep_config(2, 800, fmt::format("[learning]\nepsilon = {}\n", epsilon)), {epsilon}));
   }
   SweepJob job;
   job.plan = plan_sweep({"learning.epsilon"}, std::move(cells));

@@ -57,8 +57,8 @@ TEST(SweepTask, AWallTaskWritesTheWallAndItsFacts) {
   const nlohmann::json facts = nlohmann::json::parse(in);
   EXPECT_EQ(facts.at("seed"), drawn.seed);
   EXPECT_EQ(facts.at("filtered_pairs"), filtered_pairs(drawn.wall, config.settings.learning.climbing.filter));
-  const Plan plan_now = shortest_plan(testing::human_model(), drawn.wall, config.settings.learning.climbing,
-                                      config.settings.plan_search);
+  const Plan plan_now =
+      shortest_plan(testing::human_model(), drawn.wall, config.settings.learning.climbing, config.settings.plan_search);
   EXPECT_EQ(facts.at("plan"), nlohmann::json::parse(plan_json(drawn.wall, plan_now).dump()))
       << "experiment.plan asks for the exact climb";
 }

@@ -14,7 +14,8 @@ namespace {
 std::vector<SweepTask> independent_tasks(std::size_t n, int transfer_every = 0) {
   std::vector<SweepTask> tasks(n);
   // Every `transfer_every`-th task waits for the one before it, as transfer runs do.
-  for (std::size_t t = 1; transfer_every > 0 && t < n; t += transfer_every) tasks[t].depends_on = static_cast<int>(t - 1);
+  for (std::size_t t = 1; transfer_every > 0 && t < n; t += transfer_every)
+    tasks[t].depends_on = static_cast<int>(t - 1);
   return tasks;
 }
 
@@ -47,14 +48,13 @@ TEST(SweepWorkers, AFailingTaskStopsTheHandOutAndIsRethrown) {
     SweepSchedule schedule(tasks, std::vector<bool>(tasks.size(), false));
     std::atomic<int> started{0};
     std::atomic<long> last_started{-1};
-    EXPECT_THROW(coordinate_sweep(
-                     schedule, threads,
-                     [&](std::size_t t) {
-                       ++started;
-                       last_started = static_cast<long>(t);
-                       if (t == 3) throw std::runtime_error("disk full");
-                     },
-                     nullptr, {}),
+    EXPECT_THROW(coordinate_sweep(schedule, threads,
+                                  [&](std::size_t t) {
+                                    ++started;
+                                    last_started = static_cast<long>(t);
+                                    if (t == 3) throw std::runtime_error("disk full");
+                                  },
+                                  nullptr, {}),
                  std::runtime_error)
         << threads << " threads";
     EXPECT_FALSE(schedule.done()) << threads << " threads";
@@ -123,16 +123,21 @@ TEST(SweepWorkers, AnotherProcessesSlotsShareTheTasks) {
   FakeWorkerLink worker_side(channel);
   const auto slow = [] { std::this_thread::sleep_for(std::chrono::milliseconds(1)); };
   std::thread worker([&] {
-    serve_sweep(2, [&](std::size_t t) {
-      slow();
-      ++runs[t];
-      ++remote_runs;
-    }, worker_side);
+    serve_sweep(
+        2,
+        [&](std::size_t t) {
+          slow();
+          ++runs[t];
+          ++remote_runs;
+        },
+        worker_side);
   });
-  coordinate_sweep(schedule, 1, [&](std::size_t t) {
-    slow();
-    ++runs[t];
-  }, &coordinator_side, {});
+  coordinate_sweep(schedule, 1,
+                   [&](std::size_t t) {
+                     slow();
+                     ++runs[t];
+                   },
+                   &coordinator_side, {});
   worker.join();  // returns only once both of its slots were stopped
   for (std::size_t t = 0; t < tasks.size(); ++t) EXPECT_EQ(runs[t], 1) << "task " << t;
   EXPECT_GT(remote_runs, 0);

@@ -55,11 +55,11 @@ TEST(AxisTicksTest, TickLabelsUseTheStepsDecimalsAndSuffixesForLargeValues) {
 
 // Half a metre between metre lines while they stay 30 pixels apart, doubled otherwise.
 TEST(AxisTicksTest, MetreLinesStayThirtyPixelsApart) {
-  EXPECT_DOUBLE_EQ(metre_tick_spacing(60), 0.5);   // 30 px apart: the finest spacing
-  EXPECT_DOUBLE_EQ(metre_tick_spacing(59), 1.0);   // 29.5 px: doubled once
+  EXPECT_DOUBLE_EQ(metre_tick_spacing(60), 0.5);  // 30 px apart: the finest spacing
+  EXPECT_DOUBLE_EQ(metre_tick_spacing(59), 1.0);  // 29.5 px: doubled once
   EXPECT_DOUBLE_EQ(metre_tick_spacing(30), 1.0);
   EXPECT_DOUBLE_EQ(metre_tick_spacing(29), 2.0);
-  EXPECT_DOUBLE_EQ(metre_tick_spacing(1), 32.0);   // 16 px at 16 m, 32 px at 32 m
+  EXPECT_DOUBLE_EQ(metre_tick_spacing(1), 32.0);  // 16 px at 16 m, 32 px at 32 m
 }
 
 TEST(AxisTicksTest, MetreTicksAreTheMultiplesOfTheSpacingInTheRange) {

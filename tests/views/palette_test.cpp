@@ -19,10 +19,10 @@ bool is_hex_colour(std::string_view colour) {
 }
 
 TEST(PaletteTest, ColoursAreLowerCaseHexAsTheFiguresWriteThem) {
-  for (const char* colour : {kOkabeItoOrange, kOkabeItoBlue, kOkabeItoBluishGreen, kOkabeItoVermillion,
-                             kOkabeItoReddishPurple, kTitleColour, kTextColour, kDarkGrey, kSubtitleColour,
-                             kPlotFrameColour, kViewFrameColour, kPlotGridLineColour, kWallMetreLineColour,
-                             kBodyMetreLineColour, kAnchorColour}) {
+  for (const char* colour :
+       {kOkabeItoOrange, kOkabeItoBlue, kOkabeItoBluishGreen, kOkabeItoVermillion, kOkabeItoReddishPurple, kTitleColour,
+        kTextColour, kDarkGrey, kSubtitleColour, kPlotFrameColour, kViewFrameColour, kPlotGridLineColour,
+        kWallMetreLineColour, kBodyMetreLineColour, kAnchorColour}) {
     EXPECT_TRUE(is_hex_colour(colour)) << colour;
   }
   EXPECT_TRUE(is_hex_colour(kFinishStroke.colour));

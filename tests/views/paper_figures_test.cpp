@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "support/test_models.hpp"
 #include "support/svg_check.hpp"
+#include "support/test_models.hpp"
 
 namespace crux {
 namespace {

@@ -31,13 +31,16 @@ TEST(SvgDocumentTest, WidthCountsCodePointsNotBytes) {
 TEST(SvgDocumentTest, DocumentRoundsItsSizeUpAndEscapesItsTitle) {
   const std::string svg = svg_document(400.2, 199.5, "wall <1> & co", "<g/>\n");
   EXPECT_EQ(check_well_formed(svg), "");
-  EXPECT_EQ(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
-                      "version=\"1.1\" width=\"401\" height=\"200\" viewBox=\"0 0 401 200\"",
-                      0),
-            0u);
-  EXPECT_NE(svg.find("<title>wall &lt;1&gt; &amp; co</title>\n<rect width=\"401\" height=\"200\" fill=\"white\"/>\n<g/>\n"
-                     "</svg>\n"),
-            std::string::npos);
+  EXPECT_EQ(
+      svg.rfind(
+          "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+          "version=\"1.1\" width=\"401\" height=\"200\" viewBox=\"0 0 401 200\"",
+          0),
+      0u);
+  EXPECT_NE(
+      svg.find("<title>wall &lt;1&gt; &amp; co</title>\n<rect width=\"401\" height=\"200\" fill=\"white\"/>\n<g/>\n"
+               "</svg>\n"),
+      std::string::npos);
   EXPECT_EQ(svg.find("xmlns:xlink"), std::string::npos);
 }
 
@@ -70,7 +73,8 @@ TEST(SvgDocumentTest, StrokedLinesCarryTheirClassWidthAndDash) {
 
 TEST(SvgDocumentTest, TextIsEscapedAndStyledOnlyWhereAsked) {
   std::string styled;
-  draw_text(styled, 5, 6, "a < b", {.size = 16, .anchor = "middle", .colour = "#111111", .bold = true, .rotation = -90});
+  draw_text(styled, 5, 6, "a < b",
+            {.size = 16, .anchor = "middle", .colour = "#111111", .bold = true, .rotation = -90});
   EXPECT_EQ(styled,
             "<text x=\"5.00\" y=\"6.00\" font-size=\"16\" fill=\"#111111\" text-anchor=\"middle\" font-weight=\"bold\" "
             "transform=\"rotate(-90.0 5.00 6.00)\">a &lt; b</text>\n");

@@ -19,11 +19,11 @@
 namespace crux {
 namespace {
 
+using testing::attribute;
 using testing::check_well_formed;
 using testing::count_of;
 using testing::element_with;
 using testing::group_texts;
-using testing::attribute;
 using testing::number_attribute;
 
 // A wall of columns x rows holds on a lattice, ids 1.. row by row from the smallest y

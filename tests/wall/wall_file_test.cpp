@@ -27,9 +27,7 @@ namespace {
 using testing::replaced;
 using testing::write_temporary;
 
-std::string example_wall_path(const std::string& file_name) {
-  return CRUX_SOURCE_DIR "/walls/" + file_name;
-}
+std::string example_wall_path(const std::string& file_name) { return CRUX_SOURCE_DIR "/walls/" + file_name; }
 
 using testing::same_bits;
 
@@ -126,8 +124,8 @@ TEST_P(WallFileExample, LoadsWithAPlausibleStart) {
   const double feet_apart = (at(Limb::LeftFoot) - at(Limb::RightFoot)).norm();
   EXPECT_GE(feet_apart, 0.5);
   EXPECT_LE(feet_apart, 0.7);
-  const double hands_above_feet = (at(Limb::RightHand).z() + at(Limb::LeftHand).z()) / 2 -
-                                  (at(Limb::RightFoot).z() + at(Limb::LeftFoot).z()) / 2;
+  const double hands_above_feet =
+      (at(Limb::RightHand).z() + at(Limb::LeftHand).z()) / 2 - (at(Limb::RightFoot).z() + at(Limb::LeftFoot).z()) / 2;
   EXPECT_NEAR(hands_above_feet, 1.5, 0.15);
   double lowest_hold = wall.holds[0].position.z();
   for (const Hold& hold : wall.holds) lowest_hold = std::min(lowest_hold, hold.position.z());
@@ -138,9 +136,7 @@ TEST_P(WallFileExample, LoadsWithAPlausibleStart) {
 INSTANTIATE_TEST_SUITE_P(WallFile, WallFileExample,
                          ::testing::Values(ExampleWall{"home_12.json", 12}, ExampleWall{"board_140.json", 140},
                                            ExampleWall{"tall_400.json", 400}),
-                         [](const auto& info) {
-                           return "holds_" + std::to_string(info.param.hold_count);
-                         });
+                         [](const auto& info) { return "holds_" + std::to_string(info.param.hold_count); });
 
 TEST(WallFile, SyntaxErrorReportsItsLineAndColumn) {
   const std::string text = "{\n  \"format\": \"crux-wall\",\n  \"version\": 1,,\n  \"name\": \"x\"\n}\n";
@@ -243,8 +239,8 @@ BadWallCase whole(const char* name, const std::string& text, const char* expecte
 std::string too_many_holds() {
   std::string holds;
   for (int id = 1; id <= kMaxHoldCount + 1; ++id) {
-    holds += fmt::format(R"({}{{"id": {}, "position": [0, {}, {}], "radius": 0.04}})", id > 1 ? ", " : "", id,
-                         id % 100, id / 100);
+    holds += fmt::format(R"({}{{"id": {}, "position": [0, {}, {}], "radius": 0.04}})", id > 1 ? ", " : "", id, id % 100,
+                         id / 100);
   }
   return R"({"format": "crux-wall", "version": 1, "name": "n", "finish_height": 1, "start": {}, "holds": [)" + holds +
          "]}";
@@ -267,14 +263,17 @@ std::vector<BadWallCase> bad_wall_cases() {
       edit("format_wrong", "\"crux-wall\"", "\"crux-body\"", "format must be \"crux-wall\", got \"crux-body\""),
       edit("format_not_string", "\"crux-wall\"", "1", "format must be \"crux-wall\", got 1"),
       edit("version_missing", "\"version\": 1,", "", "version is missing (supported versions: 1)"),
-      edit("version_unsupported", "\"version\": 1", "\"version\": 2", "version 2 is not supported (supported versions: 1)"),
+      edit("version_unsupported", "\"version\": 1", "\"version\": 2",
+           "version 2 is not supported (supported versions: 1)"),
       edit("version_string", "\"version\": 1", "\"version\": \"1\"", "version must be an integer, got string"),
-      edit("unknown_top_level_key", "\"finish_height\"", "\"finsh_height\"", "unknown key \"finsh_height\" at the top level"),
+      edit("unknown_top_level_key", "\"finish_height\"", "\"finsh_height\"",
+           "unknown key \"finsh_height\" at the top level"),
       edit("unknown_hold_key", "\"radius\": 0.04}", "\"radius\": 0.04, \"colour\": \"red\"}",
            "unknown key \"colour\" in holds[0] (allowed: id, position, radius)"),
       edit("unknown_start_key", "\"left_foot\": 2}", "\"left_foot\": 2, \"tail\": 5}", "unknown key \"tail\" in start"),
       edit("unknown_key_with_newline", "\"finish_height\"", "\"finish\\nheight\"", "unknown key \"finish\\nheight\""),
-      edit("duplicate_key", "\"radius\": 0.04}", "\"radius\": 0.04, \"radius\": 0.05}", "duplicate key \"radius\" in holds[0]"),
+      edit("duplicate_key", "\"radius\": 0.04}", "\"radius\": 0.04, \"radius\": 0.05}",
+           "duplicate key \"radius\" in holds[0]"),
       edit("duplicate_top_level_key", "\"version\": 1,", "\"version\": 1, \"version\": 1,",
            "duplicate key \"version\" at the top level"),
       edit("name_missing", "\"name\": \"test wall\",", "", "name is missing"),
@@ -284,7 +283,8 @@ std::vector<BadWallCase> bad_wall_cases() {
       edit("finish_height_infinite", "2.5,", "1e999,", "finish_height is not finite (1e999 overflows a double)"),
       whole("holds_missing", R"({"format": "crux-wall", "version": 1, "name": "n", "finish_height": 1, "start": {}})",
             "holds is missing"),
-      whole("holds_not_array", replaced(replaced(kValidWall, "\"holds\": [", "\"holds\": {\"a\": ["), "  ]\n}", "  ]}\n}"),
+      whole("holds_not_array",
+            replaced(replaced(kValidWall, "\"holds\": [", "\"holds\": {\"a\": ["), "  ]\n}", "  ]}\n}"),
             "holds must be an array, got object"),
       edit("hold_not_object", kHold3, "[3, 0.3, 1.5]", "holds[2] must be an object, got array"),
       whole("three_holds", R"({"format": "crux-wall", "version": 1, "name": "n", "finish_height": 1, "start": {},
@@ -305,28 +305,36 @@ std::vector<BadWallCase> bad_wall_cases() {
       edit("id_float_integer", "\"id\": 5,", "\"id\": 5.0,", "holds[4].id must be a positive integer, got 5.0"),
       edit("id_string", "\"id\": 5,", "\"id\": \"5\",", "holds[4].id must be a positive integer, got string"),
       edit("id_too_large", "\"id\": 5,", "\"id\": 4294967296,", "larger than the largest supported hold id 2147483647"),
-      edit("position_two_numbers", "[0.0, 0.3, 1.5]", "[0.3, 1.5]", "holds[2].position must have 3 coordinates [x, y, z], got 2"),
-      edit("position_four_numbers", "[0.0, 0.3, 1.5]", "[0.0, 0.3, 1.5, 1.0]", "holds[2].position must have 3 coordinates"),
+      edit("position_two_numbers", "[0.0, 0.3, 1.5]", "[0.3, 1.5]",
+           "holds[2].position must have 3 coordinates [x, y, z], got 2"),
+      edit("position_four_numbers", "[0.0, 0.3, 1.5]", "[0.0, 0.3, 1.5, 1.0]",
+           "holds[2].position must have 3 coordinates"),
       edit("position_not_array", "[0.0, 0.3, 1.5]", "\"0 0.3 1.5\"",
            "holds[2].position must be an array of 3 numbers [x, y, z], got string"),
       edit("position_string_coordinate", "[0.0, 0.3, 1.5]", "[0.0, 0.3, \"1.5\"]",
            "holds[2].position[2] must be a number, got string"),
-      edit("position_null_coordinate", "[0.0, 0.3, 1.5]", "[0.0, null, 1.5]", "holds[2].position[1] must be a number, got null"),
+      edit("position_null_coordinate", "[0.0, 0.3, 1.5]", "[0.0, null, 1.5]",
+           "holds[2].position[1] must be a number, got null"),
       edit("position_infinite", "[0.0, 0.3, 1.5]", "[0.0, 1e999, 1.5]", "holds[2].position[1] is not finite"),
       edit("position_minus_infinite", "[0.0, 0.3, 1.5]", "[-1e400, 0.3, 1.5]", "holds[2].position[0] is not finite"),
       edit("radius_zero", "1.5], \"radius\": 0.04", "1.5], \"radius\": 0", "holds[2].radius must be positive, got 0"),
-      edit("radius_negative", "1.5], \"radius\": 0.04", "1.5], \"radius\": -0.01", "holds[2].radius must be positive, got -0.01"),
+      edit("radius_negative", "1.5], \"radius\": 0.04", "1.5], \"radius\": -0.01",
+           "holds[2].radius must be positive, got -0.01"),
       edit("radius_infinite", "1.5], \"radius\": 0.04", "1.5], \"radius\": 1e999", "holds[2].radius is not finite"),
-      edit("radius_string", "1.5], \"radius\": 0.04", "1.5], \"radius\": \"big\"", "holds[2].radius must be a number, got string"),
-      edit("start_missing", "  \"start\": {\"right_hand\": 3, \"left_hand\": 4, \"right_foot\": 1, \"left_foot\": 2},\n", "",
+      edit("radius_string", "1.5], \"radius\": 0.04", "1.5], \"radius\": \"big\"",
+           "holds[2].radius must be a number, got string"),
+      edit("start_missing",
+           "  \"start\": {\"right_hand\": 3, \"left_hand\": 4, \"right_foot\": 1, \"left_foot\": 2},\n", "",
            "start is missing"),
-      edit("start_not_object", "{\"right_hand\": 3, \"left_hand\": 4, \"right_foot\": 1, \"left_foot\": 2}", "[3, 4, 1, 2]",
-           "start must be an object, got array"),
+      edit("start_not_object", "{\"right_hand\": 3, \"left_hand\": 4, \"right_foot\": 1, \"left_foot\": 2}",
+           "[3, 4, 1, 2]", "start must be an object, got array"),
       edit("start_limb_missing", ", \"left_foot\": 2}", "}", "start.left_foot is missing"),
-      edit("start_unknown_hold", "\"right_hand\": 3", "\"right_hand\": 99", "start.right_hand names hold 99, which is not in holds"),
+      edit("start_unknown_hold", "\"right_hand\": 3", "\"right_hand\": 99",
+           "start.right_hand names hold 99, which is not in holds"),
       edit("start_same_hold_twice", "\"left_foot\": 2", "\"left_foot\": 3",
            "start.right_hand and start.left_foot both name hold 3; each limb needs its own hold"),
-      edit("start_id_not_integer", "\"right_foot\": 1", "\"right_foot\": true", "start.right_foot must be a positive integer, got true"),
+      edit("start_id_not_integer", "\"right_foot\": 1", "\"right_foot\": true",
+           "start.right_foot must be a positive integer, got true"),
   };
 }
 
@@ -335,9 +343,13 @@ void PrintTo(const BadWallCase& c, std::ostream* out) { *out << c.name; }
 std::filesystem::path path_for(const BadWallCase& c) {
   const auto directory = std::filesystem::temp_directory_path() / "crux-tests";
   switch (c.kind) {
-    case BadPath::Directory: std::filesystem::create_directories(directory); return directory;
-    case BadPath::Missing: return directory / "no_such_wall.json";
-    case BadPath::WrittenFile: break;
+    case BadPath::Directory:
+      std::filesystem::create_directories(directory);
+      return directory;
+    case BadPath::Missing:
+      return directory / "no_such_wall.json";
+    case BadPath::WrittenFile:
+      break;
   }
   return write_temporary(std::string("bad_wall_") + c.name + ".json", c.text);
 }

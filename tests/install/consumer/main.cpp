@@ -2,8 +2,8 @@
 // origin: prints the right palm's position.
 #include <cstdio>
 
-#include "body/urdf_loader.hpp"
 #include "body/kinematics.hpp"
+#include "body/urdf_loader.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) return 2;
