@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Compares the `crux paper` output folders of two builds, to show that a change moved
-# code but not numbers: every run file, wall and figure CSV byte for byte, summary.json
-# apart from the fields that name the build and its timing, and the printed report.
+# code but not numbers: every run file, wall and figure byte for byte (a CSV whose text
+# differs, value by value), summary.json apart from the fields that name the build and
+# its timing (with how far its numbers moved, if they did), and the printed report.
 #
 #   scripts/compare_paper_outputs.sh OLD_CRUX "OLD FLAGS" NEW_CRUX "NEW FLAGS"
 #
@@ -18,11 +19,39 @@ trap 'rm -rf "$work"' EXIT
 # shellcheck disable=SC2086
 "$3" paper $4 -o "$work/new" > "$work/new.txt" 2> /dev/null
 status=0
-if diff -rq "$work/old" "$work/new" --exclude=summary.json --exclude=config.toml --exclude=q_grid.bin; then
-  echo "identical: $(find "$work/old" -type f ! -name summary.json ! -name config.toml ! -name q_grid.bin | wc -l) run files, walls and figure CSVs"
-else
-  status=1
-fi
+# Files byte for byte; a CSV whose text differs is compared by value, cell by cell, since
+# a writer may change how it spells a number (196.59999999999999 and 196.6 are one double).
+/usr/bin/python3 - "$work/old" "$work/new" <<'PY' || status=1
+import csv, pathlib, sys
+old_root, new_root = (pathlib.Path(p) for p in sys.argv[1:3])
+skip = {"summary.json", "config.toml", "q_grid.bin"}
+old_files = sorted(p.relative_to(old_root) for p in old_root.rglob("*") if p.is_file() and p.name not in skip)
+new_files = sorted(p.relative_to(new_root) for p in new_root.rglob("*") if p.is_file() and p.name not in skip)
+if old_files != new_files:
+    print("the folders hold different files:", sorted(set(map(str, old_files)) ^ set(map(str, new_files))))
+    sys.exit(1)
+def cell(text):
+    try:
+        return float(text)
+    except ValueError:
+        return text
+same_bytes, same_values, differing = 0, [], []
+for name in old_files:
+    a, b = (old_root / name).read_bytes(), (new_root / name).read_bytes()
+    if a == b:
+        same_bytes += 1
+    elif name.suffix == ".csv" and [[cell(c) for c in row] for row in csv.reader(a.decode().splitlines())] == \
+            [[cell(c) for c in row] for row in csv.reader(b.decode().splitlines())]:
+        same_values.append(str(name))
+    else:
+        differing.append(str(name))
+print(f"identical: {same_bytes} run files, walls and figures byte for byte")
+if same_values:
+    print(f"the same values, spelt differently: {len(same_values)} CSV files ({', '.join(same_values[:3])}, ...)")
+if differing:
+    print("differ:", ", ".join(differing))
+    sys.exit(1)
+PY
 # Q-table files by content: version 2 added the state space to the header, so a
 # version 1 and a version 2 file of the same table differ in header and checksum only.
 /usr/bin/python3 - "$work/old" "$work/new" <<'PY' || status=1
@@ -51,9 +80,29 @@ for summary in (old, new):
 for old_wall, new_wall in zip(old.get("walls", []), new.get("walls", [])):
     for key in set(new_wall) - set(old_wall):
         new_wall.pop(key)
+def numbers_apart(a, b, path, out):
+    """Leaves where the two differ: (path, relative difference) for numbers, None otherwise."""
+    if isinstance(a, dict) and isinstance(b, dict) and a.keys() == b.keys():
+        for key in a:
+            numbers_apart(a[key], b[key], f"{path}.{key}", out)
+    elif isinstance(a, list) and isinstance(b, list) and len(a) == len(b):
+        for i, (x, y) in enumerate(zip(a, b)):
+            numbers_apart(x, y, f"{path}[{i}]", out)
+    elif isinstance(a, (int, float)) and isinstance(b, (int, float)) and not isinstance(a, bool):
+        if a != b:
+            out.append((path, abs(a - b) / max(abs(a), abs(b))))
+    elif a != b:
+        out.append((path, None))
 differing = sorted(key for key in set(old) | set(new) if old.get(key) != new.get(key))
 if differing:
-    print("summary.json differs in:", ", ".join(differing))
+    apart = []
+    for key in differing:
+        numbers_apart(old.get(key), new.get(key), key, apart)
+    if any(r is None for _, r in apart):
+        print("summary.json differs in:", ", ".join(p for p, r in apart if r is None))
+        sys.exit(1)
+    print(f"summary.json: {len(apart)} numbers in {', '.join(differing)} moved, by at most "
+          f"{max(r for _, r in apart):.1e} of their value")
     sys.exit(1)
 print("identical: summary.json apart from format, version, kind, provenance, seconds, wall_pairs and added wall keys")
 PY
