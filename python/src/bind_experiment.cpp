@@ -1,6 +1,7 @@
 // The paper's agent and experiment: one learning run (Algorithm 2), and the experiment
 // of section IV, returning what the CLI's summary.json holds.
 
+#include <filesystem>
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -33,7 +34,16 @@ py::array_t<double> postures_array(const std::vector<Posture>& postures) {
 struct LearningRun {
   RunResult run;
   py::object summary;
+  int resumed_at = 0;
 };
+
+// A job's output folder: none for None.
+std::optional<std::filesystem::path> output_from(const py::handle& output) {
+  if (output.is_none()) return std::nullopt;
+  const std::string folder = path_from(output);
+  if (folder.empty()) throw InputError("output", "the output folder name is empty");
+  return folder;
+}
 
 py::dict iterations_dict(const RunResult& run) {
   const auto n = static_cast<py::ssize_t>(run.iterations.size());
@@ -91,9 +101,8 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
   }
   const bool transfer = job.q_grid || !config.q_grid.empty();
   job.condition = transfer ? Condition::Transfer : Condition::Training;
-  job.keys = transfer ? &kTransferKeys : &kTrainKeys;
   if (config_is_file(config_handle)) job.config_path = path_from(config_handle);
-  if (!output.is_none()) job.output = path_from(output);
+  job.output = output_from(output);
   job.overwrite = overwrite;
   InterruptGuard guard;
   LearningRun out;
@@ -104,6 +113,7 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
     LearningJobOutcome outcome =
         run_learning_job(std::move(job), {"crux.run_learning", {}, [&guard] { guard.poll(); }, {}});
     summary = std::move(outcome.summary);
+    out.resumed_at = outcome.resumed_at;
     out.run = std::move(outcome.result.conditions[static_cast<int>(condition)].runs.front());
   }
   out.summary = json_to_python(summary);
@@ -113,7 +123,7 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
 py::object run_experiment_py(const py::handle& config_handle, const py::handle& output, bool overwrite) {
   PaperJob job{config_from_python(config_handle, kPaperKeys, "run_experiment")};
   if (config_is_file(config_handle)) job.config_path = path_from(config_handle);
-  if (!output.is_none()) job.output = path_from(output);
+  job.output = output_from(output);
   job.overwrite = overwrite;
   InterruptGuard guard;
   nlohmann::ordered_json summary;
@@ -129,6 +139,8 @@ py::object run_experiment_py(const py::handle& config_handle, const py::handle& 
 void bind_experiment(py::module_& m) {
   py::class_<LearningRun>(m, "LearningRun", "One learning run (Algorithm 2) and its summary")
       .def_readonly("summary", &LearningRun::summary, "what crux train (or transfer) writes to summary.json")
+      .def_readonly("resumed_at", &LearningRun::resumed_at,
+                    "the iteration a checkpoint in `output` resumed the run from; 0 when it ran from the start")
       .def_property_readonly("episode_lengths",
                              [](const LearningRun& r) {
                                return py::array_t<int>(static_cast<py::ssize_t>(r.run.episode_lengths.size()),

@@ -249,6 +249,17 @@ print('own handler', len(caught), len(run.iterations['reward']))
     assert out.split("\n")[:3] == ["interrupted", "thread call finished 1", "own handler 1 100000"], (out, err)
 
 
+def test_a_folder_replays_from_its_config_so_objects_write_none(tmp_path):
+    with pytest.raises(ValueError, match="^wall: a run folder replays from its config.toml"):
+        crux.run_learning(crux.Wall.random(3), {"experiment.iterations": 100}, output=tmp_path / "objects")
+    assert not (tmp_path / "objects").exists()
+    with pytest.raises(ValueError, match="^output: the output folder name is empty$"):
+        crux.run_learning(config={"wall.seed": 3, "experiment.iterations": 100}, output="")
+    run = crux.run_learning(config={"wall.seed": 3, "experiment.iterations": 300, "experiment.checkpoint_every": 100},
+                            output=tmp_path / "checkpointed")
+    assert run.resumed_at == 0 and not (tmp_path / "checkpointed" / "checkpoint.bin").exists()
+
+
 def test_wall_generator_keys_beside_a_wall_file_are_refused(tmp_path):
     crux.Wall.random(5).save(tmp_path / "wall.json")
     with pytest.raises(ValueError, match="^wall.sigma: shapes a random wall, and the wall file gives the wall itself"):

@@ -33,6 +33,21 @@ void require_wall(const ExperimentConfig& config) {
   }
 }
 
+// The job's errors name config keys; the command's name the flag or the config file's line.
+template <typename Call>
+auto run_with_flags(const ParameterBinding& binding, Call call) {
+  try {
+    return call();
+  } catch (const InputError& e) {
+    throw InputError(binding.where(e.source()), e.problem());
+  }
+}
+
+// A job without a folder writes nothing: the command always writes one.
+void require_output(const std::string& output) {
+  if (output.empty()) throw InputError("--output", "the output folder name is empty");
+}
+
 struct PaperCommand {
   ParameterBinding binding{"paper", kPaperKeys};
   std::string output = "out/paper";
@@ -40,13 +55,15 @@ struct PaperCommand {
   bool overwrite = false;
 
   void run() {
+    require_output(output);
     PaperJob job{binding.resolve(), binding.config_path(), output, overwrite};
     const ExperimentParameters settings = job.config.settings;  // the job takes the config
     ProgressBar progress(fmt::format("paper: {} x {} x 3 conditions", counted(settings.wall_pairs, "wall"),
                                      counted(settings.seeds_per_wall, "seed")),
                          3L * settings.runs());
-    const PaperJobOutcome outcome =
-        run_paper_job(std::move(job), {"crux paper", [&](int done) { progress.update(done); }, {}, {}});
+    const PaperJobOutcome outcome = run_with_flags(binding, [&] {
+      return run_paper_job(std::move(job), {"crux paper", [&](int done) { progress.update(done); }, {}, {}});
+    });
     progress.finish();
     if (json) {
       std::cout << outcome.summary.dump(2) << '\n';
@@ -65,6 +82,7 @@ struct SingleRunCommand {
   bool overwrite = false;
 
   void run() {
+    require_output(output);
     LearningJob job;
     job.config = binding.resolve();
     require_wall(job.config);
@@ -72,7 +90,6 @@ struct SingleRunCommand {
       throw InputError("--q-grid", "give the Q_grid to transfer (q_grid.bin of a training run)");
     }
     job.condition = condition;
-    job.keys = condition == Condition::Transfer ? &kTransferKeys : &kTrainKeys;
     job.config_path = binding.config_path();
     job.output = output;
     job.overwrite = overwrite;
@@ -88,7 +105,7 @@ struct SingleRunCommand {
                                                     iterations,
                                                     (std::filesystem::path(output) / kCheckpointFile).string());
                          }};
-    const LearningJobOutcome outcome = run_learning_job(std::move(job), hooks);
+    const LearningJobOutcome outcome = run_with_flags(binding, [&] { return run_learning_job(std::move(job), hooks); });
     progress.finish();
     std::cout << (json ? outcome.summary.dump(2) + "\n" : run_text(outcome.result, iterations, output));
   }

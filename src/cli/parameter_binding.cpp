@@ -116,6 +116,12 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
     const CLI::Option* o = option(key);
     return o != nullptr && o->count() > 0;
   };
+  // A wall file on the command line replaces a config file's random wall, the wall's
+  // parameters with it.
+  if (given("wall.file")) {
+    std::erase_if(config.given,
+                  [&](const std::string& key) { return is_wall_generator_key(key) && !given(key.c_str()); });
+  }
   if (given("experiment.urdf")) config.recorded_provenance.erase("urdf_sha256");
   if (given("wall.file") || given("wall.seed")) config.recorded_provenance.erase("wall_sha256");
   if (given("experiment.q_grid")) config.recorded_provenance.erase("q_grid_sha256");

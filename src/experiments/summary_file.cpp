@@ -10,7 +10,9 @@ namespace crux {
 namespace {
 
 constexpr const char* kSummaryFormat = "crux-summary";
-constexpr int kSummaryVersion = 3;
+// Version 4 dropped the run time and added provenance.produced_by, neither of which is
+// read here: both read alike.
+constexpr int kOldestSummaryVersion = 3, kSummaryVersion = 4;
 
 TransferMetricData transfer_metric(const JsonField& metric, const std::string& name) {
   TransferMetricData out;
@@ -48,9 +50,9 @@ OrderedJson read_summary(const std::filesystem::path& folder) {
                              summary.contains("format") ? printable(json["format"].dump().substr(0, 40)) : "missing",
                              kSummaryFormat));
   }
-  if (const int version = summary["version"].integer(); version != kSummaryVersion) {
-    summary.fail(fmt::format("version {} is not the version {} this crux reads; write the folder again", version,
-                             kSummaryVersion));
+  if (const int version = summary["version"].integer(); version < kOldestSummaryVersion || version > kSummaryVersion) {
+    summary.fail(fmt::format("version {} is not one of the versions {} to {} this crux reads; write the folder again",
+                             version, kOldestSummaryVersion, kSummaryVersion));
   }
   return json;
 }

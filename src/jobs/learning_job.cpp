@@ -1,10 +1,9 @@
 #include "jobs/learning_job.hpp"
 
-#include <chrono>
-
 #include "common/input_error.hpp"
 #include "experiments/run_checkpoint.hpp"
 #include "experiments/run_inputs.hpp"
+#include "jobs/command_keys.hpp"
 #include "reports/output_folder.hpp"
 #include "reports/summary.hpp"
 
@@ -12,7 +11,12 @@ namespace crux {
 
 LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
   ExperimentConfig& config = job.config;
-  const bool writes_folder = !job.output.empty();
+  const bool writes_folder = job.output.has_value();
+  if (writes_folder && (job.wall || job.q_grid)) {
+    throw InputError(job.wall ? "wall" : "q_grid",
+                     "a run folder replays from its config.toml: give this input by the config (wall.file or "
+                     "wall.seed, experiment.q_grid) to write one");
+  }
   if (config.checkpoint_every != 0 && !writes_folder) {
     throw InputError("experiment.checkpoint_every", "a run that writes no folder keeps no checkpoint; leave it 0");
   }
@@ -37,28 +41,29 @@ LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
     initial = load_q_grid(config.q_grid, grid);
   }
 
+  const ParameterSet& keys = job.condition == Condition::Transfer ? kTransferKeys : kTrainKeys;
   RunCheckpoints checkpoints{config.checkpoint_every, {}, {}, {}, {}};
   std::string config_toml;
   LearningJobOutcome outcome;
   if (writes_folder) {
-    config_toml = config_file_text(config, *job.keys, provenance);
+    config_toml = config_file_text(config, keys, provenance);
     // A checkpoint resumes the run whose parameters and inputs it records, whatever its
     // checkpoint interval and whoever runs it.
-    ParameterSet identity_keys = *job.keys;
+    ParameterSet identity_keys = keys;
     identity_keys.exclude.push_back("experiment.checkpoint_every");
     Provenance identity_provenance = provenance;
     identity_provenance.produced_by.clear();
     const std::string identity = config_file_text(config, identity_keys, identity_provenance);
-    const std::filesystem::path checkpoint_file = job.output / kCheckpointFile;
+    const std::filesystem::path checkpoint_file = *job.output / kCheckpointFile;
     checkpoints.source = checkpoint_file.string();
     // What a SIGKILL left half-written is no output: a folder killed while it wrote its
     // first checkpoint starts again.
-    remove_crux_temporaries(job.output);
+    remove_crux_temporaries(*job.output);
     if (!job.overwrite) checkpoints.resume = read_checkpoint(checkpoint_file, identity).value_or("");
-    check_output_folder(job.output, {config.urdf, config.wall_file, config.q_grid, job.config_path},
+    check_output_folder(*job.output, {config.urdf, config.wall_file, config.q_grid, job.config_path},
                         job.overwrite || !checkpoints.resume.empty());
     checkpoints.save = [&job, identity](std::string state, int) {
-      write_checkpoint(job.output, checkpoint_file_bytes(identity, state));
+      write_checkpoint(*job.output, checkpoint_file_bytes(identity, state));
     };
     checkpoints.resumed = [&](int iteration) {
       outcome.resumed_at = iteration;
@@ -69,14 +74,11 @@ LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
     if (hooks.interruption_point) hooks.interruption_point();
     if (hooks.progress) hooks.progress(done);
   };
-  const auto start = std::chrono::steady_clock::now();
   RunResult run = run_learning(model, wall, config.settings.learning, config.settings.seed,
                                initial ? &*initial : nullptr, progress, &checkpoints);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  outcome.result =
-      single_run_result(std::move(run), wall, config.wall_seed, config.settings.seed, job.condition, seconds);
+  outcome.result = single_run_result(std::move(run), wall, config.wall_seed, config.settings.seed, job.condition);
   outcome.summary = summary_json(outcome.result, nullptr, config.settings, provenance);
-  if (writes_folder) write_run_folder(job.output, outcome.result, model, grid, config_toml, outcome.summary);
+  if (writes_folder) write_run_folder(*job.output, outcome.result, model, grid, config_toml, outcome.summary);
   return outcome;
 }
 

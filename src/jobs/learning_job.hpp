@@ -22,19 +22,18 @@ struct LearningJob {
   // needs a Q_grid, the others start from empty tables.
   Condition condition = Condition::Training;
   ExperimentConfig config;
-  // The keys config.toml records: the caller's (kTrainKeys or kTransferKeys).
-  const ParameterSet* keys = nullptr;
   // The config file `config` was read from, if any: an input, and its recorded
   // provenance is checked against the inputs used now.
   std::string config_path;
-  // The run folder; empty writes none (Python without `output`).
-  std::filesystem::path output;
+  // The run folder; none is written without one (Python without `output`).
+  std::optional<std::filesystem::path> output;
   bool overwrite = false;
   // The body of config.urdf already loaded (a sweep's, Python's model object), so that
   // it is not loaded again.
   const BodyModel* model = nullptr;
   // Inputs given as objects rather than by the config (Python): each replaces the
-  // config's, which then names none.
+  // config's, which then names none. A folder replays from its config.toml, so a job
+  // that writes one takes neither.
   std::optional<Wall> wall;
   std::optional<QTable> q_grid;
 };

@@ -13,18 +13,18 @@ PaperJobOutcome run_paper_job(PaperJob job, const JobHooks& hooks) {
   provenance.produced_by = hooks.caller;
   if (!job.config_path.empty()) check_recorded_provenance(config, provenance, job.config_path);
   const BodyModel model = load_configured_body(config);
-  const bool writes_folder = !job.output.empty();
+  const bool writes_folder = job.output.has_value();
   std::string config_toml;
   if (writes_folder) {
     config_toml = config_file_text(config, kPaperKeys, provenance);
-    check_output_folder(job.output, {config.urdf, job.config_path}, job.overwrite);
+    check_output_folder(*job.output, {config.urdf, job.config_path}, job.overwrite);
   }
   PaperJobOutcome outcome;
   outcome.result = run_paper_experiment(model, config.settings, hooks.progress, hooks.interruption_point);
   outcome.analysis = analyse_experiment(outcome.result, config.settings);
   outcome.summary = summary_json(outcome.result, &outcome.analysis, config.settings, provenance);
   if (writes_folder) {
-    write_experiment_folder(job.output, outcome.result, config.settings, model, config_toml, outcome.summary);
+    write_experiment_folder(*job.output, outcome.result, config.settings, model, config_toml, outcome.summary);
   }
   return outcome;
 }

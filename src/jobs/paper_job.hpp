@@ -4,6 +4,7 @@
 // folder written.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -18,7 +19,7 @@ struct PaperJob {
   ExperimentConfig config;
   // The config file `config` was read from, if any (as LearningJob::config_path).
   std::string config_path;
-  std::filesystem::path output;  // empty writes no folder
+  std::optional<std::filesystem::path> output;  // none: no folder written
   bool overwrite = false;
 };
 

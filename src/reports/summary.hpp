@@ -17,7 +17,7 @@ namespace crux {
 // One run as an experiment of one wall, one seed and one condition, so that it is
 // summarised and drawn like one.
 ExperimentResult single_run_result(RunResult run, const Wall& wall, std::optional<std::uint64_t> wall_seed,
-                                   std::uint64_t learning_seed, Condition condition, double seconds);
+                                   std::uint64_t learning_seed, Condition condition);
 
 // `analysis` is null for a single run.
 nlohmann::ordered_json summary_json(const ExperimentResult& result, const ExperimentAnalysis* analysis,

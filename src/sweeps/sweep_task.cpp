@@ -7,7 +7,6 @@
 
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
-#include "jobs/command_keys.hpp"
 #include "jobs/learning_job.hpp"
 #include "reports/output_folder.hpp"
 #include "reports/plan_description.hpp"
@@ -56,7 +55,6 @@ void write_run_task(const SweepPlan& plan, const SweepTask& task, const BodyMode
     job.config.q_grid = fs::absolute(sweep_folder / training.folder / "q_grid.bin").lexically_normal().string();
   }
   job.condition = task.condition;
-  job.keys = task.condition == Condition::Transfer ? &kTransferKeys : &kTrainKeys;
   job.output = folder;
   job.model = &model;
   run_learning_job(std::move(job), {"crux sweep", {}, {}, {}});

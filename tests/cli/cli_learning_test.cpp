@@ -478,6 +478,13 @@ TEST(CliLearning, WallGeneratorFlagsBesideAWallFileAreRefused) {
                      learning_scratch("generator_again").string())
                 .exit_code,
             0);
+  // A random wall's config.toml lists its parameters; a wall file given as a flag
+  // replaces that wall, parameters and all.
+  const fs::path seeded = learning_scratch("generator_seeded");
+  ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 100 -o " + seeded.string()).exit_code, 0);
+  const auto replaced = run_crux("train --config " + (seeded / "config.toml").string() + " --wall-file " +
+                                 wall.string() + " -o " + learning_scratch("generator_replaced").string());
+  EXPECT_EQ(replaced.exit_code, 0) << replaced.err;
 }
 
 TEST(CliLearning, TheTransferModeIsOneFlagWrittenToTheConfigAndAnUnknownOneIsRefused) {

@@ -31,11 +31,14 @@ PYTHON_EXCEPTIONS = {"conversions", "python_config", "python_errors", "interrupt
 def layer_problems(root: pathlib.Path, design: str) -> list[str]:
     order = re.findall(r"^\| `src/([a-z_]+)/` \|", design, flags=re.MULTILINE)
     rank = {area: i for i, area in enumerate(order)}
-    problems = [f"docs/DESIGN.md's folder table has no row for src/{folder.name}/"
-                for folder in sorted((root / "src").iterdir()) if folder.is_dir() and folder.name not in rank]
+    problems = [f"docs/DESIGN.md's folder table has two rows for src/{area}/"
+                for area in sorted(set(order)) if order.count(area) > 1]
+    problems += [f"docs/DESIGN.md's folder table has no row for src/{folder.name}/"
+                 for folder in sorted((root / "src").iterdir()) if folder.is_dir() and folder.name not in rank]
     include = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/', flags=re.MULTILINE)
     for source in sorted((root / "src").rglob("*.[ch]pp")):
-        area = source.parent.relative_to(root / "src").as_posix()
+        # A file in a subfolder belongs to its top folder's layer.
+        area = source.relative_to(root / "src").parts[0]
         for used in sorted(set(include.findall(source.read_text()))):
             if used in rank and area in rank and rank[used] > rank[area]:
                 problems.append(f"src/{area}/{source.name} includes {used}/, which comes after {area}/ "
@@ -96,6 +99,8 @@ def self_test() -> int:
 
 
 if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit("usage: check_mirrors.py REPOSITORY | --self-test")
     if sys.argv[1] == "--self-test":
         sys.exit(self_test())
     sys.exit(main(pathlib.Path(sys.argv[1])))

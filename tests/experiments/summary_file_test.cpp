@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 // A two-run training condition on a 2 x 1 grid, and two transfer metrics listed out of
 // alphabetical order.
 const OrderedJson kSummaryDocument = OrderedJson::parse(R"({
-  "format": "crux-summary", "version": 3, "kind": "experiment", "iterations": 4, "seeds_per_wall": 2,
+  "format": "crux-summary", "version": 4, "kind": "experiment", "iterations": 4, "seeds_per_wall": 2,
   "episode_lengths": {"training": [[3, 1], [2]]},
   "run_facts": {"training": [{"wall_pair": 0, "plan_length": 5}, {"wall_pair": 0, "plan_length": -1}]},
   "qgrid_maps": {"training": {"right_hand": [1, 2.5], "left_hand": [0, 0], "right_foot": [0, 0], "left_foot": [0, 0]}},
@@ -114,7 +114,15 @@ TEST(SummaryFile, RefusesAFileThatIsNotACruxSummary) {
             "not a crux summary: format is \"crux-wall\", not \"crux-summary\"");
   EXPECT_EQ(summary_edit_problem(
                 "summary_version", [](OrderedJson& s) { s["version"] = 2; }, document),
-            "version 2 is not the version 3 this crux reads; write the folder again");
+            "version 2 is not one of the versions 3 to 4 this crux reads; write the folder again");
+  EXPECT_EQ(summary_edit_problem(
+                "summary_version_5", [](OrderedJson& s) { s["version"] = 5; }, document),
+            "version 5 is not one of the versions 3 to 4 this crux reads; write the folder again");
+  // Version 3 (with the run time it recorded) is read as version 4.
+  OrderedJson version_3 = kSummaryDocument;
+  version_3["version"] = 3;
+  version_3["seconds"] = 1.5;
+  EXPECT_NO_THROW(read_summary(summary_folder_of("summary_version_3", version_3.dump())));
   EXPECT_EQ(summary_edit_problem(
                 "summary_version_text", [](OrderedJson& s) { s["version"] = "3"; }, document),
             "version must be an integer from -2147483648 to 2147483647, got string");

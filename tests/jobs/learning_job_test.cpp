@@ -5,7 +5,6 @@
 #include <fstream>
 
 #include "common/input_error.hpp"
-#include "jobs/command_keys.hpp"
 #include "learning/q_table_file.hpp"
 #include "support/sweep_cells.hpp"
 #include "support/test_models.hpp"
@@ -15,13 +14,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-LearningJob small_job(const fs::path& output, int iterations = 300) {
+LearningJob small_job(std::optional<fs::path> output, int iterations = 300) {
   LearningJob job;
   job.config.wall_seed = 3;
   job.config.settings.seed = 5;
   job.config.settings.learning.iterations = iterations;
   finalize_config(job.config);
-  job.keys = &kTrainKeys;
   job.output = output;
   job.model = &testing::human_model();
   return job;
@@ -51,10 +49,8 @@ TEST(LearningJob, WritesTheRunFolderAndNamesItsCaller) {
 }
 
 TEST(LearningJob, OnlyATransferRunTakesAQGridAndAFolderlessRunKeepsNoCheckpoint) {
-  const fs::path folder = testing::sweep_scratch("job-transfer");
   const LearningJobOutcome trained = run_learning_job(small_job({}), {});
-  LearningJob transfer = small_job(folder);
-  transfer.keys = &kTransferKeys;
+  LearningJob transfer = small_job({});
   transfer.condition = Condition::Transfer;
   EXPECT_THROW(run_learning_job(transfer, {}), InputError) << "a transfer run without a Q_grid";
   transfer.q_grid = trained.result.conditions[0].runs.front().q_grid;
@@ -63,6 +59,16 @@ TEST(LearningJob, OnlyATransferRunTakesAQGridAndAFolderlessRunKeepsNoCheckpoint)
   EXPECT_TRUE(transferred.summary.at("episode_lengths").contains("transfer"));
   transfer.condition = Condition::Control;
   EXPECT_THROW(run_learning_job(transfer, {}), InputError) << "a control run given a Q_grid";
+  // A folder replays from its config.toml, which cannot name an object.
+  transfer.condition = Condition::Transfer;
+  transfer.output = testing::sweep_scratch("job-transfer");
+  try {
+    run_learning_job(transfer, {});
+    ADD_FAILURE() << "a folder written from a Q_grid object";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "q_grid");
+  }
+  EXPECT_FALSE(fs::exists(*transfer.output));
 
   LearningJob checkpointed = small_job({});
   checkpointed.config.settings.learning.iterations = 300;

@@ -19,7 +19,7 @@ TEST(PaperJob, WritesTheExperimentFolderOrOnlyReturnsItsSummary) {
   EXPECT_TRUE(fs::exists(folder / "summary.json"));
   EXPECT_TRUE(fs::exists(folder / "runs/transfer_0/iterations.csv"));
   EXPECT_EQ(written.summary.at("provenance").at("produced_by"), "a test");
-  job.output.clear();
+  job.output.reset();
   EXPECT_EQ(run_paper_job(job, {"a test", {}, {}, {}}).summary, written.summary);
 }
 

@@ -38,7 +38,7 @@ TEST(OutputFolder, ARunFolderHoldsTheRunsFilesItsWallConfigAndSummary) {
   LearningParameters learning;
   learning.iterations = 60;
   const ExperimentResult result =
-      single_run_result(run_learning(model, wall, learning, 8), wall, 3, 8, Condition::Training, 0.0);
+      single_run_result(run_learning(model, wall, learning, 8), wall, 3, 8, Condition::Training);
   const fs::path folder = testing::temporary_path("run_folder");
   write_run_folder(folder, result, model, GridParameters{}, "# config\n",
                    summary_json(result, nullptr, ExperimentParameters{}, {}));

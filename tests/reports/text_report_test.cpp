@@ -17,7 +17,7 @@ TEST(TextReport, ARunIsOneLineNamingItsWallAndFolder) {
   LearningParameters learning;
   learning.iterations = 40;
   const ExperimentResult result =
-      single_run_result(run_learning(model, wall, learning, 2), wall, 3, 2, Condition::Transfer, 0.0);
+      single_run_result(run_learning(model, wall, learning, 2), wall, 3, 2, Condition::Transfer);
   const std::string line = run_text(result, 40, "out/x");
   EXPECT_EQ(line.rfind("transfer on '" + wall.name + "'", 0), 0u) << line;
   EXPECT_NE(line.find("wrote out/x"), std::string::npos);
@@ -29,7 +29,7 @@ TEST(TextReport, ARunOfOneIterationIsSingular) {
   LearningParameters learning;
   learning.iterations = 1;
   const ExperimentResult result =
-      single_run_result(run_learning(testing::human_model(), wall, learning, 2), wall, 3, 2, Condition::Training, 0.0);
+      single_run_result(run_learning(testing::human_model(), wall, learning, 2), wall, 3, 2, Condition::Training);
   EXPECT_NE(run_text(result, 1, "out/x").find(": 0 episodes in 1 iteration; greedy climb: "), std::string::npos);
 }
 
