@@ -42,6 +42,8 @@ std::vector<std::string_view> split_csv_line(std::string_view line) {
 
 std::vector<std::string_view> csv_rows(std::string_view text, const std::string& file, std::string_view header) {
   if (text.empty()) throw InputError(file, fmt::format("is empty; the header line must be '{}'", header));
+  // crux ends every line it writes; a file cut mid-row could still parse, with a wrong last value.
+  if (text.back() != '\n') throw InputError(file, "does not end with a newline: it was cut short");
   std::vector<std::string_view> lines;
   for (std::size_t start = 0; start < text.size();) {
     const std::size_t end = std::min(text.find('\n', start), text.size());

@@ -13,8 +13,9 @@ namespace crux {
 // The cells of one line: "a,,b" has three, "" one.
 std::vector<std::string_view> split_csv_line(std::string_view line);
 
-// The lines after the header, which must be `header`; a last newline ends the last row.
-// InputError(file, ...) for an empty text or another header. The views point into `text`.
+// The lines after the header, which must be `header`; a newline ends every line.
+// InputError(file, ...) for an empty text, a text cut after its last newline, or another
+// header. The views point into `text`.
 std::vector<std::string_view> csv_rows(std::string_view text, const std::string& file, std::string_view header);
 
 // Row `index` of csv_rows split into cells, which must be `columns`: InputError(file,

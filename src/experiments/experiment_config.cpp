@@ -12,6 +12,7 @@
 
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
+#include "common/printable.hpp"
 
 namespace crux {
 
@@ -279,7 +280,7 @@ ConfigLines apply_config_text(const std::string& text, const std::string& path, 
         } else if (key == "experiment.beginning_iterations") {
           now = "experiment.beginning";
         }
-        throw InputError(path, fmt::format("line {}: unknown key {}{}", line, key,
+        throw InputError(path, fmt::format("line {}: unknown key {}{}", line, printable(key),
                                            now.empty() ? std::string() : " (it is now " + now + ")"));
       }
       if (!accepted.accepts(key)) {
@@ -333,29 +334,30 @@ void finalize_config(ExperimentConfig& config) {
   }
   const auto solver = parse_ik_solver(config.solver);
   if (!solver)
-    throw InputError("ik.solver", fmt::format("unknown solver '{}' (expected fast or paper)", config.solver));
+    throw InputError("ik.solver",
+                     fmt::format("unknown solver '{}' (expected fast or paper)", printable(config.solver)));
   s.learning.climbing.reachability.ik.solver = *solver;
   const auto walk_solver = parse_ik_solver(config.compare_walk_solver);
   if (!walk_solver) {
-    throw InputError("compare.walk_solver",
-                     fmt::format("unknown solver '{}' (expected fast or paper)", config.compare_walk_solver));
+    throw InputError("compare.walk_solver", fmt::format("unknown solver '{}' (expected fast or paper)",
+                                                        printable(config.compare_walk_solver)));
   }
   config.compare_walk_solver_kind = *walk_solver;
   require(config.compare_queries > 0, "compare.queries", "must be positive");
   const auto planner = parse_planner(config.planner);
   if (!planner) {
     throw InputError("learning.planner",
-                     fmt::format("unknown planner '{}' (expected uniform or prioritized)", config.planner));
+                     fmt::format("unknown planner '{}' (expected uniform or prioritized)", printable(config.planner)));
   }
   s.learning.dyna.planner = *planner;
   const auto transfer = parse_transfer_mode(config.transfer);
   if (!transfer) {
-    throw InputError("experiment.transfer",
-                     fmt::format("unknown transfer mode '{}' (expected {})", config.transfer, transfer_mode_names()));
+    throw InputError("experiment.transfer", fmt::format("unknown transfer mode '{}' (expected {})",
+                                                        printable(config.transfer), transfer_mode_names()));
   }
   s.learning.dyna.transfer = *transfer;
   const auto reading = parse_reading(config.reading);
-  if (!reading) throw InputError("filter.reading", fmt::format("unknown reading '{}'", config.reading));
+  if (!reading) throw InputError("filter.reading", fmt::format("unknown reading '{}'", printable(config.reading)));
   s.learning.climbing.filter.feet_above_hands = *reading;
   if (config.runs) {
     require(*config.runs > 0, "experiment.runs", "must be positive");

@@ -22,7 +22,7 @@ Regime iteration_regime(std::string_view name, const std::string& file, std::siz
 
 }  // namespace
 
-std::vector<RunStep> read_iterations_file(const std::filesystem::path& path) {
+std::vector<RunStep> read_iterations_file(const std::filesystem::path& path, int recorded_iterations) {
   const std::string file = path.string();
   const std::string text = read_input_file(file, "iterations file");
   const std::vector<std::string_view> rows = csv_rows(text, file, kIterationsHeader);
@@ -50,6 +50,11 @@ std::vector<RunStep> read_iterations_file(const std::filesystem::path& path) {
       throw InputError(file, fmt::format("line {}: episode {} after episode {}", line, step.episode, previous_episode));
     }
     steps.push_back(step);
+  }
+  if (steps.size() != static_cast<std::size_t>(recorded_iterations)) {
+    throw InputError(file, fmt::format("has {} iterations, but summary.json records {}: the file was cut short or "
+                                       "belongs to another run",
+                                       steps.size(), recorded_iterations));
   }
   return steps;
 }

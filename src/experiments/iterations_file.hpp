@@ -25,7 +25,9 @@ struct RunStep {
 
 // Every row, each checked: the header, 7 fields, iterations numbered 1, 2, ... in
 // order, episodes from 0 rising by 0 or 1, a known regime, success 0 or 1, integers and
-// finite numbers. InputError(file, "line N: problem") otherwise.
-std::vector<RunStep> read_iterations_file(const std::filesystem::path& file);
+// finite numbers, a newline after the last row, and `recorded_iterations` rows (the
+// run's summary.json `iterations`), so that a file cut short is never read as a shorter
+// run. InputError(file, "line N: problem" or the problem) otherwise.
+std::vector<RunStep> read_iterations_file(const std::filesystem::path& file, int recorded_iterations);
 
 }  // namespace crux

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "common/input_error.hpp"
 #include "experiments/iterations_file.hpp"
 #include "experiments/run_config_file.hpp"
 #include "experiments/summary_file.hpp"
@@ -17,12 +16,8 @@ PaperFigureData read_paper_figure_data(const std::filesystem::path& folder) {
     for (std::size_t i = 0; i < condition.runs.size(); ++i) {
       const std::filesystem::path file =
           folder / "runs" / fmt::format("{}_{}", condition_name(condition.condition), i) / "iterations.csv";
-      const std::vector<RunStep> steps = read_iterations_file(file);
-      if (static_cast<int>(steps.size()) != data.iterations) {
-        throw InputError(file.string(),
-                         fmt::format("has {} iterations, but summary.json says {}", steps.size(), data.iterations));
-      }
-      for (const RunStep& step : steps) condition.runs[i].regimes.push_back(step.regime);
+      for (const RunStep& step : read_iterations_file(file, data.iterations))
+        condition.runs[i].regimes.push_back(step.regime);
     }
   }
   return data;

@@ -61,6 +61,10 @@ int summary_seeds_per_wall(const OrderedJson& summary, const std::string& file) 
   return JsonField(file, summary)["seeds_per_wall"].integer(1, 1'000'000);
 }
 
+int summary_iterations(const OrderedJson& summary, const std::string& file) {
+  return JsonField(file, summary)["iterations"].integer(0);
+}
+
 std::string summary_kind(const OrderedJson& summary, const std::string& file) {
   const JsonField kind = JsonField(file, summary)["kind"];
   const std::string value = kind.string();
@@ -83,7 +87,7 @@ void read_paper_summary(const std::filesystem::path& folder, PaperFigureData& da
   const std::string file = (folder / "summary.json").string();
   const OrderedJson json = read_summary(folder);
   const JsonField summary(file, json);
-  data.iterations = summary["iterations"].integer(0);
+  data.iterations = summary_iterations(json, file);
   data.seeds_per_wall = summary_seeds_per_wall(json, file);
 
   const JsonField lengths = summary["episode_lengths"];

@@ -18,6 +18,10 @@ OrderedJson read_summary(const std::filesystem::path& folder);
 // seeds_per_wall: an integer from 1 to 1000000; InputError(file, problem) otherwise.
 int summary_seeds_per_wall(const OrderedJson& summary, const std::string& file);
 
+// iterations: the iterations each run learnt for, an integer from 0; InputError(file,
+// problem) otherwise.
+int summary_iterations(const OrderedJson& summary, const std::string& file);
+
 // kind: "experiment" (crux paper) or "run" (train, transfer); InputError(file, problem)
 // for another value.
 std::string summary_kind(const OrderedJson& summary, const std::string& file);

@@ -12,6 +12,7 @@
 #include "common/csv_rows.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
+#include "common/printable.hpp"
 #include "experiments/summary_file.hpp"
 #include "wall/wall_file.hpp"
 
@@ -95,6 +96,7 @@ RunFolder locate_run_folder(const fs::path& directory) {
   }
   if (summary.is_null()) summary = read_summary(folder.directory);
   folder.urdf = summary_urdf(summary);
+  folder.iterations = summary_iterations(summary, folder.summary_file.string());
   folder.summary = nlohmann::json(summary);
   folder.wall = load_wall(folder.wall_file.string());
   return folder;
@@ -118,12 +120,12 @@ ReportedRun locate_reported_run(const fs::path& folder, const std::string& run_n
   if (!std::regex_match(run_name, run_name_pattern())) {
     throw InputError(flag, fmt::format("'{}' is not a run name: <condition>_<i>, condition training, transfer or "
                                        "control",
-                                       run_name.substr(0, 200)));
+                                       printable(run_name.substr(0, 200))));
   }
   out.run_directory = folder / "runs" / run_name;
   if (!fs::is_directory(out.run_directory, error)) {
-    throw InputError(
-        flag, fmt::format("'{}' is not a run of {}; it has {}", run_name, folder.string(), paper_run_names(folder)));
+    throw InputError(flag, fmt::format("'{}' is not a run of {}; it has {}", printable(run_name), folder.string(),
+                                       paper_run_names(folder)));
   }
   return out;
 }
@@ -187,7 +189,7 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
   RecordedClimb& last = folder.last;
   last = {"last", -1, true, {}, {}};
   if (!episodes.empty()) last.episode = static_cast<int>(episodes.size()) - 1;
-  folder.steps = read_iterations_file(folder.directory / "iterations.csv");
+  folder.steps = read_iterations_file(folder.directory / "iterations.csv", folder.iterations);
   std::size_t reached = 0;
   for (const RunStep& step : folder.steps) {
     if (step.episode != last.episode) continue;

@@ -34,6 +34,7 @@ struct RunFolder {
   Wall wall;
   std::filesystem::path summary_file;
   nlohmann::json summary;      // its contents: the run's, or its experiment's
+  int iterations = 0;          // the summary's: the rows iterations.csv must hold
   std::string urdf;            // the body model recorded in the summary's provenance ("" if none)
   std::vector<RunStep> steps;  // every row of iterations.csv
   RecordedClimb last;          // climb.csv and its episode's rows of iterations.csv
@@ -59,7 +60,8 @@ ReportedRun locate_reported_run(const std::filesystem::path& folder, const std::
 std::vector<int> read_episode_lengths(const std::filesystem::path& directory);
 
 // Reads climb.csv and greedy_climb.csv (whose columns must be `model`'s joints) and
-// iterations.csv into `folder`; InputError naming the file and the problem.
+// iterations.csv (which must hold folder.iterations rows) into `folder`; InputError naming
+// the file and the problem.
 void read_run_climb(RunFolder& folder, const BodyModel& model);
 
 // "the greedy policy's climb after learning" or "the climb of episode N" (N from 1, as

@@ -24,10 +24,11 @@ namespace fs = std::filesystem;
 namespace {
 
 // A run as the analysis needs it: its iterations (problem-space columns of
-// iterations.csv) and episode lengths; the agent-space columns are not in the folder.
-RunResult read_run(const fs::path& directory) {
+// iterations.csv, which must hold the `recorded_iterations` of its summary.json) and
+// episode lengths; the agent-space columns are not in the folder.
+RunResult read_run(const fs::path& directory, int recorded_iterations) {
   RunResult run;
-  for (const RunStep& step : read_iterations_file(directory / "iterations.csv")) {
+  for (const RunStep& step : read_iterations_file(directory / "iterations.csv", recorded_iterations)) {
     IterationRecord record;
     record.episode = step.episode;
     record.regime = step.regime;
@@ -107,13 +108,13 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
       for (int r = 0; r < settings.runs(); ++r) {
         const SweepTask& task = plan.tasks[run_task_index(plan, c, condition, r)];
         const fs::path directory = folder / task.folder;
-        runs.runs.push_back(read_run(directory));
+        const std::string summary_file = (directory / "summary.json").string();
+        const OrderedJson summary = read_summary(directory);
+        runs.runs.push_back(read_run(directory, summary_iterations(summary, summary_file)));
         const int pair = r / settings.seeds_per_wall;
         runs.cluster_of_run.push_back(static_cast<std::size_t>(pair));
         runs.wall_of_run.push_back(static_cast<std::size_t>(pair));
         const std::string name = condition_name(condition);
-        const std::string summary_file = (directory / "summary.json").string();
-        const OrderedJson summary = read_summary(directory);
         const JsonField facts = JsonField(summary_file, summary)["run_facts"][name][0];
         runs.learning_seeds.push_back(facts["learning_seed"].unsigned_integer());
         const fs::path wall_folder =

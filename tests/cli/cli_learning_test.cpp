@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <thread>
 
@@ -348,6 +349,14 @@ TEST(CliLearning, MalformedRunFoldersAreRefusedWithOneLine) {
     std::ofstream(copy / file, std::ios::trunc) << text;
     return copy;
   };
+  // iterations.csv cut by `cut`.
+  const auto copy_cut = [&](const std::string& name, const std::function<std::string(const std::string&)>& cut) {
+    const fs::path copy = learning_scratch(name);
+    fs::copy(train, copy, fs::copy_options::recursive);
+    const std::string text = read_text(copy / "iterations.csv");
+    std::ofstream(copy / "iterations.csv", std::ios::trunc) << cut(text);
+    return copy;
+  };
   const fs::path never = learning_scratch("malformed.svg");
   struct Case {
     fs::path folder;
@@ -356,7 +365,13 @@ TEST(CliLearning, MalformedRunFoldersAreRefusedWithOneLine) {
   const std::vector<Case> cases{
       {copy_with("far_posture", "climb.csv", "\n0,0.2", "\n0,9999.2"), "is outside [-1000, 1000] m"},
       {copy_with("negative_episode", "iterations.csv", "\n1,0,", "\n1,-1,"), "episodes count from 0"},
-      {copy_with("unknown_regime", "iterations.csv", "\n1,0,random,", "\n1,0,randomly,"), "unknown regime"}};
+      {copy_with("unknown_regime", "iterations.csv", "\n1,0,random,", "\n1,0,randomly,"), "unknown regime"},
+      {copy_cut("iterations_mid_row", [](const std::string& t) { return t.substr(0, t.size() - 5); }),
+       "iterations.csv: does not end with a newline"},
+      {copy_cut("iterations_no_newline", [](const std::string& t) { return t.substr(0, t.size() - 1); }),
+       "iterations.csv: does not end with a newline"},
+      {copy_cut("iterations_rows_removed", [](const std::string& t) { return t.substr(0, t.find("\n1999,") + 1); }),
+       "iterations.csv: has 1998 iterations, but summary.json records 2000"}};
   for (const Case& c : cases) {
     for (const std::string& command : {"view --run " + c.folder.string() + " -o " + never.string(),
                                        "report " + c.folder.string() + " -o " + never.string()}) {

@@ -92,6 +92,18 @@ TEST(CliSweep, WritesEachRunAndTheResultsAndPrintsEachCell) {
   for (const char* file : {"iterations.csv", "episodes.csv", "q_grid.bin", "climb.csv", "greedy_climb.csv"}) {
     EXPECT_TRUE(folder_contents(replay).at(file) == results.at(std::string("runs/c1/transfer_2/") + file)) << file;
   }
+  // A run's iterations.csv cut short is refused on resume, never analysed as a shorter run.
+  const fs::path cut = out / "runs/c0/training_1/iterations.csv";
+  const std::string whole = results.at("runs/c0/training_1/iterations.csv");
+  const std::string without_last_row = whole.substr(0, whole.rfind('\n', whole.size() - 2) + 1);
+  for (const std::string& text :
+       {whole.substr(0, whole.size() - 5), whole.substr(0, whole.size() - 1), without_last_row}) {
+    std::ofstream(cut, std::ios::trunc) << text;
+    const auto resumed = run_crux(sweep_arguments(out, 1));
+    EXPECT_EQ(resumed.exit_code, 2) << resumed.err;
+    EXPECT_EQ(testing::count_lines(resumed.err), 1) << resumed.err;
+    EXPECT_EQ(resumed.err.find("crux: " + cut.string() + ": "), 0u) << resumed.err;
+  }
 }
 
 // docs/TRANSFER.md's sweep, cut down by flags to one wall pair and a short run: one

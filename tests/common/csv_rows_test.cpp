@@ -30,9 +30,8 @@ TEST(CsvRows, SplitsALineAtEveryComma) {
   EXPECT_EQ(split_csv_line("x,"), (std::vector<std::string_view>{"x", ""}));
 }
 
-TEST(CsvRows, GivesTheRowsAfterTheHeaderWithOrWithoutALastNewline) {
+TEST(CsvRows, GivesTheRowsAfterTheHeader) {
   EXPECT_EQ(csv_rows("a,b\n1,2\n3,4\n", "f.csv", "a,b"), (std::vector<std::string_view>{"1,2", "3,4"}));
-  EXPECT_EQ(csv_rows("a,b\n1,2", "f.csv", "a,b"), (std::vector<std::string_view>{"1,2"}));
   EXPECT_TRUE(csv_rows("a,b\n", "f.csv", "a,b").empty());
   EXPECT_EQ(csv_rows("a,b\n1,2\n\n", "f.csv", "a,b"), (std::vector<std::string_view>{"1,2", ""}))
       << "a blank line is a row, which its reader then refuses";
@@ -45,8 +44,15 @@ TEST(CsvRows, RefusesAnEmptyTextAndAnotherHeader) {
   EXPECT_EQ(csv_problem([] { csv_rows("a\x1b,b\n", "f.csv", "a,b"); }),
             "line 1: the header must be 'a,b', not 'a\\x1b,b'")
       << "what is quoted stays printable";
-  EXPECT_EQ(csv_problem([] { csv_rows(std::string(50, 'x'), "f.csv", "a,b"); }),
+  EXPECT_EQ(csv_problem([] { csv_rows(std::string(50, 'x') + "\n", "f.csv", "a,b"); }),
             "line 1: the header must be 'a,b', not '" + std::string(37, 'x') + "...'");
+}
+
+TEST(CsvRows, RefusesATextCutAfterItsLastNewline) {
+  EXPECT_EQ(csv_problem([] { csv_rows("a,b\n1,2\n3,4", "f.csv", "a,b"); }),
+            "does not end with a newline: it was cut short")
+      << "'3,4' may be the start of '3,45'";
+  EXPECT_EQ(csv_problem([] { csv_rows("a,b", "f.csv", "a,b"); }), "does not end with a newline: it was cut short");
 }
 
 TEST(CsvRows, ARowMustHaveItsColumns) {

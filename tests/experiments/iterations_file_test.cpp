@@ -12,12 +12,12 @@ namespace {
 
 const std::string kIterationsCsvHeader = "iteration,episode,regime,hold,success,root_rise_cm,reward\n";
 
-// The problem of the InputError that reading `rows` (after the header) raises, which
-// must name the file.
-std::string iterations_problem(const std::string& name, const std::string& text) {
+// The problem of the InputError that reading `text` as a run of `recorded` iterations
+// raises, which must name the file.
+std::string iterations_problem(const std::string& name, const std::string& text, int recorded = 2) {
   const auto file = testing::write_temporary(name, text);
   try {
-    read_iterations_file(file);
+    read_iterations_file(file, recorded);
   } catch (const InputError& e) {
     EXPECT_EQ(e.source(), file.string());
     return e.problem();
@@ -30,7 +30,7 @@ TEST(IterationsFile, ReadsEveryRow) {
   const auto file = testing::write_temporary(
       "iterations_good.csv",
       kIterationsCsvHeader + "1,0,w_greedy,12,1,4.5,-1\n2,0,random,7,0,0,-10\n3,1,g_greedy,3,1,-2.25,100\n");
-  const std::vector<RunStep> steps = read_iterations_file(file);
+  const std::vector<RunStep> steps = read_iterations_file(file, 3);
   ASSERT_EQ(steps.size(), 3u);
   EXPECT_EQ(steps[0].iteration, 1);
   EXPECT_EQ(steps[0].regime, Regime::WGreedy);
@@ -41,11 +41,11 @@ TEST(IterationsFile, ReadsEveryRow) {
   EXPECT_FALSE(steps[1].success);
   EXPECT_EQ(steps[2].episode, 1);
   EXPECT_EQ(steps[2].regime, Regime::GGreedy);
-  EXPECT_TRUE(read_iterations_file(testing::write_temporary("iterations_none.csv", kIterationsCsvHeader)).empty());
+  EXPECT_TRUE(read_iterations_file(testing::write_temporary("iterations_none.csv", kIterationsCsvHeader), 0).empty());
 }
 
 TEST(IterationsFile, RefusesAMissingFileAndAnotherHeader) {
-  EXPECT_THROW(read_iterations_file(testing::temporary_path("iterations_missing.csv")), InputError);
+  EXPECT_THROW(read_iterations_file(testing::temporary_path("iterations_missing.csv"), 0), InputError);
   EXPECT_EQ(iterations_problem("iterations_empty.csv", ""),
             "is empty; the header line must be 'iteration,episode,regime,hold,success,root_rise_cm,reward'");
   EXPECT_EQ(iterations_problem("iterations_header.csv", "iteration,episode,mode\n1,0,random\n"),
@@ -72,6 +72,19 @@ TEST(IterationsFile, RefusesABadRowNamingItsLine) {
   EXPECT_EQ(iterations_problem("iterations_reward.csv", one + "2,0,random,3,1,0.5,inf\n"),
             "line 3: 'inf' is not finite");
   EXPECT_EQ(iterations_problem("iterations_rise.csv", one + "2,0,random,3,1,,-1\n"), "line 3: '' is not a number");
+}
+
+TEST(IterationsFile, RefusesAFileCutShort) {
+  const std::string rows = kIterationsCsvHeader + "1,0,random,3,1,0.5,-1\n2,0,random,4,1,2.25,-1\n";
+  EXPECT_EQ(iterations_problem("iterations_mid_row.csv", rows.substr(0, rows.size() - 5)),
+            "does not end with a newline: it was cut short")
+      << "'2,0,random,4,1,2.' parses as a row";
+  EXPECT_EQ(iterations_problem("iterations_no_newline.csv", rows.substr(0, rows.size() - 1)),
+            "does not end with a newline: it was cut short");
+  EXPECT_EQ(iterations_problem("iterations_rows_removed.csv", rows, 3),
+            "has 2 iterations, but summary.json records 3: the file was cut short or belongs to another run");
+  EXPECT_EQ(iterations_problem("iterations_rows_added.csv", rows, 1),
+            "has 2 iterations, but summary.json records 1: the file was cut short or belongs to another run");
 }
 
 }  // namespace

@@ -127,7 +127,8 @@ TEST(PaperFigureData, EveryRunHasTheSummarysIterations) {
   write_figure_file(short_run / "runs" / "training_1" / "iterations.csv", text);
   const InputError e = figure_data_error(short_run);
   EXPECT_EQ(e.source(), (short_run / "runs" / "training_1" / "iterations.csv").string());
-  EXPECT_EQ(e.problem(), "has 2 iterations, but summary.json says 3");
+  EXPECT_EQ(e.problem(),
+            "has 2 iterations, but summary.json records 3: the file was cut short or belongs to another run");
 }
 
 }  // namespace
