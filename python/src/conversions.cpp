@@ -8,6 +8,7 @@
 
 #include "body/urdf_loader.hpp"
 #include "common/input_error.hpp"
+#include "common/printable.hpp"
 
 namespace crux::python {
 
@@ -142,7 +143,8 @@ Limb limb_from(const py::handle& limb) {
   if (py::isinstance<py::str>(limb)) {
     const std::string name = limb.cast<std::string>();
     if (const auto parsed = parse_limb(name)) return *parsed;
-    throw InputError("limb", fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", name));
+    throw InputError("limb",
+                     fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", printable(name)));
   }
   if (const auto index = as_integer(limb); index && *index >= py::int_(0) && *index < py::int_(kLimbCount)) {
     return static_cast<Limb>(index->cast<int>());

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
+#include "common/printable.hpp"
 #include "conversions.hpp"
 
 namespace py = pybind11;
@@ -95,8 +96,9 @@ ExperimentConfig config_from_python(const py::handle& config, const ParameterSet
     const std::vector<ConfigField> fields = config_fields(out);
     for (const auto& [key, value] : entries) {
       const auto field = std::find_if(fields.begin(), fields.end(), [&](const ConfigField& f) { return f.key == key; });
-      if (field == fields.end()) throw InputError(kSource, fmt::format("unknown key {}", key));
-      if (!accepted.accepts(key)) throw InputError(kSource, fmt::format("crux.{} does not take {}", caller, key));
+      if (field == fields.end()) throw InputError(kSource, fmt::format("unknown key {}", printable(key)));
+      if (!accepted.accepts(key))
+        throw InputError(kSource, fmt::format("crux.{} does not take {}", caller, printable(key)));
       assign(*field, value);
       out.given.insert(key);
     }

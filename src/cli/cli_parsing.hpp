@@ -12,6 +12,7 @@
 
 #include "body/body_model.hpp"
 #include "common/input_error.hpp"
+#include "common/printable.hpp"
 
 namespace crux::cli {
 
@@ -21,7 +22,7 @@ inline Eigen::Vector3d parse_wall_point(const std::string& text, const char* fla
   double y = 0, z = 0;
   char comma = 0;
   if (!(in >> y >> comma >> z) || comma != ',' || !(in >> std::ws).eof() || !std::isfinite(y) || !std::isfinite(z)) {
-    throw InputError(flag, fmt::format("expected Y,Z in metres, got '{}'", text));
+    throw InputError(flag, fmt::format("expected Y,Z in metres, got '{}'", printable(text)));
   }
   return {0.0, y, z};
 }

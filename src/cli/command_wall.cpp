@@ -11,6 +11,7 @@
 #include "cli/parameter_binding.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
+#include "common/printable.hpp"
 #include "configurations/reachability.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/wall_description.hpp"
@@ -78,8 +79,8 @@ struct ShowCommand {
     if (!grid_limb.empty()) {
       const auto limb = parse_limb(grid_limb);
       if (!limb)
-        throw InputError("--limb",
-                         fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", grid_limb));
+        throw InputError("--limb", fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)",
+                                               printable(grid_limb)));
       Eigen::Vector3d at = wall.holds[wall.start[static_cast<int>(*limb)]].position;
       if (!grid_at.empty()) at = parse_wall_point(grid_at, "--at");
       const GridParameters& parameters = config.settings.learning.climbing.grid;

@@ -15,6 +15,7 @@
 #include "common/atomic_file.hpp"
 #include "common/build_info.hpp"
 #include "common/input_error.hpp"
+#include "common/printable.hpp"
 
 namespace {
 
@@ -98,7 +99,7 @@ int check_names(const CLI::App& app, int argc, char** argv, const CLI::App*& com
       const auto renamed = renamed_flags().find(name);
       const bool known_rename = renamed != renamed_flags().end() && command->get_option_no_throw(renamed->second);
       return refuse(fmt::format(
-          "unknown option {} of '{}'{} (see '{} --help')", name, command_path(command),
+          "unknown option {} of '{}'{} (see '{} --help')", crux::printable(name), command_path(command),
           known_rename ? fmt::format(" (it is now {})", renamed->second) : hint(crux::cli::nearest_name(name, flags)),
           command_path(command)));
     }
@@ -116,7 +117,7 @@ int check_names(const CLI::App& app, int argc, char** argv, const CLI::App*& com
     if (sub == names.end()) {
       const std::string parent = command == &app ? std::string() : command_path(command).substr(5) + " ";
       const std::string nearest = crux::cli::nearest_name(arg, names);
-      return refuse(fmt::format("unknown command '{}{}'{} (see '{} --help')", parent, arg,
+      return refuse(fmt::format("unknown command '{}{}'{} (see '{} --help')", parent, crux::printable(arg),
                                 hint(nearest.empty() ? nearest : parent + nearest), command_path(command)));
     }
     command = command->get_subcommand(arg);
@@ -162,19 +163,21 @@ int main(int argc, char** argv) {
     const std::string wall_hint =
         command->get_option_no_throw("--wall-file") != nullptr ? "; a wall file is given with --wall-file FILE" : "";
     return refuse(fmt::format("'{}' does not take {}{} (see '{} --help')", command_path(command),
-                              e.what() + std::string_view(e.what()).find(':') + 2, wall_hint, command_path(command)));
+                              crux::printable(e.what() + std::string_view(e.what()).find(':') + 2), wall_hint,
+                              command_path(command)));
   } catch (const CLI::ConversionError& e) {
     // CLI11 says "Could not convert: --flag = value"; name the flag first, as elsewhere.
     const std::string_view what = e.what();
     const std::size_t colon = what.find(": "), equals = what.find(" = ");
     if (colon != std::string_view::npos && equals != std::string_view::npos && equals > colon) {
       return refuse(fmt::format("{}: '{}' is out of range or not of the option's type (see '{} --help')",
-                                what.substr(colon + 2, equals - colon - 2), what.substr(equals + 3),
+                                what.substr(colon + 2, equals - colon - 2), crux::printable(what.substr(equals + 3)),
                                 command_path(command)));
     }
-    return refuse(fmt::format("{} (see '{} --help')", what, command_path(command)));
+    return refuse(fmt::format("{} (see '{} --help')", crux::printable(what), command_path(command)));
   } catch (const CLI::ParseError& e) {
-    return refuse(fmt::format("{} (see '{} --help')", e.what(), command_path(command)));
+    // CLI11 quotes the values it refuses as given.
+    return refuse(fmt::format("{} (see '{} --help')", crux::printable(e.what()), command_path(command)));
   } catch (const crux::InputError& e) {
     return refuse(e.what());
   } catch (const std::exception& e) {

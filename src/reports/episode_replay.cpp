@@ -6,6 +6,7 @@
 
 #include "common/counted.hpp"
 #include "common/input_error.hpp"
+#include "common/printable.hpp"
 
 namespace crux {
 
@@ -56,8 +57,8 @@ RecordedClimb climb_to_show(const RunFolder& folder, const BodyModel& model, con
   int number = 0;
   const auto [end, error] = std::from_chars(choice.data(), choice.data() + choice.size(), number);
   if (error != std::errc() || end != choice.data() + choice.size() || choice.empty()) {
-    throw InputError(
-        flag, fmt::format("expected greedy, last or an episode number (from 1), got '{}'", choice.substr(0, 40)));
+    throw InputError(flag, fmt::format("expected greedy, last or an episode number (from 1), got '{}'",
+                                       printable(choice.substr(0, 40))));
   }
   if (number < 1) throw InputError(flag, fmt::format("episodes are numbered from 1, not {}", number));
   return replay_episode(folder, model, parameters, number - 1, flag);

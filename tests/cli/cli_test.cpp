@@ -61,6 +61,31 @@ TEST(Cli, BadArgumentsExitWithCode2) {
   EXPECT_EQ(huge_grid.err.rfind("crux: --grid-columns: ", 0), 0u) << huge_grid.err;
 }
 
+// A refused value is quoted on one line with its control bytes escaped: a newline in it
+// cannot make two lines, nor an escape byte reach the terminal.
+TEST(Cli, RefusedValuesAreQuotedEscaped) {
+  const std::string value = "'q\n\x1b[31m'";  // in single quotes for the shell
+  const std::string escaped = "q\\x0a\\x1b[31m";
+  const std::filesystem::path sweep =
+      testing::write_temporary("escaped_sweep.toml", "[experiment]\ntransfer = [\"paper\", \"q\\n\\u001b[31m\"]\n");
+  const std::filesystem::path reading =
+      testing::write_temporary("escaped_reading.toml", "[filter]\nreading = \"q\\n\\u001b[31m\"\n");
+  const std::filesystem::path never = testing::temporary_path("escaped_never");
+  for (const std::string& command :
+       {"plan --wall-seed 3 --ik-solver " + value,
+        "train --wall-seed 3 --learning-planner " + value + " -o " + never.string(),
+        "paper --transfer " + value + " -o " + never.string(), "plan --wall-seed 3 --config " + reading.string(),
+        "sweep --config " + sweep.string() + " -o " + never.string(), "plan --wall-seed " + value,
+        "plan --wall-seed 3 --wall-fil" + value, "pl" + value}) {
+    const testing::Outcome run = testing::run_crux(command);
+    EXPECT_EQ(run.exit_code, 2) << command;
+    EXPECT_EQ(testing::count_lines(run.err), 1) << run.err;
+    EXPECT_NE(run.err.find(escaped), std::string::npos) << run.err;
+    EXPECT_EQ(run.err.find('\x1b'), std::string::npos) << run.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(never));
+}
+
 TEST(Cli, IkReportsTheIssuesKeysForBothSolvers) {
   for (const std::string solver : {"paper", "fast"}) {
     const testing::Outcome run =
