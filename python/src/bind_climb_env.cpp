@@ -42,7 +42,9 @@ class ClimbEnv {
   ClimbEnv(const ClimbEnv&) = delete;
   ClimbEnv& operator=(const ClimbEnv&) = delete;
 
-  py::tuple reset(const py::handle&, const py::handle&) {
+  py::tuple reset(const py::handle& seed, const py::handle&) {
+    // Gymnasium's seed is None or an integer; whatever else is a mistake, refused though unused.
+    if (!seed.is_none()) uint64_from(seed, "seed");
     mdp_->reset();
     steps_ = 0;
     over_ = false;
@@ -156,7 +158,7 @@ void bind_climb_env(py::module_& m) {
            "an episode is truncated after max_steps actions")
       .def("reset", &ClimbEnv::reset, py::arg("seed") = py::none(), py::arg("options") = py::none(),
            "Back to the start configuration with the right hand free: (obs, info). The environment draws no random "
-           "number, so the seed changes nothing.")
+           "number, so the seed (None or an integer from 0 to 2^64 - 1) changes nothing.")
       .def("step", &ClimbEnv::step, py::arg("action"), "(obs, reward, terminated, truncated, info)")
       .def("action_mask", &ClimbEnv::action_mask, "bool array over hold indices: the possible actions of the state")
       .def("observation", &ClimbEnv::observation)

@@ -19,6 +19,13 @@ namespace crux::python {
 
 namespace {
 
+// The action counts a QTable takes from Python, by its constructor and by from_numpy alike.
+constexpr long long kMaxActionCount = 1 << 20;
+
+int action_count_from(const py::handle& count, const char* what) {
+  return static_cast<int>(integer_from(count, 1, kMaxActionCount, what));
+}
+
 py::tuple table_to_numpy(const QTable& table) {
   const auto rows = static_cast<py::ssize_t>(table.state_count());
   const py::ssize_t actions = table.action_count();
@@ -50,7 +57,8 @@ QTable table_from_numpy(const py::handle& states_handle, const py::handle& value
       throw InputError("visits", "must have the shape of values");
     }
   }
-  const auto actions = static_cast<int>(values.shape(1));
+  // A (0, n) array holds no values for any n; n must still be an action count, never wrapped.
+  const int actions = action_count_from(py::int_(values.shape(1)), "values' columns (the action count)");
   QTable table(actions);
   for (py::ssize_t r = 0; r < states.shape(0); ++r) {
     if (states.at(r) < 0) throw InputError("states", "must be state codes, 0 or more");
@@ -81,9 +89,8 @@ ActionCode action_from(const QTable& table, const py::handle& action) {
 
 void bind_learning(py::module_& m) {
   py::class_<QTable>(m, "QTable", "A Q-table over integer states and actions, sparse in states; unwritten values are 0")
-      .def(py::init([](const py::handle& action_count) {
-             return QTable(static_cast<int>(integer_from(action_count, 1, 1 << 20, "action_count")));
-           }),
+      .def(py::init(
+               [](const py::handle& action_count) { return QTable(action_count_from(action_count, "action_count")); }),
            py::arg("action_count"))
       .def_property_readonly("action_count", &QTable::action_count)
       .def_property_readonly("state_count", &QTable::state_count)

@@ -26,6 +26,15 @@ def same_observation(a, b):
     return a.keys() == b.keys() and all(np.array_equal(a[k], b[k], equal_nan=True) for k in a)
 
 
+def test_reset_takes_none_or_an_integer_seed(wall7):
+    env = crux.ClimbEnv(wall7)
+    for seed in (None, 0, np.int64(7), 2**64 - 1):
+        env.reset(seed=seed)
+    for seed in ("x", 1.5, True, -1, 2**64):
+        with pytest.raises(ValueError, match="^seed: "):
+            env.reset(seed=seed)
+
+
 def test_reset_is_the_start_with_the_right_hand_free(wall7):
     env = crux.ClimbEnv(wall7)
     obs, info = env.reset(seed=5)

@@ -50,6 +50,16 @@ def test_bad_table_arguments_are_value_errors():
         crux.QTable.from_numpy([1], np.zeros((1, 3)), np.array([[0, -1, 0]]))
 
 
+def test_from_numpy_takes_the_action_counts_the_constructor_takes():
+    limit = "must be an integer from 1 to 1048576$"
+    with pytest.raises(ValueError, match="^action_count: " + limit):
+        crux.QTable(2**20 + 1)
+    for columns in (2**32 + 1, 2**20 + 1):  # an empty array of any width: 2^32 + 1 once wrapped to 1
+        with pytest.raises(ValueError, match=r"^values' columns \(the action count\): " + limit):
+            crux.QTable.from_numpy(np.zeros(0, dtype=np.uint64), np.zeros((0, columns)))
+    assert crux.QTable.from_numpy(np.zeros(0, dtype=np.uint64), np.zeros((0, 2**20))).action_count == 2**20
+
+
 def test_a_transferred_table_must_fit_the_grid():
     wrong_width = crux.QTable(5)
     with pytest.raises(ValueError, match="^q_grid: has 5 actions, but the grid has 35 tiles$"):

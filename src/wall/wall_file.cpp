@@ -318,6 +318,10 @@ std::string start_line(const Wall& wall) {
 
 Wall parse_wall(const std::string& json_text, const std::string& source) {
   if (json_text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(source, "the file is empty");
+  // The parser ends the text at a NUL byte, so what follows it would be ignored (as the URDF reader refuses it).
+  if (const std::size_t nul = json_text.find('\0'); nul != std::string::npos) {
+    throw InputError(source, fmt::format("a NUL byte at offset {}: a wall file is JSON text", nul));
+  }
   JsonStructureCheck check;
   if (!Json::sax_parse(json_text, &check)) throw InputError(source, check.problem());
   return WallReader(source).read(Json::parse(json_text));

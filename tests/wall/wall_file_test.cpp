@@ -258,6 +258,8 @@ std::vector<BadWallCase> bad_wall_cases() {
       edit("truncated", "  ]\n}", "  ]", "JSON syntax error at line 14"),
       edit("nan_literal", "0.3, 1.5]", "NaN, 1.5]", "JSON syntax error at line 10"),
       edit("trailing_garbage", "  ]\n}\n", "  ]\n}\n}", "JSON syntax error at line 15, column 1"),
+      // The JSON parser stops at a NUL byte: what follows it must not be ignored.
+      edit("nul_byte", "  ]\n}\n", std::string("  ]\n}\n\0{\"holds\": []}\n", 21), "a NUL byte at offset 487"),
       whole("not_an_object", "[1, 2, 3]", "the top level must be a JSON object, got array"),
       edit("format_missing", "\"format\": \"crux-wall\",", "", "format is missing"),
       edit("format_wrong", "\"crux-wall\"", "\"crux-body\"", "format must be \"crux-wall\", got \"crux-body\""),
