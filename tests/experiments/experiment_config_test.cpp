@@ -84,6 +84,15 @@ TEST(ExperimentConfig, TheWrittenConfigHoldsOnlyTheCommandsKeysAndSetValues) {
       << "file names are written absolute, to replay from anywhere";
 }
 
+// Unlike the other input files, an empty config file is valid: TOML that sets nothing,
+// so the defaults hold (docs/RELIABILITY.md).
+TEST(ExperimentConfig, AnEmptyFileSetsNothingSoTheDefaultsHold) {
+  const auto path = testing::write_temporary("config_empty.toml", "");
+  ExperimentConfig defaults, config;
+  apply_config_file(path.string(), config, kEverything, "paper");
+  EXPECT_EQ(config_to_toml(config, kEverything), config_to_toml(defaults, kEverything));
+}
+
 TEST(ExperimentConfig, TheProvenanceTableIsKeptForTheReplaysCheck) {
   const auto path =
       testing::write_temporary("config_provenance.toml", "[ik]\nalpha = 0.3\n[provenance]\nurdf_sha256 = \"abc\"\n");
