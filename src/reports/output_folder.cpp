@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "common/atomic_file.hpp"
+#include "common/folder_lock.hpp"
 #include "common/input_error.hpp"
 #include "experiments/run_checkpoint.hpp"
 #include "reports/figure_tables.hpp"
@@ -97,7 +98,10 @@ void check_output_folder(const fs::path& directory, const std::vector<std::strin
   }
   if (!fs::exists(directory, error)) return;
   if (!fs::is_directory(directory, error)) throw InputError(directory.string(), "exists and is not a folder");
-  if (!overwrite && !fs::is_empty(directory, error)) {
+  const bool holds_files =
+      std::any_of(fs::directory_iterator(directory, error), fs::directory_iterator(),
+                  [](const fs::directory_entry& entry) { return entry.path().filename() != kFolderLockFile; });
+  if (!overwrite && holds_files) {
     throw InputError(directory.string(),
                      "already holds files; choose another output folder, or pass --overwrite to replace crux's "
                      "outputs there");

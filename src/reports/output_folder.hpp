@@ -17,7 +17,7 @@ namespace crux {
 
 // Checks `directory` before the long work, writing nothing: InputError naming it when it
 // holds one of the command's `inputs` (it would be overwritten), or already holds files
-// and `overwrite` is false.
+// (a lock file alone does not count: folder_lock.hpp) and `overwrite` is false.
 void check_output_folder(const std::filesystem::path& directory, const std::vector<std::string>& inputs,
                          bool overwrite);
 

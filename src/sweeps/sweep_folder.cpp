@@ -19,9 +19,10 @@ constexpr const char* kSweepOutputs[] = {"sweep.toml",   "walls",        "runs",
 
 }  // namespace
 
-void prepare_sweep_folder(const fs::path& folder, const std::string& sweep_toml, const std::vector<std::string>& inputs,
-                          bool overwrite) {
+FolderLock prepare_sweep_folder(const fs::path& folder, const std::string& sweep_toml,
+                                const std::vector<std::string>& inputs, bool overwrite) {
   if (folder.empty()) throw InputError("--output", "the output folder name is empty");
+  FolderLock lock(folder, "crux sweep");
   const fs::path recorded = folder / "sweep.toml";
   std::error_code error;
   // What a SIGKILL may have left half-written: temporaries of the sweep's own files.
@@ -46,6 +47,7 @@ void prepare_sweep_folder(const fs::path& folder, const std::string& sweep_toml,
     throw InputError((folder / kPartialFolder).string(), "cannot remove the half-written tasks: " + error.message());
   write_file_atomically(folder / kIncompleteMarker,
                         "crux is running the sweep of this folder; start the same command again to resume it.\n");
+  return lock;
 }
 
 std::vector<bool> finished_tasks(const SweepPlan& plan, const fs::path& folder) {

@@ -1,6 +1,7 @@
 #include "sweeps/sweep_run.hpp"
 
 #include <chrono>
+#include <optional>
 
 #include "sweeps/sweep_folder.hpp"
 #include "sweeps/sweep_results.hpp"
@@ -26,8 +27,9 @@ SweepOutcome run_sweep(const SweepJob& job, const BodyModel& model, SweepCluster
   }
   outcome.coordinator = true;
   std::vector<bool> finished;
+  std::optional<FolderLock> lock;
   try {
-    prepare_sweep_folder(job.folder, job.sweep_toml, job.inputs, job.overwrite);
+    lock.emplace(prepare_sweep_folder(job.folder, job.sweep_toml, job.inputs, job.overwrite));
     finished = finished_tasks(job.plan, job.folder);
   } catch (...) {
     if (cluster != nullptr) cluster->share_readiness(false);

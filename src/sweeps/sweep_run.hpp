@@ -1,6 +1,6 @@
 #pragma once
 // A whole sweep (crux sweep), in one process or across the processes of a SweepCluster
-// (MPI: mpi_cluster.hpp). Process 0 prepares the folder, coordinates and, at the end,
+// (MPI: mpi_cluster.hpp). Process 0 locks and prepares the folder, coordinates and, at the end,
 // writes results.csv and summary.json from the task folders; every other process only
 // runs the tasks it is sent. Every process must be given the same job.
 

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/held_folder_lock.hpp"
 #include "support/run_crux.hpp"
 #include "support/sweep_cells.hpp"
 #include "support/test_models.hpp"
@@ -141,6 +142,16 @@ TEST(CliSweep, BadListsAndAnotherSweepsFolderAreOneLineErrors) {
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
   EXPECT_NE(outcome.err.find("holds another sweep (its sweep.toml differs"), std::string::npos) << outcome.err;
+}
+
+TEST(CliSweep, ASweepOnAFolderThatAnotherSweepWritesIsOneLineError) {
+  const fs::path out = testing::sweep_scratch("locked");
+  testing::HeldFolderLock other(out);
+  const auto outcome = run_crux(sweep_arguments(out, 2));
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.err, "crux: " + out.string() + ": is being written by another crux sweep (pid " +
+                             std::to_string(::getpid()) + "); wait until it ends, or choose another folder\n");
+  EXPECT_EQ(folder_contents(out).size(), 1u) << "the lock file alone";
 }
 
 TEST(CliSweep, ASweepKilledAtAnyMomentResumesToTheSameBytes) {

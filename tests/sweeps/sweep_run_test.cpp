@@ -1,8 +1,13 @@
 #include "sweeps/sweep_run.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <fstream>
+
+#include "common/folder_lock.hpp"
 #include "common/input_error.hpp"
+#include "support/held_folder_lock.hpp"
 #include "support/sweep_cells.hpp"
 #include "support/test_models.hpp"
 #include "sweeps/sweep_task.hpp"
@@ -83,6 +88,53 @@ TEST(SweepRun, AFolderOfAnotherSweepIsRefusedBeforeAnyWork) {
   job.overwrite = true;
   run_sweep(job, testing::human_model(), nullptr);
   EXPECT_EQ(folder_contents(folder).at("sweep.toml"), job.sweep_toml);
+}
+
+// The test holds the folder's lock as another sweep would: a second sweep is refused
+// before it writes anything, and runs once the first has ended.
+TEST(SweepRun, ASweepIsRefusedWhileAnotherWritesItsFolder) {
+  const fs::path folder = testing::sweep_scratch("locked");
+  const SweepJob job = small_job(folder, 2);
+  testing::HeldFolderLock other(folder);
+  const auto before = folder_contents(folder);
+  try {
+    run_sweep(job, testing::human_model(), nullptr);
+    FAIL() << "two sweeps wrote one folder";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.problem(), "is being written by another crux sweep (pid " + std::to_string(::getpid()) +
+                               "); wait until it ends, or choose another folder");
+  }
+  EXPECT_EQ(folder_contents(folder), before) << "nothing written";
+  other.release();
+  const SweepOutcome outcome = run_sweep(job, testing::human_model(), nullptr);
+  EXPECT_EQ(outcome.already_finished, 0u);
+  EXPECT_TRUE(fs::exists(folder / "results.csv"));
+  EXPECT_FALSE(fs::exists(folder / kFolderLockFile)) << "the lock is not an output";
+}
+
+// A resume beside a running sweep would clear .partial/ under it: refused, the
+// interrupted folder kept as it was, and resumed once the other sweep has ended.
+TEST(SweepRun, AResumeIsRefusedWhileAnotherSweepWritesItsFolder) {
+  const fs::path folder = testing::sweep_scratch("locked-resume");
+  const auto whole = sweep_bytes(folder, 2);
+  const SweepJob job = small_job(folder, 2);
+  run_sweep(job, testing::human_model(), nullptr);
+  fs::remove_all(folder / "runs/c1/training_1");
+  fs::remove_all(folder / "runs/c1/transfer_1");
+  fs::remove(folder / "results.csv");
+  fs::remove(folder / "summary.json");
+  fs::create_directories(folder / kPartialFolder / "7.host.1");
+  std::ofstream(folder / kPartialFolder / "7.host.1" / "iterations.csv") << "half\n";
+  testing::HeldFolderLock other(folder);
+  const auto interrupted = folder_contents(folder);
+  EXPECT_THROW(run_sweep(job, testing::human_model(), nullptr), InputError);
+  EXPECT_EQ(folder_contents(folder), interrupted) << ".partial/ and every task kept";
+  other.release();
+  const SweepOutcome outcome = run_sweep(job, testing::human_model(), nullptr);
+  EXPECT_EQ(outcome.already_finished, 14u);
+  const auto resumed = folder_contents(folder);
+  ASSERT_EQ(resumed.size(), whole.size()) << "no lock file among the outputs";
+  for (const auto& [file, bytes] : whole) EXPECT_TRUE(resumed.at(file) == bytes) << file;
 }
 
 }  // namespace
