@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
 #include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
 #include "experiments/run_config_file.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/report_figures.hpp"
@@ -31,6 +32,7 @@ struct ReportCommand {
   bool json = false;
 
   void run() {
+    if (output.empty()) throw InputError("--output", "give the HTML file to write");
     const auto started = std::chrono::steady_clock::now();
     ExperimentConfig config = binding.resolve();
     const ReportedRun reported = locate_reported_run(folder, run_name, "--run");

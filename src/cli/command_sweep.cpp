@@ -92,7 +92,7 @@ struct SweepCommand {
   }
 
   std::pair<SweepJob, BodyModel> prepare() {
-    const SweepGrid grid{binding.listed_keys()};
+    const SweepGrid grid{binding.listed_keys(), binding.config_path()};
     SweepDefinition definition = define_sweep(grid, [&](const ListChoice& choice) { return binding.resolve(choice); });
     const ExperimentConfig& first = definition.plan.cells.front().config;
     if (!binding.config_path().empty()) {

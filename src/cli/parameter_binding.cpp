@@ -76,10 +76,14 @@ bool ParameterBinding::is_set(const std::string& key) const {
   return (given != nullptr && given->count() > 0) || lines_.contains(key);
 }
 
-std::vector<ListedKey> ParameterBinding::listed_keys() const {
+const ConfigDocument& ParameterBinding::document() {
+  if (!document_) document_.emplace(read_input_file(config_path_, "config file"), config_path_);
+  return *document_;
+}
+
+std::vector<ListedKey> ParameterBinding::listed_keys() {
   if (config_path_.empty()) return {};
-  std::vector<ListedKey> listed =
-      crux::listed_keys(read_input_file(config_path_, "config file"), config_path_, accepted_);
+  std::vector<ListedKey> listed = crux::listed_keys(document(), accepted_);
   std::erase_if(listed, [&](const ListedKey& k) {
     const CLI::Option* given = option(k.key);
     return given != nullptr && given->count() > 0;
@@ -94,7 +98,7 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
   for (const auto& [key, given] : options_) {
     if (given->count() > 0) effective.emplace(key, 0);
   }
-  if (!config_path_.empty()) lines_ = apply_config_file(config_path_, config, accepted_, command_, effective);
+  if (!config_path_.empty()) lines_ = apply_config_document(document(), config, accepted_, command_, effective);
   const auto flags = config_fields(from_flags_);
   const auto fields = config_fields(config);
   for (std::size_t i = 0; i < fields.size(); ++i) {

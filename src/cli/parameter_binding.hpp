@@ -4,6 +4,7 @@
 // command's defaults. Every error names what the user typed: the flag, or the file, its
 // line and the key.
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,7 +26,7 @@ class ParameterBinding {
   // (crux sweep) takes the value `choice` names.
   ExperimentConfig resolve(const ListChoice& choice = {});
   // The config file's keys given a list of values, minus those a flag sets to one value.
-  std::vector<ListedKey> listed_keys() const;
+  std::vector<ListedKey> listed_keys();
 
   const ParameterSet& accepted() const { return accepted_; }
   const std::string& config_path() const { return config_path_; }
@@ -42,6 +43,10 @@ class ParameterBinding {
   std::string config_path_;
   std::vector<std::pair<std::string, CLI::Option*>> options_;  // key, its flag
   ConfigLines lines_;
+  // The config file, read and parsed at its first use: a sweep resolves every cell from it.
+  std::optional<ConfigDocument> document_;
+
+  const ConfigDocument& document();
 };
 
 }  // namespace crux::cli

@@ -1,6 +1,7 @@
 #include "experiments/experiment_config.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -207,9 +208,16 @@ ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config,
   return apply_config_text(read_input_file(path, "config file"), path, config, accepted, command, choice);
 }
 
+struct ConfigDocument::Table {
+  toml::table value;
+};
+
 namespace {
 
+std::atomic<std::size_t> config_parse_count{0};
+
 toml::table parse_config(const std::string& text, const std::string& path) {
+  ++config_parse_count;
   try {
     return toml::parse(text, path);
   } catch (const toml::parse_error& e) {
@@ -228,8 +236,17 @@ bool may_be_listed(const std::string& key) {
 
 }  // namespace
 
-std::vector<ListedKey> listed_keys(const std::string& text, const std::string& path, const ParameterSet& accepted) {
-  const toml::table table = parse_config(text, path);
+ConfigDocument::ConfigDocument(const std::string& text, std::string source)
+    : source_(std::move(source)), table_(std::make_unique<Table>(Table{parse_config(text, source_)})) {}
+ConfigDocument::ConfigDocument(ConfigDocument&&) noexcept = default;
+ConfigDocument& ConfigDocument::operator=(ConfigDocument&&) noexcept = default;
+ConfigDocument::~ConfigDocument() = default;
+
+std::size_t ConfigDocument::parses() { return config_parse_count; }
+
+std::vector<ListedKey> listed_keys(const ConfigDocument& document, const ParameterSet& accepted) {
+  const toml::table& table = document.table().value;
+  const std::string& path = document.source();
   std::vector<ListedKey> listed;
   ExperimentConfig probe;
   for (const ConfigField& field : config_fields(probe)) {
@@ -252,7 +269,13 @@ std::vector<ListedKey> listed_keys(const std::string& text, const std::string& p
 
 ConfigLines apply_config_text(const std::string& text, const std::string& path, ExperimentConfig& config,
                               const ParameterSet& accepted, const std::string& command, const ListChoice& choice) {
-  const toml::table table = parse_config(text, path);
+  return apply_config_document(ConfigDocument(text, path), config, accepted, command, choice);
+}
+
+ConfigLines apply_config_document(const ConfigDocument& document, ExperimentConfig& config,
+                                  const ParameterSet& accepted, const std::string& command, const ListChoice& choice) {
+  const toml::table& table = document.table().value;
+  const std::string& path = document.source();
   const std::vector<ConfigField> fields = config_fields(config);
   ConfigLines lines;
   for (const auto& [section, section_node] : table) {
@@ -369,8 +392,10 @@ void finalize_config(ExperimentConfig& config) {
   require(s.seeds_per_wall > 0, "experiment.seeds_per_wall", "must be positive");
   require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition, "experiment.walls",
           "walls x seeds_per_wall must be at most 1000000 runs per condition");
-  require(s.threads >= 0, "experiment.threads", "must be 0 (all cores) or positive");
-  require(s.learning.iterations > 0, "experiment.iterations", "must be positive");
+  require(s.threads >= 0 && s.threads <= kMaxThreads, "experiment.threads",
+          fmt::format("must be 0 (all cores) or from 1 to {}", kMaxThreads));
+  require(s.learning.iterations > 0 && s.learning.iterations <= kMaxIterations, "experiment.iterations",
+          fmt::format("must be from 1 to {} (a run keeps every iteration's record in memory)", kMaxIterations));
   require(config.beginning >= 0, "experiment.beginning", "must be 0 (the default) or positive");
   require(config.beginning <= s.learning.iterations, "experiment.beginning",
           "must not exceed the run's iterations (the window lies inside the run)");

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -76,6 +77,28 @@ struct ParameterSet {
   bool accepts(const std::string& key) const;
 };
 
+// A config file's TOML, parsed once: a sweep applies it once per cell, so that expanding
+// a sweep costs one parse and grows linearly with its cells.
+class ConfigDocument {
+ public:
+  // InputError(source, ...) for a TOML syntax error.
+  ConfigDocument(const std::string& text, std::string source);
+  ConfigDocument(ConfigDocument&&) noexcept;
+  ConfigDocument& operator=(ConfigDocument&&) noexcept;
+  ~ConfigDocument();
+
+  const std::string& source() const { return source_; }
+  struct Table;
+  const Table& table() const { return *table_; }
+
+  // The config texts this process has parsed so far (tests count parses with it).
+  static std::size_t parses();
+
+ private:
+  std::string source_;
+  std::unique_ptr<Table> table_;
+};
+
 // Where each key of a config file was set: key -> line.
 using ConfigLines = std::map<std::string, int>;
 
@@ -92,6 +115,10 @@ ConfigLines apply_config_file(const std::string& path, ExperimentConfig& config,
 // The same for TOML text already read; `source` names it in errors.
 ConfigLines apply_config_text(const std::string& text, const std::string& source, ExperimentConfig& config,
                               const ParameterSet& accepted, const std::string& command, const ListChoice& choice = {});
+// The same for a parsed document.
+ConfigLines apply_config_document(const ConfigDocument& document, ExperimentConfig& config,
+                                  const ParameterSet& accepted, const std::string& command,
+                                  const ListChoice& choice = {});
 
 // The accepted keys given a list of values in TOML `text`, in the order of
 // config_fields: InputError(source, ...) for an empty list or a key that takes one value.
@@ -99,7 +126,13 @@ struct ListedKey {
   std::string key;
   std::size_t values = 0;
 };
-std::vector<ListedKey> listed_keys(const std::string& text, const std::string& source, const ParameterSet& accepted);
+std::vector<ListedKey> listed_keys(const ConfigDocument& document, const ParameterSet& accepted);
+
+// Upper bounds of finalize_config. Threads: more than any machine crux runs on has cores
+// (a thread per value would abort when the system refuses to start them). Iterations:
+// a run keeps ~135 bytes per iteration (1.35 GB at the bound), 1250 times the paper's 8000.
+inline constexpr int kMaxThreads = 1024;
+inline constexpr int kMaxIterations = 10000000;
 
 // Parses the textual choices into the settings and checks ranges. Throws
 // InputError(key, problem), `key` being the config key at fault ("experiment.runs").

@@ -11,11 +11,14 @@ const ParameterSet kSweepKeys = kPaperKeys;
 SweepDefinition define_sweep(const SweepGrid& grid, const std::function<ExperimentConfig(const ListChoice&)>& resolve) {
   std::vector<std::string> keys;
   for (const ListedKey& k : grid.keys) keys.push_back(k.key);
+  // Counted, and refused when too many, before any cell is built.
+  const std::size_t cell_count = grid.cells();
   std::vector<SweepCell> cells;
+  cells.reserve(cell_count);
   // Each listed key's values as TOML, by position in its list.
   std::vector<std::vector<std::string>> listed(keys.size());
   for (std::size_t k = 0; k < keys.size(); ++k) listed[k].resize(grid.keys[k].values);
-  for (std::size_t c = 0; c < grid.cells(); ++c) {
+  for (std::size_t c = 0; c < cell_count; ++c) {
     const ListChoice choice = grid.choice(c);
     SweepCell cell;
     cell.config = resolve(choice);

@@ -22,7 +22,8 @@ struct SweepDefinition {
 };
 
 // `resolve` gives the finalized config of a choice of list values (flags over file over
-// defaults); InputError as it throws them.
+// defaults), called once per cell; InputError as it throws them, and the grid's when it
+// has too many cells, before any call.
 SweepDefinition define_sweep(const SweepGrid& grid, const std::function<ExperimentConfig(const ListChoice&)>& resolve);
 
 }  // namespace crux

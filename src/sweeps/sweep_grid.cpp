@@ -1,10 +1,22 @@
 #include "sweeps/sweep_grid.hpp"
 
+#include <fmt/format.h>
+
+#include "common/input_error.hpp"
+
 namespace crux {
 
 std::size_t SweepGrid::cells() const {
   std::size_t product = 1;
-  for (const ListedKey& key : keys) product *= key.values;
+  for (const ListedKey& key : keys) {
+    // Both factors are at most kMaxSweepCells here, so the product cannot overflow.
+    if (key.values <= kMaxSweepCells) product *= key.values;
+    if (key.values > kMaxSweepCells || product > kMaxSweepCells) {
+      throw InputError(source, fmt::format("its lists make more than {} cells (the product of their lengths), the "
+                                           "most a sweep may have",
+                                           kMaxSweepCells));
+    }
+  }
   return product;
 }
 

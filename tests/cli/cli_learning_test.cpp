@@ -11,7 +11,10 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "support/run_crux.hpp"
 #include "support/test_models.hpp"
@@ -261,6 +264,42 @@ TEST(CliLearning, ViewAndReportAnswerBadInputWithOneLine) {
   const auto both = run_crux("view -o x.svg");
   EXPECT_EQ(both.err, "crux: --run: give a run folder (--run DIR) or a wall file (--wall-file FILE)\n");
   EXPECT_FALSE(fs::exists(never));
+}
+
+// Issue 25: `report RUN -o ''` failed naming no flag.
+TEST(CliLearning, ReportToAnEmptyOutputNamesTheFlag) {
+  const auto outcome = run_crux("report " + testing::trained_run_folder().string() + " -o ''");
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.err, "crux: --output: give the HTML file to write\n");
+}
+
+// Issue 25: --threads 100000 aborted crux sweep, leaving INCOMPLETE, crux paper clamped it
+// silently, and --iterations 2147483647 ended in bad_alloc: every command that takes them
+// (paper and sweep take --threads) refuses a value above the bound before it creates its
+// output folder.
+TEST(CliLearning, ThreadsAndIterationsAboveTheirBoundsAreRefusedBeforeAnyOutput) {
+  const std::string threads = "crux: --threads: must be 0 (all cores) or from 1 to 1024\n";
+  const std::string iterations =
+      "crux: --iterations: must be from 1 to 10000000 (a run keeps every iteration's record in memory)\n";
+  const fs::path config = testing::write_temporary("bounds.toml", "[experiment]\nthreads = 1025\n");
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"paper --threads 1025", threads},
+      {"sweep --threads 100000", threads},
+      {"sweep --config " + config.string(), "crux: " + config.string() +
+                                                ": line 2: experiment.threads: must be 0 "
+                                                "(all cores) or from 1 to 1024\n"},
+      {"paper --iterations 10000001", iterations},
+      {"sweep --iterations 2147483647", iterations},
+      {"train --wall-seed 3 --iterations 2147483647", iterations},
+  };
+  for (const auto& [arguments, error] : cases) {
+    const fs::path out = learning_scratch("bounds-out");
+    fs::remove_all(out);
+    const auto outcome = run_crux(arguments + " -o " + out.string());
+    EXPECT_EQ(outcome.exit_code, 2) << arguments;
+    EXPECT_EQ(outcome.err, error) << arguments;
+    EXPECT_FALSE(fs::exists(out)) << arguments << ": a refusal leaves no folder, so no INCOMPLETE";
+  }
 }
 
 // A run is drawn and reported with its own config.toml: IK flags are refused with it,

@@ -9,7 +9,9 @@
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <string>
 #include <thread>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -152,6 +154,31 @@ TEST(CliSweep, ASweepOnAFolderThatAnotherSweepWritesIsOneLineError) {
   EXPECT_EQ(outcome.err, "crux: " + out.string() + ": is being written by another crux sweep (pid " +
                              std::to_string(::getpid()) + "); wait until it ends, or choose another folder\n");
   EXPECT_EQ(folder_contents(out).size(), 1u) << "the lock file alone";
+}
+
+// Issue 25: lists multiplying to 2^64 cells wrapped the count to 0 and crashed, and a
+// million seeds were each built (re-reading the file) before the task cap: the cells are
+// counted first and refused before any is built or the folder is made.
+TEST(CliSweep, TooManyCellsAreRefusedBeforeAnyIsBuilt) {
+  std::string million = "[experiment]\nseed = [";
+  for (int s = 1; s <= 1000000; ++s) million += (s > 1 ? "," : "") + std::to_string(s);
+  million += "]\n";
+  std::string wrapping = "[learning]\n";
+  for (const char* key : {"alpha", "gamma", "epsilon", "planning_steps"}) {
+    wrapping += std::string(key) + " = [";
+    for (int v = 0; v < 65536; ++v) wrapping += (v > 0 ? ",0." : "0.") + std::to_string(v + 1);
+    wrapping += "]\n";
+  }
+  for (const auto& [name, text] : {std::pair{"million.toml", million}, std::pair{"wrapping.toml", wrapping}}) {
+    const fs::path file = testing::write_temporary(name, text);
+    const fs::path out = testing::sweep_scratch(name);
+    const auto outcome = run_crux("sweep --config " + file.string() + " -o " + out.string());
+    EXPECT_EQ(outcome.exit_code, 2) << name;
+    EXPECT_EQ(outcome.err, "crux: " + file.string() +
+                               ": its lists make more than 100000 cells (the product of their lengths), the most a "
+                               "sweep may have\n");
+    EXPECT_FALSE(fs::exists(out)) << name;
+  }
 }
 
 TEST(CliSweep, ASweepKilledAtAnyMomentResumesToTheSameBytes) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <vector>
 
 #include "common/input_error.hpp"
 #include "support/test_models.hpp"
@@ -228,10 +229,49 @@ TEST(ExperimentConfig, RangesThatWouldBreakWallsOrCodesAreRefusedNamingTheKey) {
   EXPECT_EQ(refused_key(bad_anchor), "grid.right_hand_anchor_column");
 }
 
+// Issue 25: a thread per value aborted crux sweep, and a run's memory grows with its
+// iterations until bad_alloc; both are refused above a stated bound.
+TEST(ExperimentConfig, ThreadsAndIterationsAboveTheirBoundsAreRefused) {
+  const auto problem = [](int threads, int iterations) {
+    ExperimentConfig config;
+    config.settings.threads = threads;
+    config.settings.learning.iterations = iterations;
+    try {
+      finalize_config(config);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(problem(kMaxThreads, kMaxIterations), "accepted");
+  EXPECT_EQ(problem(kMaxThreads + 1, 8000), "experiment.threads: must be 0 (all cores) or from 1 to 1024");
+  EXPECT_EQ(problem(100000, 8000), "experiment.threads: must be 0 (all cores) or from 1 to 1024");
+  EXPECT_EQ(problem(0, 2147483647),
+            "experiment.iterations: must be from 1 to 10000000 (a run keeps every iteration's record in memory)");
+  EXPECT_EQ(problem(0, kMaxIterations + 1),
+            "experiment.iterations: must be from 1 to 10000000 (a run keeps every iteration's record in memory)");
+  EXPECT_LE(8000 * 1250, kMaxIterations) << "the paper's runs stay far inside the bound";
+}
+
+// A sweep applies its file once per cell: the document is parsed once, whatever the
+// number of choices applied.
+TEST(ExperimentConfig, ADocumentIsParsedOnceForEveryChoiceAppliedFromIt) {
+  const std::size_t before = ConfigDocument::parses();
+  const ConfigDocument document("[experiment]\nwalls = 2\n[learning]\nepsilon = [0.1, 0.2, 0.4]\n", "sweep.toml");
+  const std::vector<double> epsilons{0.1, 0.2, 0.4};
+  for (std::size_t value = 0; value < epsilons.size(); ++value) {
+    ExperimentConfig config;
+    apply_config_document(document, config, kEverything, "sweep", {{"learning.epsilon", value}});
+    EXPECT_DOUBLE_EQ(config.settings.learning.dyna.epsilon, epsilons[value]);
+  }
+  EXPECT_EQ(listed_keys(document, kEverything).size(), 1u);
+  EXPECT_EQ(ConfigDocument::parses() - before, 1u);
+}
+
 TEST(ExperimentConfig, AListTakesTheChosenValueAndOnlyWhenChosen) {
   const std::string text =
       "[experiment]\nwalls = 2\n[learning]\nepsilon = [0.1, 0.2, 0.4]\nplanner = [\"uniform\", \"prioritized\"]\n";
-  const std::vector<ListedKey> listed = listed_keys(text, "sweep.toml", kEverything);
+  const std::vector<ListedKey> listed = listed_keys(ConfigDocument(text, "sweep.toml"), kEverything);
   ASSERT_EQ(listed.size(), 2u);
   EXPECT_EQ(listed[0].key, "learning.epsilon");
   EXPECT_EQ(listed[0].values, 3u);
@@ -258,7 +298,7 @@ TEST(ExperimentConfig, AListTakesTheChosenValueAndOnlyWhenChosen) {
 TEST(ExperimentConfig, ListsThatMakeNoSweepAreRefused) {
   const auto problem = [](const std::string& text) {
     try {
-      listed_keys(text, "sweep.toml", kEverything);
+      listed_keys(ConfigDocument(text, "sweep.toml"), kEverything);
     } catch (const InputError& e) {
       return std::string(e.what());
     }

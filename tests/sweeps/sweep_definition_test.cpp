@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "common/input_error.hpp"
 #include "jobs/command_keys.hpp"
 
 namespace crux {
@@ -19,7 +22,7 @@ ExperimentConfig resolved(const ListChoice& choice) {
 }
 
 TEST(SweepDefinition, CellsTakeEveryCombinationAndTheSweepFileKeepsTheLists) {
-  const SweepGrid grid{listed_keys(kSweepFile, "sweep.toml", kSweepKeys)};
+  const SweepGrid grid{listed_keys(ConfigDocument(kSweepFile, "sweep.toml"), kSweepKeys)};
   const SweepDefinition definition = define_sweep(grid, resolved);
   ASSERT_EQ(definition.plan.cells.size(), 4u);
   EXPECT_EQ(definition.plan.keys, (std::vector<std::string>{"learning.epsilon", "learning.planner"}));
@@ -32,8 +35,45 @@ TEST(SweepDefinition, CellsTakeEveryCombinationAndTheSweepFileKeepsTheLists) {
   EXPECT_EQ(text.find("threads ="), std::string::npos) << "results do not depend on the threads";
   EXPECT_NE(text.find("[provenance]"), std::string::npos);
   // The written file defines the same sweep.
-  const SweepGrid again{listed_keys(text, "written.toml", kSweepKeys)};
+  const SweepGrid again{listed_keys(ConfigDocument(text, "written.toml"), kSweepKeys)};
   EXPECT_EQ(again.cells(), 4u);
+}
+
+// Issue 25: every cell was built, each re-reading the sweep file, before any limit was
+// checked. Expanding a sweep builds each cell once from one parse of its file, and a
+// sweep over the cell bound builds none.
+TEST(SweepDefinition, ExpandingASweepBuildsEachCellOnceFromOneParse) {
+  for (const std::size_t seeds : {std::size_t{3}, std::size_t{300}}) {
+    std::string text = "[experiment]\nwalls = 1\nplan = false\nseed = [";
+    for (std::size_t s = 0; s < seeds; ++s) text += (s > 0 ? ", " : "") + std::to_string(s + 1);
+    text += "]\n[learning]\nepsilon = [0.1, 0.25]\n";
+    const std::size_t parses_before = ConfigDocument::parses();
+    const ConfigDocument document(text, "sweep.toml");
+    std::size_t built = 0;
+    const SweepGrid grid{listed_keys(document, kSweepKeys), "sweep.toml"};
+    const SweepDefinition definition = define_sweep(grid, [&](const ListChoice& choice) {
+      ++built;
+      ExperimentConfig config;
+      apply_config_document(document, config, kSweepKeys, "sweep", choice);
+      finalize_config(config);
+      return config;
+    });
+    EXPECT_EQ(definition.plan.cells.size(), 2 * seeds);
+    EXPECT_EQ(built, 2 * seeds);
+    EXPECT_EQ(ConfigDocument::parses() - parses_before, 1u) << seeds << " seeds";
+  }
+}
+
+TEST(SweepDefinition, ASweepOverTheCellBoundBuildsNoCell) {
+  std::size_t built = 0;
+  const SweepGrid grid{{{"experiment.seed", 1000000}, {"learning.epsilon", 2}}, "sweep.toml"};
+  EXPECT_THROW(define_sweep(grid,
+                            [&](const ListChoice&) {
+                              ++built;
+                              return ExperimentConfig{};
+                            }),
+               InputError);
+  EXPECT_EQ(built, 0u);
 }
 
 }  // namespace
