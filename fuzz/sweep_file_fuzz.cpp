@@ -12,8 +12,7 @@
 
 namespace {
 
-// Every cell reads the file again, so larger grids only slow the fuzzer down: their
-// cells are read as these are.
+// Larger grids only slow the fuzzer down: their cells are resolved as these are.
 constexpr std::size_t kMostFuzzedCells = 64;
 
 }  // namespace
@@ -21,12 +20,13 @@ constexpr std::size_t kMostFuzzedCells = 64;
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const crux::SweepGrid grid{crux::listed_keys(text, "fuzz.toml", crux::kSweepKeys)};
+    const crux::ConfigDocument document(text, "fuzz.toml");
+    const crux::SweepGrid grid{crux::listed_keys(document, crux::kSweepKeys), "fuzz.toml"};
     const std::size_t cells = grid.cells();
     if (cells == 0 || cells > kMostFuzzedCells) return 0;
     const crux::SweepDefinition sweep = crux::define_sweep(grid, [&](const crux::ListChoice& choice) {
       crux::ExperimentConfig config;
-      crux::apply_config_text(text, "fuzz.toml", config, crux::kSweepKeys, "sweep", choice);
+      crux::apply_config_document(document, config, crux::kSweepKeys, "sweep", choice);
       crux::finalize_config(config);
       return config;
     });
