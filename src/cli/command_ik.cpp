@@ -13,6 +13,7 @@
 #include "experiments/run_inputs.hpp"
 #include "ik/reach_queries.hpp"
 #include "reports/ik_description.hpp"
+#include "reports/output_folder.hpp"
 #include "reports/posture_csv.hpp"
 
 namespace crux::cli {
@@ -35,6 +36,7 @@ struct IkCommand {
     const ExperimentConfig config = binding.resolve();
     const IkParameters& settings = config.settings.learning.climbing.reachability.ik;
     if (path_every <= 0) throw InputError("--path-every", "must be positive");
+    if (!path_output.empty()) check_output_file(path_output, {configured_urdf_path(config), binding.config_path()});
     const BodyModel model = load_configured_body(config);
     static const char* const flags[kLimbCount] = {"--rh", "--lh", "--rf", "--lf"};
     ReachTarget target;

@@ -12,6 +12,7 @@
 #include "common/input_error.hpp"
 #include "experiments/run_config_file.hpp"
 #include "experiments/run_inputs.hpp"
+#include "reports/output_folder.hpp"
 #include "reports/report_figures.hpp"
 #include "reports/report_page.hpp"
 #include "reports/web_assets.hpp"
@@ -39,6 +40,7 @@ struct ReportCommand {
     RunFolder run = locate_run_folder(reported.run_directory);
     const ExperimentConfig recorded = read_run_config(run.config_file);
     if (config.urdf.empty()) config.urdf = run.urdf;
+    check_output_file(output, {folder, binding.config_path(), configured_urdf_path(config)});
     const BodyModel model = load_configured_body(config);
     read_run_climb(run, model);
     ReportPage page = report_page(folder, reported, run, model, recorded, climb_choice);

@@ -14,6 +14,7 @@
 #include "experiments/run_config_file.hpp"
 #include "experiments/run_inputs.hpp"
 #include "reports/episode_replay.hpp"
+#include "reports/output_folder.hpp"
 #include "reports/run_folder.hpp"
 #include "reports/view_description.hpp"
 #include "views/body_svg.hpp"
@@ -52,6 +53,7 @@ struct ViewCommand {
       draw_run(config);
       return;
     }
+    check_output(config);
     const BodyModel model = load_configured_body(config);
     const Wall wall = load_wall(config.wall_file);
     const ReachabilityParameters& reach = config.settings.learning.climbing.reachability;
@@ -64,6 +66,7 @@ struct ViewCommand {
     RunFolder folder = locate_run_folder(run);
     const ExperimentConfig recorded = read_run_config(folder.config_file);
     if (config.urdf.empty()) config.urdf = folder.urdf;
+    check_output(config);
     const BodyModel model = load_configured_body(config);
     read_run_climb(folder, model);
     const ClimbingParameters& climbing = recorded.settings.learning.climbing;
@@ -75,6 +78,10 @@ struct ViewCommand {
     }
     write(model, climb.postures[step], folder.wall, run_view_caption(folder, climb, step, output),
           climbing.reachability);
+  }
+
+  void check_output(const ExperimentConfig& config) const {
+    check_output_file(output, {run, config.wall_file, configured_urdf_path(config), binding.config_path()});
   }
 
   void write(const BodyModel& model, const Posture& posture, const Wall& wall, const ViewCaption& caption,

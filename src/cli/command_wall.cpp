@@ -14,6 +14,7 @@
 #include "common/printable.hpp"
 #include "configurations/reachability.hpp"
 #include "experiments/run_inputs.hpp"
+#include "reports/output_folder.hpp"
 #include "reports/wall_description.hpp"
 #include "views/wall_svg.hpp"
 #include "wall/random_wall.hpp"
@@ -49,6 +50,7 @@ struct GenerateCommand {
   // so that it can be inspected, but the problem is reported, never silently passed on.
   void run() {
     const ExperimentConfig config = binding.resolve();
+    check_output_file(output, {configured_urdf_path(config), binding.config_path()});
     Wall wall = load_configured_wall(config);
     if (!config.wall_name.empty()) wall.name = config.wall_name;
     const IkResult reach = check_start(config, wall);
@@ -73,6 +75,7 @@ struct ShowCommand {
   void run() {
     const ExperimentConfig config = binding.resolve();
     if (config.wall_file.empty()) throw InputError("--wall-file", "give the wall file to show");
+    if (!svg.empty()) check_output_file(svg, {config.wall_file, configured_urdf_path(config), binding.config_path()});
     const Wall wall = load_wall(config.wall_file);
     const IkResult reach = check_start(config, wall);
     std::optional<PlacedGrid> grid;

@@ -65,13 +65,56 @@ extern "C" void remove_temporaries_and_reraise(int signal) {
   throw InputError(path.string(), "cannot write: " + reason);
 }
 
+// False, with errno set, when a write fails.
+bool write_all(int fd, std::string_view contents) {
+  std::size_t written = 0;
+  while (written < contents.size()) {
+    const ssize_t n = ::write(fd, contents.data() + written, contents.size() - written);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// Written as the shell's `>` does, without creating or truncating: no temporary, no
+// rename, no fsync (a device or a pipe has nothing to flush to disk).
+void write_to_stream(const std::filesystem::path& path, std::string_view contents) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) throw InputError(path.string(), std::string("cannot write: ") + std::strerror(errno));
+  if (!write_all(fd, contents)) {
+    const std::string reason = std::strerror(errno);
+    ::close(fd);
+    throw InputError(path.string(), "cannot write: " + reason);
+  }
+  if (::close(fd) != 0) throw InputError(path.string(), std::string("cannot write: ") + std::strerror(errno));
+}
+
 }  // namespace
 
 void remove_temporaries_on_signals() {
   for (const int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, remove_temporaries_and_reraise);
 }
 
+OutputNode output_node(const std::filesystem::path& path) {
+  struct stat node {};
+  // Followed through symbolic links: /dev/stdout is a link to /proc/self/fd/1.
+  if (::stat(path.c_str(), &node) != 0 || S_ISREG(node.st_mode)) return {};
+  if (S_ISCHR(node.st_mode) || S_ISFIFO(node.st_mode)) return {OutputTarget::kStream, {}};
+  if (S_ISDIR(node.st_mode)) return {OutputTarget::kRefuse, "is a folder; name a file to write"};
+  if (S_ISSOCK(node.st_mode)) return {OutputTarget::kRefuse, "is a socket; crux writes files, FIFOs and devices"};
+  return {OutputTarget::kRefuse, "is a block device; crux does not write to disks"};
+}
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
+  const OutputNode node = output_node(path);
+  if (node.target == OutputTarget::kRefuse) throw InputError(path.string(), node.refusal);
+  if (node.target == OutputTarget::kStream) {
+    write_to_stream(path, contents);
+    return;
+  }
   // An unpredictable name created exclusively (O_EXCL, O_NOFOLLOW), so a planted file or
   // symbolic link is never written through. The name is remembered before the file
   // exists, so that a signal at any moment finds every temporary to remove.
@@ -97,15 +140,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   }
   if (fd < 0) throw InputError(path.string(), std::string("cannot write: ") + std::strerror(errno));
   if (::fchmod(fd, 0644) != 0) fail(path, fd, temporary.c_str(), slot);
-  std::size_t written = 0;
-  while (written < contents.size()) {
-    const ssize_t n = ::write(fd, contents.data() + written, contents.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      fail(path, fd, temporary.c_str(), slot);
-    }
-    written += static_cast<std::size_t>(n);
-  }
+  if (!write_all(fd, contents)) fail(path, fd, temporary.c_str(), slot);
   if (::fsync(fd) != 0) fail(path, fd, temporary.c_str(), slot);
   if (::close(fd) != 0) fail(path, -1, temporary.c_str(), slot);
   if (::rename(temporary.c_str(), path.c_str()) != 0) fail(path, -1, temporary.c_str(), slot);

@@ -41,6 +41,21 @@ void begin_output_folder(const fs::path& directory) {
                         "folder's outputs are incomplete.\n");
 }
 
+// The absolute path with links, `.` and `..` resolved as far as it exists, without a
+// trailing separator: two names of one file compare equal.
+fs::path resolved_path(const fs::path& path) {
+  std::error_code error;
+  fs::path resolved = fs::weakly_canonical(fs::absolute(path), error).lexically_normal();
+  if (resolved.filename().empty()) resolved = resolved.parent_path();
+  return resolved;
+}
+
+// Whether `path` is `folder` or lies inside it.
+bool lies_within(const fs::path& path, const fs::path& folder) {
+  const auto [end, _] = std::mismatch(folder.begin(), folder.end(), path.begin(), path.end());
+  return end == folder.end();
+}
+
 }  // namespace
 
 void remove_outputs(const fs::path& directory, std::span<const char* const> names) {
@@ -85,13 +100,10 @@ void mark_complete(const fs::path& directory) {
 void check_output_folder(const fs::path& directory, const std::vector<std::string>& inputs, bool overwrite) {
   if (directory.empty()) throw InputError("--output", "the output folder name is empty");
   std::error_code error;
-  fs::path folder = fs::weakly_canonical(fs::absolute(directory), error).lexically_normal();
-  if (folder.filename().empty()) folder = folder.parent_path();
+  const fs::path folder = resolved_path(directory);
   for (const std::string& input : inputs) {
     if (input.empty()) continue;
-    const fs::path file = fs::weakly_canonical(fs::absolute(input), error);
-    const auto [end, _] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
-    if (end == folder.end()) {
+    if (lies_within(resolved_path(input), folder)) {
       throw InputError(directory.string(),
                        fmt::format("holds {}, an input of this command; write the outputs to another folder", input));
     }
@@ -105,6 +117,24 @@ void check_output_folder(const fs::path& directory, const std::vector<std::strin
     throw InputError(directory.string(),
                      "already holds files; choose another output folder, or pass --overwrite to replace crux's "
                      "outputs there");
+  }
+}
+
+void check_output_file(const fs::path& file, const std::vector<std::string>& inputs) {
+  if (file.empty()) throw InputError("--output", "the output file name is empty");
+  const OutputNode node = output_node(file);
+  if (node.target == OutputTarget::kRefuse) throw InputError("--output", file.string() + " " + node.refusal);
+  // A device or a FIFO is written through, never replaced: writing to /dev/null destroys no input.
+  if (node.target == OutputTarget::kStream) return;
+  const fs::path output = resolved_path(file);
+  std::error_code error;
+  for (const std::string& input : inputs) {
+    if (input.empty()) continue;
+    // equivalent() also catches a hard link to an input.
+    if (lies_within(output, resolved_path(input)) || fs::equivalent(file, input, error)) {
+      throw InputError("--output", fmt::format("{} would overwrite {}, an input of this command; write to another file",
+                                               file.string(), input));
+    }
   }
 }
 

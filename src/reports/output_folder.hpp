@@ -21,6 +21,13 @@ namespace crux {
 void check_output_folder(const std::filesystem::path& directory, const std::vector<std::string>& inputs,
                          bool overwrite);
 
+// Checks the file `-o` names before the work, writing nothing: InputError("--output", ...)
+// when the name is empty, when the file is one of the command's `inputs` (a file, or a
+// file inside an input folder such as the run folder it reads: the same file however
+// named, ./w.json and w.json, a link or a hard link), or when write_file_atomically would
+// refuse it (a folder, a socket).
+void check_output_file(const std::filesystem::path& file, const std::vector<std::string>& inputs);
+
 // The writers below first remove crux's earlier outputs from the folder (and nothing
 // else) and mark it incomplete with this file, which they remove once every output is
 // written: a folder that keeps it was interrupted.

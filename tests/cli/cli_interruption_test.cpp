@@ -1,6 +1,7 @@
 // What a writer leaves behind when it is interrupted or the disk fills: no temporaries,
 // no summary, and the INCOMPLETE marker (docs/RELIABILITY.md).
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -18,6 +19,7 @@
 
 #include "common/atomic_file.hpp"
 #include "support/run_crux.hpp"
+#include "support/test_models.hpp"
 
 namespace crux {
 namespace {
@@ -25,7 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path interruption_scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "crux-tests" / ("interruption-" + std::to_string(::getpid()));
+  const fs::path dir = testing::test_folder() / "interruption";
   fs::create_directories(dir);
   fs::remove_all(dir / name);
   return dir / name;
@@ -47,10 +49,13 @@ pid_t start_crux(const std::vector<std::string>& arguments) {
   std::vector<char*> argv{const_cast<char*>(CRUX_BINARY)};
   for (const auto& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
+  // Its output goes to a file of the test's own, not to the machine's /dev/null.
+  const std::string log = interruption_scratch("crux.log").string();
   const pid_t pid = ::fork();
   if (pid == 0) {
-    ::freopen("/dev/null", "w", stdout);
-    ::freopen("/dev/null", "w", stderr);
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
     ::execv(CRUX_BINARY, argv.data());
     ::_exit(127);
   }
@@ -129,7 +134,9 @@ TEST(Interruption, AFullDiskIsOneErrorLineAndAMarkedFolderWithoutSummary) {
   const std::string command = "ulimit -f 40; trap '' XFSZ; exec " + std::string(CRUX_BINARY) +
                               " train --wall-seed 3 --iterations 2000 -o " + folder.string();
   const fs::path err = interruption_scratch("full_disk.err");
-  const int status = std::system(("bash -c \"" + command + "\" > /dev/null 2> " + err.string()).c_str());
+  const int status = std::system(
+      ("bash -c \"" + command + "\" > " + interruption_scratch("full_disk.out").string() + " 2> " + err.string())
+          .c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);
   std::ifstream in(err);

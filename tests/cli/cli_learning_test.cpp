@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,12 +11,14 @@
 #include <chrono>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <string>
 #include <thread>
 #include <utility>
 #include <vector>
 
+#include "support/fifo_reader.hpp"
 #include "support/run_crux.hpp"
 #include "support/test_models.hpp"
 #include "support/trained_run.hpp"
@@ -27,7 +30,7 @@ namespace fs = std::filesystem;
 using testing::run_crux;
 
 fs::path learning_scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "crux-tests" / ("learning-cli-" + std::to_string(::getpid()));
+  const fs::path dir = testing::test_folder() / "learning-cli";
   fs::create_directories(dir);
   return dir / name;
 }
@@ -302,6 +305,52 @@ TEST(CliLearning, ThreadsAndIterationsAboveTheirBoundsAreRefusedBeforeAnyOutput)
   }
 }
 
+// -o naming the command's own input (a file of the run folder it reads, the wall file,
+// the --config file) is refused before any work, in one line naming --output, and the
+// input is left as it was.
+TEST(CliLearning, AnOutputFileNamingAnInputOfTheCommandIsRefused) {
+  // A copy: without the check, the commands below would overwrite the shared trained run.
+  const fs::path run = testing::edited_trained_run("output-is-input", "summary.json", [](std::string&) {});
+  const std::string summary = read_text(run / "summary.json"), wall = read_text(run / "wall.json");
+  const auto report = run_crux("report " + run.string() + " -o " + (run / "summary.json").string());
+  EXPECT_EQ(report.exit_code, 2);
+  EXPECT_EQ(report.err, "crux: --output: " + (run / "summary.json").string() + " would overwrite " + run.string() +
+                            ", an input of this command; write to another file\n");
+  const auto view = run_crux("view --run " + run.string() + " -o " + (run / "wall.json").string());
+  EXPECT_EQ(view.exit_code, 2);
+  EXPECT_EQ(testing::count_lines(view.err), 1) << view.err;
+  EXPECT_NE(view.err.find("crux: --output: "), std::string::npos) << view.err;
+  // Named relative to where crux runs, the same file however it is spelt.
+  const auto show = testing::run_crux_in(run, "wall show --wall-file wall.json -o ./wall.json");
+  EXPECT_EQ(show.exit_code, 2);
+  EXPECT_EQ(show.err,
+            "crux: --output: ./wall.json would overwrite wall.json, an input of this command; write to "
+            "another file\n");
+  const fs::path config = testing::write_temporary("cli_output_is_config.toml", "[wall]\nseed = 4\n");
+  const auto generate = run_crux("wall generate --config " + config.string() + " -o " + config.string());
+  EXPECT_EQ(generate.exit_code, 2);
+  EXPECT_NE(generate.err.find("would overwrite " + config.string()), std::string::npos) << generate.err;
+  EXPECT_EQ(read_text(config), "[wall]\nseed = 4\n");
+  EXPECT_EQ(read_text(run / "summary.json"), summary);
+  EXPECT_EQ(read_text(run / "wall.json"), wall);
+  const auto empty = run_crux("report " + run.string() + " -o ''");
+  EXPECT_EQ(empty.err, "crux: --output: the output file name is empty\n");
+}
+
+// -o naming a FIFO writes the page through it; a rename would have replaced the FIFO
+// (and, run as root, -o /dev/null the machine's /dev/null) with a regular file.
+TEST(CliLearning, AReportWrittenToAFifoGoesThroughItAndKeepsTheFifo) {
+  const fs::path fifo = learning_scratch("report.fifo");
+  fs::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  testing::FifoReader reader(fifo);
+  ASSERT_TRUE(reader.opened());
+  const auto report = run_crux("report " + testing::trained_run_folder().string() + " -o " + fifo.string());
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  EXPECT_EQ(reader.text().rfind("<!DOCTYPE html>", 0), 0u) << reader.text().substr(0, 100);
+  EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
 // A run is drawn and reported with its own config.toml: IK flags are refused with it,
 // any episode can be replayed, and renamed flags name their new names.
 TEST(CliLearning, ViewAndReportReadTheRunsOwnConfig) {
@@ -462,7 +511,7 @@ TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
   const pid_t pid = ::fork();
   if (pid == 0) {
     const std::string command =
-        std::string("exec ") + CRUX_BINARY + " " + arguments + killed.string() + " > /dev/null 2>&1";
+        std::string("exec ") + CRUX_BINARY + " " + arguments + killed.string() + " > " + killed.string() + ".log 2>&1";
     ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }

@@ -183,7 +183,8 @@ TEST(CliSweep, TooManyCellsAreRefusedBeforeAnyIsBuilt) {
 
 TEST(CliSweep, ASweepKilledAtAnyMomentResumesToTheSameBytes) {
   const fs::path out = testing::sweep_scratch("killed");
-  const std::string command = std::string(CRUX_BINARY) + " " + sweep_arguments(out, 2) + " > /dev/null 2>&1";
+  const std::string command =
+      std::string(CRUX_BINARY) + " " + sweep_arguments(out, 2) + " > " + out.string() + ".log 2>&1";
   const auto whole = bytes_after(command, out);
   for (const int finished_runs : {2, 9}) {
     const pid_t pid = ::fork();
@@ -218,7 +219,8 @@ TEST(CliSweep, ASweepKilledAtAnyMomentResumesToTheSameBytes) {
 
 TEST(CliSweep, TwoMpiRanksWriteTheSingleProcessBytes) {
   const fs::path out = testing::sweep_scratch("mpi");
-  const auto single = bytes_after(std::string(CRUX_BINARY) + " " + sweep_arguments(out, 2) + " > /dev/null", out);
+  const auto single =
+      bytes_after(std::string(CRUX_BINARY) + " " + sweep_arguments(out, 2) + " > " + out.string() + ".single.log", out);
   // Open MPI's own allocations are not crux's leaks.
   ::setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
   const std::string mpirun = std::string(CRUX_MPIEXEC) + " -n 2 --oversubscribe --allow-run-as-root " + CRUX_BINARY +
@@ -235,7 +237,10 @@ TEST(CliSweep, TwoMpiRanksWriteTheSingleProcessBytes) {
 TEST(CliSweep, UnderMpirunAFailureEndsEveryRankAndDifferentSweepsAreRefused) {
   ::setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
   const fs::path out = testing::sweep_scratch("mpi-failure");
-  ASSERT_EQ(std::system((std::string(CRUX_BINARY) + " " + sweep_arguments(out, 2) + " > /dev/null 2>&1").c_str()), 0);
+  ASSERT_EQ(
+      std::system((std::string(CRUX_BINARY) + " " + sweep_arguments(out, 2) + " > " + out.string() + ".single.log 2>&1")
+                      .c_str()),
+      0);
   fs::remove_all(out / "runs/c0/control_1");
   std::ofstream(out / "runs/c0/control_1") << "not a folder";
   const std::string mpirun = "timeout 300 " + std::string(CRUX_MPIEXEC) + " --oversubscribe --allow-run-as-root ";

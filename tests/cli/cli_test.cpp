@@ -56,7 +56,8 @@ TEST(Cli, BadArgumentsExitWithCode2) {
   EXPECT_EQ(too_large.exit_code, 2);
   EXPECT_EQ(too_large.err.rfind("crux: --plan-max-solves: '99999999999' is out of range", 0), 0u) << too_large.err;
   const testing::Outcome huge_grid =
-      testing::run_crux("train --wall-seed 3 --grid-columns 65536 --grid-rows 65536 --iterations 5 -o /tmp/crux-never");
+      testing::run_crux("train --wall-seed 3 --grid-columns 65536 --grid-rows 65536 --iterations 5 -o " +
+                        (testing::test_folder() / "never").string());
   EXPECT_EQ(huge_grid.exit_code, 2) << huge_grid.err;
   EXPECT_EQ(huge_grid.err.rfind("crux: --grid-columns: ", 0), 0u) << huge_grid.err;
 }
@@ -120,7 +121,7 @@ TEST(Cli, IkCompareReportsAgreement) {
 }
 
 TEST(Cli, IkPathIsWrittenAsCsv) {
-  const auto out = std::filesystem::temp_directory_path() / "crux-tests" / "path.csv";
+  const auto out = testing::test_folder() / "path.csv";
   std::filesystem::remove(out);
   const testing::Outcome run = testing::run_crux(
       "ik --rh 0.3,1.5 --lh 0.9,1.5 --rf 0.3,0 --lf 0.9,0 --ik-solver paper --path-every 5 -o " + out.string());

@@ -19,7 +19,7 @@ namespace {
 using testing::run_crux;
 
 std::filesystem::path wall_scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "crux-tests" / ("wall-cli-" + std::to_string(::getpid()));
+  const auto dir = testing::test_folder() / "wall-cli";
   std::filesystem::create_directories(dir);
   return dir / name;
 }

@@ -35,7 +35,7 @@ std::string read_bytes(const fs::path& path) {
 }
 
 fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "crux-tests" / (name + "-" + std::to_string(::getpid()));
+  const fs::path dir = testing::test_folder() / name;
   fs::remove_all(dir);
   return dir;
 }

@@ -16,7 +16,7 @@ unset CRUX_MODEL_DIR
 
 "$work/prefix/bin/crux" model --json > model.json
 grep -q '"dof_revolute": 32' model.json || { echo "crux model --json from the install:"; cat model.json; exit 1; }
-"$work/prefix/bin/crux" train --wall-seed 3 --iterations 200 -o run > /dev/null
+"$work/prefix/bin/crux" train --wall-seed 3 --iterations 200 -o run > train.out
 for file in iterations.csv episodes.csv q_grid.bin climb.csv config.toml summary.json; do
   [ -s "run/$file" ] || { echo "crux train from the install wrote no run/$file"; exit 1; }
 done
@@ -33,7 +33,7 @@ for example in $(cd "$repo/examples" && find . -type f); do
     { echo "the install's share/crux/examples/$example is not the repository's"; exit 1; }
 done
 
-python_package=$(find "$work/prefix/lib" -path '*/dist-packages/crux/__init__.py' 2> /dev/null | head -n 1)
+python_package=$(find "$work/prefix/lib" -path '*/dist-packages/crux/__init__.py' 2> "$work/find.err" | head -n 1)
 if [ -n "$python_package" ]; then
   python_path=$(dirname "$(dirname "$python_package")")
   PYTHONPATH=$python_path /usr/bin/python3 -c '

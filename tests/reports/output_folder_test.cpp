@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <fstream>
 #include <iterator>
 
+#include "common/input_error.hpp"
 #include "reports/summary.hpp"
 #include "support/test_models.hpp"
 #include "wall/wall_file.hpp"
@@ -54,6 +57,50 @@ TEST(OutputFolder, ARunFolderHoldsTheRunsFilesItsWallConfigAndSummary) {
   for (const auto& entry : fs::directory_iterator(folder))
     leftovers += entry.path().string().find(".tmp.") != std::string::npos;
   EXPECT_EQ(leftovers, 0u) << "no temporary file left behind";
+}
+
+// The problem check_output_file finds, or "" when it accepts the file.
+std::string output_file_problem(const fs::path& file, const std::vector<std::string>& inputs) {
+  try {
+    check_output_file(file, inputs);
+    return "";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "--output");
+    return e.problem();
+  }
+}
+
+// crux report RUN -o RUN/summary.json, wall show --wall-file w.json -o ./w.json, -o
+// naming the --config file: the input is named however the output names it.
+TEST(OutputFolder, AnOutputFileThatIsAnInputOrLiesInAnInputFolderIsRefused) {
+  const fs::path folder = testing::temporary_path("output_file_inputs");
+  fs::create_directories(folder / "run");
+  std::ofstream(folder / "run" / "summary.json") << "{}";
+  std::ofstream(folder / "w.json") << "{}";
+  const std::vector<std::string> inputs{(folder / "run").string(), (folder / "w.json").string(), ""};
+  for (const fs::path& named : {folder / "run" / "summary.json", folder / "run" / "report.html",
+                                folder / "run/../run/./summary.json", folder / "./w.json"}) {
+    EXPECT_NE(output_file_problem(named, inputs).find("an input of this command"), std::string::npos) << named;
+  }
+  const std::string problem = output_file_problem(folder / "w.json", inputs);
+  EXPECT_EQ(problem, (folder / "w.json").string() + " would overwrite " + inputs[1] +
+                         ", an input of this command; write to another file");
+  fs::create_symlink(folder / "w.json", folder / "link.json");
+  fs::create_hard_link(folder / "w.json", folder / "hard.json");
+  EXPECT_NE(output_file_problem(folder / "link.json", inputs), "");
+  EXPECT_NE(output_file_problem(folder / "hard.json", inputs), "") << "a hard link is the same file";
+  EXPECT_EQ(output_file_problem(folder / "report.html", inputs), "");
+  EXPECT_EQ(output_file_problem(folder / "run.html", inputs), "") << "a sibling whose name starts alike";
+  EXPECT_EQ(output_file_problem("", inputs), "the output file name is empty");
+}
+
+TEST(OutputFolder, AnOutputFileThatIsAFolderIsRefusedAndAFifoAccepted) {
+  const fs::path folder = testing::temporary_path("output_file_nodes");
+  fs::create_directories(folder);
+  EXPECT_EQ(output_file_problem(folder, {}), folder.string() + " is a folder; name a file to write");
+  ASSERT_EQ(::mkfifo((folder / "fifo").c_str(), 0600), 0);
+  EXPECT_EQ(output_file_problem(folder / "fifo", {(folder / "fifo").string()}), "")
+      << "written through, a FIFO overwrites nothing";
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "support/test_models.hpp"
+
 namespace crux::testing {
 
 namespace {
@@ -24,10 +26,8 @@ std::string read_all(FILE* file) {
 
 Outcome run_crux_in(const std::filesystem::path& folder, const std::string& arguments) {
   static std::atomic<int> calls{0};
-  const auto dir = std::filesystem::temp_directory_path() / "crux-tests";
-  std::filesystem::create_directories(dir);
-  // Unique per process and call: ctest runs test cases in parallel processes.
-  const auto err_path = dir / ("stderr." + std::to_string(::getpid()) + "." + std::to_string(calls++));
+  // Unique per call, in the process's own folder.
+  const auto err_path = test_folder() / ("stderr." + std::to_string(calls++));
   const std::string change_folder = folder.empty() ? std::string() : "cd '" + folder.string() + "' && ";
   const std::string command = change_folder + CRUX_BINARY + " " + arguments + " 2>" + err_path.string();
   Outcome outcome;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "jobs/command_keys.hpp"
+#include "support/test_models.hpp"
 
 namespace crux::testing {
 
@@ -40,8 +41,7 @@ std::map<std::string, std::string> folder_contents(const std::filesystem::path& 
 }
 
 std::filesystem::path sweep_scratch(const std::string& name) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "crux-tests" / ("sweep-" + std::to_string(::getpid())) / name;
+  const std::filesystem::path dir = test_folder() / "sweep" / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir.parent_path());
   return dir;

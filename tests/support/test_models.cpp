@@ -1,6 +1,8 @@
 #include "support/test_models.hpp"
 #include "body/urdf_loader.hpp"
 
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -78,17 +80,24 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(at, from.size(), to);
 }
 
+const std::filesystem::path& test_folder() {
+  static const std::filesystem::path folder = [] {
+    const auto path = std::filesystem::temp_directory_path() / ("crux-tests-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(path);
+    return path;
+  }();
+  return folder;
+}
+
 std::filesystem::path write_temporary(const std::string& name, const std::string& contents) {
-  const auto dir = std::filesystem::temp_directory_path() / "crux-tests";
-  std::filesystem::create_directories(dir);
+  const auto& dir = test_folder();
   const auto path = dir / name;
   std::ofstream(path, std::ios::binary) << contents;
   return path;
 }
 
 std::filesystem::path temporary_path(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "crux-tests";
-  std::filesystem::create_directories(dir);
+  const auto& dir = test_folder();
   std::filesystem::remove_all(dir / name);
   return dir / name;
 }

@@ -24,10 +24,15 @@ std::string synthetic_tree_urdf(std::uint64_t seed);
 // Replaces the first occurrence of `from` (which must exist) by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to);
 
-// A fresh file under the test temporary directory holding `contents`.
+// This test process's own folder under the temporary directory (TMPDIR),
+// crux-tests-<pid>, created on first use: ctest runs test cases in parallel processes,
+// and no test writes to a path another process or the machine uses.
+const std::filesystem::path& test_folder();
+
+// A fresh file in test_folder() holding `contents`.
 std::filesystem::path write_temporary(const std::string& name, const std::string& contents);
 
-// A path under the test temporary directory where nothing exists yet.
+// A path in test_folder() where nothing exists yet.
 std::filesystem::path temporary_path(const std::string& name);
 
 }  // namespace crux::testing

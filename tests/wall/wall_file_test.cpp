@@ -58,7 +58,7 @@ TEST(WallFile, RandomWallsRoundTripBitForBit) {
 
 TEST(WallFile, SaveThenLoadThroughAFileIsIdentical) {
   const Wall wall = generate_random_wall(7);
-  const auto path = std::filesystem::temp_directory_path() / "crux-tests" / "saved_wall.json";
+  const auto path = testing::test_folder() / "saved_wall.json";
   std::filesystem::create_directories(path.parent_path());
   save_wall(path.string(), wall);
   expect_identical(wall, load_wall(path.string()));
@@ -177,7 +177,7 @@ TEST(WallFile, ALongInvalidTokenIsOneShortLine) {
 TEST(WallFile, SavingAWallThatCouldNotLoadBackWritesNothing) {
   Wall wall = generate_random_wall(1);
   wall.holds[4].position.z() = std::numeric_limits<double>::quiet_NaN();
-  const auto path = std::filesystem::temp_directory_path() / "crux-tests" / "never_written.json";
+  const auto path = testing::test_folder() / "never_written.json";
   std::filesystem::remove(path);
   try {
     save_wall(path.string(), wall);
@@ -343,7 +343,7 @@ std::vector<BadWallCase> bad_wall_cases() {
 void PrintTo(const BadWallCase& c, std::ostream* out) { *out << c.name; }
 
 std::filesystem::path path_for(const BadWallCase& c) {
-  const auto directory = std::filesystem::temp_directory_path() / "crux-tests";
+  const auto directory = testing::test_folder();
   switch (c.kind) {
     case BadPath::Directory:
       std::filesystem::create_directories(directory);
