@@ -33,7 +33,6 @@ struct ReportCommand {
   bool json = false;
 
   void run() {
-    if (output.empty()) throw InputError("--output", "give the HTML file to write");
     const auto started = std::chrono::steady_clock::now();
     ExperimentConfig config = binding.resolve();
     const ReportedRun reported = locate_reported_run(folder, run_name, "--run");

@@ -273,7 +273,7 @@ TEST(CliLearning, ViewAndReportAnswerBadInputWithOneLine) {
 TEST(CliLearning, ReportToAnEmptyOutputNamesTheFlag) {
   const auto outcome = run_crux("report " + testing::trained_run_folder().string() + " -o ''");
   EXPECT_EQ(outcome.exit_code, 2);
-  EXPECT_EQ(outcome.err, "crux: --output: give the HTML file to write\n");
+  EXPECT_EQ(outcome.err, "crux: --output: the output file name is empty\n");
 }
 
 // Issue 25: --threads 100000 aborted crux sweep, leaving INCOMPLETE, crux paper clamped it
