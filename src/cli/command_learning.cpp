@@ -86,9 +86,6 @@ struct SingleRunCommand {
     LearningJob job;
     job.config = binding.resolve();
     require_wall(job.config);
-    if (condition == Condition::Transfer && job.config.q_grid.empty()) {
-      throw InputError("--q-grid", "give the Q_grid to transfer (q_grid.bin of a training run)");
-    }
     job.condition = condition;
     job.config_path = binding.config_path();
     job.output = output;

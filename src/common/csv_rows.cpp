@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "common/counted.hpp"
 #include "common/input_error.hpp"
 #include "common/printable.hpp"
 
@@ -62,7 +63,8 @@ std::vector<std::string_view> csv_cells(std::string_view row, std::size_t index,
                                         const std::string& file) {
   std::vector<std::string_view> cells = split_csv_line(row);
   if (cells.size() != columns) {
-    throw InputError(file, fmt::format("line {}: {} fields, not {}", csv_line_number(index), cells.size(), columns));
+    throw InputError(
+        file, fmt::format("line {}: {}, not {}", csv_line_number(index), counted(cells.size(), "field"), columns));
   }
   return cells;
 }

@@ -11,6 +11,13 @@ namespace crux {
 
 LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
   ExperimentConfig& config = job.config;
+  // Before any input is loaded: a transfer run starts from a Q_grid, the others from empty tables.
+  if (job.condition == Condition::Transfer && !job.q_grid && config.q_grid.empty()) {
+    throw InputError("experiment.q_grid", "give the Q_grid to transfer (q_grid.bin of a training run)");
+  }
+  if (job.condition != Condition::Transfer && (job.q_grid || !config.q_grid.empty())) {
+    throw InputError("experiment.q_grid", "only a transfer run starts from a Q_grid");
+  }
   const bool writes_folder = job.output.has_value();
   if (writes_folder && (job.wall || job.q_grid)) {
     throw InputError(job.wall ? "wall" : "q_grid",
@@ -27,12 +34,6 @@ LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
   provenance.produced_by = hooks.caller;
   if (!job.config_path.empty()) check_recorded_provenance(config, provenance, job.config_path);
   const Wall wall = job.wall ? std::move(*job.wall) : load_configured_wall(config);
-  if (job.condition == Condition::Transfer && !job.q_grid && config.q_grid.empty()) {
-    throw InputError("experiment.q_grid", "give the Q_grid to transfer (q_grid.bin of a training run)");
-  }
-  if (job.condition != Condition::Transfer && (job.q_grid || !config.q_grid.empty())) {
-    throw InputError("experiment.q_grid", "only a transfer run starts from a Q_grid");
-  }
   const GridParameters& grid = config.settings.learning.climbing.grid;
   std::optional<QTable> initial = std::move(job.q_grid);
   if (initial) {

@@ -56,7 +56,7 @@ TEST(IterationsFile, RefusesAMissingFileAndAnotherHeader) {
 TEST(IterationsFile, RefusesABadRowNamingItsLine) {
   const std::string one = kIterationsCsvHeader + "1,0,random,3,1,0.5,-1\n";
   EXPECT_EQ(iterations_problem("iterations_fields.csv", one + "2,0,random\n"), "line 3: 3 fields, not 7");
-  EXPECT_EQ(iterations_problem("iterations_blank.csv", one + "\n2,0,random,3,1,0.5,-1\n"), "line 3: 1 fields, not 7");
+  EXPECT_EQ(iterations_problem("iterations_blank.csv", one + "\n2,0,random,3,1,0.5,-1\n"), "line 3: 1 field, not 7");
   EXPECT_EQ(iterations_problem("iterations_order.csv", one + "7,0,random,3,1,0.5,-1\n"),
             "line 3: iteration 7 where 2 was due");
   EXPECT_EQ(iterations_problem("iterations_regime.csv", one + "2,0,greedy,3,1,0.5,-1\n"),
