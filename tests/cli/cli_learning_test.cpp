@@ -553,6 +553,16 @@ TEST(CliLearning, ALongRunKilledResumesFromItsCheckpointToTheSameBytes) {
   EXPECT_EQ(afresh.exit_code, 0) << afresh.err;
 }
 
+// The job refuses a transfer without its Q_grid before it loads anything, and the
+// command names the flag.
+TEST(CliLearning, ATransferWithoutAQGridNamesTheFlag) {
+  const fs::path out = learning_scratch("transfer_without_q_grid");
+  const auto outcome = run_crux("transfer --wall-seed 3 --iterations 100 -o " + out.string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.err, "crux: --q-grid: give the Q_grid to transfer (q_grid.bin of a training run)\n");
+  EXPECT_FALSE(fs::exists(out));
+}
+
 // A wall file gives the wall, so a random wall's parameters beside it are refused (they
 // were once ignored and recorded), and config.toml records none of them.
 TEST(CliLearning, WallGeneratorFlagsBesideAWallFileAreRefused) {
