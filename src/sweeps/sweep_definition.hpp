@@ -22,8 +22,10 @@ struct SweepDefinition {
 };
 
 // `resolve` gives the finalized config of a choice of list values (flags over file over
-// defaults), called once per cell; InputError as it throws them, and the grid's when it
-// has too many cells, before any call.
-SweepDefinition define_sweep(const SweepGrid& grid, const std::function<ExperimentConfig(const ListChoice&)>& resolve);
+// defaults), called once per cell; InputError as it throws them, the grid's when it has
+// too many cells, before any call, and plan_sweep's as soon as the cells built so far
+// have more than `max_tasks` tasks, so that no cell is built past the task bound.
+SweepDefinition define_sweep(const SweepGrid& grid, const std::function<ExperimentConfig(const ListChoice&)>& resolve,
+                             std::size_t max_tasks = kMaxSweepTasks);
 
 }  // namespace crux

@@ -23,6 +23,13 @@ std::size_t SweepPlan::run_tasks() const {
       std::count_if(tasks.begin(), tasks.end(), [](const SweepTask& t) { return t.kind == SweepTaskKind::Run; }));
 }
 
+void check_task_count(std::size_t tasks, std::size_t max_tasks) {
+  if (tasks > max_tasks) {
+    throw InputError("experiment.walls",
+                     fmt::format("the sweep has {} walls and runs; at most {} are allowed", tasks, max_tasks));
+  }
+}
+
 SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells, std::size_t max_tasks) {
   SweepPlan plan;
   plan.keys = std::move(keys);
@@ -46,10 +53,7 @@ SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells
     total += 3 * static_cast<std::size_t>(s.runs());
   }
   for (const std::size_t walls : group_walls) total += 2 * walls;
-  if (total > max_tasks) {
-    throw InputError("experiment.walls",
-                     fmt::format("the sweep has {} walls and runs; at most {} are allowed", total, max_tasks));
-  }
+  check_task_count(total, max_tasks);
   plan.wall_groups = groups.size();
   plan.tasks.reserve(total);
   for (std::size_t g = 0; g < plan.wall_groups; ++g) {

@@ -48,9 +48,17 @@ struct SweepPlan {
   std::size_t run_tasks() const;
 };
 
+// The most tasks a sweep may have: its plan keeps one entry per task (~100 bytes).
+inline constexpr std::size_t kMaxSweepTasks = 10000000;
+
+// InputError("experiment.walls") when `tasks`, a count of the sweep's tasks or a lower
+// bound on it, exceeds `max_tasks`.
+void check_task_count(std::size_t tasks, std::size_t max_tasks);
+
 // The tasks of `cells` (their wall_group set here); InputError("experiment.walls") when
 // the sweep exceeds `max_tasks`.
-SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells, std::size_t max_tasks = 10000000);
+SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells,
+                     std::size_t max_tasks = kMaxSweepTasks);
 
 // The task of run r of `condition` in `cell`.
 std::size_t run_task_index(const SweepPlan& plan, std::size_t cell, Condition condition, int run);

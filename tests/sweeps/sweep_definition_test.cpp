@@ -76,5 +76,35 @@ TEST(SweepDefinition, ASweepOverTheCellBoundBuildsNoCell) {
   EXPECT_EQ(built, 0u);
 }
 
+// Issue 25: a sweep under the cell bound was built whole before its task count was
+// checked. Building stops at the first cell that takes the count past the bound: here
+// each cell has 3 x 100 runs and the largest wall group 2 x 100 walls, so the third cell
+// (900 + 200 tasks) passes 1000, and the other 997 cells are never built.
+TEST(SweepDefinition, ASweepOverTheTaskBoundStopsBuildingAtTheCellThatPassesIt) {
+  std::string text = "[experiment]\nwalls = 100\nplan = false\nseed = [";
+  for (int seed = 1; seed <= 500; ++seed) text += (seed > 1 ? ", " : "") + std::to_string(seed);
+  text += "]\n[learning]\nepsilon = [0.1, 0.25]\n";
+  const ConfigDocument document(text, "sweep.toml");
+  std::size_t built = 0;
+  const SweepGrid grid{listed_keys(document, kSweepKeys), "sweep.toml"};
+  ASSERT_EQ(grid.cells(), 1000u);
+  try {
+    define_sweep(
+        grid,
+        [&](const ListChoice& choice) {
+          ++built;
+          ExperimentConfig config;
+          apply_config_document(document, config, kSweepKeys, "sweep", choice);
+          finalize_config(config);
+          return config;
+        },
+        1000);
+    ADD_FAILURE() << "a sweep of 1000 cells of 500 tasks each was accepted";
+  } catch (const InputError& error) {
+    EXPECT_STREQ(error.what(), "experiment.walls: the sweep has 1100 walls and runs; at most 1000 are allowed");
+  }
+  EXPECT_EQ(built, 3u);
+}
+
 }  // namespace
 }  // namespace crux
