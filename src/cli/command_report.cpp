@@ -30,10 +30,15 @@ struct ReportCommand {
   std::string output;
   std::string run_name = "training_0";
   std::string climb_choice = "greedy";
+  int replay_moves = kDefaultReplayMoves;
   bool json = false;
 
   void run() {
     const auto started = std::chrono::steady_clock::now();
+    if (replay_moves < 1 || replay_moves > kMaxReplayMoves) {
+      throw InputError("--replay-moves", fmt::format("must be from 1 to {} (a move is about 4 KB of the page), got {}",
+                                                     kMaxReplayMoves, replay_moves));
+    }
     ExperimentConfig config = binding.resolve();
     const ReportedRun reported = locate_reported_run(folder, run_name, "--run");
     RunFolder run = locate_run_folder(reported.run_directory);
@@ -42,7 +47,7 @@ struct ReportCommand {
     check_output_file(output, {folder, binding.config_path(), configured_urdf_path(config)});
     const BodyModel model = load_configured_body(config);
     read_run_climb(run, model);
-    ReportPage page = report_page(folder, reported, run, model, recorded, climb_choice);
+    ReportPage page = report_page(folder, reported, run, model, recorded, climb_choice, replay_moves);
     page.style = report_style();
     page.script = replay_script();
     const std::string html = html_report(page);
@@ -86,6 +91,11 @@ void add_report_commands(CLI::App& app) {
   r->add_option("--run", report->run_name, "For a crux paper folder: the run whose climb is replayed, <condition>_<i>")
       ->capture_default_str();
   add_climb_option(r, report->climb_choice);
+  r->add_option("--replay-moves", report->replay_moves,
+                fmt::format("The replay shows the climb's first N moves, from 1 to {} (a move is about 4 KB of the "
+                            "page); the page says when the climb has more",
+                            kMaxReplayMoves))
+      ->capture_default_str();
   r->add_flag("--json", report->json, "Print JSON instead of text");
   report->binding.bind(r);
   r->callback([report] { report->run(); });

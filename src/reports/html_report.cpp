@@ -7,6 +7,7 @@
 #include "common/counted.hpp"
 #include "learning/action_selection.hpp"
 #include "reports/paper_reference.hpp"
+#include "reports/replay_data.hpp"
 #include "views/svg_document.hpp"
 
 namespace crux {
@@ -219,6 +220,14 @@ class Page {
     }
     append_format(out_, "<section id=\"replay\">\n<h2>Replay: {}</h2>\n", xml_escaped(page_.replay_title));
     if (!page_.replay_reason.empty()) append_format(out_, "<p>Replayed: {}.</p>\n", xml_escaped(page_.replay_reason));
+    const std::size_t shown = page_.replay["moves"].size();
+    const std::size_t moves = page_.replay["climb_moves"].get<std::size_t>();
+    if (shown < moves) {
+      append_format(out_,
+                    "<p class=\"cut\">This climb has {} moves; the replay shows its first {} (crux report "
+                    "--replay-moves, at most {}).</p>\n",
+                    moves, shown, kMaxReplayMoves);
+    }
     out_ +=
         "<p>The climb move by move. Between two recorded postures the body follows the path of the paper's "
         "gradient-descent IK (Algorithm 1). Drag to orbit, scroll to zoom; space plays and pauses, the arrow keys "

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <vector>
 
 #include <fmt/format.h>
@@ -144,7 +145,8 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
   HoldConfiguration configuration = start_configuration(wall).with(Limb::RightHand, kFree);
   std::size_t posture = 0;  // index into the climb of the body's current posture
   std::vector<Posture> path;
-  for (const RunStep& step : climb.steps) {
+  const std::size_t shown = std::min(climb.steps.size(), static_cast<std::size_t>(std::max(settings.max_moves, 0)));
+  for (const RunStep& step : std::span(climb.steps).first(shown)) {
     const Limb free = configuration.free_limb();
     const int hold = wall.index_of(step.hold_id);
     if (hold < 0) {
@@ -182,6 +184,7 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
                      {"first_frame", first},
                      {"last_frame", frames.count() - 1}});
   }
+  out["climb_moves"] = climb.steps.size();
   out["frames"] = {{"count", frames.count()}, {"postures", frames.values()}};
   out["moves"] = std::move(moves);
   if (frames.count() > 0) {

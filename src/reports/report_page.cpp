@@ -10,7 +10,8 @@
 namespace crux {
 
 ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& reported, RunFolder& run,
-                       const BodyModel& model, const ExperimentConfig& recorded, const std::string& climb_choice) {
+                       const BodyModel& model, const ExperimentConfig& recorded, const std::string& climb_choice,
+                       int replay_moves) {
   namespace fs = std::filesystem;
   const ClimbingParameters& climbing = recorded.settings.learning.climbing;
   ReportPage page;
@@ -23,7 +24,10 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
   page.replay_episode = climb.episode;
   page.replay_reason = shown_climb_reason(run, climb, climb_choice, recorded.settings.learning.greedy_cap, "--climb");
   if (!climb.postures.empty()) {
-    page.replay = replay_data(model, run.wall, climb, climbing.reachability, page.replay_title, run.directory.string());
+    ReplayOptions options;
+    options.max_moves = replay_moves;
+    page.replay =
+        replay_data(model, run.wall, climb, climbing.reachability, page.replay_title, run.directory.string(), options);
   }
   return page;
 }
@@ -35,6 +39,10 @@ int replay_frames(const ReportPage& page) {
 }
 
 std::size_t replay_moves(const ReportPage& page) { return page.replay.is_null() ? 0 : page.replay["moves"].size(); }
+
+std::size_t climb_moves(const ReportPage& page) {
+  return page.replay.is_null() ? 0 : page.replay["climb_moves"].get<std::size_t>();
+}
 
 }  // namespace
 
@@ -50,6 +58,7 @@ nlohmann::ordered_json written_report_json(const ReportPage& page, const std::st
   out["replay_episode"] = page.replay_episode < 0 ? -1 : page.replay_episode + 1;
   out["replay_reason"] = page.replay_reason;
   out["replay_moves"] = replay_moves(page);
+  out["climb_moves"] = climb_moves(page);
   out["replay_frames"] = replay_frames(page);
   out["seconds"] = seconds;
   return out;
@@ -62,8 +71,11 @@ std::string written_report_text(const ReportPage& page, const std::string& run_n
   if (page.replay.is_null()) {
     return fmt::format("{}, no replay) in {:.2f} s\nno replay: {}\n", written, seconds, page.replay_reason);
   }
-  return fmt::format("{}, a replay of {} with {}) in {:.2f} s\nreplayed: {}\n", written, run_name,
-                     counted(replay_moves(page), "move"), seconds, page.replay_reason);
+  const std::string moves = replay_moves(page) < climb_moves(page)
+                                ? fmt::format("the first {} of {} moves", replay_moves(page), climb_moves(page))
+                                : counted(replay_moves(page), "move");
+  return fmt::format("{}, a replay of {} with {}) in {:.2f} s\nreplayed: {}\n", written, run_name, moves, seconds,
+                     page.replay_reason);
 }
 
 }  // namespace crux

@@ -7,6 +7,7 @@
 
 #include "experiments/experiment_config.hpp"
 #include "reports/html_report.hpp"
+#include "reports/replay_data.hpp"
 #include "reports/run_folder.hpp"
 
 namespace crux {
@@ -14,9 +15,11 @@ namespace crux {
 // The page's style and script are left to the caller (crux_web_assets, which only the
 // binary embeds). `run` is the replayed run of `reported`, its climb read with `model`
 // (its summary is moved into the page); `recorded` the parameters the run was written
-// with (read_run_config). `climb_choice` as climb_to_show.
+// with (read_run_config). `climb_choice` as climb_to_show; the replay shows the climb's
+// first `replay_moves` moves.
 ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& reported, RunFolder& run,
-                       const BodyModel& model, const ExperimentConfig& recorded, const std::string& climb_choice);
+                       const BodyModel& model, const ExperimentConfig& recorded, const std::string& climb_choice,
+                       int replay_moves = kDefaultReplayMoves);
 
 // What crux report says once `page` is written to `file`: its size, figures and replay.
 nlohmann::ordered_json written_report_json(const ReportPage& page, const std::string& run_name, const std::string& file,

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -335,6 +336,42 @@ TEST(CliLearning, AnOutputFileNamingAnInputOfTheCommandIsRefused) {
   EXPECT_EQ(read_text(run / "wall.json"), wall);
   const auto empty = run_crux("report " + run.string() + " -o ''");
   EXPECT_EQ(empty.err, "crux: --output: the output file name is empty\n");
+}
+
+// Issue 25: a report's page grew with the replayed climb without a bound (a 60,000-move
+// episode made a 173 MB page). The replay shows the first --replay-moves moves, and the
+// page, the text and --json say when the climb has more; a value outside 1..20000 is
+// refused before anything is written.
+TEST(CliLearning, AReportReplaysAtMostReplayMovesAndSaysSo) {
+  const fs::path train = testing::trained_run_folder(), html = learning_scratch("cut.html");
+  fs::remove(html);
+  for (const std::string value : {"0", "20001"}) {
+    const auto refused = run_crux("report " + train.string() + " --replay-moves " + value + " -o " + html.string());
+    EXPECT_EQ(refused.exit_code, 2);
+    EXPECT_EQ(refused.err,
+              "crux: --replay-moves: must be from 1 to 20000 (a move is about 4 KB of the page), got " + value + "\n");
+    EXPECT_FALSE(fs::exists(html));
+  }
+  const auto whole = run_crux("report " + train.string() + " --climb last --json -o " + html.string());
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  const int moves = nlohmann::json::parse(whole.out)["climb_moves"];
+  ASSERT_GT(moves, 2);
+  EXPECT_EQ(nlohmann::json::parse(whole.out)["replay_moves"], moves);
+  EXPECT_EQ(read_text(html).find("<p class=\"cut\">"), std::string::npos);
+  const auto json = run_crux("report " + train.string() + " --climb last --replay-moves 2 --json -o " + html.string());
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["replay_moves"], 2);
+  EXPECT_EQ(nlohmann::json::parse(json.out)["climb_moves"], moves);
+  EXPECT_NE(read_text(html).find(fmt::format(
+                "<p class=\"cut\">This climb has {} moves; the replay shows its first 2 (crux report --replay-moves, "
+                "at most 20000).</p>",
+                moves)),
+            std::string::npos);
+  const auto text = run_crux("report " + train.string() + " --climb last --replay-moves 2 -o " + html.string());
+  EXPECT_NE(
+      text.out.find(fmt::format("a replay of {} with the first 2 of {} moves)", train.filename().string(), moves)),
+      std::string::npos)
+      << text.out;
 }
 
 // -o naming a FIFO writes the page through it; a rename would have replaced the FIFO

@@ -55,6 +55,27 @@ TEST(ReplayData, MovesCoverTheFramesAndEndOnTheRecordedPostures) {
   EXPECT_EQ(replay["climb"], "last");
 }
 
+// Issue 25: a report's page grew with its climb without a bound. The replay shows the
+// climb's first max_moves moves, frame for frame as the whole replay shows them, and
+// says how many the climb has.
+TEST(ReplayData, AReplayShowsTheFirstMaxMovesOfALongerClimb) {
+  const RunFolder folder = testing::read_trained_run();
+  const RecordedClimb& climb = folder.last;
+  ASSERT_GT(climb.steps.size(), 3u);
+  const auto whole = replay_data(testing::human_model(), folder.wall, climb, {}, "test", "test");
+  ReplayOptions cut;
+  cut.max_moves = 3;
+  const auto first = replay_data(testing::human_model(), folder.wall, climb, {}, "test", "test", cut);
+  ASSERT_EQ(first["moves"].size(), 3u);
+  EXPECT_EQ(first["climb_moves"], climb.steps.size());
+  EXPECT_EQ(whole["climb_moves"], climb.steps.size());
+  EXPECT_EQ(whole["moves"].size(), climb.steps.size());
+  const int frames = first["frames"]["count"];
+  EXPECT_EQ(frames, whole["moves"][2]["last_frame"].get<int>() + 1);
+  for (int f = 0; f < frames; ++f) EXPECT_EQ(frame(first, f), frame(whole, f)) << "frame " << f;
+  for (std::size_t m = 0; m < 3; ++m) EXPECT_EQ(first["moves"][m], whole["moves"][m]) << "move " << m;
+}
+
 // Each reached move's recorded posture grasps the four holds the replay says it holds, with
 // the root inside its tolerance (Algorithm 1's termination test): the moves and the
 // postures are those of one climb.
