@@ -1,0 +1,43 @@
+#include "cli/parameter_binding.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "jobs/command_keys.hpp"
+#include "support/test_models.hpp"
+
+namespace crux::cli {
+namespace {
+
+// Issue 25: crux sweep resolved each cell by reading and parsing its whole file again,
+// so expanding a sweep cost the cells times the file. The binding reads and parses the
+// file once, at its first use, whatever the number of cells resolved from it.
+TEST(ParameterBinding, ASweepFileIsReadAndParsedOnceForAllItsCells) {
+  const auto file = testing::write_temporary(
+      "binding_sweep.toml",
+      "[experiment]\nwalls = 1\nplan = false\nseed = [1, 2, 3]\n[learning]\nepsilon = [0.1, 0.2]\n");
+  CLI::App app;
+  ParameterBinding binding("sweep", kPaperKeys);
+  binding.bind(&app);
+  std::vector<std::string> arguments{"--config", file.string()};
+  std::reverse(arguments.begin(), arguments.end());
+  app.parse(arguments);
+  const std::size_t parses_before = ConfigDocument::parses();
+  const std::vector<ListedKey> listed = binding.listed_keys();
+  ASSERT_EQ(listed.size(), 2u);
+  const std::vector<double> epsilons{0.1, 0.2};
+  for (std::size_t seed = 0; seed < 3; ++seed) {
+    for (std::size_t epsilon = 0; epsilon < 2; ++epsilon) {
+      const ExperimentConfig config = binding.resolve({{"experiment.seed", seed}, {"learning.epsilon", epsilon}});
+      EXPECT_EQ(config.settings.seed, seed + 1);
+      EXPECT_DOUBLE_EQ(config.settings.learning.dyna.epsilon, epsilons[epsilon]);
+    }
+  }
+  EXPECT_EQ(ConfigDocument::parses() - parses_before, 1u) << "6 cells";
+}
+
+}  // namespace
+}  // namespace crux::cli
