@@ -10,11 +10,12 @@
 namespace crux {
 
 struct RootTargetParameters {
-  double distance_from_wall = 0.30;  // x of the root target, metres from the wall plane
+  double distance_from_wall = 0.30;  // metres from the wall plane, on the climber's side (x < 0)
 };
 
 // y: midway between the two foot holds; z: the lowest foot hold plus the root's height
-// above the soles when standing; x: `distance_from_wall`.
+// above the soles when standing; x: -`distance_from_wall`, since the climber stands at
+// x < 0 facing the wall.
 Eigen::Vector3d root_target(const BodyModel& model, const std::array<Eigen::Vector3d, kLimbCount>& hold_centres,
                             const RootTargetParameters& parameters = {});
 

@@ -221,7 +221,7 @@ class Page {
     append_format(out_, "<section id=\"replay\">\n<h2>Replay: {}</h2>\n", xml_escaped(page_.replay_title));
     if (!page_.replay_reason.empty()) append_format(out_, "<p>Replayed: {}.</p>\n", xml_escaped(page_.replay_reason));
     const std::size_t shown = page_.replay["moves"].size();
-    const std::size_t moves = page_.replay["climb_moves"].get<std::size_t>();
+    const std::size_t moves = page_.replay.value("climb_moves", shown);
     if (shown < moves) {
       append_format(out_,
                     "<p class=\"cut\">This climb has {} moves; the replay shows its first {} (crux report "

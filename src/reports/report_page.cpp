@@ -41,7 +41,7 @@ int replay_frames(const ReportPage& page) {
 std::size_t replay_moves(const ReportPage& page) { return page.replay.is_null() ? 0 : page.replay["moves"].size(); }
 
 std::size_t climb_moves(const ReportPage& page) {
-  return page.replay.is_null() ? 0 : page.replay["climb_moves"].get<std::size_t>();
+  return page.replay.is_null() ? 0 : page.replay.value("climb_moves", replay_moves(page));
 }
 
 }  // namespace

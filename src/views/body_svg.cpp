@@ -141,10 +141,12 @@ class BodyFigure {
   Eigen::Vector3d grasp_point(int limb) const { return data_.points[operational_point(static_cast<Limb>(limb))]; }
 
   void lay_out() {
-    // Front: from behind the climber (at +x, looking at the wall), so the climber's
-    // left (+y) is on the left. Side: from the climber's right (-y), the wall on the left.
-    views_ = {View{"front, from behind the climber", "y (m), to the climber's left", 1, -1.0, 0, 1.0},
-              View{"side, from the climber's right", "x (m), out of the wall", 0, 1.0, 1, -1.0}};
+    // Both are views of the right-handed world as a camera sees it. Front: from behind
+    // the climber (from x < 0, looking at the wall along +x), so the climber's left (+y)
+    // is on the left. Side: from the climber's left (from +y), the wall on the left and
+    // the climber, at x < 0, to its right.
+    views_ = {View{"front, from behind the climber", "y (m), to the climber's left", 1, -1.0, 0, -1.0},
+              View{"side, from the climber's left", "x (m); the wall is x = 0, the climber at x < 0", 0, -1.0, 1, 1.0}};
     double z_low = std::min(0.0, wall_.finish_height), z_high = wall_.finish_height;
     const auto include = [&](View& view, const Eigen::Vector3d& p, double radius) {
       view.low = std::min(view.low, view.u(p) - radius);
@@ -229,7 +231,7 @@ class BodyFigure {
     out_ += "</g>\n";
     append_format(out_,
                   "<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"11\" fill=\"{}\" text-anchor=\"middle\">{}</text>\n",
-                  view.left + view.width() / 2, bottom + 32, kTextColour, view.axis_title);
+                  view.left + view.width() / 2, bottom + 32, kTextColour, xml_escaped(view.axis_title));
     append_format(out_,
                   "<text x=\"{0:.2f}\" y=\"{1:.2f}\" font-size=\"11\" fill=\"{2}\" text-anchor=\"middle\" "
                   "transform=\"rotate(-90 {0:.2f} {1:.2f})\">z (m), up</text>\n",
@@ -293,8 +295,11 @@ class BodyFigure {
     out_ += "<g class=\"grasp-spheres\" fill-opacity=\"0.35\" stroke-width=\"1.5\">\n";
     for (int limb = 0; limb < kLimbCount; ++limb) {
       const Point c = view.project(grasp_point(limb));
-      append_format(out_, "<circle cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"{2:.2f}\" fill=\"{3}\" stroke=\"{3}\"/>\n", c[0],
-                    c[1], options_.grasp_radius * view.scale, kLimbStyles[limb].colour);
+      // data-limb names the limb for tools and for the browser test that compares sides with the replay.
+      append_format(out_,
+                    "<circle data-limb=\"{4}\" cx=\"{0:.2f}\" cy=\"{1:.2f}\" r=\"{2:.2f}\" fill=\"{3}\" "
+                    "stroke=\"{3}\"/>\n",
+                    c[0], c[1], options_.grasp_radius * view.scale, kLimbStyles[limb].colour, kLimbStyles[limb].code);
     }
     out_ += "</g>\n";
   }

@@ -35,6 +35,18 @@ TEST(KinematicsAgainstKdl, HumanOver1000RandomPostures) {
   expect_agreement(default_body_model_path(), testing::human_model(), kKdlSeed);
 }
 
+// Issue 26: the body was mirrored (left limbs on the climber's right in every
+// right-handed tool). Read by KDL, the zero posture stands facing +x, the wall's
+// direction, with its left hand and foot on its left, +y.
+TEST(KinematicsAgainstKdl, TheZeroPostureFacesPlusXWithItsLeftLimbsOnItsLeft) {
+  testing::KdlReference kdl(default_body_model_path(), testing::human_model());
+  const testing::BodySides sides = kdl.body_sides(Posture::Zero());
+  EXPECT_GT(sides.forward.x(), 0.99) << sides.forward.transpose();
+  EXPECT_GT(sides.left.y(), 0.99) << sides.left.transpose();
+  EXPECT_NEAR(sides.hands, 2 * 0.1853, 1e-9) << "the shoulders' breadth: the palms hang below them";
+  EXPECT_NEAR(sides.feet, 2 * 0.085, 1e-9) << "the hips' breadth";
+}
+
 TEST(KinematicsAgainstKdl, SyntheticTreeWithArbitraryAxesAndOrigins) {
   const auto path = testing::write_temporary("synthetic.urdf", testing::synthetic_tree_urdf(kKdlSeed));
   const BodyModel model = load_body_model(path.string());

@@ -7,7 +7,8 @@
 // other than the page's own file URL; checks that the replay becomes ready, draws a non-blank
 // canvas, draws frame 0 and the middle frame differently, shows the first move's reward as it is
 // (the shortest text of the number, not a fixed count of decimals), puts the grasp points where the C++
-// forward kinematics put them (data.check, within 1e-6 m), shows at least N SVG figures in
+// forward kinematics put them (data.check, within 1e-6 m), puts the left hand and foot on the
+// same side as Fig. 1's front view does (left of the right ones), shows at least N SVG figures in
 // #figures, plays when Play is clicked and steps with the keyboard. Saves replay_start.png,
 // replay_middle.png and page.png into DIR. With --fps, plays one replay frame per animation frame
 // for about 5 s and prints {"fps": ...} measured from cruxReplay.renderedFrames.
@@ -212,6 +213,24 @@ async function main() {
       info.check.grasp_points.forEach((p, i) => p.forEach((x, k) => { worst = Math.max(worst, Math.abs(x - got[i][k])); }));
       if (!(worst <= 1e-6)) fail(`grasp points at frame ${info.check.frame} are off by ${worst.toExponential(3)} m (> 1e-6): got ${JSON.stringify(got)}, expected ${JSON.stringify(info.check.grasp_points)}`);
     } else fail('the data has no check');
+
+    // Issue 26: Fig. 1's front view and the replay's first view both look at the climber from
+    // behind, so each puts the left hand and the left foot left of the right ones, as the page
+    // shows them (the replay's start frame is Fig. 1's posture).
+    const shown = await page.evaluate(() => window.cruxReplay.screenPoints(0));
+    const figure = await page.evaluate(() => {
+      const svg = [...document.querySelectorAll('#figures svg')].find((s) => s.textContent.includes('front, from behind the climber'));
+      if (!svg) return null;
+      const front = svg.querySelector('g.grasp-spheres'); // the front panel is drawn first
+      const x = (limb) => Number(front.querySelector(`circle[data-limb="${limb}"]`).getAttribute('cx'));
+      return { RH: x('RH'), LH: x('LH'), RF: x('RF'), LF: x('LF') };
+    });
+    if (!figure) fail('no Fig. 1 front view (an svg with "front, from behind the climber") in #figures');
+    else {
+      if (!(figure.LH < figure.RH && figure.LF < figure.RF)) fail(`Fig. 1's front view puts a left limb right of the right one: ${JSON.stringify(figure)}`);
+      const [rh, lh, rf, lf] = shown;
+      if (!(lh[0] < rh[0] && lf[0] < rf[0])) fail(`the replay's first view puts a left limb right of the right one: ${JSON.stringify(shown)}`);
+    }
 
     if (args.expectFigures !== null) {
       const svgs = await page.evaluate(() => document.querySelectorAll('#figures svg').length);

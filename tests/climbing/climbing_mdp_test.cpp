@@ -8,6 +8,9 @@
 
 #include "common/input_error.hpp"
 
+#include "body/urdf_loader.hpp"
+#include "common/random.hpp"
+#include "support/kdl_reference.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
@@ -29,6 +32,39 @@ TEST(ClimbingMdp, StartsInTheStartConfigurationWithTheRightHandFree) {
   for (const ActionCandidate& c : mdp.candidates()) {
     EXPECT_TRUE(passes_filter(f.wall, mdp.configuration().with(Limb::RightHand, c.wall), f.parameters.filter));
   }
+}
+
+// Issue 26: every right-handed tool showed the climber mirrored. On 5 walls, the start
+// posture and the postures of 30 random moves each, read back by KDL from the URDF,
+// stand on the climber's side of the wall (x < 0) with the trunk facing it (+x), and the
+// left hand and foot on the body's left (up x forward).
+TEST(ClimbingMdp, SolvedPosturesFaceTheWallWithTheirLeftLimbsOnTheirLeft) {
+  const BodyModel& model = testing::human_model();
+  testing::KdlReference kdl(default_body_model_path(), model);
+  constexpr std::uint64_t kSeed = 26;
+  Random random(kSeed);
+  int postures = 0;
+  for (std::uint64_t wall_seed = 1; wall_seed <= 5; ++wall_seed) {
+    const Wall wall = generate_random_wall(wall_seed);
+    ClimbingMdp mdp(model, wall, ClimbingParameters{});
+    for (int move = 0; move <= 30; ++move) {
+      if (move > 0) {
+        const auto candidates = mdp.candidates();
+        if (candidates.empty()) break;
+        const StepOutcome outcome = mdp.step(candidates[random.below(candidates.size())].wall);
+        if (!outcome.reached) continue;
+        if (outcome.finished) break;
+      }
+      const Posture& g = mdp.posture();
+      const testing::BodySides sides = kdl.body_sides(g);
+      ASSERT_LT(g[0], 0.0) << "seed " << kSeed << " wall " << wall_seed << " move " << move;
+      ASSERT_GT(sides.forward.x(), 0.5) << "seed " << kSeed << " wall " << wall_seed << " move " << move;
+      ASSERT_GT(sides.hands, 0.0) << "seed " << kSeed << " wall " << wall_seed << " move " << move;
+      ASSERT_GT(sides.feet, 0.0) << "seed " << kSeed << " wall " << wall_seed << " move " << move;
+      ++postures;
+    }
+  }
+  EXPECT_GT(postures, 50);
 }
 
 // The MDP offers exactly its candidates, and refuses to step to any other hold (one the

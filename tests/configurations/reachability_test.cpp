@@ -31,9 +31,9 @@ TEST(Reachability, TargetTakesTheConfigurationsHoldsInLimbOrder) {
   EXPECT_EQ(target.hold_centres[2], Eigen::Vector3d(0, 0.1, 0.7));
   EXPECT_EQ(target.hold_centres[3], Eigen::Vector3d(0, 0.5, 0.4));
   EXPECT_EQ(target.hold_radii, (std::array<double, kLimbCount>{0.06, 0.04, 0.04, 0.04}));
-  // H(C4): x from the parameters, y midway between the feet (0.1, 0.5), z the lowest
-  // foot (0.4) plus the root's standing height above the soles.
-  EXPECT_DOUBLE_EQ(target.root.x(), 0.25);
+  // H(C4): 0.25 m off the wall on the climber's side (x < 0), y midway between the
+  // feet (0.1, 0.5), z the lowest foot (0.4) plus the root's standing height above the soles.
+  EXPECT_DOUBLE_EQ(target.root.x(), -0.25);
   EXPECT_DOUBLE_EQ(target.root.y(), 0.3);
   EXPECT_DOUBLE_EQ(target.root.z(), 0.4 + model.root_height_above_soles);
   EXPECT_GT(model.root_height_above_soles, 0.5) << "a human's hips stand well above its soles";
@@ -47,7 +47,7 @@ TEST(Reachability, TargetFollowsTheFeetOfTheConfigurationGiven) {
   const ReachTarget target = reach_target(model, wall, swapped, {});
   EXPECT_EQ(target.hold_centres[2], wall.holds[3].position);
   EXPECT_EQ(target.hold_radii[1], 0.06);
-  EXPECT_DOUBLE_EQ(target.root.x(), RootTargetParameters{}.distance_from_wall);
+  EXPECT_DOUBLE_EQ(target.root.x(), -RootTargetParameters{}.distance_from_wall);
   EXPECT_DOUBLE_EQ(target.root.y(), 0.3);
   EXPECT_DOUBLE_EQ(target.root.z(), 0.4 + model.root_height_above_soles);
 }
@@ -64,8 +64,9 @@ TEST(Reachability, StartGuessStandsWithTheRootAtTheStartsTarget) {
   const BodyModel& model = testing::human_model();
   const Wall wall = five_holds();
   const Posture guess = start_guess(model, wall, RootTargetParameters{0.4});
-  // Feet of the start on holds 2 and 3: y = 0.3, z = 0.4 + the standing height.
-  EXPECT_DOUBLE_EQ(guess[0], 0.4);
+  // 0.4 m off the wall on the climber's side; feet of the start on holds 2 and 3: y = 0.3,
+  // z = 0.4 + the standing height.
+  EXPECT_DOUBLE_EQ(guess[0], -0.4);
   EXPECT_DOUBLE_EQ(guess[1], 0.3);
   EXPECT_DOUBLE_EQ(guess[2], 0.4 + model.root_height_above_soles);
   EXPECT_TRUE(guess.tail<kRevoluteDof>().isZero()) << "every joint at its natural standing angle";

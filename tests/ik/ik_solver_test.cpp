@@ -132,7 +132,7 @@ TEST_P(EachSolver, SameInputsGiveBitIdenticalOutputs) {
 TEST_P(EachSolver, RecordsThePathEveryKIterations) {
   const BodyModel& model = human_model();
   const IkParameters settings = settings_for(GetParam());
-  const Posture start = standing_posture({0.3, 0.6, 1.0});
+  const Posture start = standing_posture({-0.3, 0.6, 1.0});
   ReachTarget target;
   target.hold_centres = start_layout_holds();
   target.root = root_target(model, target.hold_centres);

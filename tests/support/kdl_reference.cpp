@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <Eigen/Geometry>
+
 #include <kdl_parser/kdl_parser.hpp>
 
 namespace crux::testing {
@@ -55,6 +57,28 @@ Eigen::Vector3d KdlReference::point(const Posture& g, int k) {
   KDL::Frame frame;
   if (fk_.JntToCart(to_kdl(g), frame, segments_[k]) < 0) throw std::runtime_error("KDL FK failed");
   return {frame.p.x(), frame.p.y(), frame.p.z()};
+}
+
+Eigen::Vector3d KdlReference::segment_origin(const Posture& g, const std::string& segment) {
+  KDL::Frame frame;
+  if (fk_.JntToCart(to_kdl(g), frame, segment) < 0) throw std::runtime_error("KDL FK failed for " + segment);
+  return {frame.p.x(), frame.p.y(), frame.p.z()};
+}
+
+BodySides KdlReference::body_sides(const Posture& g) {
+  const auto limb = [&](Limb l) { return point(g, operational_point(l)); };
+  // The trunk's facing: where the toes point when every joint below the root stands at 0
+  // (a solved posture may turn a foot anywhere its joints allow).
+  const Posture standing = standing_posture(g.head<kRootDof>());
+  const Eigen::Vector3d toes =
+      point(standing, operational_point(Limb::RightFoot)) + point(standing, operational_point(Limb::LeftFoot)) -
+      segment_origin(standing, "right_ankle_link") - segment_origin(standing, "left_ankle_link");
+  BodySides sides;
+  sides.forward = Eigen::Vector3d(toes.x(), toes.y(), 0.0).normalized();
+  sides.left = Eigen::Vector3d::UnitZ().cross(sides.forward);
+  sides.hands = (limb(Limb::LeftHand) - limb(Limb::RightHand)).dot(sides.left);
+  sides.feet = (limb(Limb::LeftFoot) - limb(Limb::RightFoot)).dot(sides.left);
+  return sides;
 }
 
 OperationalJacobian KdlReference::jacobian(const Posture& g, int k) {

@@ -16,6 +16,16 @@
 
 namespace crux::testing {
 
+// How the body stands at a posture, read by KDL alone: `forward` is the horizontal
+// direction its toes point (from the ankles to the balls of the feet), `left` is
+// up x forward, the body's left in a right-handed frame, and `hands` and `feet` are the
+// left limb's offset from the right one along `left` (positive when each left limb is on
+// the body's left).
+struct BodySides {
+  Eigen::Vector3d forward, left;
+  double hands = 0, feet = 0;
+};
+
 class KdlReference {
  public:
   // Throws std::runtime_error if kdl_parser rejects the file.
@@ -28,6 +38,9 @@ class KdlReference {
   Eigen::Vector3d point(const Posture& g, int k);
   OperationalJacobian jacobian(const Posture& g, int k);
   Eigen::Vector3d centre_of_mass(const Posture& g);
+  // The origin of KDL segment `segment` (a URDF link) at posture g.
+  Eigen::Vector3d segment_origin(const Posture& g, const std::string& segment);
+  BodySides body_sides(const Posture& g);
 
   const KDL::Tree& tree() const { return tree_; }
   // KDL segment names of the operational points: the root body, then the grasp frames.

@@ -41,7 +41,7 @@ const Wall& four_hold_wall() {
 
 TEST(BodySvg, IsAWellFormedDocumentWithBothViewsAndEveryPrimitive) {
   const BodyModel& model = testing::human_model();
-  const std::string svg = render_body_svg(model, standing_posture({0.35, 0.6, 1.0}), four_hold_wall(),
+  const std::string svg = render_body_svg(model, standing_posture({-0.35, 0.6, 1.0}), four_hold_wall(),
                                           {.title = "standing & waiting", .subtitle = "step 0"});
   EXPECT_EQ(check_well_formed(svg), "");
   EXPECT_NE(svg.find("standing &amp; waiting"), std::string::npos);
@@ -59,9 +59,11 @@ TEST(BodySvg, IsAWellFormedDocumentWithBothViewsAndEveryPrimitive) {
 
 // Front view from behind the climber: the left hand (+y) is drawn left of the right hand,
 // the hands above the feet. Side view: the wall on the left, the body out of the wall.
-TEST(BodySvg, ViewsAreOrientedAsSeenFromBehindAndFromTheRight) {
+// Front: from behind the climber, its left limbs on the left. Side: from the climber's
+// left, the wall on the left and the climber (at x < 0) to its right.
+TEST(BodySvg, ViewsAreOrientedAsSeenFromBehindAndFromTheLeft) {
   const BodyModel& model = testing::human_model();
-  const std::string svg = render_body_svg(model, standing_posture({0.35, 0.6, 1.0}), four_hold_wall());
+  const std::string svg = render_body_svg(model, standing_posture({-0.35, 0.6, 1.0}), four_hold_wall());
   const std::string front = panel_group(svg, 0, "grasp-spheres");
   const std::vector<double> x = circle_centres(front, "cx"), y = circle_centres(front, "cy");
   ASSERT_EQ(x.size(), 4u);
@@ -72,12 +74,12 @@ TEST(BodySvg, ViewsAreOrientedAsSeenFromBehindAndFromTheRight) {
   const std::regex wall_line("class=\"wall\" x1=\"([-0-9.]+)\"");
   std::smatch wall;
   ASSERT_TRUE(std::regex_search(svg, wall, wall_line));
-  for (const double cx : circle_centres(side, "cx")) EXPECT_GT(cx, std::stod(wall[1])) << "the body is at x > 0";
+  for (const double cx : circle_centres(side, "cx")) EXPECT_GT(cx, std::stod(wall[1])) << "the body is at x < 0";
 }
 
 TEST(BodySvg, SamePostureGivesIdenticalBytesAndAnotherPostureOtherBytes) {
   const BodyModel& model = testing::human_model();
-  Posture bent = standing_posture({0.35, 0.6, 1.0});
+  Posture bent = standing_posture({-0.35, 0.6, 1.0});
   const std::string first = render_body_svg(model, bent, four_hold_wall());
   EXPECT_EQ(first, render_body_svg(model, bent, four_hold_wall()));
   bent[kRootDof + 10] = 0.8;
@@ -85,7 +87,7 @@ TEST(BodySvg, SamePostureGivesIdenticalBytesAndAnotherPostureOtherBytes) {
 }
 
 TEST(BodySvg, RejectsANonPositiveScale) {
-  EXPECT_THROW(render_body_svg(testing::human_model(), standing_posture({0.35, 0.6, 1.0}), four_hold_wall(),
+  EXPECT_THROW(render_body_svg(testing::human_model(), standing_posture({-0.35, 0.6, 1.0}), four_hold_wall(),
                                {.pixels_per_metre = 0}),
                std::invalid_argument);
 }

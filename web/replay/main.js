@@ -18,6 +18,7 @@ function start() {
     pause: () => viewer.pause(),
     get renderedFrames() { return viewer.renderedFrames; },
     graspPoints: (i) => viewer.graspPoints(i),
+    screenPoints: (i) => viewer.screenPoints(i),
     get playing() { return viewer.playing; },
   };
 }

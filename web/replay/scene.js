@@ -38,9 +38,10 @@ export class WallView {
     this.extent = { ymin, ymax, zmax };
     const width = ymax - ymin;
 
-    // PlaneGeometry lies in xy facing +z: map its x to world y, its y to world z, its normal to +x.
+    // PlaneGeometry lies in xy facing +z: map its x to world -y, its y to world z and its normal to
+    // -x, towards the climber, who stands at x < 0 (a rotation, so the frame stays right-handed).
     const plane = new PlaneGeometry(width, zmax);
-    plane.applyMatrix4(new Matrix4().makeBasis(new Vector3(0, 1, 0), new Vector3(0, 0, 1), new Vector3(1, 0, 0)));
+    plane.applyMatrix4(new Matrix4().makeBasis(new Vector3(0, -1, 0), new Vector3(0, 0, 1), new Vector3(-1, 0, 0)));
     // Unlit: a lit plane under directional lights is one flat colour anyway, and an unlit one is far
     // cheaper to fill in software rendering (the wall covers most of the view).
     const wallMesh = new Mesh(plane, new MeshBasicMaterial({ color: COLORS.wall }));
@@ -48,10 +49,10 @@ export class WallView {
     wallMesh.name = 'wall';
     this.group.add(wallMesh);
 
-    // Floor grid in z = 0, from the wall out to x = 3 m.
+    // Floor grid in z = 0, from the wall out to x = -3 m on the climber's side.
     const pts = [];
-    for (let x = 0; x <= 3.0001; x += 0.25) pts.push(x, ymin, 0, x, ymax, 0);
-    for (let y = Math.ceil(ymin * 4) / 4; y <= ymax; y += 0.25) pts.push(0, y, 0, 3, y, 0);
+    for (let x = 0; x >= -3.0001; x -= 0.25) pts.push(x, ymin, 0, x, ymax, 0);
+    for (let y = Math.ceil(ymin * 4) / 4; y <= ymax; y += 0.25) pts.push(0, y, 0, -3, y, 0);
     const grid = new BufferGeometry();
     grid.setAttribute('position', new Float32BufferAttribute(pts, 3));
     this.group.add(new LineSegments(grid, new LineBasicMaterial({ color: COLORS.floor })));
@@ -60,13 +61,13 @@ export class WallView {
     if (typeof wall.finish_height === 'number') {
       const fz = wall.finish_height;
       const line = new BufferGeometry();
-      line.setAttribute('position', new Float32BufferAttribute([0.004, ymin, fz, 0.004, ymax, fz], 3));
+      line.setAttribute('position', new Float32BufferAttribute([-0.004, ymin, fz, -0.004, ymax, fz], 3));
       this.group.add(new Line(line, new LineBasicMaterial({ color: COLORS.finish })));
       const band = new PlaneGeometry(0.6, width); // in xy, facing +z
       const bandMesh = new Mesh(band, new MeshBasicMaterial({
         color: COLORS.finish, transparent: true, opacity: 0.12, side: DoubleSide, depthWrite: false,
       }));
-      bandMesh.position.set(0.3, (ymin + ymax) / 2, fz);
+      bandMesh.position.set(-0.3, (ymin + ymax) / 2, fz);
       bandMesh.name = 'finish';
       this.group.add(bandMesh);
     }
@@ -122,7 +123,7 @@ export class WallView {
       const ring = new TorusGeometry(r, Math.max(0.006, r * 0.12), 8, 32);
       ring.rotateY(Math.PI / 2); // lie in the wall plane
       const mesh = new Mesh(ring, ringMaterial);
-      mesh.position.set(0.006, h.position[1], h.position[2]);
+      mesh.position.set(-0.006, h.position[1], h.position[2]);
       mesh.name = `start:${limb}`;
       this.group.add(mesh);
     }

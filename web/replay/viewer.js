@@ -122,16 +122,17 @@ export class ReplayViewer {
     const hemi = new HemisphereLight(0xffffff, 0x8c8a86, 1.6);
     hemi.position.set(0, 0, 1); // z is up
     const sun = new DirectionalLight(0xffffff, 1.6);
-    sun.position.set(4, -2, 5);
+    sun.position.set(-4, -2, 5);
     this.scene.add(hemi, sun, new AmbientLight(0xffffff, 0.25));
 
-    // Camera: behind the climber (who faces -x) and slightly to its left side, a little above.
+    // Camera: behind the climber (who faces +x, the wall) and slightly to its left side (+y), a
+    // little above, so the climber's left limbs are on the left of the picture as in Fig. 1's front view.
     this.camera = new PerspectiveCamera(40, 1.6, 0.05, 100);
     this.camera.up.set(0, 0, 1);
     // The target sits above the torso so that the whole body and the wall above it (towards the
     // finish) are in view.
-    const target = new Vector3(start.x - 0.25, start.y, start.z + 0.3);
-    this.camera.position.copy(target).add(new Vector3(4.2, 1.45, 0.55));
+    const target = new Vector3(start.x + 0.25, start.y, start.z + 0.3);
+    this.camera.position.copy(target).add(new Vector3(-4.2, 1.45, 0.55));
     this.controls = new OrbitControls(this.camera, this.canvas);
     this.controls.target.copy(target);
     this.controls.enableDamping = false;
@@ -347,5 +348,15 @@ export class ReplayViewer {
   graspPoints(i) {
     this.setFrame(i);
     return this.body.graspWorld();
+  }
+
+  /** The grasp points at frame i as the camera shows them now: [x, y] in [-1, 1], x to the right. */
+  screenPoints(i) {
+    this.setFrame(i);
+    this.camera.updateMatrixWorld();
+    return this.body.graspWorld().map((p) => {
+      const v = new Vector3(p[0], p[1], p[2]).project(this.camera);
+      return [v.x, v.y];
+    });
   }
 }
