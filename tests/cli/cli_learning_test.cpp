@@ -488,7 +488,7 @@ TEST(CliLearning, MalformedRunFoldersAreRefusedWithOneLine) {
     std::string problem;
   };
   const std::vector<Case> cases{
-      {copy_with("far_posture", "climb.csv", "\n0,0.2", "\n0,9999.2"), "is outside [-1000, 1000] m"},
+      {copy_with("far_posture", "climb.csv", "\n0,-0.2", "\n0,-9999.2"), "is outside [-1000, 1000] m"},
       {copy_with("negative_episode", "iterations.csv", "\n1,0,", "\n1,-1,"), "episodes count from 0"},
       {copy_with("unknown_regime", "iterations.csv", "\n1,0,random,", "\n1,0,randomly,"), "unknown regime"},
       {copy_cut("iterations_mid_row", [](const std::string& t) { return t.substr(0, t.size() - 5); }),
