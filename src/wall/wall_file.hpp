@@ -8,7 +8,8 @@
 //
 // The file names start holds by id; in memory Wall::start holds indices into
 // Wall::holds, whose order is the file's order. Holds are meant to lie on the wall
-// plane x = 0, but any finite x is accepted (a hold standing out of the wall is legal).
+// plane x = 0, but any finite x is accepted (a hold standing out of the wall, towards the
+// climber at x < 0, is legal).
 //
 // Reading is strict so that a typo never silently changes a wall: unknown keys and
 // duplicate keys are rejected, as are missing or mistyped fields, non-finite numbers,
