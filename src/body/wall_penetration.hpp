@@ -1,0 +1,31 @@
+#pragma once
+// How far a posture's body passes through the wall (docs/MODEL.md, choice C23). The
+// wall is the plane x = 0 and the climber stands at x < 0, so a point of the body with
+// x > 0 is inside the wall. Each visual primitive of the URDF (box, cylinder, sphere) is
+// measured by its exact support point along +x, its deepest point. The hands and feet
+// are left out: a limb that grasps a hold touches the wall there.
+
+#include "body/body_data.hpp"
+#include "body/body_model.hpp"
+
+namespace crux {
+
+// A point more than this behind the plane counts as passing through the wall: the
+// skin and clothing give way by about this much against a wall.
+inline constexpr double kWallSkinMargin = 0.01;
+
+struct WallPenetration {
+  double depth_m = 0.0;  // x of the deepest point of the counted primitives (> 0: inside the wall)
+  int visual = -1;       // that primitive, an index into BodyModel::visuals; -1 when none is counted
+
+  bool passes_through() const { return visual >= 0 && depth_m > kWallSkinMargin; }
+};
+
+// The deepest point along +x of `visual` carried by `carrier`.
+Eigen::Vector3d deepest_point(const BodyVisual& visual, const JointPlacement& carrier);
+
+// Over every primitive but those of the hands and feet (carried by a grasp point's
+// joint), at the posture of the last forward_kinematics of `data`.
+WallPenetration wall_penetration(const BodyModel& model, const BodyData& data);
+
+}  // namespace crux
