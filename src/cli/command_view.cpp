@@ -84,8 +84,9 @@ struct ViewCommand {
     check_output_file(output, {run, config.wall_file, configured_urdf_path(config), binding.config_path()});
   }
 
-  void write(const BodyModel& model, const Posture& posture, const Wall& wall, const ViewCaption& caption,
+  void write(const BodyModel& model, const Posture& posture, const Wall& wall, const ViewCaption& plain,
              const ReachabilityParameters& reach) const {
+    const ViewCaption caption = with_wall_note(plain, model, posture);
     BodySvgOptions options;
     options.title = caption.title;
     options.subtitle = caption.subtitle;

@@ -220,6 +220,14 @@ class Page {
     }
     append_format(out_, "<section id=\"replay\">\n<h2>Replay: {}</h2>\n", xml_escaped(page_.replay_title));
     if (!page_.replay_reason.empty()) append_format(out_, "<p>Replayed: {}.</p>\n", xml_escaped(page_.replay_reason));
+    if (page_.postures_in_wall > 0) {
+      append_format(out_,
+                    "<p class=\"in-wall\">{} of the climb's {} recorded postures pass through the wall (crux's "
+                    "default kinematic model ignores the wall, as the paper's does); the deepest: {}, at posture "
+                    "{}.</p>\n",
+                    page_.postures_in_wall, page_.climb_postures, xml_escaped(page_.deepest_in_wall),
+                    page_.deepest_in_wall_posture);
+    }
     const std::size_t shown = page_.replay["moves"].size();
     const std::size_t moves = page_.replay.value("climb_moves", shown);
     if (shown < moves) {

@@ -27,8 +27,15 @@ struct ReportPage {
   int replay_episode = -1;        // its episode's index from 0; -1 for the greedy climb
   std::string replay_reason;      // which climb it is and why, or why there is no replay (shown_climb_reason)
   nlohmann::ordered_json replay;  // replay_data(); null for none
-  std::string_view style;         // the page's CSS
-  std::string_view script;        // the replay's script (three.js bundled in)
+  // The replayed climb's recorded postures that pass through the wall (body/wall_penetration),
+  // and what the deepest of them says (view_description's wall_penetration_note) at which posture.
+  std::size_t postures_in_wall = 0;
+  std::size_t climb_postures = 0;
+  double deepest_in_wall_m = 0.0;
+  std::string deepest_in_wall;
+  int deepest_in_wall_posture = -1;
+  std::string_view style;   // the page's CSS
+  std::string_view script;  // the replay's script (three.js bundled in)
 };
 
 std::string html_report(const ReportPage& page);

@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include "body/kinematics.hpp"
+#include "body/wall_penetration.hpp"
 #include "common/counted.hpp"
 #include "reports/episode_replay.hpp"
 #include "reports/replay_data.hpp"
 #include "reports/report_figures.hpp"
+#include "reports/view_description.hpp"
 
 namespace crux {
 
@@ -23,6 +26,19 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
   page.replay_climb = climb.kind;
   page.replay_episode = climb.episode;
   page.replay_reason = shown_climb_reason(run, climb, climb_choice, recorded.settings.learning.greedy_cap, "--climb");
+  BodyData data(model);
+  page.climb_postures = climb.postures.size();
+  for (std::size_t k = 0; k < climb.postures.size(); ++k) {
+    forward_kinematics(model, data, climb.postures[k]);
+    const WallPenetration penetration = wall_penetration(model, data);
+    if (!penetration.passes_through()) continue;
+    ++page.postures_in_wall;
+    if (page.deepest_in_wall_posture < 0 || penetration.depth_m > page.deepest_in_wall_m) {
+      page.deepest_in_wall_m = penetration.depth_m;
+      page.deepest_in_wall = wall_penetration_note(model, penetration);
+      page.deepest_in_wall_posture = static_cast<int>(k);
+    }
+  }
   if (!climb.postures.empty()) {
     ReplayOptions options;
     options.max_moves = replay_moves;
@@ -60,6 +76,9 @@ nlohmann::ordered_json written_report_json(const ReportPage& page, const std::st
   out["replay_moves"] = replay_moves(page);
   out["climb_moves"] = climb_moves(page);
   out["replay_frames"] = replay_frames(page);
+  out["postures_in_wall"] = page.postures_in_wall;
+  out["deepest_in_wall_m"] =
+      page.deepest_in_wall_posture < 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(page.deepest_in_wall_m);
   out["seconds"] = seconds;
   return out;
 }

@@ -17,9 +17,31 @@ ViewCaption wall_view_caption(const Wall& wall, const std::string& svg) {
   return {svg, fmt::format("'{}'", wall.name), "the start posture, solved by IK from standing"};
 }
 
+namespace {
+
+WallPenetration penetration_at(const BodyModel& model, const Posture& posture) {
+  BodyData data(model);
+  forward_kinematics(model, data, posture);
+  return wall_penetration(model, data);
+}
+
+}  // namespace
+
+std::string wall_penetration_note(const BodyModel& model, const WallPenetration& penetration) {
+  if (!penetration.passes_through()) return "";
+  return fmt::format("the {} is {:.3f} m inside the wall", model.visuals[penetration.visual].link, penetration.depth_m);
+}
+
+ViewCaption with_wall_note(ViewCaption caption, const BodyModel& model, const Posture& posture) {
+  const std::string note = wall_penetration_note(model, penetration_at(model, posture));
+  if (!note.empty()) caption.subtitle += "; " + note + " (the kinematic model ignores the wall)";
+  return caption;
+}
+
 nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption) {
   BodyData data(model);
   forward_kinematics(model, data, posture);
+  const WallPenetration penetration = wall_penetration(model, data);
   const Eigen::Vector3d& com = centre_of_mass(model, data);
   nlohmann::ordered_json out;
   out["svg"] = caption.svg;
@@ -33,6 +55,11 @@ nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture,
     grasp[limb_name(static_cast<Limb>(limb))] = {p.x(), p.y(), p.z()};
   }
   out["grasp_points"] = grasp;
+  out["wall_penetration"] = {
+      {"passes_through", penetration.passes_through()},
+      {"depth_m", penetration.depth_m},
+      {"link", penetration.visual < 0 ? nlohmann::ordered_json()
+                                      : nlohmann::ordered_json(model.visuals[penetration.visual].link)}};
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "body/body_model.hpp"
+#include "body/wall_penetration.hpp"
 #include "reports/run_folder.hpp"
 
 namespace crux {
@@ -20,6 +21,14 @@ struct ViewCaption {
 // Step `step` of a run's climb, or a wall's start posture.
 ViewCaption run_view_caption(const RunFolder& folder, const RecordedClimb& climb, int step, const std::string& svg);
 ViewCaption wall_view_caption(const Wall& wall, const std::string& svg);
+
+// The caption with, when the body at `posture` passes through the wall (body/wall_penetration),
+// a note of how far and which part: the kinematic model ignores the wall, as the paper's
+// does, so a drawn posture may pass through it.
+ViewCaption with_wall_note(ViewCaption caption, const BodyModel& model, const Posture& posture);
+
+// "the head is 0.061 m inside the wall", or "" when the body stays out of it.
+std::string wall_penetration_note(const BodyModel& model, const WallPenetration& penetration);
 
 nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption);
 std::string view_text(const ViewCaption& caption);

@@ -374,6 +374,44 @@ TEST(CliLearning, AReportReplaysAtMostReplayMovesAndSaysSo) {
       << text.out;
 }
 
+// Issue 26: under the kinematic model a drawn posture may pass through the wall, and
+// nothing said so. crux view says it for the posture it draws (text, SVG subtitle and
+// --json), and crux report counts the climb's postures that do, with the deepest: the
+// two agree posture by posture.
+TEST(CliLearning, ViewAndReportSayWhenAPosturePassesThroughTheWall) {
+  const fs::path train = testing::trained_run_folder();
+  const fs::path svg = learning_scratch("in_wall.svg"), html = learning_scratch("in_wall.html");
+  const auto report = run_crux("report " + train.string() + " --json -o " + html.string());
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const auto summary = nlohmann::json::parse(report.out);
+  int in_wall = 0, postures = 0;
+  double deepest = -1.0;
+  for (int step = 0;; ++step) {
+    const auto view =
+        run_crux("view --run " + train.string() + " --step " + std::to_string(step) + " --json -o " + svg.string());
+    if (view.exit_code != 0) break;
+    ++postures;
+    const auto penetration = nlohmann::json::parse(view.out)["wall_penetration"];
+    const bool through = penetration["passes_through"];
+    EXPECT_EQ(through, penetration["depth_m"].get<double>() > 0.01) << "step " << step;
+    const std::string subtitle = nlohmann::json::parse(view.out)["subtitle"];
+    EXPECT_EQ(subtitle.find(" m inside the wall (the kinematic model ignores the wall)") != std::string::npos, through)
+        << subtitle;
+    EXPECT_EQ(read_text(svg).find(" m inside the wall") != std::string::npos, through) << "step " << step;
+    if (through) {
+      ++in_wall;
+      deepest = std::max(deepest, penetration["depth_m"].get<double>());
+    }
+  }
+  ASSERT_GT(postures, 2);
+  EXPECT_EQ(summary["postures_in_wall"], in_wall);
+  ASSERT_GT(in_wall, 0) << "the trained run's greedy climb passes through the wall (measured: 16 of 17 postures)";
+  EXPECT_DOUBLE_EQ(summary["deepest_in_wall_m"].get<double>(), deepest);
+  EXPECT_NE(read_text(html).find(
+                fmt::format("{} of the climb's {} recorded postures pass through the wall", in_wall, postures)),
+            std::string::npos);
+}
+
 // -o naming a FIFO writes the page through it; a rename would have replaced the FIFO
 // (and, run as root, -o /dev/null the machine's /dev/null) with a regular file.
 TEST(CliLearning, AReportWrittenToAFifoGoesThroughItAndKeepsTheFifo) {
