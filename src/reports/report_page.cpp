@@ -76,6 +76,7 @@ nlohmann::ordered_json written_report_json(const ReportPage& page, const std::st
   out["replay_moves"] = replay_moves(page);
   out["climb_moves"] = climb_moves(page);
   out["replay_frames"] = replay_frames(page);
+  out["climb_postures"] = page.climb_postures;
   out["postures_in_wall"] = page.postures_in_wall;
   out["deepest_in_wall_m"] =
       page.deepest_in_wall_posture < 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(page.deepest_in_wall_m);
