@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 namespace crux {
 
 Eigen::Vector3d deepest_point(const BodyVisual& visual, const JointPlacement& carrier) {
@@ -32,17 +34,30 @@ Eigen::Vector3d deepest_point(const BodyVisual& visual, const JointPlacement& ca
   return centre;
 }
 
+bool counts_for_the_wall(const BodyModel& model, const BodyVisual& visual) {
+  return std::none_of(model.grasp_points.begin(), model.grasp_points.end(),
+                      [&](const AttachedPoint& p) { return p.joint == visual.joint; });
+}
+
 WallPenetration wall_penetration(const BodyModel& model, const BodyData& data) {
   WallPenetration deepest;
   for (std::size_t v = 0; v < model.visuals.size(); ++v) {
     const BodyVisual& visual = model.visuals[v];
-    const bool grasping_segment = std::any_of(model.grasp_points.begin(), model.grasp_points.end(),
-                                              [&](const AttachedPoint& p) { return p.joint == visual.joint; });
-    if (grasping_segment) continue;
+    if (!counts_for_the_wall(model, visual)) continue;
     const double depth = deepest_point(visual, data.placements[visual.joint]).x();
     if (deepest.visual < 0 || depth > deepest.depth_m) deepest = {depth, static_cast<int>(v)};
   }
   return deepest;
+}
+
+void deepest_x_gradient(const BodyModel& model, const BodyData& data, int visual, Posture& gradient) {
+  gradient.setZero();
+  const BodyVisual& v = model.visuals[visual];
+  const Eigen::Vector3d point = deepest_point(v, data.placements[v.joint]);
+  for (int j = v.joint; j >= 0; j = model.joints[j].parent) {
+    const JointPlacement& placement = data.placements[j];
+    gradient[j] = model.joints[j].prismatic ? placement.axis.x() : placement.axis.cross(point - placement.origin).x();
+  }
 }
 
 }  // namespace crux

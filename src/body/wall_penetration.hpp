@@ -24,8 +24,17 @@ struct WallPenetration {
 // The deepest point along +x of `visual` carried by `carrier`.
 Eigen::Vector3d deepest_point(const BodyVisual& visual, const JointPlacement& carrier);
 
-// Over every primitive but those of the hands and feet (carried by a grasp point's
-// joint), at the posture of the last forward_kinematics of `data`.
+// Whether body/wall_penetration counts primitive `visual`: not a hand's or a foot's
+// (carried by a grasp point's joint).
+bool counts_for_the_wall(const BodyModel& model, const BodyVisual& visual);
+
+// Over every counted primitive, at the posture of the last forward_kinematics of `data`.
 WallPenetration wall_penetration(const BodyModel& model, const BodyData& data);
+
+// d x / d G of the deepest point of model.visuals[visual] at the posture of the last
+// forward_kinematics, moving with its carrier (the deepest point of a box or cylinder
+// jumps between corners or rim points, but its x is the support function, whose
+// gradient is that of the point held fixed).
+void deepest_x_gradient(const BodyModel& model, const BodyData& data, int visual, Posture& gradient);
 
 }  // namespace crux

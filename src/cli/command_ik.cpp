@@ -63,6 +63,8 @@ struct IkCompareCommand {
     const BodyModel model = load_configured_body(config);
     IkParameters walk = settings;
     walk.solver = config.compare_walk_solver_kind;
+    // The queries are the same whatever the wall rule, so that rules compare on one set.
+    walk.wall = WallRule::Ignore;
     ReachQueryParameters query_settings;
     query_settings.root = config.settings.learning.climbing.reachability.root;
     const auto batch =

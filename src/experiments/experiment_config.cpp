@@ -90,6 +90,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"ik.wall_distance", "Distance of the root target H(C4) from the wall, on the climber's side (m)",
        &m.reachability.root.distance_from_wall},
       {"ik.cache_unreachable", "Cache unreachable verdicts", &m.reachability.cache_unreachable},
+      {"ik.wall",
+       "The body and the wall: ignore (the paper's kinematic model), reject a solved posture that passes through it, "
+       "or avoid (keep the body out while solving)",
+       &c.wall_rule},
       {"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &c.compare_queries},
       {"compare.walk_solver", "Solver whose reached postures start the next queries of ik-compare's climbing walk",
        &c.compare_walk_solver},
@@ -361,6 +365,12 @@ void finalize_config(ExperimentConfig& config) {
     throw InputError("ik.solver",
                      fmt::format("unknown solver '{}' (expected fast or paper)", printable(config.solver)));
   s.learning.climbing.reachability.ik.solver = *solver;
+  const auto wall_rule = parse_wall_rule(config.wall_rule);
+  if (!wall_rule) {
+    throw InputError("ik.wall",
+                     fmt::format("unknown rule '{}' (expected ignore, reject or avoid)", printable(config.wall_rule)));
+  }
+  s.learning.climbing.reachability.ik.wall = *wall_rule;
   const auto walk_solver = parse_ik_solver(config.compare_walk_solver);
   if (!walk_solver) {
     throw InputError("compare.walk_solver", fmt::format("unknown solver '{}' (expected fast or paper)",

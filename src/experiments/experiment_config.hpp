@@ -34,6 +34,7 @@ struct ExperimentConfig {
   // run is shorter (kept as 0, so that a replay with fewer iterations still works).
   int beginning = 0;
   std::string solver = "fast";
+  std::string wall_rule = wall_rule_name(WallRule::Ignore);
   std::string planner = planner_name(Planner::Uniform);
   std::string transfer = transfer_mode_name(TransferMode::Paper);
   std::string reading = reading_name(FilterParameters{}.feet_above_hands);

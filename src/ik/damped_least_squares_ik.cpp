@@ -4,6 +4,7 @@
 
 #include "body/kinematics.hpp"
 #include "ik/task_jacobian.hpp"
+#include "ik/wall_clearance.hpp"
 
 namespace crux {
 
@@ -26,6 +27,28 @@ void task_error(const BodyData& data, const ReachTarget& target, const ReachTole
   }
 }
 
+// The task with the wall's rows below the five points' (at most kTaskSize + kMaxWallRows
+// rows, so that nothing is allocated): J (frozen columns zero) and the error.
+constexpr int kMaxWallTaskRows = kTaskSize + kMaxWallRows;
+using WallTaskJacobian =
+    Eigen::Matrix<double, Eigen::Dynamic, kConfigurationDof, Eigen::RowMajor, kMaxWallTaskRows, kConfigurationDof>;
+using WallTaskVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxWallTaskRows, 1>;
+using WallTaskMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxWallTaskRows, kMaxWallTaskRows>;
+
+void stack_wall_task(const BodyData& data, const WallClearance& clearance, const TaskVector& error,
+                     CoordinateSet frozen, WallTaskJacobian& jacobian, WallTaskVector& stacked) {
+  const int rows = kTaskSize + clearance.rows;
+  jacobian.resize(rows, kConfigurationDof);
+  stacked.resize(rows);
+  for (int k = 0; k < kOperationalPointCount; ++k) jacobian.middleRows<3>(3 * k) = data.jacobians[k];
+  for (int r = 0; r < clearance.rows; ++r) jacobian.row(kTaskSize + r) = clearance.gradient[r].transpose();
+  for (int i = 0; i < kConfigurationDof; ++i) {
+    if ((frozen >> i) & 1) jacobian.col(i).setZero();
+  }
+  stacked.head<kTaskSize>() = error;
+  for (int r = 0; r < clearance.rows; ++r) stacked[kTaskSize + r] = clearance.excess[r];
+}
+
 }  // namespace
 
 IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, const Posture& g_init,
@@ -36,18 +59,32 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
   Eigen::LLT<TaskMatrix> factor;
   Posture g = g_init, trial, gradient, step;
   const ChainCoordinates chains = chain_coordinates(model);
+  // With the wall, every joint is placed (the head and neck are no operational point's),
+  // and the step solves the stacked task of ik/wall_clearance.hpp.
+  const bool wall = settings.keep_out_of_wall;
+  WallClearance clearance, trial_clearance;
+  WallTaskJacobian wall_jacobian;
+  WallTaskVector wall_error;
+  WallTaskMatrix wall_normal;
+  Eigen::LLT<WallTaskMatrix> wall_factor;
+  const auto place = [&](const Posture& posture, WallClearance& out) {
+    if (!wall) return operational_forward_kinematics(model, data, posture);
+    forward_kinematics(model, data, posture);
+    wall_clearance(model, data, out);
+  };
 
-  operational_forward_kinematics(model, data, g);
+  place(g, clearance);
   recorder.start(g);
   task_error(data, target, tolerances, settings.aim_fraction, error);
-  double cost = 0.5 * error.squaredNorm();
+  double cost = 0.5 * error.squaredNorm() + (wall ? clearance.cost() : 0.0);
   double damping = settings.initial_damping;
   int iteration = 0, stalled = 0;
-  bool reached = target_reached(data.points, target, tolerances);
+  bool reached = target_reached(data.points, target, tolerances) && (!wall || clearance.clear());
   while (!reached && iteration < settings.max_iterations && stalled < settings.stall_iterations) {
     ++iteration;
     operational_jacobians(model, data);
     task_transpose_product(data, chains, 0, error, gradient);
+    for (int r = 0; wall && r < clearance.rows; ++r) gradient += clearance.excess[r] * clearance.gradient[r];
     // Active set: a joint at a limit whose descent direction points out of range is
     // frozen for this step, so the remaining joints absorb the motion.
     CoordinateSet frozen = 0;
@@ -57,21 +94,33 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
         frozen |= CoordinateSet{1} << i;
       }
     }
-    task_normal_matrix(data, chains, frozen, normal);
+    if (wall) {
+      stack_wall_task(data, clearance, error, frozen, wall_jacobian, wall_error);
+      wall_normal.noalias() = wall_jacobian * wall_jacobian.transpose();
+    } else {
+      task_normal_matrix(data, chains, frozen, normal);
+    }
     bool improved = false;
     double trial_cost = cost;
     TaskVector trial_error;
     while (damping <= settings.max_damping) {
-      TaskMatrix damped = normal;
-      damped.diagonal().array() += damping;
-      factor.compute(damped);
-      // data.jacobians are still g's: forward kinematics of a trial moves points only.
-      task_transpose_product(data, chains, frozen, factor.solve(error), step);
+      if (wall) {
+        WallTaskMatrix damped = wall_normal;
+        damped.diagonal().array() += damping;
+        wall_factor.compute(damped);
+        step.noalias() = wall_jacobian.transpose() * wall_factor.solve(wall_error);
+      } else {
+        TaskMatrix damped = normal;
+        damped.diagonal().array() += damping;
+        factor.compute(damped);
+        // data.jacobians are still g's: forward kinematics of a trial moves points only.
+        task_transpose_product(data, chains, frozen, factor.solve(error), step);
+      }
       trial = g - step;
       trial = trial.cwiseMax(model.lower_limits).cwiseMin(model.upper_limits);
-      operational_forward_kinematics(model, data, trial);
+      place(trial, trial_clearance);
       task_error(data, target, tolerances, settings.aim_fraction, trial_error);
-      trial_cost = 0.5 * trial_error.squaredNorm();
+      trial_cost = 0.5 * trial_error.squaredNorm() + (wall ? trial_clearance.cost() : 0.0);
       if (trial_cost < cost) {
         improved = true;
         damping = std::max(damping / 3.0, settings.min_damping);
@@ -80,15 +129,16 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
       damping *= 4.0;
     }
     if (!improved) {
-      operational_forward_kinematics(model, data, g);
+      place(g, clearance);
       break;
     }
     stalled = (cost - trial_cost) < settings.stall_relative_decrease * cost ? stalled + 1 : 0;
     g = trial;
     cost = trial_cost;
     error = trial_error;
+    if (wall) clearance = trial_clearance;
     recorder.sample(iteration, g);
-    reached = target_reached(data.points, target, tolerances);
+    reached = target_reached(data.points, target, tolerances) && (!wall || clearance.clear());
   }
   recorder.finish(iteration, g);
   IkResult result;

@@ -23,6 +23,10 @@ struct DampedLeastSquaresParameters {
   // Stop when `stall_iterations` steps in a row each lower f by less than this share.
   double stall_relative_decrease = 1e-3;
   int stall_iterations = 3;
+  // Keep the body out of the wall (ik.wall = avoid): the wall's residuals join the task
+  // as rows of their own, and a posture is reached only once they are all zero
+  // (ik/wall_clearance.hpp).
+  bool keep_out_of_wall = false;
 };
 
 // `time_step_s`: simulated time charged per linearisation, as per iteration of Algorithm 1.

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "body/kinematics.hpp"
+#include "ik/wall_clearance.hpp"
 
 namespace crux {
 
@@ -32,29 +33,40 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
   const int max_iterations = settings.max_iterations(time_step_s);
   Posture g = g_init;
   Posture gradient;
-  operational_forward_kinematics(model, data, g);
+  // With the wall, every joint is placed (the head and neck are no operational point's).
+  const bool wall = settings.keep_out_of_wall;
+  WallClearance clearance;
+  const auto place = [&](const Posture& posture) {
+    if (!wall) return operational_forward_kinematics(model, data, posture);
+    forward_kinematics(model, data, posture);
+    wall_clearance(model, data, clearance);
+  };
+  const auto cost_now = [&] { return reach_cost(data.points, target) + (wall ? clearance.cost() : 0.0); };
+  const auto accepted = [&] { return target_reached(data.points, target, tolerances) && (!wall || clearance.clear()); };
+  place(g);
   recorder.start(g);
   int iteration = 0;
-  bool reached = target_reached(data.points, target, tolerances);
+  bool reached = accepted();
   // f of the last stall_iterations + 1 iterates, for the stall exit.
   constexpr int kMaxStallWindow = 64;
   std::array<double, kMaxStallWindow + 1> recent_costs;
   const int window = std::clamp(settings.stall_iterations, 0, kMaxStallWindow);  // the config caps it at 64
-  recent_costs[0] = reach_cost(data.points, target);
+  recent_costs[0] = cost_now();
   while (!reached && iteration < max_iterations) {
     ++iteration;
     operational_jacobians(model, data);
     cost_gradient(model, data, target, gradient);
+    for (int r = 0; wall && r < clearance.rows; ++r) gradient += clearance.excess[r] * clearance.gradient[r];
     for (int i = 0; i < kConfigurationDof; ++i) {
       const double next = g[i] - settings.step_size * gradient[i];
       // "Modify descent direction": a joint whose step would cross its limit stays put.
       if (next >= model.lower_limits[i] && next <= model.upper_limits[i]) g[i] = next;
     }
-    operational_forward_kinematics(model, data, g);
+    place(g);
     recorder.sample(iteration, g);
-    reached = target_reached(data.points, target, tolerances);
+    reached = accepted();
     if (window == 0 || reached) continue;
-    const double cost = reach_cost(data.points, target);
+    const double cost = cost_now();
     recent_costs[iteration % (window + 1)] = cost;
     if (iteration >= window &&
         recent_costs[(iteration - window) % (window + 1)] - cost < settings.stall_decrease * cost &&

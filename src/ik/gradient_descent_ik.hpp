@@ -25,6 +25,9 @@ struct GradientDescentParameters {
   int stall_iterations = 10;
   double stall_decrease = 3e-4;
   double stall_margin_m = 0.10;
+  // Keep the body out of the wall (ik.wall = avoid): the wall's residuals join f, and a
+  // posture is reached only once they are all zero (ik/wall_clearance.hpp).
+  bool keep_out_of_wall = false;
   // Iterations that fit in Delta_t at `time_step_s` simulated seconds each.
   int max_iterations(double time_step_s) const;
 };

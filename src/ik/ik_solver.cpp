@@ -1,6 +1,7 @@
 #include "ik/ik_solver.hpp"
 
 #include "body/kinematics.hpp"
+#include "body/wall_penetration.hpp"
 
 namespace crux {
 
@@ -12,6 +13,25 @@ std::optional<IkSolverKind> parse_ik_solver(std::string_view name) {
   return std::nullopt;
 }
 
+const char* wall_rule_name(WallRule rule) {
+  switch (rule) {
+    case WallRule::Ignore:
+      return "ignore";
+    case WallRule::Reject:
+      return "reject";
+    case WallRule::Avoid:
+      return "avoid";
+  }
+  return "ignore";
+}
+
+std::optional<WallRule> parse_wall_rule(std::string_view name) {
+  for (const WallRule rule : {WallRule::Ignore, WallRule::Reject, WallRule::Avoid}) {
+    if (name == wall_rule_name(rule)) return rule;
+  }
+  return std::nullopt;
+}
+
 IkResult solve_ik(const BodyModel& model, BodyData& data, const Posture& g_init, const ReachTarget& target,
                   const IkParameters& settings, const PathRecorder& recorder) {
   if (settings.rule_out_beyond_reach && beyond_reach(model.reach_envelope, target, settings.tolerances)) {
@@ -19,12 +39,25 @@ IkResult solve_ik(const BodyModel& model, BodyData& data, const Posture& g_init,
     recorder.start(g_init);
     return {.reached = false, .residual_m = grasp_residual(data.points, target), .posture = g_init};
   }
+  IkResult result;
   if (settings.solver == IkSolverKind::Paper) {
-    return solve_ik_gradient_descent(model, data, g_init, target, settings.tolerances, settings.time_step_s,
-                                     settings.paper, recorder);
+    GradientDescentParameters paper = settings.paper;
+    paper.keep_out_of_wall = settings.wall == WallRule::Avoid;
+    result = solve_ik_gradient_descent(model, data, g_init, target, settings.tolerances, settings.time_step_s, paper,
+                                       recorder);
+  } else {
+    DampedLeastSquaresParameters fast = settings.fast;
+    fast.keep_out_of_wall = settings.wall == WallRule::Avoid;
+    result = solve_ik_damped_least_squares(model, data, g_init, target, settings.tolerances, settings.time_step_s, fast,
+                                           recorder);
   }
-  return solve_ik_damped_least_squares(model, data, g_init, target, settings.tolerances, settings.time_step_s,
-                                       settings.fast, recorder);
+  // data holds the returned posture, every joint placed.
+  if (settings.wall == WallRule::Reject && result.reached && wall_penetration(model, data).passes_through()) {
+    result.reached = false;
+    result.posture = g_init;
+    forward_kinematics(model, data, g_init);
+  }
+  return result;
 }
 
 }  // namespace crux

@@ -15,6 +15,14 @@ enum class IkSolverKind { Paper, Fast };
 const char* ik_solver_name(IkSolverKind kind);
 std::optional<IkSolverKind> parse_ik_solver(std::string_view name);
 
+// What the IK does about the wall (docs/MODEL.md, choice C24): ignore it, as the paper's
+// model does (the default); reject a solved posture that passes through it
+// (body/wall_penetration); or keep the body out of it while solving (ik/wall_clearance).
+enum class WallRule { Ignore, Reject, Avoid };
+
+const char* wall_rule_name(WallRule rule);
+std::optional<WallRule> parse_wall_rule(std::string_view name);
+
 struct IkParameters {
   IkSolverKind solver = IkSolverKind::Fast;
   // What both solvers share: the termination test and the simulated time per iteration
@@ -24,6 +32,7 @@ struct IkParameters {
   // Give up before the first iteration when a hold is beyond its limb's reach envelope
   // (beyond_reach): the verdict cannot change, only the time spent reaching it.
   bool rule_out_beyond_reach = true;
+  WallRule wall = WallRule::Ignore;
   GradientDescentParameters paper;
   DampedLeastSquaresParameters fast;
 };

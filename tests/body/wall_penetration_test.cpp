@@ -107,6 +107,37 @@ TEST(WallPenetration, NoSurfacePointLiesDeeperThanTheDeepestPoint) {
   }
 }
 
+// The gradient of each counted primitive's deepest x against central differences, on
+// 100 random postures.
+TEST(WallPenetration, TheDeepestXGradientMatchesCentralDifferences) {
+  const BodyModel& model = testing::human_model();
+  BodyData data(model);
+  constexpr std::uint64_t kSeed = 2612;
+  Random random(kSeed);
+  const double h = 1e-6;
+  Posture gradient;
+  for (int sample = 0; sample < 100; ++sample) {
+    const Posture g = testing::random_posture(model, random, {-0.3, 0.6, 1.0});
+    for (int v = 0; v < static_cast<int>(model.visuals.size()); ++v) {
+      const BodyVisual& visual = model.visuals[v];
+      if (!counts_for_the_wall(model, visual)) continue;
+      forward_kinematics(model, data, g);
+      deepest_x_gradient(model, data, v, gradient);
+      for (int i = 0; i < kConfigurationDof; ++i) {
+        Posture plus = g, minus = g;
+        plus[i] += h;
+        minus[i] -= h;
+        forward_kinematics(model, data, plus);
+        const double up = deepest_point(visual, data.placements[visual.joint]).x();
+        forward_kinematics(model, data, minus);
+        const double down = deepest_point(visual, data.placements[visual.joint]).x();
+        ASSERT_NEAR(gradient[i], (up - down) / (2 * h), 1e-6)
+            << "seed " << kSeed << " sample " << sample << " " << visual.link << " coordinate " << i;
+      }
+    }
+  }
+}
+
 // The human standing 0.30 m off the wall is clear of it; 0.05 m off, its head (a sphere
 // of radius 0.1105 m above the root, the body's deepest part forward) is 0.0605 m
 // inside. The feet, whose toes reach past the plane first, are not counted.
