@@ -13,16 +13,6 @@ namespace {
 
 constexpr std::uint64_t kMujocoKinematicsSeed = 2611;
 
-// The human's own <mujoco> element, so that a synthetic body is read by MuJoCo as the
-// shipped one is.
-std::string shipped_mujoco_element() {
-  const std::string urdf = testing::human_urdf_text();
-  const auto begin = urdf.find("<mujoco>");
-  const auto end = urdf.find("</mujoco>");
-  if (begin == std::string::npos || end == std::string::npos) throw std::runtime_error("no <mujoco> in the human");
-  return urdf.substr(begin, end + std::string("</mujoco>").size() - begin);
-}
-
 // Returns the largest centre-of-mass distance seen, for the caller to state.
 double expect_mujoco_kinematics(const std::string& urdf_path, const BodyModel& model, std::uint64_t seed) {
   testing::MujocoReference mujoco(urdf_path, model);
@@ -58,10 +48,8 @@ TEST(KinematicsAgainstMujoco, HumanOver1000RandomPostures) {
 }
 
 TEST(KinematicsAgainstMujoco, SyntheticTreeWithArbitraryAxesAndOrigins) {
-  const std::string urdf =
-      testing::replaced(testing::synthetic_tree_urdf(kMujocoKinematicsSeed), "<robot name=\"synthetic\">",
-                        "<robot name=\"synthetic\">" + shipped_mujoco_element());
-  const auto path = testing::write_temporary("synthetic_mujoco.urdf", urdf);
+  const auto path =
+      testing::write_temporary("synthetic_mujoco.urdf", testing::synthetic_tree_urdf_for_mujoco(kMujocoKinematicsSeed));
   expect_mujoco_kinematics(path.string(), load_body_model(path.string()), kMujocoKinematicsSeed + 1);
 }
 
