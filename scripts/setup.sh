@@ -15,6 +15,10 @@ packages=(
   libssl-dev
   # Independent kinematics reference for tests and the benchmark peer.
   liborocos-kdl-dev libkdl-parser-dev
+  # Independent dynamics reference for tests (MuJoCo reads the body's URDF).
+  libmujoco-dev
+  # The linear programs of the static-equilibrium model (COIN-OR CLP).
+  coinor-libclp-dev
   # check_urdf validates the body model in tests
   liburdfdom-tools
   # Fuzzing the readers: clang's libFuzzer (the fuzz preset).

@@ -74,6 +74,17 @@ std::string synthetic_tree_urdf(std::uint64_t seed) {
   return urdf.str();
 }
 
+std::string synthetic_tree_urdf_for_mujoco(std::uint64_t seed) {
+  const std::string human = human_urdf_text();
+  const auto begin = human.find("<mujoco>");
+  const auto end = human.find("</mujoco>");
+  if (begin == std::string::npos || end == std::string::npos) {
+    throw std::runtime_error("test fixture: the human has no <mujoco> element");
+  }
+  const std::string element = human.substr(begin, end + std::string("</mujoco>").size() - begin);
+  return replaced(synthetic_tree_urdf(seed), "<robot name=\"synthetic\">", "<robot name=\"synthetic\">" + element);
+}
+
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);
   if (at == std::string::npos) throw std::runtime_error("test fixture: '" + from + "' not found");

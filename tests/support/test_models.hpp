@@ -21,6 +21,10 @@ Posture random_posture(const BodyModel& model, Random& random, const Eigen::Vect
 // revolute joints with random axes, origin rotations (rpy) and offsets, and masses.
 std::string synthetic_tree_urdf(std::uint64_t seed);
 
+// The same with the human's own <mujoco> element, which MuJoCo needs to compile the
+// massless links and keep the fixed frames (models/crux_human.urdf says why).
+std::string synthetic_tree_urdf_for_mujoco(std::uint64_t seed);
+
 // Replaces the first occurrence of `from` (which must exist) by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to);
 
