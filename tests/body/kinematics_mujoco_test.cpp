@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include "body/kinematics.hpp"
 #include "body/urdf_loader.hpp"
 #include "support/mujoco_reference.hpp"
@@ -39,6 +41,22 @@ double expect_mujoco_kinematics(const std::string& urdf_path, const BodyModel& m
     if (::testing::Test::HasFailure()) break;
   }
   return largest_com_distance;
+}
+
+// Issue 26: MuJoCo reads the body as shipped, facing +x (its toes, from the ankles, point
+// to the wall) with its left palm and left foot on its left (+y = up x forward), at the
+// zero posture.
+TEST(KinematicsAgainstMujoco, TheZeroPostureFacesPlusXWithItsLeftLimbsOnItsLeft) {
+  testing::MujocoReference mujoco(default_body_model_path(), testing::human_model());
+  mujoco.set_posture(Posture::Zero());
+  const Eigen::Vector3d toes = mujoco.link_origin("right_foot_ball") + mujoco.link_origin("left_foot_ball") -
+                               mujoco.link_origin("right_ankle_link") - mujoco.link_origin("left_ankle_link");
+  EXPECT_GT(toes.x(), 0.2) << toes.transpose();
+  const Eigen::Vector3d left = Eigen::Vector3d::UnitZ().cross(Eigen::Vector3d(toes.x(), toes.y(), 0).normalized());
+  EXPECT_GT(left.y(), 0.99);
+  EXPECT_NEAR((mujoco.link_origin("left_palm") - mujoco.link_origin("right_palm")).dot(left), 2 * 0.1853, 1e-9);
+  EXPECT_NEAR((mujoco.link_origin("left_foot_ball") - mujoco.link_origin("right_foot_ball")).dot(left), 2 * 0.085,
+              1e-9);
 }
 
 TEST(KinematicsAgainstMujoco, HumanOver1000RandomPostures) {
