@@ -183,6 +183,8 @@ class ClimbEnv(gymnasium.Env):
         self._config = config
         self._model_argument = model
         self._span = float(_config_value(config, "filter.max_span", _DEFAULT_MAX_SPAN_M))
+        if evaluation and wall_split is None:
+            raise ValueError("evaluation: takes the evaluation walls of a wall_split, and there is none")
         if wall_split is not None:
             if wall is not None:
                 raise ValueError("wall_split: give either wall or wall_split")
@@ -433,4 +435,6 @@ class ClimbEnv(gymnasium.Env):
         return np.asarray(figure.canvas.buffer_rgba())[:, :, :3].copy()
 
 
-gymnasium.register(id=ENV_ID, entry_point=ClimbEnv, max_episode_steps=MAX_EPISODE_STEPS)
+# By name, so that the spec serialises (EnvSpec.to_json) and
+# gymnasium.make("crux.gym:crux/Climb-v0") imports this module first.
+gymnasium.register(id=ENV_ID, entry_point="crux.gym:ClimbEnv", max_episode_steps=MAX_EPISODE_STEPS)

@@ -69,6 +69,7 @@ def test_import_crux_needs_no_gymnasium():
 def test_make_truncates_with_time_limit():
     env = gymnasium.make(crux.gym.ENV_ID, wall=crux.Wall.random(7))
     assert env.spec.max_episode_steps == crux.gym.MAX_EPISODE_STEPS
+    assert gymnasium.spec(crux.gym.ENV_ID).to_json()  # a spec that serialises: the entry point by name
     short = gymnasium.make(crux.gym.ENV_ID, wall=crux.Wall.random(7), max_episode_steps=4)
     ends = [result[2:4] for _, result in masked_random_steps(short, 1, 4, reset_seed=0)]
     assert ends == [(False, False)] * 3 + [(False, True)]
@@ -236,6 +237,8 @@ def test_bad_input_is_a_value_error_naming_the_argument():
         crux.gym.ClimbEnv(wall_split={"train": [1], "evaluation": []})
     with pytest.raises(ValueError, match="^wall_split: must be a dict"):
         crux.gym.ClimbEnv(wall_split=[[1], [2]])
+    with pytest.raises(ValueError, match="^evaluation: takes the evaluation walls of a wall_split"):
+        crux.gym.ClimbEnv(evaluation=True)
     with pytest.raises(ValueError, match="^wall: walls of different hold counts"):
         crux.gym.ClimbEnv([wall, crux.Wall.random(7, {"wall": {"rows": 9}})], "paper")
     with pytest.raises(ValueError, match="^config: reward.step must be a finite number$"):
