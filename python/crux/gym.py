@@ -426,10 +426,13 @@ class ClimbEnv(gymnasium.Env):
         colours[offered] = "#27ae60"
         colours[held] = "#2c3e50"
         axes.scatter(positions[:, 1], positions[:, 2], s=40, c=list(colours), zorder=1)
-        points = _crux.forward_kinematics(self._model, raw["posture"])["points"]
-        for limb in range(4):
-            segment = points[[0, 1 + limb]]
-            axes.plot(segment[:, 1], segment[:, 2], color="#e67e22", linewidth=3, zorder=2)
+        # The skeleton: every joint past the root's translations joined to its parent, and the grasp points.
+        body = _crux.forward_kinematics(self._model, raw["posture"], joints=True)
+        origins, parents = body["joint_origins"], self._model.joint_parents
+        for joint in range(_crux.ROOT_DOF, len(parents)):
+            segment = origins[[parents[joint], joint]]
+            axes.plot(segment[:, 1], segment[:, 2], color="#e67e22", linewidth=3, zorder=2, solid_capstyle="round")
+        axes.scatter(body["points"][1:, 1], body["points"][1:, 2], s=12, c="#e67e22", zorder=2)
         axes.scatter([self._centre_of_mass[1]], [self._centre_of_mass[2]], s=60, c="#8e44ad", marker="x", zorder=3)
         figure.canvas.draw()
         return np.asarray(figure.canvas.buffer_rgba())[:, :, :3].copy()
