@@ -113,8 +113,12 @@ def _wall_from(item, wall_config, argument):
 
 
 def _wall_list(items, wall_config, argument):
-    if isinstance(items, (str, os.PathLike, _crux.Wall)):
+    if isinstance(items, (str, os.PathLike, _crux.Wall, int, np.integer)):
         items = [items]
+    try:
+        items = list(items)
+    except TypeError:
+        raise ValueError(f"{argument}: must be a wall, a wall file, a seed or a list of them, got {items!r}") from None
     walls = [_wall_from(item, wall_config, argument) for item in items]
     if not walls:
         raise ValueError(f"{argument}: is an empty list of walls")

@@ -233,6 +233,11 @@ def test_bad_input_is_a_value_error_naming_the_argument():
         crux.gym.ClimbEnv(wall, "pixels")
     with pytest.raises(ValueError, match="^wall: is an empty list of walls"):
         crux.gym.ClimbEnv([])
+    with pytest.raises(ValueError, match="^wall: must be a wall, a wall file, a seed or a list of them, got 2.5$"):
+        crux.gym.ClimbEnv(2.5)
+    with pytest.raises(ValueError, match="^wall: holds 2.5, which is not a crux.Wall"):
+        crux.gym.ClimbEnv([1, 2.5])
+    assert crux.gym.ClimbEnv(7).reset(seed=0)[1]["wall_name"] == "random wall, seed 7"
     with pytest.raises(ValueError, match="^wall_split: is an empty list of walls"):
         crux.gym.ClimbEnv(wall_split={"train": [1], "evaluation": []})
     with pytest.raises(ValueError, match="^wall_split: must be a dict"):
