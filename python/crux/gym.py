@@ -154,6 +154,7 @@ class ClimbEnv(gymnasium.Env):
         training walls otherwise. Instead of wall.
     config: the keys of config.toml's [reward], [ik], [filter] and [grid] tables and experiment.urdf.
     max_candidates: the numeric form's action count, the most candidates a state may offer.
+    model: a crux.BodyModel, or None for experiment.urdf's body or the default one.
     render_mode: None, "rgb_array" (the climber on the wall, by matplotlib) or "ansi".
     """
 
