@@ -26,8 +26,11 @@ packages=(
   # The one formatter of the C++ sources (.clang-format), checked by the tests.
   clang-format
   # The Python module, built for and tested with Debian's /usr/bin/python3; its examples
-  # use pandas and matplotlib.
+  # use pandas and matplotlib, crux.gym's rgb_array rendering matplotlib, and the vendored
+  # Gymnasium 1.4.0 (../shared/third_party) that its tests run needs cloudpickle and
+  # typing-extensions.
   python3-dev pybind11-dev python3-numpy python3-pytest python3-pandas python3-matplotlib
+  python3-cloudpickle python3-typing-extensions
   # The report's browser tests run Debian's Chromium headless.
   chromium fonts-dejavu-core
 )

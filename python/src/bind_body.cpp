@@ -15,16 +15,21 @@ namespace crux::python {
 
 namespace {
 
-// Fills one posture's rows of the outputs: points (5, 3), centre of mass (3), and the
-// Jacobians (5, 3, 35) when asked.
+// Fills one posture's rows of the outputs: points (5, 3), centre of mass (3), and when
+// asked the joints' origins (J, 3) and the Jacobians (5, 3, 35).
 void kinematics_of(const BodyModel& model, BodyData& data, const Posture& g, double* points, double* com,
-                   double* jacobians) {
+                   double* joint_origins, double* jacobians) {
   forward_kinematics(model, data, g);
   centre_of_mass(model, data);
   for (int k = 0; k < kOperationalPointCount; ++k) {
     for (int c = 0; c < 3; ++c) points[3 * k + c] = data.points[k][c];
   }
   for (int c = 0; c < 3; ++c) com[c] = data.centre_of_mass[c];
+  if (joint_origins != nullptr) {
+    for (std::size_t j = 0; j < data.placements.size(); ++j) {
+      for (int c = 0; c < 3; ++c) joint_origins[3 * j + c] = data.placements[j].origin[c];
+    }
+  }
   if (jacobians == nullptr) return;
   operational_jacobians(model, data);
   for (int k = 0; k < kOperationalPointCount; ++k) {
@@ -36,7 +41,8 @@ void kinematics_of(const BodyModel& model, BodyData& data, const Posture& g, dou
   }
 }
 
-py::dict forward_kinematics_py(const BodyModelPtr& model, const py::handle& postures, bool with_jacobians) {
+py::dict forward_kinematics_py(const BodyModelPtr& model, const py::handle& postures, bool with_jacobians,
+                               bool with_joints) {
   const auto a = double_array_from(postures, "postures");
   if ((a.ndim() != 1 && a.ndim() != 2) || a.shape(a.ndim() - 1) != kConfigurationDof) {
     throw InputError("postures", fmt::format("must be an array of shape ({0},) or (N, {0})", kConfigurationDof));
@@ -54,16 +60,20 @@ py::dict forward_kinematics_py(const BodyModelPtr& model, const py::handle& post
   };
   py::array_t<double> points(shape({kOperationalPointCount, 3}));
   py::array_t<double> com(shape({3}));
-  py::array_t<double> jacobians;
+  py::array_t<double> jacobians, joint_origins;
   if (with_jacobians) jacobians = py::array_t<double>(shape({kOperationalPointCount, 3, kConfigurationDof}));
+  const auto joint_count = static_cast<py::ssize_t>(model->joints.size());
+  if (with_joints) joint_origins = py::array_t<double>(shape({joint_count, 3}));
   double* p = points.mutable_data();
   double* c = com.mutable_data();
   double* jac = with_jacobians ? jacobians.mutable_data() : nullptr;
+  double* origins = with_joints ? joint_origins.mutable_data() : nullptr;
   {
     py::gil_scoped_release release;
     BodyData data(*model);
     for (py::ssize_t i = 0; i < n; ++i) {
       kinematics_of(*model, data, gs[i], p + 3 * kOperationalPointCount * i, c + 3 * i,
+                    origins == nullptr ? nullptr : origins + 3 * joint_count * i,
                     jac == nullptr ? nullptr : jac + 3 * kOperationalPointCount * kConfigurationDof * i);
     }
   }
@@ -71,6 +81,7 @@ py::dict forward_kinematics_py(const BodyModelPtr& model, const py::handle& post
   out["points"] = points;
   out["centre_of_mass"] = com;
   if (with_jacobians) out["jacobians"] = jacobians;
+  if (with_joints) out["joint_origins"] = joint_origins;
   return out;
 }
 
@@ -102,6 +113,14 @@ void bind_body(py::module_& m) {
                                for (const BodyJoint& joint : model.joints) names.append(joint.name);
                                return names;
                              })
+      .def_property_readonly(
+          "joint_parents",
+          [](const BodyModel& model) {
+            py::array_t<int> out(static_cast<py::ssize_t>(model.joints.size()));
+            for (std::size_t j = 0; j < model.joints.size(); ++j) out.mutable_at(j) = model.joints[j].parent;
+            return out;
+          },
+          "each joint's parent joint (index), -1 for the world: the skeleton forward_kinematics' joint origins draw")
       .def_property_readonly("lower_limits", [](const BodyModel& model) { return to_array(model.lower_limits); })
       .def_property_readonly("upper_limits", [](const BodyModel& model) { return to_array(model.upper_limits); })
       .def_property_readonly("grasp_frame_names",
@@ -126,13 +145,13 @@ void bind_body(py::module_& m) {
 
   m.def(
       "forward_kinematics",
-      [](const py::handle& model, const py::handle& postures, bool jacobians) {
-        return forward_kinematics_py(body_or_default(model), postures, jacobians);
+      [](const py::handle& model, const py::handle& postures, bool jacobians, bool joints) {
+        return forward_kinematics_py(body_or_default(model), postures, jacobians, joints);
       },
-      py::arg("model"), py::arg("postures"), py::arg("jacobians") = false,
+      py::arg("model"), py::arg("postures"), py::arg("jacobians") = false, py::arg("joints") = false,
       "Operational points e0..e4 (root, then the limbs), the centre of mass and, if asked, the Jacobians "
-      "d e_i / d G, for a posture (35,) or a batch (N, 35): a dict of arrays (5, 3), (3,), (5, 3, 35), with a "
-      "leading N for a batch");
+      "d e_i / d G and the joints' origins, for a posture (35,) or a batch (N, 35): a dict of arrays (5, 3), (3,), "
+      "(5, 3, 35), (35, 3), with a leading N for a batch");
 }
 
 }  // namespace crux::python

@@ -1,13 +1,16 @@
 // ClimbEnv: the climbing MDP (sections III-C, III-D) with Gymnasium's conventions,
 // reset() -> (obs, info) and step(action) -> (obs, reward, terminated, truncated, info),
-// without needing the gymnasium package. An action is a hold index; action_mask() says
-// which the state offers (the geometric filter's possible actions).
+// without needing the gymnasium package (crux.gym wraps it as a gymnasium.Env). An action
+// is a hold index; action_mask() says which the state offers (the geometric filter's
+// possible actions).
 
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "agent_space/agent_descriptor.hpp"
 #include "bindings.hpp"
 #include "body/kinematics.hpp"
 #include "climbing/climbing_mdp.hpp"
@@ -21,12 +24,25 @@ namespace {
 
 const ParameterSet kEnvKeys{{"experiment.urdf", "reward", "ik", "filter", "grid"}, {}};
 
+// Where the finishing move left the climber, described as any state: the MDP itself is
+// back at the start (Algorithm 2), but Gymnasium's terminal observation is this one.
+struct FinishingState {
+  HoldConfiguration configuration;  // the 3-configuration with the next limb free
+  Posture posture;
+  StateCouple codes;
+  std::vector<int> possible;  // its possible actions
+};
+
 class ClimbEnv {
  public:
   ClimbEnv(Wall wall, const py::handle& config, const py::handle& max_steps, const py::handle& model)
-      : wall_(std::move(wall)),
-        max_steps_(static_cast<int>(integer_from(max_steps, 1, std::numeric_limits<int>::max(), "max_steps"))) {
+      : wall_(std::move(wall)) {
+    // None leaves truncation to the caller (crux.gym: Gymnasium's TimeLimit).
+    if (!max_steps.is_none()) {
+      max_steps_ = static_cast<int>(integer_from(max_steps, 1, std::numeric_limits<int>::max(), "max_steps"));
+    }
     const ExperimentConfig c = config_from_python(config, kEnvKeys, "ClimbEnv");
+    parameters_ = c.settings.learning.climbing;
     model_ = body_from(model, c.urdf);
     {
       py::gil_scoped_release release;
@@ -48,6 +64,7 @@ class ClimbEnv {
     mdp_->reset();
     steps_ = 0;
     over_ = false;
+    finish_.reset();
     centre_of_mass_ = start_centre_of_mass_;
     py::dict info;
     info["centre_of_mass"] = to_array(centre_of_mass_);
@@ -57,11 +74,12 @@ class ClimbEnv {
   py::tuple step(const py::handle& action_handle) {
     if (over_) throw std::logic_error("the episode is over (terminated or truncated): call reset() first");
     const int action = checked_action(action_handle);
+    const HoldConfiguration before = mdp_->configuration();
     const StepOutcome outcome = mdp_->step(action);
     ++steps_;
     if (outcome.reached) centre_of_mass_ = outcome.centre_of_mass;
     const bool terminated = outcome.finished;
-    const bool truncated = !terminated && steps_ >= max_steps_;
+    const bool truncated = !terminated && max_steps_ && steps_ >= *max_steps_;
     over_ = terminated || truncated;
     py::dict info;
     // The hold as the CLI and the run files name it (their ids); the action is its index.
@@ -69,9 +87,7 @@ class ClimbEnv {
     info["reached"] = outcome.reached;
     info["root_rise"] = outcome.root_rise_m;
     info["centre_of_mass"] = to_array(centre_of_mass_);
-    // After the finishing move the MDP is back at the start (Algorithm 2): the
-    // observation is the start's, and info keeps the posture that finished.
-    if (terminated) info["final_posture"] = to_array(*outcome.posture);
+    if (terminated) finish_ = finishing_state(before, action, *outcome.posture);
     return py::make_tuple(observation(), outcome.reward, terminated, truncated, info);
   }
 
@@ -98,12 +114,17 @@ class ClimbEnv {
     py::array_t<bool> mask(wall_.hold_count());
     bool* out = mask.mutable_data();
     std::fill(out, out + wall_.hold_count(), false);
-    for (const ActionCandidate& candidate : mdp_->candidates()) out[candidate.wall] = true;
+    if (finish_) {
+      for (const int hold : finish_->possible) out[hold] = true;
+    } else {
+      for (const ActionCandidate& candidate : mdp_->candidates()) out[candidate.wall] = true;
+    }
     return mask;
   }
 
   py::dict observation() const {
-    const HoldConfiguration& c = mdp_->configuration();
+    const HoldConfiguration& c = finish_ ? finish_->configuration : mdp_->configuration();
+    const StateCouple& codes = finish_ ? finish_->codes : mdp_->state();
     py::array_t<double> holds({kLimbCount, 3});
     double* h = holds.mutable_data();
     for (int limb = 0; limb < kLimbCount; ++limb) {
@@ -113,12 +134,12 @@ class ClimbEnv {
       }
     }
     py::dict obs;
-    obs["wall_state"] = mdp_->state().wall;
-    obs["grid_state"] = mdp_->state().grid;
+    obs["wall_state"] = codes.wall;
+    obs["grid_state"] = codes.grid;
     obs["free_limb"] = static_cast<int>(c.free_limb());
     obs["configuration"] = to_array(c);
     obs["holds"] = holds;
-    obs["posture"] = to_array(mdp_->posture());
+    obs["posture"] = to_array(finish_ ? finish_->posture : mdp_->posture());
     return obs;
   }
 
@@ -126,10 +147,27 @@ class ClimbEnv {
   int grid_action_count() const { return mdp_->grid_action_count(); }
   const Wall& wall() const { return wall_; }
   BodyModelPtr model() const { return model_; }
-  int max_steps() const { return max_steps_; }
+  py::object max_steps() const { return max_steps_ ? py::object(py::int_(*max_steps_)) : py::object(py::none()); }
   int steps() const { return steps_; }
 
  private:
+  // The 3-configuration the climb would go on from had the finishing move not ended it.
+  FinishingState finishing_state(const HoldConfiguration& before, int hold, const Posture& posture) const {
+    const Limb free = before.free_limb();
+    const Limb next = next_free_limb(free);
+    FinishingState f;
+    f.configuration = before.with(free, hold).with(next, kFree);
+    f.posture = posture;
+    BodyData body(*model_);
+    forward_kinematics(*model_, body, posture);
+    const GridPlacement placement = place_grid(parameters_.grid, next, body.points[operational_point(next)]);
+    f.codes.wall = encode(f.configuration, wall_.hold_count());
+    f.codes.grid = encode(describe_state(wall_, f.configuration, placement), parameters_.grid);
+    f.possible.resize(wall_.hold_count());
+    f.possible.resize(possible_actions(wall_, f.configuration, parameters_.filter, f.possible));
+    return f;
+  }
+
   int checked_action(const py::handle& handle) const {
     const auto action = static_cast<int>(integer_from(handle, 0, wall_.hold_count() - 1, "action"));
     if (mdp_->offers(action)) return action;
@@ -140,7 +178,9 @@ class ClimbEnv {
   BodyModelPtr model_;
   Wall wall_;  // before mdp_, which keeps a reference to it
   std::unique_ptr<ClimbingMdp> mdp_;
-  int max_steps_;
+  ClimbingParameters parameters_;
+  std::optional<FinishingState> finish_;  // set by the finishing step until reset()
+  std::optional<int> max_steps_;
   int steps_ = 0;
   bool over_ = false;
   Eigen::Vector3d start_centre_of_mass_, centre_of_mass_;
@@ -155,7 +195,7 @@ void bind_climb_env(py::module_& m) {
       .def(py::init<Wall, const py::handle&, const py::handle&, const py::handle&>(), py::arg("wall"),
            py::arg("config") = py::none(), py::arg("max_steps") = 1000, py::arg("model") = py::none(),
            "config takes the keys of config.toml's [reward], [ik], [filter] and [grid] tables and experiment.urdf; "
-           "an episode is truncated after max_steps actions")
+           "an episode is truncated after max_steps actions, never when max_steps is None")
       .def("reset", &ClimbEnv::reset, py::arg("seed") = py::none(), py::arg("options") = py::none(),
            "Back to the start configuration with the right hand free: (obs, info). The environment draws no random "
            "number, so the seed (None or an integer from 0 to 2^64 - 1) changes nothing.")

@@ -47,6 +47,10 @@ void bind_wall(py::module_& m) {
       .def(
           "save", [](const Wall& wall, const py::handle& path) { save_wall(path_from(path), wall); }, py::arg("path"))
       .def("to_json", &wall_to_json)
+      // As its wall file (exact: the file's numbers round-trip), so that copies and other
+      // processes get the same wall: gymnasium.make deep-copies its arguments.
+      .def(py::pickle([](const Wall& wall) { return wall_to_json(wall); },
+                      [](const std::string& json) { return parse_wall(json, "<pickled wall>"); }))
       .def_readwrite("name", &Wall::name)
       .def_readonly("finish_height", &Wall::finish_height)
       .def_property_readonly("hold_count", &Wall::hold_count)

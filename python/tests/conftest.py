@@ -4,10 +4,17 @@ import json
 import os
 import pathlib
 import subprocess
+import sys
 
 import pytest
 
 import crux
+
+# Gymnasium 1.4.0's unmodified source, beside the repository (../shared) here and in CI's
+# clean clone; crux.gym's tests skip without it, or fail under CI (test_gym.py).
+GYMNASIUM_SOURCE = pathlib.Path(__file__).resolve().parents[3] / "shared" / "third_party" / "gymnasium-1.4.0"
+if GYMNASIUM_SOURCE.is_dir():
+    sys.path.insert(0, str(GYMNASIUM_SOURCE))
 
 
 @pytest.fixture(scope="session")

@@ -38,6 +38,24 @@ def test_batch_equals_one_posture_at_a_time():
             assert np.array_equal(one[key], batch[key][i]), key
 
 
+def test_joint_origins_draw_a_rigid_skeleton():
+    model = crux.BodyModel.load()
+    parents = model.joint_parents
+    assert parents.shape == (35,) and parents[0] == -1 and all(parents[j] < j for j in range(35))
+    rng = np.random.default_rng(3)
+    postures = np.stack([model.standing_posture([-0.3, 0.6, 0.9])] * 5)
+    postures[:, 3:] = rng.uniform(model.lower_limits[3:], model.upper_limits[3:], size=(5, 32))
+    k = crux.forward_kinematics(model, postures, joints=True)
+    origins = k["joint_origins"]
+    assert origins.shape == (5, 35, 3)
+    # A joint sits at a fixed offset from its parent whatever the angles: the links are rigid.
+    children = np.arange(1, 35)
+    lengths = np.linalg.norm(origins[:, children] - origins[:, parents[children]], axis=2)
+    assert np.allclose(lengths, lengths[0], atol=1e-9) and lengths.max() > 0.2
+    assert np.array_equal(crux.forward_kinematics(model, postures[2], joints=True)["joint_origins"], origins[2])
+    assert "joint_origins" not in crux.forward_kinematics(model, postures[2])
+
+
 def test_jacobians_match_central_finite_differences():
     model = crux.BodyModel.load()
     rng = np.random.default_rng(11)

@@ -79,7 +79,18 @@ def test_rewards_and_what_each_kind_of_step_does(wall7):
         elif terminated:
             kinds.add("finish")
             assert reward == REWARDS["finish"]
-            assert info["final_posture"].shape == (35,)
+            # The observation is where the finishing move left the climber, the next limb free.
+            assert after["free_limb"] == (before["free_limb"] + 1) % 4
+            assert after["configuration"][before["free_limb"]] == action
+            assert after["configuration"][after["free_limb"]] == -1
+            com = crux.forward_kinematics(None, after["posture"])["centre_of_mass"]
+            assert np.array_equal(info["centre_of_mass"], com) and com[2] >= wall7.finish_height
+            assert after["wall_state"] == crux.wall_state(wall7, after["configuration"])
+            placement = crux.place_grid(after["free_limb"],
+                                        crux.forward_kinematics(None, after["posture"])["points"][1 + after["free_limb"]])
+            assert after["grid_state"] == crux.agent_state(wall7, after["configuration"], placement)
+            assert np.array_equal(np.flatnonzero(env.action_mask()),
+                                  crux.possible_actions(wall7, after["configuration"]))
             after, _ = env.reset()
         else:
             kinds.add("step")
@@ -105,6 +116,17 @@ def test_truncation_after_max_steps_and_no_step_after_the_end(wall7):
         env.step(int(np.flatnonzero(env.action_mask())[0]))
     env.reset()
     assert env.steps == 0
+
+
+def test_no_truncation_without_max_steps(wall7):
+    env = crux.ClimbEnv(wall7, max_steps=None)
+    assert env.max_steps is None
+    env.reset()
+    for _ in range(1500):
+        _, _, terminated, truncated, _ = env.step(int(np.flatnonzero(env.action_mask())[0]))
+        assert not truncated
+        if terminated:
+            env.reset()
 
 
 def test_same_actions_same_observations(wall7):

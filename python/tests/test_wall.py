@@ -71,3 +71,12 @@ def test_bad_wall_file_is_the_cli_message(run_cli, tmp_path):
 def test_a_configuration_with_a_hold_outside_the_wall_is_a_value_error(wall7):
     with pytest.raises(ValueError, match="hold index 99 is not -1"):
         crux.possible_actions(wall7, [-1, 99, 1, 2])
+
+
+def test_walls_pickle_and_copy_exactly(wall7):
+    import copy
+    import pickle
+
+    for again in (pickle.loads(pickle.dumps(wall7)), copy.deepcopy(wall7)):
+        assert again is not wall7 and again.name == wall7.name and again.to_json() == wall7.to_json()
+        assert np.array_equal(again.positions, wall7.positions) and np.array_equal(again.start, wall7.start)

@@ -1,0 +1,448 @@
+"""crux.gym: the climbing MDP as a Gymnasium environment, `crux/Climb-v0`.
+
+Imported only when wanted (`import crux.gym`), so that `import crux` needs no Gymnasium.
+Importing it registers `crux/Climb-v0`; `gymnasium.make("crux/Climb-v0", ...)` passes
+its keyword arguments to `ClimbEnv`. docs/PYTHON.md describes the observation forms,
+their bounds, the actions and the walls.
+"""
+
+import operator
+import os
+import tomllib
+
+import gymnasium
+import numpy as np
+from gymnasium import spaces
+
+from . import _crux
+
+ENV_ID = "crux/Climb-v0"
+# What TimeLimit allows an episode, the old crux.ClimbEnv's default max_steps.
+MAX_EPISODE_STEPS = 1000
+OBSERVATION_FORMS = ("numeric", "paper")
+WALL_ORDERS = ("cycle", "sample")
+# 40,000 random steps on the paper's random walls (4 x 8 tiles) met at most 27
+# candidates; denser walls may need more (ValueError naming max_candidates otherwise).
+DEFAULT_MAX_CANDIDATES = 32
+_DEFAULT_MAX_SPAN_M = 2.8  # filter.max_span's default (src/configurations/geometric_filter.hpp)
+
+
+class MaskedDiscrete(spaces.Discrete):
+    """Discrete(n) whose sample() with no mask draws among the actions the current state
+    offers (the environment keeps `offered` up to date), so that a random agent, and
+    Gymnasium's own checks, only take possible actions."""
+
+    def __init__(self, n, seed=None):
+        super().__init__(n, seed=seed)
+        self.offered = np.ones(n, dtype=np.int8)
+
+    def sample(self, mask=None, probability=None):
+        if mask is None and probability is None:
+            mask = self.offered
+        return super().sample(mask=mask, probability=probability)
+
+
+def _config_value(config, dotted, default):
+    """A key of a config given as crux takes it: None, a config.toml path, or a dict of
+    dotted or nested keys."""
+    if config is None:
+        return default
+    if isinstance(config, (str, os.PathLike)):
+        with open(config, "rb") as file:
+            config = tomllib.load(file)
+    if dotted in config:
+        return config[dotted]
+    table, key = dotted.split(".", 1)
+    return config.get(table, {}).get(key, default)
+
+
+def _wall_key(wall):
+    """What makes two walls the same wall whatever their names."""
+    return (wall.positions.tobytes(), wall.radii.tobytes(), wall.start.tobytes(), wall.finish_height)
+
+
+class _FixedWalls:
+    """A list of walls, taken in turn or drawn at random at each reset."""
+
+    def __init__(self, walls, order):
+        self.walls = walls
+        self.order = order
+        self.next = 0
+
+    def restart(self):
+        self.next = 0
+
+    def draw(self, rng):
+        if self.order == "sample":
+            index = int(rng.integers(len(self.walls)))
+        else:
+            index = self.next
+            self.next = (self.next + 1) % len(self.walls)
+        return index, self.walls[index]
+
+    def hold_counts(self):
+        return {wall.hold_count for wall in self.walls}
+
+
+class _RandomWalls:
+    """A new random wall at each reset, its seed drawn from the environment's np_random."""
+
+    def __init__(self, wall_config):
+        self.wall_config = wall_config
+        self.example = _crux.Wall.random(0, wall_config)
+
+    def restart(self):
+        pass
+
+    def draw(self, rng):
+        seed = int(rng.integers(2**63))
+        return seed, _crux.Wall.random(seed, self.wall_config)
+
+    def hold_counts(self):
+        return {self.example.hold_count}
+
+
+def _wall_from(item, wall_config, argument):
+    if isinstance(item, _crux.Wall):
+        return item
+    if isinstance(item, (str, os.PathLike)):
+        return _crux.Wall.load(item)
+    if isinstance(item, (int, np.integer)) and not isinstance(item, bool):
+        return _crux.Wall.random(int(item), wall_config)
+    raise ValueError(f"{argument}: holds {item!r}, which is not a crux.Wall, a wall file or a random wall's seed")
+
+
+def _wall_list(items, wall_config, argument):
+    if isinstance(items, (str, os.PathLike, _crux.Wall, int, np.integer)):
+        items = [items]
+    try:
+        items = list(items)
+    except TypeError:
+        raise ValueError(f"{argument}: must be a wall, a wall file, a seed or a list of them, got {items!r}") from None
+    walls = [_wall_from(item, wall_config, argument) for item in items]
+    if not walls:
+        raise ValueError(f"{argument}: is an empty list of walls")
+    return walls
+
+
+def _split_side(wall_split, evaluation, wall_config):
+    if not isinstance(wall_split, dict) or set(wall_split) != {"train", "evaluation"}:
+        raise ValueError('wall_split: must be a dict {"train": walls, "evaluation": walls}')
+    train = _wall_list(wall_split["train"], wall_config, "wall_split")
+    held_out = _wall_list(wall_split["evaluation"], wall_config, "wall_split")
+    held_out_keys = {_wall_key(wall): wall.name for wall in held_out}
+    for wall in train:
+        if _wall_key(wall) in held_out_keys:
+            raise ValueError(
+                f"wall_split: the training wall '{wall.name}' is also an evaluation wall "
+                f"('{held_out_keys[_wall_key(wall)]}'): the split overlaps"
+            )
+    return held_out if evaluation else train
+
+
+class ClimbEnv(gymnasium.Env):
+    """The climbing MDP (paper, sections III-C and III-D) as a gymnasium.Env.
+
+    wall: a crux.Wall, a wall file, a list of them (or of random walls' seeds), or None for
+        a new random wall at every reset, drawn from the reset's seed with wall_config.
+    observation: "numeric" (features relative to the free limb, any wall) or "paper"
+        (the paper's state codes; the action is then a hold index).
+    wall_config: the wall.* keys of the random walls (None, wall, wall seeds) as crux.Wall.random takes them.
+    wall_order: "cycle" or "sample", how a list of walls is taken at each reset.
+    wall_split: {"train": walls, "evaluation": walls}, two lists that must not share a
+        wall; the environment takes the evaluation walls when evaluation is true, the
+        training walls otherwise. Instead of wall.
+    config: the keys of config.toml's [reward], [ik], [filter] and [grid] tables and experiment.urdf.
+    max_candidates: the numeric form's action count, the most candidates a state may offer.
+    model: a crux.BodyModel, or None for experiment.urdf's body or the default one.
+    render_mode: None, "rgb_array" (the climber on the wall, by matplotlib) or "ansi".
+    """
+
+    metadata = {"render_modes": ["rgb_array", "ansi"], "render_fps": 2}
+
+    def __init__(
+        self,
+        wall=None,
+        observation="numeric",
+        *,
+        wall_config=None,
+        wall_order="cycle",
+        wall_split=None,
+        evaluation=False,
+        config=None,
+        max_candidates=DEFAULT_MAX_CANDIDATES,
+        model=None,
+        render_mode=None,
+    ):
+        if observation not in OBSERVATION_FORMS:
+            raise ValueError(f"observation: unknown form {observation!r} (numeric, paper)")
+        if wall_order not in WALL_ORDERS:
+            raise ValueError(f"wall_order: unknown order {wall_order!r} (cycle, sample)")
+        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
+            raise ValueError(f"render_mode: unknown mode {render_mode!r} (rgb_array, ansi)")
+        if isinstance(max_candidates, bool) or not isinstance(max_candidates, (int, np.integer)) or max_candidates < 1:
+            raise ValueError("max_candidates: must be a positive integer")
+        self.observation_form = observation
+        self.render_mode = render_mode
+        self.max_candidates = int(max_candidates)
+        self._config = config
+        self._model_argument = model
+        self._span = float(_config_value(config, "filter.max_span", _DEFAULT_MAX_SPAN_M))
+        if evaluation and wall_split is None:
+            raise ValueError("evaluation: takes the evaluation walls of a wall_split, and there is none")
+        if wall_split is not None:
+            if wall is not None:
+                raise ValueError("wall_split: give either wall or wall_split")
+            self._walls = _FixedWalls(_split_side(wall_split, evaluation, wall_config), wall_order)
+        elif wall is None:
+            self._walls = _RandomWalls(wall_config)
+        else:
+            self._walls = _FixedWalls(_wall_list(wall, wall_config, "wall"), wall_order)
+        self._envs = {}  # per wall of a list: its crux.ClimbEnv, built once
+
+        counts = self._walls.hold_counts()
+        if observation == "paper" and len(counts) > 1:
+            raise ValueError(
+                f"wall: walls of different hold counts ({sorted(counts)}) have no common hold index: "
+                "use observation='numeric'"
+            )
+        # One environment up front: the config is checked, the body and the grid's size known.
+        self._draw_wall(np.random.default_rng(0))
+        self._walls.restart()
+        self._model = self._env.model
+        self.action_space = MaskedDiscrete(max(counts) if observation == "paper" else self.max_candidates)
+        self.observation_space = self._paper_space() if observation == "paper" else self._numeric_space()
+
+    # --- spaces ---------------------------------------------------------------------
+
+    def _paper_space(self):
+        holds = self._env.action_count
+        tiles = self._env.grid_action_count
+        return spaces.Dict(
+            {
+                "wall_state": spaces.Discrete((holds + 1) ** 4),
+                "grid_state": spaces.Discrete(4 * (tiles + 1) ** 3),
+                "free_limb": spaces.Discrete(4),
+            }
+        )
+
+    def _numeric_space(self):
+        # The filter keeps the holds of a configuration within max_span of each other, the
+        # free limb grasps (to the IK's tolerance) the hold it left, and the body's extent
+        # is at most max_span: held holds, the root and the centre of mass are within
+        # 2 max_span of the free limb's grasp point, candidates within 3 max_span. The
+        # height left to the finish is clipped to the same bound.
+        span = self._span
+        k = self.max_candidates
+
+        def box(bound, shape):
+            return spaces.Box(-bound, bound, shape, dtype=np.float32)
+
+        lower = np.concatenate([np.full(3, -2 * span), self._model.lower_limits[3:]]).astype(np.float32)
+        upper = np.concatenate([np.full(3, 2 * span), self._model.upper_limits[3:]]).astype(np.float32)
+        return spaces.Dict(
+            {
+                "free_limb": spaces.Box(0.0, 1.0, (4,), dtype=np.float32),
+                "held": box(2 * span, (4, 3)),
+                "candidates": box(3 * span, (k, 3)),
+                "candidate_mask": spaces.Box(0.0, 1.0, (k,), dtype=np.float32),
+                "posture": spaces.Box(lower, upper, dtype=np.float32),
+                "centre_of_mass": box(2 * span, (3,)),
+                "to_finish": box(2 * span, (1,)),
+            }
+        )
+
+    # --- walls ----------------------------------------------------------------------
+
+    def _draw_wall(self, rng, options=None):
+        named = None if options is None else options.get("wall")
+        if named is not None:
+            wall = _wall_from(named, self._walls_config(), "options")
+            self.wall_seed = int(named) if isinstance(named, (int, np.integer)) else None
+            self._env = self._climb_env(wall)
+            if self.observation_form == "paper" and wall.hold_count != self.action_space.n:
+                raise ValueError(
+                    f"options: the wall '{wall.name}' has {wall.hold_count} holds, not the {self.action_space.n} "
+                    "hold indices of the action space"
+                )
+            return
+        key, wall = self._walls.draw(rng)
+        self.wall_seed = key if isinstance(self._walls, _RandomWalls) else None
+        if isinstance(self._walls, _RandomWalls):
+            self._env = self._climb_env(wall)
+        else:
+            if key not in self._envs:
+                self._envs[key] = self._climb_env(wall)
+            self._env = self._envs[key]
+
+    def _walls_config(self):
+        return self._walls.wall_config if isinstance(self._walls, _RandomWalls) else None
+
+    def _climb_env(self, wall):
+        return _crux.ClimbEnv(wall, config=self._config, max_steps=None, model=self._model_argument)
+
+    @property
+    def wall(self):
+        """The wall of the current episode."""
+        return self._env.wall
+
+    @property
+    def model(self):
+        return self._model
+
+    # --- Gymnasium's API --------------------------------------------------------------
+
+    def reset(self, *, seed=None, options=None):
+        super().reset(seed=seed)
+        if options is not None and not isinstance(options, dict):
+            raise ValueError("options: must be a dict or None")
+        if seed is not None:
+            self._walls.restart()  # the same seed, the same walls
+        self._draw_wall(self.np_random, options)
+        raw, info = self._env.reset()
+        return self._observe(raw, info)
+
+    def step(self, action):
+        try:
+            if isinstance(action, (bool, np.bool_)):
+                raise TypeError
+            action = operator.index(action)  # ints, numpy integers and 0-d integer arrays
+        except TypeError:
+            message = f"action: must be an integer from 0 to {self.action_space.n - 1}, got {action!r}"
+            raise ValueError(message) from None
+        if not 0 <= action < self.action_space.n or not self._mask[action]:
+            raise ValueError(f"action: {action} is not a possible action of this state (see info['action_mask'])")
+        hold = int(self._candidates[action]) if self.observation_form == "numeric" else action
+        raw, reward, terminated, _, info = self._env.step(hold)
+        obs, info = self._observe(raw, info)
+        # Truncation is Gymnasium's TimeLimit's (the registered max_episode_steps).
+        return obs, float(reward), bool(terminated), False, info
+
+    def action_masks(self):
+        """The possible actions of the state as bools, for maskable agents."""
+        return self._mask.astype(bool)
+
+    def render(self):
+        if self.render_mode == "ansi":
+            return self._render_ansi()
+        if self.render_mode == "rgb_array":
+            return self._render_rgb()
+        return None
+
+    def close(self):
+        self._envs.clear()
+
+    # --- observations -------------------------------------------------------------------
+
+    def _observe(self, raw, info):
+        self._raw = raw
+        self._centre_of_mass = info["centre_of_mass"]
+        holds = np.flatnonzero(self._env.action_mask())  # ascending hold indices
+        if self.observation_form == "paper":
+            mask = np.zeros(self.action_space.n, dtype=np.int8)
+            mask[holds] = 1
+            self._candidates = None
+            obs = {
+                "wall_state": int(raw["wall_state"]),
+                "grid_state": int(raw["grid_state"]),
+                "free_limb": int(raw["free_limb"]),
+            }
+        else:
+            if len(holds) > self.max_candidates:
+                raise ValueError(
+                    f"max_candidates: the wall '{self.wall.name}' offers {len(holds)} candidates, more than "
+                    f"{self.max_candidates}"
+                )
+            mask = np.zeros(self.max_candidates, dtype=np.int8)
+            mask[: len(holds)] = 1
+            self._candidates = holds
+            obs = self._numeric(raw, holds, mask)
+        self._mask = mask
+        self.action_space.offered = mask
+        info = dict(info)
+        info["action_mask"] = mask.copy()
+        if self.observation_form == "numeric":
+            # The hold index of each slot, -1 for padding (a fixed shape, as vector envs batch it).
+            slots = np.full(self.max_candidates, -1, dtype=np.int64)
+            slots[: len(holds)] = holds
+            info["candidate_holds"] = slots
+        info["wall_name"] = self.wall.name
+        if self.wall_seed is not None:
+            info["wall_seed"] = self.wall_seed
+        return obs, info
+
+    def _numeric(self, raw, holds, mask):
+        free = int(raw["free_limb"])
+        points = _crux.forward_kinematics(self._model, raw["posture"])["points"]
+        grasp = points[1 + free]
+        held = np.where(np.isnan(raw["holds"]), 0.0, raw["holds"] - grasp)
+        candidates = np.zeros((self.max_candidates, 3))
+        candidates[: len(holds)] = self.wall.positions[holds] - grasp
+        posture = np.concatenate([raw["posture"][:3] - grasp, raw["posture"][3:]])
+        one_hot = np.zeros(4)
+        one_hot[free] = 1.0
+        bound = 2 * self._span
+        return {
+            "free_limb": one_hot.astype(np.float32),
+            "held": held.astype(np.float32),
+            "candidates": candidates.astype(np.float32),
+            "candidate_mask": mask.astype(np.float32),
+            "posture": posture.astype(np.float32),
+            "centre_of_mass": (self._centre_of_mass - grasp).astype(np.float32),
+            "to_finish": np.clip([self.wall.finish_height - self._centre_of_mass[2]], -bound, bound).astype(np.float32),
+        }
+
+    # --- rendering ----------------------------------------------------------------------
+
+    def _render_ansi(self):
+        raw = self._raw
+        ids = self.wall.hold_ids
+        limbs = ", ".join(
+            f"{name} {'free' if hold < 0 else f'hold {ids[hold]}'}"
+            for name, hold in zip(_crux.LIMB_NAMES, raw["configuration"])
+        )
+        offered = " ".join(str(ids[h]) for h in np.flatnonzero(self._env.action_mask()))
+        return (
+            f"{self.wall.name}: {limbs}\n"
+            f"centre of mass at {self._centre_of_mass[2]:.2f} m, finish at {self.wall.finish_height:.2f} m\n"
+            f"possible holds: {offered}\n"
+        )
+
+    def _render_rgb(self):
+        # Imported here: only rgb_array needs matplotlib (Debian's python3-matplotlib).
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+
+        wall, raw = self.wall, self._raw
+        positions = wall.positions
+        figure = Figure(figsize=(3.2, 4.8), dpi=100)
+        FigureCanvasAgg(figure)
+        axes = figure.add_axes((0, 0, 1, 1))
+        axes.set_aspect("equal")
+        axes.axis("off")
+        # Seen from behind the climber (x < 0, facing +x, y to its left): y grows leftwards.
+        low, high = positions.min(axis=0), positions.max(axis=0)
+        axes.set_xlim(high[1] + 0.5, low[1] - 0.5)
+        axes.set_ylim(low[2] - 0.5, max(high[2], wall.finish_height) + 0.5)
+        axes.axhline(wall.finish_height, color="#c0392b", linestyle="--", linewidth=1)
+        offered = self._env.action_mask()
+        held = raw["configuration"][raw["configuration"] >= 0]
+        colours = np.array(["#bbbbbb"] * wall.hold_count, dtype=object)
+        colours[offered] = "#27ae60"
+        colours[held] = "#2c3e50"
+        axes.scatter(positions[:, 1], positions[:, 2], s=40, c=list(colours), zorder=1)
+        # The skeleton: every joint past the root's translations joined to its parent, and the grasp points.
+        body = _crux.forward_kinematics(self._model, raw["posture"], joints=True)
+        origins, parents = body["joint_origins"], self._model.joint_parents
+        for joint in range(_crux.ROOT_DOF, len(parents)):
+            segment = origins[[parents[joint], joint]]
+            axes.plot(segment[:, 1], segment[:, 2], color="#e67e22", linewidth=3, zorder=2, solid_capstyle="round")
+        axes.scatter(body["points"][1:, 1], body["points"][1:, 2], s=12, c="#e67e22", zorder=2)
+        axes.scatter([self._centre_of_mass[1]], [self._centre_of_mass[2]], s=60, c="#8e44ad", marker="x", zorder=3)
+        figure.canvas.draw()
+        return np.asarray(figure.canvas.buffer_rgba())[:, :, :3].copy()
+
+
+# By name, so that the spec serialises (EnvSpec.to_json) and
+# gymnasium.make("crux.gym:crux/Climb-v0") imports this module first.
+gymnasium.register(id=ENV_ID, entry_point="crux.gym:ClimbEnv", max_episode_steps=MAX_EPISODE_STEPS)
