@@ -14,6 +14,7 @@
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
 #include "common/printable.hpp"
+#include "wall/incline.hpp"
 
 namespace crux {
 
@@ -121,7 +122,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"wall.tile_height", "Tile height of a random wall (m)", &s.walls.tile_height},
       {"wall.sigma", "Standard deviation of hold displacement (m)", &s.walls.sigma},
       {"wall.hold_radius", "Hold radius (m)", &s.walls.hold_radius},
-      {"wall.finish_height", "Finishing height of the centre of mass (m)", &s.walls.finish_height},
+      {"wall.finish_height", "Finishing height of the centre of mass (m), measured along the wall",
+       &s.walls.finish_height},
+      {"wall.incline", "Incline of a random wall from vertical (degrees; > 0 overhanging, < 0 slab)",
+       &s.walls.incline_deg},
   };
 }
 
@@ -450,6 +454,8 @@ void finalize_config(ExperimentConfig& config) {
   require((s.walls.columns + 1LL) * (s.walls.rows + 1LL) <= kMaxHoldCount, "wall.columns",
           fmt::format("(columns + 1) x (rows + 1) holds must be at most {}", kMaxHoldCount));
   require(s.walls.tile_width > 0, "wall.tile_width", "must be positive");
+  require(std::abs(s.walls.incline_deg) < kMaxInclineDeg, "wall.incline",
+          "must be between -90 and 90 degrees (exclusive): 0 is vertical, > 0 overhanging");
   require(s.walls.tile_height > 0, "wall.tile_height", "must be positive");
   require(s.walls.sigma >= 0, "wall.sigma", "must be 0 or positive");
   require(s.walls.hold_radius > 0, "wall.hold_radius", "must be positive");

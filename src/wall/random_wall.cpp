@@ -11,6 +11,7 @@ Wall generate_random_wall(std::uint64_t seed, const RandomWallParameters& p) {
   Wall wall;
   wall.name = fmt::format("random wall, seed {}", seed);
   wall.finish_height = p.finish_height;
+  wall.incline_deg = p.incline_deg;
   const int vertex_columns = p.columns + 1;
   for (int row = 0; row <= p.rows; ++row) {
     for (int column = 0; column < vertex_columns; ++column) {

@@ -16,6 +16,7 @@ struct RandomWallParameters {
   double sigma = 0.08;  // standard deviation of each hold's displacement in y and in z
   double hold_radius = 0.04;
   double finish_height = 3.0;  // calibrated on the optimal climb length (docs/DESIGN.md)
+  double incline_deg = 0.0;    // from vertical, > 0 overhanging (docs/MODEL.md, choice C25)
   // Start configuration as (column, row) vertices, columns from the climber's right,
   // rows from the bottom, limb order (docs/MODEL.md, choice C5).
   std::array<std::array<int, 2>, kLimbCount> start_vertices{{{1, 3}, {3, 3}, {1, 0}, {3, 0}}};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <set>
@@ -20,6 +21,7 @@
 #include "common/input_file.hpp"
 #include "common/json_field.hpp"
 #include "common/printable.hpp"
+#include "wall/incline.hpp"
 
 namespace crux {
 namespace {
@@ -27,7 +29,10 @@ namespace {
 using Json = OrderedJson;
 
 constexpr std::array<std::string_view, 6> kTopLevelKeys{"format", "version", "name", "finish_height", "start", "holds"};
+constexpr std::array<std::string_view, 7> kTopLevelKeysV2{"format",  "version", "name", "finish_height",
+                                                          "incline", "start",   "holds"};
 constexpr std::array<std::string_view, 3> kHoldKeys{"id", "position", "radius"};
+constexpr std::array<std::string_view, 4> kHoldKeysV2{"id", "position", "radius", "support"};
 constexpr std::size_t kMinimumHoldCount = kLimbCount;
 
 // nlohmann's error id for a number too large for a double (e.g. 1e999).
@@ -157,14 +162,27 @@ class WallReader {
  public:
   explicit WallReader(const std::string& source) : source_(source) {}
 
-  Wall read(const Json& root) const {
+  Wall read(const Json& root) {
     if (!root.is_object()) fail("the top level must be a JSON object, got " + json_value_description(root));
     check_format(root);
-    check_version(root);
-    reject_unknown_keys(root, "", kTopLevelKeys);
+    version_ = check_version(root);
+    if (version_ == 1) {
+      reject_unknown_keys(root, "", kTopLevelKeys);
+    } else {
+      reject_unknown_keys(root, "", kTopLevelKeysV2);
+    }
     Wall wall;
     wall.name = text(root, "", "name");
     wall.finish_height = number(root, "", "finish_height");
+    if (root.contains("incline")) {
+      wall.incline_deg = number(root, "", "incline");
+      if (!(std::abs(wall.incline_deg) < kMaxInclineDeg)) {
+        fail(
+            fmt::format("incline is {} degrees; it must be between -90 and 90 (exclusive): 0 is vertical, > 0 "
+                        "overhanging",
+                        wall.incline_deg));
+      }
+    }
     wall.holds = holds(field(root, "", "holds"));
     wall.start = start(field(root, "", "start"), wall);
     return wall;
@@ -181,13 +199,14 @@ class WallReader {
       fail(fmt::format("format must be {}, got {}", json_quoted(kWallFormatName), format->dump()));
   }
 
-  void check_version(const Json& root) const {
+  int check_version(const Json& root) const {
     const auto version = root.find("version");
-    if (version == root.end()) fail(fmt::format("version is missing (supported versions: {})", kWallFormatVersion));
+    if (version == root.end()) fail("version is missing (supported versions: 1, 2)");
     if (!version->is_number_integer()) fail("version must be an integer, got " + json_value_description(*version));
-    if (*version != kWallFormatVersion) {
-      fail(fmt::format("version {} is not supported (supported versions: {})", version->dump(), kWallFormatVersion));
+    if (*version != 1 && *version != 2) {
+      fail(fmt::format("version {} is not supported (supported versions: 1, 2)", version->dump()));
     }
+    return version->get<int>();
   }
 
   template <std::size_t N>
@@ -195,8 +214,9 @@ class WallReader {
                            const std::array<std::string_view, N>& allowed) const {
     for (const auto& [key, value] : object.items()) {
       if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-        fail(
-            fmt::format("unknown key {} {} (allowed: {})", json_quoted(key), location(path), fmt::join(allowed, ", ")));
+        const bool newer = version_ == 1 && (key == "incline" || key == "support");
+        fail(fmt::format("unknown key {} {} (allowed: {}){}", json_quoted(key), location(path),
+                         fmt::join(allowed, ", "), newer ? "; it needs \"version\": 2" : ""));
       }
     }
   }
@@ -241,15 +261,30 @@ class WallReader {
     return result;
   }
 
+  Eigen::Vector3d support(const Json& value, const std::string& path) const {
+    const Eigen::Vector3d direction = position(value, path);
+    const double length = direction.norm();
+    // A direction needs a length to normalise; far below any hold's size is a typo.
+    if (!(length > 1e-9) || !std::isfinite(length)) {
+      fail(fmt::format("{} must be a direction [x, y, z] of non-zero length, got {}", path, value.dump()));
+    }
+    return direction / length;
+  }
+
   Hold hold(const Json& value, const std::string& path) const {
     JsonField(source_, value, path).expect_object();
-    reject_unknown_keys(value, path, kHoldKeys);
+    if (version_ == 1) {
+      reject_unknown_keys(value, path, kHoldKeys);
+    } else {
+      reject_unknown_keys(value, path, kHoldKeysV2);
+    }
     Hold result;
     result.id = hold_id(field(value, path, "id"), path + ".id");
     result.position = position(field(value, path, "position"), path + ".position");
     result.radius = number(value, path, "radius");
     if (!(result.radius > 0.0))
       fail(fmt::format("{}.radius must be positive, got {}", path, Json(result.radius).dump()));
+    if (value.contains("support")) result.support = support(value["support"], path + ".support");
     return result;
   }
 
@@ -295,14 +330,24 @@ class WallReader {
   }
 
   const std::string& source_;
+  int version_ = 1;
 };
 
 std::string number_text(double value) { return Json(value).dump(); }
 
 std::string hold_line(const Hold& hold) {
-  return fmt::format(R"(    {{"id": {}, "position": [{}, {}, {}], "radius": {}}})", hold.id,
+  const std::string support = hold.support ? fmt::format(R"(, "support": [{}, {}, {}])", number_text(hold.support->x()),
+                                                         number_text(hold.support->y()), number_text(hold.support->z()))
+                                           : "";
+  return fmt::format(R"(    {{"id": {}, "position": [{}, {}, {}], "radius": {}{}}})", hold.id,
                      number_text(hold.position.x()), number_text(hold.position.y()), number_text(hold.position.z()),
-                     number_text(hold.radius));
+                     number_text(hold.radius), support);
+}
+
+// Version 1 for a wall that needs nothing of version 2, so that its file keeps its bytes.
+bool needs_version_2(const Wall& wall) {
+  return wall.incline_deg != 0.0 ||
+         std::any_of(wall.holds.begin(), wall.holds.end(), [](const Hold& h) { return h.support.has_value(); });
 }
 
 std::string start_line(const Wall& wall) {
@@ -332,10 +377,12 @@ Wall load_wall(const std::string& path) { return parse_wall(read_input_file(path
 std::string wall_to_json(const Wall& wall) {
   std::vector<std::string> holds;
   for (const Hold& hold : wall.holds) holds.push_back(hold_line(hold));
+  const bool version_2 = needs_version_2(wall);
+  const std::string incline = version_2 ? fmt::format("  \"incline\": {},\n", number_text(wall.incline_deg)) : "";
   return fmt::format(
-      "{{\n  \"format\": {},\n  \"version\": {},\n  \"name\": {},\n  \"finish_height\": {},\n{}"
+      "{{\n  \"format\": {},\n  \"version\": {},\n  \"name\": {},\n  \"finish_height\": {},\n{}{}"
       "  \"holds\": [\n{}\n  ]\n}}\n",
-      json_quoted(kWallFormatName), kWallFormatVersion, json_quoted(wall.name), number_text(wall.finish_height),
+      json_quoted(kWallFormatName), version_2 ? 2 : 1, json_quoted(wall.name), number_text(wall.finish_height), incline,
       start_line(wall), fmt::join(holds, ",\n"));
 }
 

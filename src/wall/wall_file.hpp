@@ -1,6 +1,9 @@
 #pragma once
-// Wall files: the versioned JSON format "crux-wall", version 1 (docs/OUTPUTS.md,
-// docs/wall.schema.json).
+// Wall files: the versioned JSON format "crux-wall", versions 1 and 2 (docs/OUTPUTS.md,
+// docs/wall.schema.json). Version 2 adds an optional "incline" (degrees from vertical,
+// in (-90, 90); docs/MODEL.md, choice C25) and an optional "support" direction per hold
+// ([x, y, z], any non-zero length, stored as a unit vector). A wall without either is
+// written as version 1, so that such files keep their bytes.
 //
 //   {"format": "crux-wall", "version": 1, "name": "...", "finish_height": 2.5,
 //    "start": {"right_hand": ID, "left_hand": ID, "right_foot": ID, "left_foot": ID},
@@ -24,7 +27,7 @@
 namespace crux {
 
 inline constexpr const char* kWallFormatName = "crux-wall";
-inline constexpr int kWallFormatVersion = 1;
+inline constexpr int kWallFormatVersion = 2;  // the newest; 1 is still read and written
 
 // Reads and validates a wall file; InputError(path, problem) on any problem.
 Wall load_wall(const std::string& path);

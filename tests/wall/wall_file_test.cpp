@@ -233,6 +233,10 @@ constexpr const char* kValidWall = R"({
 BadWallCase edit(const char* name, const std::string& from, const std::string& to, const char* expected) {
   return {name, replaced(kValidWall, from, to), expected};
 }
+// The same edit of the valid wall written as version 2.
+BadWallCase edit_v2(const char* name, const std::string& from, const std::string& to, const char* expected) {
+  return {name, replaced(replaced(kValidWall, "\"version\": 1", "\"version\": 2"), from, to), expected};
+}
 BadWallCase whole(const char* name, const std::string& text, const char* expected) { return {name, text, expected}; }
 
 // One hold more than crux supports, each on its own spot.
@@ -264,9 +268,25 @@ std::vector<BadWallCase> bad_wall_cases() {
       edit("format_missing", "\"format\": \"crux-wall\",", "", "format is missing"),
       edit("format_wrong", "\"crux-wall\"", "\"crux-body\"", "format must be \"crux-wall\", got \"crux-body\""),
       edit("format_not_string", "\"crux-wall\"", "1", "format must be \"crux-wall\", got 1"),
-      edit("version_missing", "\"version\": 1,", "", "version is missing (supported versions: 1)"),
-      edit("version_unsupported", "\"version\": 1", "\"version\": 2",
-           "version 2 is not supported (supported versions: 1)"),
+      edit("version_missing", "\"version\": 1,", "", "version is missing (supported versions: 1, 2)"),
+      edit("version_unsupported", "\"version\": 1", "\"version\": 3",
+           "version 3 is not supported (supported versions: 1, 2)"),
+      // Version 2 (issue 26): an incline and support directions, refused in version 1.
+      edit("incline_in_version_1", "\"finish_height\"", "\"incline\": 40, \"finish_height\"",
+           "unknown key \"incline\" at the top level (allowed: format, version, name, finish_height, start, holds); "
+           "it needs \"version\": 2"),
+      edit("support_in_version_1", "1.5], \"radius\": 0.04", "1.5], \"radius\": 0.04, \"support\": [0, 0, 1]",
+           "it needs \"version\": 2"),
+      edit_v2("incline_vertical_overhang", "\"finish_height\"", "\"incline\": 90, \"finish_height\"",
+              "incline is 90 degrees; it must be between -90 and 90 (exclusive)"),
+      edit_v2("incline_string", "\"finish_height\"", "\"incline\": \"steep\", \"finish_height\"",
+              "incline must be a number, got string"),
+      edit_v2("support_zero", "1.5], \"radius\": 0.04", "1.5], \"radius\": 0.04, \"support\": [0, 0, 0]",
+              "holds[2].support must be a direction [x, y, z] of non-zero length, got [0,0,0]"),
+      edit_v2("support_two_numbers", "1.5], \"radius\": 0.04", "1.5], \"radius\": 0.04, \"support\": [0, 1]",
+              "holds[2].support must have 3 coordinates [x, y, z], got 2"),
+      edit_v2("support_not_array", "1.5], \"radius\": 0.04", "1.5], \"radius\": 0.04, \"support\": \"up\"",
+              "holds[2].support must be an array of 3 numbers [x, y, z], got string"),
       edit("version_string", "\"version\": 1", "\"version\": \"1\"", "version must be an integer, got string"),
       edit("unknown_top_level_key", "\"finish_height\"", "\"finsh_height\"",
            "unknown key \"finsh_height\" at the top level"),
@@ -341,6 +361,30 @@ std::vector<BadWallCase> bad_wall_cases() {
 }
 
 void PrintTo(const BadWallCase& c, std::ostream* out) { *out << c.name; }
+
+// Issue 26: version 2 carries an incline and support directions (normalised when read)
+// and writes them back; a wall without either is written as version 1, byte for byte
+// the file it was read from.
+TEST(WallFile, VersionTwoCarriesTheInclineAndSupportDirections) {
+  Wall wall = parse_wall(kValidWall, "valid.json");
+  EXPECT_EQ(wall_to_json(wall), kValidWall) << "no incline, no support: version 1, as read";
+  EXPECT_EQ(wall.incline_deg, 0.0);
+  const std::string v2 = replaced(replaced(replaced(kValidWall, "\"version\": 1", "\"version\": 2"),
+                                           "\"finish_height\"", "\"incline\": 40, \"finish_height\""),
+                                  "1.5], \"radius\": 0.04", "1.5], \"radius\": 0.04, \"support\": [0, 0, 2]");
+  wall = parse_wall(v2, "v2.json");
+  EXPECT_EQ(wall.incline_deg, 40.0);
+  ASSERT_TRUE(wall.holds[2].support.has_value());
+  EXPECT_EQ(*wall.holds[2].support, Eigen::Vector3d(0, 0, 1));
+  EXPECT_FALSE(wall.holds[0].support.has_value());
+  const std::string written = wall_to_json(wall);
+  EXPECT_NE(written.find("\"version\": 2"), std::string::npos);
+  EXPECT_NE(written.find("\"incline\": 40.0"), std::string::npos) << written;
+  EXPECT_NE(written.find("\"support\": [0.0, 0.0, 1.0]"), std::string::npos) << written;
+  const Wall again = parse_wall(written, "again.json");
+  EXPECT_EQ(wall_to_json(again), written);
+  EXPECT_EQ(again.incline_deg, 40.0);
+}
 
 std::filesystem::path path_for(const BadWallCase& c) {
   const auto directory = testing::test_folder();
