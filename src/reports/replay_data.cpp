@@ -135,6 +135,8 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
                  {"finish_height", wall.finish_height},
                  {"holds", holds},
                  {"start", configuration_json(wall, start_configuration(wall))}};
+  // Only an inclined wall says so, so that a vertical wall's replay keeps its bytes.
+  if (wall.incline_deg != 0.0) out["wall"]["incline"] = wall.incline_deg;
 
   IkParameters ik = reach.ik;
   ik.solver = IkSolverKind::Paper;

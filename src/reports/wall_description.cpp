@@ -18,6 +18,17 @@ std::string start_holds_text(const Wall& wall) {
                      wall.holds[wall.start[1]].id, wall.holds[wall.start[2]].id, wall.holds[wall.start[3]].id);
 }
 
+namespace {
+
+// ", inclined 40 degrees (overhanging; heights along the wall)", or "" for a vertical wall.
+std::string incline_text(const Wall& wall) {
+  if (wall.incline_deg == 0.0) return "";
+  return fmt::format(", inclined {:g} degrees ({}; heights along the wall)", wall.incline_deg,
+                     wall.incline_deg > 0.0 ? "overhanging" : "a slab");
+}
+
+}  // namespace
+
 nlohmann::ordered_json generated_wall_json(const std::string& file, const Wall& wall, std::uint64_t seed,
                                            const IkResult& start, const std::string& solver) {
   nlohmann::ordered_json out;
@@ -26,6 +37,7 @@ nlohmann::ordered_json generated_wall_json(const std::string& file, const Wall& 
   out["seed"] = seed;
   out["holds"] = wall.hold_count();
   out["finish_height"] = wall.finish_height;
+  out["incline"] = wall.incline_deg;
   out["start"] = start_holds_json(wall);
   out["start_reachable"] = start.reached;
   out["start_iterations"] = start.iterations;
@@ -35,8 +47,8 @@ nlohmann::ordered_json generated_wall_json(const std::string& file, const Wall& 
 
 std::string generated_wall_text(const std::string& file, const Wall& wall, const IkResult& start,
                                 const std::string& solver) {
-  return fmt::format("wrote {}: '{}', {} holds, finish height {} m\n", file, printable(wall.name), wall.hold_count(),
-                     wall.finish_height) +
+  return fmt::format("wrote {}: '{}', {} holds, finish height {} m{}\n", file, printable(wall.name), wall.hold_count(),
+                     wall.finish_height, incline_text(wall)) +
          fmt::format("start configuration ({}): ", start_holds_text(wall)) +
          (start.reached ? fmt::format("reachable ({} solver, {})\n", solver, counted(start.iterations, "iteration"))
                         : std::string("NOT reachable\n"));
@@ -49,6 +61,7 @@ nlohmann::ordered_json wall_summary_json(const std::string& file, const Wall& wa
   out["name"] = wall.name;
   out["holds"] = wall.hold_count();
   out["finish_height"] = wall.finish_height;
+  out["incline"] = wall.incline_deg;
   out["start"] = start_holds_json(wall);
   out["start_reachable"] = start.reached;
   out["start_iterations"] = start.iterations;
@@ -77,10 +90,11 @@ std::string wall_summary_text(const std::string& file, const Wall& wall, const I
     low = low.cwiseMin(h.position);
     high = high.cwiseMax(h.position);
   }
-  std::string out = fmt::format("'{}' ({}): {} holds, y from {:.2f} to {:.2f} m, z from {:.2f} to {:.2f} m\n",
-                                printable(wall.name), file, wall.hold_count(), low.y(), high.y(), low.z(), high.z()) +
-                    fmt::format("finish height {} m; start configuration: {} ({})\n", wall.finish_height,
-                                start_holds_text(wall), start.reached ? "reachable" : "NOT reachable");
+  std::string out =
+      fmt::format("'{}' ({}): {} holds, y from {:.2f} to {:.2f} m, z from {:.2f} to {:.2f} m\n", printable(wall.name),
+                  file, wall.hold_count(), low.y(), high.y(), low.z(), high.z()) +
+      fmt::format("finish height {} m{}; start configuration: {} ({})\n", wall.finish_height, incline_text(wall),
+                  start_holds_text(wall), start.reached ? "reachable" : "NOT reachable");
   if (grid) {
     out += "grid tiles -> holds (tile: hold id):";
     for (int tile = 0; tile < grid->parameters.tile_count(); ++tile) {

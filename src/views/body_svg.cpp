@@ -6,9 +6,11 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <Eigen/Geometry>
 
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
@@ -16,6 +18,7 @@
 #include "views/legend.hpp"
 #include "views/palette.hpp"
 #include "views/svg_document.hpp"
+#include "wall/incline.hpp"
 
 namespace crux {
 namespace {
@@ -102,7 +105,7 @@ std::vector<PlacedVisual> place_visuals(const BodyModel& model, const BodyData& 
 // (with its sign), z is drawn up; `depth` grows towards the viewer.
 struct View {
   const char* title;
-  const char* axis_title;
+  std::string axis_title;
   int horizontal_axis;
   double horizontal_sign;
   int depth_axis;
@@ -123,6 +126,18 @@ class BodyFigure {
       : model_(model), wall_(wall), options_(options), data_(model) {
     forward_kinematics(model, data_, posture);
     visuals_ = place_visuals(model, data_);
+    holds_ = wall.holds;
+    // An inclined wall is drawn as it stands, gravity down: every point turns from wall
+    // coordinates to the world's (docs/MODEL.md, choice C25). A vertical wall is left as is.
+    if (wall.incline_deg != 0.0) {
+      tilt_ = wall_to_world(wall.incline_deg);
+      for (PlacedVisual& v : visuals_) {
+        v.centre = tilt_ * v.centre;
+        v.axes = tilt_ * v.axes;
+        for (Eigen::Vector3d& p : v.outline) p = tilt_ * p;
+      }
+      for (Hold& hold : holds_) hold.position = tilt_ * hold.position;
+    }
     lay_out();
   }
 
@@ -138,7 +153,18 @@ class BodyFigure {
   }
 
  private:
-  Eigen::Vector3d grasp_point(int limb) const { return data_.points[operational_point(static_cast<Limb>(limb))]; }
+  Eigen::Vector3d grasp_point(int limb) const {
+    const Eigen::Vector3d& point = data_.points[operational_point(static_cast<Limb>(limb))];
+    return wall_.incline_deg != 0.0 ? Eigen::Vector3d(tilt_ * point) : point;
+  }
+
+  double finish_world_z() const {
+    return wall_.incline_deg != 0.0 ? (tilt_ * Eigen::Vector3d(0.0, 0.0, wall_.finish_height)).z()
+                                    : wall_.finish_height;
+  }
+
+  // The side view's u of the wall plane at world height z: the plane leans by the incline.
+  double wall_u(double z) const { return z * std::tan(wall_.incline_deg * std::numbers::pi / 180.0); }
 
   void lay_out() {
     // Both are views of the right-handed world as a camera sees it. Front: from behind
@@ -147,7 +173,11 @@ class BodyFigure {
     // the climber, at x < 0, to its right.
     views_ = {View{"front, from behind the climber", "y (m), to the climber's left", 1, -1.0, 0, -1.0},
               View{"side, from the climber's left", "x (m); the wall is x = 0, the climber at x < 0", 0, -1.0, 1, 1.0}};
-    double z_low = std::min(0.0, wall_.finish_height), z_high = wall_.finish_height;
+    if (wall_.incline_deg != 0.0) {
+      views_[1].axis_title =
+          fmt::format("x (m), horizontal; the wall, inclined {:g} degrees, stands on x = 0", wall_.incline_deg);
+    }
+    double z_low = std::min(0.0, finish_world_z()), z_high = finish_world_z();
     const auto include = [&](View& view, const Eigen::Vector3d& p, double radius) {
       view.low = std::min(view.low, view.u(p) - radius);
       view.high = std::max(view.high, view.u(p) + radius);
@@ -155,7 +185,7 @@ class BodyFigure {
     for (View& view : views_) {
       view.low = std::numeric_limits<double>::infinity();
       view.high = -view.low;
-      for (const Hold& hold : wall_.holds) include(view, hold.position, hold.radius);
+      for (const Hold& hold : holds_) include(view, hold.position, hold.radius);
       for (const PlacedVisual& v : visuals_) {
         if (v.outline.empty()) include(view, v.centre, v.visual->size.x());
         for (const Eigen::Vector3d& p : v.outline) include(view, p, 0.0);
@@ -164,7 +194,7 @@ class BodyFigure {
       view.low -= kPadding;
       view.high += kPadding;
     }
-    for (const Hold& hold : wall_.holds) {
+    for (const Hold& hold : holds_) {
       z_low = std::min(z_low, hold.position.z() - hold.radius);
       z_high = std::max(z_high, hold.position.z() + hold.radius);
     }
@@ -240,10 +270,12 @@ class BodyFigure {
                   "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\"/>\n",
                   view.left, view.top, view.width(), panel_height_, kViewFrameColour);
     if (view.horizontal_axis == 0) {  // the wall plane, seen edge on
-      const double x = view.x_of(0.0);
-      draw_line(out_, x, view.top, x, bottom, {kWallColour, 3, ""}, "wall");
+      draw_line(out_, view.x_of(wall_u(z_top_)), view.top, view.x_of(wall_u(z_low_)), bottom, {kWallColour, 3, ""},
+                "wall");
     }
-    const double finish = view.top + (z_top_ - wall_.finish_height) * view.scale;
+    // The finishing height is measured along the wall: drawn at the world height where
+    // the wall reaches it.
+    const double finish = view.top + (z_top_ - finish_world_z()) * view.scale;
     draw_line(out_, view.left, finish, view.left + view.width(), finish, kFinishStroke, "finish");
     write_holds(view);
     write_body(view);
@@ -253,7 +285,7 @@ class BodyFigure {
 
   void write_holds(const View& view) {
     append_format(out_, "<g class=\"holds\" fill=\"{}\">\n", kHoldBesideBodyColour);
-    for (const Hold& hold : wall_.holds) {
+    for (const Hold& hold : holds_) {
       const Point c = view.project(hold.position);
       append_format(out_, "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\"/>\n", c[0], c[1],
                     std::max(1.5, hold.radius * view.scale));
@@ -319,7 +351,8 @@ class BodyFigure {
                              x + 12, y, style.colour);
                        }});
     }
-    items.push_back({fmt::format("finish height, {:.2f} m", wall_.finish_height),
+    items.push_back({fmt::format("finish height, {:.2f} m{}", wall_.finish_height,
+                                 wall_.incline_deg != 0.0 ? " along the wall" : ""),
                      [](std::string& svg, double x, double y) { draw_line(svg, x, y, x + 24, y, kFinishStroke); }});
     return items;
   }
@@ -329,6 +362,8 @@ class BodyFigure {
   const BodySvgOptions& options_;
   BodyData data_;
   std::vector<PlacedVisual> visuals_;
+  std::vector<Hold> holds_;  // the wall's, turned to the world when it is inclined
+  Eigen::Matrix3d tilt_ = Eigen::Matrix3d::Identity();
   std::array<View, 2> views_{};
   double z_low_ = 0, z_top_ = 0, panel_height_ = 0, width_ = 0, height_ = 0;
   double tick_spacing_ = 0;

@@ -215,6 +215,14 @@ async function main() {
       if (!(worst <= 1e-6)) fail(`grasp points at frame ${info.check.frame} are off by ${worst.toExponential(3)} m (> 1e-6): got ${JSON.stringify(got)}, expected ${JSON.stringify(info.check.grasp_points)}`);
     } else fail('the data has no check');
 
+    // Issue 26: an inclined wall stands as it does in the world: a metre up the wall is
+    // (-sin, 0, cos) of the incline (its top leans towards the climber, at x < 0, on an overhang).
+    const incline = await page.evaluate(() => JSON.parse(document.getElementById('crux-replay-data').textContent).wall.incline || 0);
+    const up = await page.evaluate(() => window.cruxReplay.wallToWorld([0, 0, 1]));
+    const theta = (incline * Math.PI) / 180;
+    const expectedUp = [-Math.sin(theta), 0, Math.cos(theta)];
+    if (!up.every((x, k) => Math.abs(x - expectedUp[k]) <= 1e-9)) fail(`the wall of incline ${incline} degrees stands at ${JSON.stringify(up)}, expected ${JSON.stringify(expectedUp)}`);
+
     // Issue 26: Fig. 1's front view and the replay's first view both look at the climber from
     // behind, so each puts the left hand and the left foot left of the right ones, as the page
     // shows them (the replay's start frame is Fig. 1's posture).

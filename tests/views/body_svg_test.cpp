@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include <numbers>
+
 #include "support/svg_check.hpp"
 #include "support/test_models.hpp"
 #include "support/test_walls.hpp"
@@ -75,6 +79,28 @@ TEST(BodySvg, ViewsAreOrientedAsSeenFromBehindAndFromTheLeft) {
   std::smatch wall;
   ASSERT_TRUE(std::regex_search(svg, wall, wall_line));
   for (const double cx : circle_centres(side, "cx")) EXPECT_GT(cx, std::stod(wall[1])) << "the body is at x < 0";
+}
+
+// Issue 26: an inclined wall is drawn as it stands. In the side view (from the climber's
+// left, the climber to the right of the wall) a 30-degree overhang leans its top towards
+// the climber, by tan 30 per metre of height; a vertical wall is a vertical line.
+TEST(BodySvg, AnOverhangLeansTowardsTheClimberInTheSideView) {
+  const BodyModel& model = testing::human_model();
+  const std::regex wall_line(
+      R"re(<line class="wall" x1="([-0-9.]+)" y1="([-0-9.]+)" x2="([-0-9.]+)" y2="([-0-9.]+)")re");
+  Wall wall = four_hold_wall();
+  std::smatch line;
+  const std::string vertical = render_body_svg(model, standing_posture({-0.35, 0.6, 1.0}), wall);
+  ASSERT_TRUE(std::regex_search(vertical, line, wall_line));
+  EXPECT_EQ(line[1], line[3]);
+  wall.incline_deg = 30.0;
+  const std::string overhang = render_body_svg(model, standing_posture({-0.35, 0.6, 1.0}), wall);
+  ASSERT_TRUE(std::regex_search(overhang, line, wall_line));
+  const double top_x = std::stod(line[1]), top_y = std::stod(line[2]), foot_x = std::stod(line[3]),
+               foot_y = std::stod(line[4]);
+  EXPECT_NEAR((top_x - foot_x) / (foot_y - top_y), std::tan(30.0 * std::numbers::pi / 180.0), 1e-3);
+  EXPECT_NE(overhang.find("inclined 30 degrees"), std::string::npos);
+  EXPECT_NE(overhang.find("m along the wall"), std::string::npos);
 }
 
 TEST(BodySvg, SamePostureGivesIdenticalBytesAndAnotherPostureOtherBytes) {

@@ -19,6 +19,7 @@ function start() {
     get renderedFrames() { return viewer.renderedFrames; },
     graspPoints: (i) => viewer.graspPoints(i),
     screenPoints: (i) => viewer.screenPoints(i),
+    wallToWorld: (p) => viewer.wallToWorld(p),
     get playing() { return viewer.playing; },
   };
 }

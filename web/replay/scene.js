@@ -49,13 +49,16 @@ export class WallView {
     wallMesh.name = 'wall';
     this.group.add(wallMesh);
 
-    // Floor grid in z = 0, from the wall out to x = -3 m on the climber's side.
+    // Floor grid in z = 0, from the wall out to x = -3 m on the climber's side: a group of
+    // its own, level whatever the wall's incline.
+    this.floor = new Group();
+    this.floor.name = 'crux-floor';
     const pts = [];
     for (let x = 0; x >= -3.0001; x -= 0.25) pts.push(x, ymin, 0, x, ymax, 0);
     for (let y = Math.ceil(ymin * 4) / 4; y <= ymax; y += 0.25) pts.push(0, y, 0, -3, y, 0);
     const grid = new BufferGeometry();
     grid.setAttribute('position', new Float32BufferAttribute(pts, 3));
-    this.group.add(new LineSegments(grid, new LineBasicMaterial({ color: COLORS.floor })));
+    this.floor.add(new LineSegments(grid, new LineBasicMaterial({ color: COLORS.floor })));
 
     // Finish height: a line on the wall and a translucent horizontal band in front of it.
     if (typeof wall.finish_height === 'number') {

@@ -1,7 +1,7 @@
 // The replay panel: renderer, camera, orbit controls, playback loop, controls and info line.
 import {
   AmbientLight, DirectionalLight, HemisphereLight, Mesh, MeshBasicMaterial, PerspectiveCamera, Scene,
-  SphereGeometry, Vector3, WebGLRenderer,
+  SphereGeometry, Vector3, WebGLRenderer, Group,
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { Body } from './body.js';
@@ -104,9 +104,17 @@ export class ReplayViewer {
     const q0 = data.postures.subarray(0, data.dof);
     this.body.apply(q0);
     this.body.root.updateMatrixWorld(true);
-    const start = this.rootPosition();
+    let start = this.rootPosition();
     this.wall = new WallView(data, start.y);
-    this.scene.add(this.wall.group, this.body.root);
+    // Wall and body are in wall coordinates; an inclined wall turns them about y, its top
+    // leaning towards the climber (x < 0) for an overhang, so that gravity is down.
+    this.tilted = new Group();
+    this.tilted.name = 'crux-wall-frame';
+    this.tilted.rotation.y = -((data.wall.incline || 0) * Math.PI) / 180;
+    this.tilted.add(this.wall.group, this.body.root);
+    this.scene.add(this.tilted, this.wall.floor);
+    this.tilted.updateMatrixWorld(true);
+    start = this.rootPosition(); // in the world, where the camera looks
 
     // Grasp zones: translucent spheres of radius grasp_radius at the 4 grasp points.
     this.graspSpheres = this.body.grasp.map((g, i) => {
@@ -345,9 +353,19 @@ export class ReplayViewer {
     img.src = this.canvas.toDataURL('image/png');
   }
 
+  /** A point of the wall frame (wall coordinates) in the world the camera sees. */
+  wallToWorld(p) {
+    const v = this.tilted.localToWorld(new Vector3(p[0], p[1], p[2]));
+    return [v.x, v.y, v.z];
+  }
+
+  /** The grasp points at frame i in wall coordinates, as crux computes them. */
   graspPoints(i) {
     this.setFrame(i);
-    return this.body.graspWorld();
+    return this.body.graspWorld().map((p) => {
+      const v = this.tilted.worldToLocal(new Vector3(p[0], p[1], p[2]));
+      return [v.x, v.y, v.z];
+    });
   }
 
   /** The grasp points at frame i as the camera shows them now: [x, y] in [-1, 1], x to the right. */
