@@ -43,10 +43,11 @@ void report(benchmark::State& state, long reached) {
       benchmark::Counter(attempted, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void run_crux_solver(benchmark::State& state, IkSolverKind kind) {
+void run_crux_solver(benchmark::State& state, IkSolverKind kind, WallRule wall = WallRule::Ignore) {
   const Fixture& f = fixture();
   IkParameters settings = f.settings;
   settings.solver = kind;
+  settings.wall = wall;
   BodyData data(f.model);
   long reached = 0;
   for (auto _ : state) {
@@ -63,6 +64,16 @@ void BM_IkPaper(benchmark::State& state) { run_crux_solver(state, IkSolverKind::
 void BM_IkFast(benchmark::State& state) { run_crux_solver(state, IkSolverKind::Fast); }
 BENCHMARK(BM_IkPaper)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_IkFast)->Unit(benchmark::kMillisecond);
+
+// The body kept out of the wall (ik.wall): rejected after the solve, or avoided inside it.
+void BM_IkPaperWallReject(benchmark::State& state) { run_crux_solver(state, IkSolverKind::Paper, WallRule::Reject); }
+void BM_IkPaperWallAvoid(benchmark::State& state) { run_crux_solver(state, IkSolverKind::Paper, WallRule::Avoid); }
+void BM_IkFastWallReject(benchmark::State& state) { run_crux_solver(state, IkSolverKind::Fast, WallRule::Reject); }
+void BM_IkFastWallAvoid(benchmark::State& state) { run_crux_solver(state, IkSolverKind::Fast, WallRule::Avoid); }
+BENCHMARK(BM_IkPaperWallReject)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IkPaperWallAvoid)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IkFastWallReject)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IkFastWallAvoid)->Unit(benchmark::kMillisecond);
 
 // KDL as a robotics user would set it up: Newton-Raphson with joint limits over the
 // five endpoints (root and grasp frames), velocity IK by weighted damped least squares
