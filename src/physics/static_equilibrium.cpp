@@ -139,11 +139,13 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
   ClpSimplex& solver = *solver_;
   const int row_count = static_cast<int>(row_lower_.size());
   // CLP copies the program in (it allocates there and in the solve); the last basis has
-  // the same rows and columns, so the dual simplex starts from it.
+  // the same rows and columns, so the primal simplex starts from it, and CLP keeps its work
+  // areas between solves (startFinishOptions 1): the fastest of the variants measured
+  // (docs/PERFORMANCE.md, "Static equilibrium").
   solver.loadProblem(kEquilibriumColumns, row_count, starts_.data(), rows_.data(), values_.data(), column_lower_.data(),
                      column_upper_.data(), objective_.data(), row_lower_.data(), row_upper_.data());
   if (has_basis_) solver.copyinStatus(basis_.data());
-  solver.dual();
+  solver.primal(0, 1);
   if (!solver.isProvenOptimal() && !solver.isProvenPrimalInfeasible()) {
     solver.allSlackBasis(true);
     solver.primal();
