@@ -50,7 +50,8 @@ class StaticEquilibrium {
 
   // The posture g held by `contacts` (at most one per limb, at the limb's grasp point).
   // Places the body in `data`. A contact checked by check_contact is a precondition;
-  // two contacts of one limb are std::invalid_argument.
+  // two contacts of one limb are std::invalid_argument. The result stays valid until the
+  // next solve.
   const StaticEquilibriumResult& solve(BodyData& data, const Posture& g, std::span<const PointContact> contacts,
                                        const Eigen::Vector3d& gravity = kStandardGravity);
 
