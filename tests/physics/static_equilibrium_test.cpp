@@ -147,8 +147,9 @@ void expect_checked(const BodyModel& model, const StrengthProfile& strength, con
 
 // A box of mass M on two ledges of a table, a to its right and b to its left of the centre
 // of mass: the moment about x fixes the normal forces at M g b / (a + b) and M g a / (a + b).
-// No joint carries anything, so the effort is 0. With the left ledge's limit 1 % under its
-// share, no force in the cones balances: infeasible, since the normal forces are forced.
+// No joint carries anything, so the effort is 0. With the left ledge's limit at its share the
+// box is held with that ledge at its limit; 1 % under it, no force in the cones balances:
+// infeasible, since the normal forces are forced.
 TEST(StaticEquilibrium, RigidBodyOnTwoLedgesSharesItsWeightByTheLever) {
   constexpr double M = 50.0, a = 0.2, b = 0.3, h = 0.4;
   const BodyModel model =
@@ -172,6 +173,12 @@ TEST(StaticEquilibrium, RigidBodyOnTwoLedgesSharesItsWeightByTheLever) {
 
   contacts[1].normal_force_limit = 1.01 * left_share;
   EXPECT_TRUE(equilibrium.solve(data, g, contacts).feasible);
+  EXPECT_FALSE(equilibrium.solve(data, g, contacts).at_force_limit[1]);
+  contacts[1].normal_force_limit = left_share;  // exactly its forced share: held, at its limit
+  const StaticEquilibriumResult& at_limit = equilibrium.solve(data, g, contacts);
+  EXPECT_TRUE(at_limit.feasible);
+  EXPECT_TRUE(at_limit.at_force_limit[1]);
+  EXPECT_FALSE(at_limit.at_force_limit[0]);
   contacts[1].normal_force_limit = 0.99 * left_share;
   const StaticEquilibriumResult& gripless = equilibrium.solve(data, g, contacts);
   EXPECT_FALSE(gripless.balanced);
