@@ -1,0 +1,204 @@
+#include "physics/static_equilibrium.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <ClpSimplex.hpp>
+#include <Eigen/Geometry>
+
+#include "body/kinematics.hpp"
+
+namespace crux {
+namespace {
+
+// Columns: the weights of each limb's kFrictionConeFaces generators, limb after limb, then
+// the effort t. Rows: force balance (3), moment balance about the root (3), each limb's
+// normal force (kLimbCount), then one row per bounded joint and direction.
+constexpr int kEffortColumn = kLimbCount * kFrictionConeFaces;
+constexpr int kEquilibriumColumns = kEffortColumn + 1;
+constexpr int kBalanceRows = 6;
+constexpr int kFirstNormalRow = kBalanceRows;
+constexpr int kFirstJointRow = kFirstNormalRow + kLimbCount;
+const double kUnboundedRow = COIN_DBL_MAX;  // CLP's infinity
+
+bool moves_limb(const BodyModel& model, int limb, int joint) {
+  const std::vector<int>& chain = model.chains[operational_point(limb)];
+  return std::find(chain.begin(), chain.end(), joint) != chain.end();
+}
+
+}  // namespace
+
+StaticEquilibrium::StaticEquilibrium(const BodyModel& model, const StrengthProfile& strength)
+    : model_(model), solver_(std::make_unique<ClpSimplex>()) {
+  for (int j = kRootDof; j < static_cast<int>(model.joints.size()); ++j) {
+    const JointStrength& limits = strength.joints[j];
+    if (!(limits.positive > 0.0) || !(limits.negative > 0.0)) {
+      throw std::invalid_argument("the torque limits of " + model.joints[j].name + " must be > 0");
+    }
+    if (std::isfinite(limits.positive)) joint_rows_.push_back({j, 1.0, limits.positive});
+    if (std::isfinite(limits.negative)) joint_rows_.push_back({j, -1.0, limits.negative});
+  }
+  const int row_count = kFirstJointRow + static_cast<int>(joint_rows_.size());
+  // The sparsity never changes: a limb's forces reach the joints of its own chain only.
+  starts_.push_back(0);
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    for (int face = 0; face < kFrictionConeFaces; ++face) {
+      for (int row = 0; row < kBalanceRows; ++row) rows_.push_back(row);
+      rows_.push_back(kFirstNormalRow + limb);
+      for (int r = 0; r < static_cast<int>(joint_rows_.size()); ++r) {
+        if (moves_limb(model, limb, joint_rows_[r].joint)) rows_.push_back(kFirstJointRow + r);
+      }
+      starts_.push_back(static_cast<int>(rows_.size()));
+    }
+  }
+  for (int r = 0; r < static_cast<int>(joint_rows_.size()); ++r) rows_.push_back(kFirstJointRow + r);
+  starts_.push_back(static_cast<int>(rows_.size()));
+  values_.assign(rows_.size(), 0.0);
+  column_lower_.assign(kEquilibriumColumns, 0.0);
+  column_upper_.assign(kEquilibriumColumns, kUnboundedRow);
+  objective_.assign(kEquilibriumColumns, 0.0);
+  objective_[kEffortColumn] = 1.0;  // minimise t
+  row_lower_.assign(row_count, -kUnboundedRow);
+  row_upper_.assign(row_count, kUnboundedRow);
+  basis_.assign(row_count + kEquilibriumColumns, 0);
+  solver_->setLogLevel(0);
+  // Unscaled: reloaded into one object, CLP's scaled programs gave different optima warm and
+  // cold (by up to 0.26 in effort on random postures); unscaled they agree
+  // (StaticEquilibrium.WarmStartsGiveTheColdSolvesEffort).
+  solver_->scaling(0);
+}
+
+StaticEquilibrium::~StaticEquilibrium() = default;
+
+const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Posture& g,
+                                                        std::span<const PointContact> contacts,
+                                                        const Eigen::Vector3d& gravity) {
+  const GeneralisedForce tau_g = gravity_forces(model_, data, g, gravity);
+  operational_jacobians(model_, data);
+  const Eigen::Vector3d& com = centre_of_mass(model_, data);
+  const Eigen::Vector3d& root = data.points[0];
+
+  std::array<const PointContact*, kLimbCount> held{};
+  for (const PointContact& contact : contacts) {
+    const int limb = static_cast<int>(contact.limb);
+    if (held[limb] != nullptr) throw std::invalid_argument("two contacts for one limb");
+    held[limb] = &contact;
+  }
+
+  // Force balance: sum of f_c = -(the weight) = -tau_g's root part. Moment balance about
+  // the root: sum of (p_c - root) x f_c = -M (com - root) x gravity.
+  const Eigen::Vector3d weight = tau_g.head<kRootDof>();
+  const Eigen::Vector3d weight_moment = model_.total_mass * (com - root).cross(gravity);
+  for (int row = 0; row < 3; ++row) {
+    row_lower_[row] = row_upper_[row] = -weight[row];
+    row_lower_[3 + row] = row_upper_[3 + row] = -weight_moment[row];
+  }
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    row_upper_[kFirstNormalRow + limb] = held[limb] != nullptr && std::isfinite(held[limb]->normal_force_limit)
+                                             ? held[limb]->normal_force_limit
+                                             : kUnboundedRow;
+  }
+  // tau_j = -(tau_g_j + r_j) with r_j = sum of J_c(:, j) . f_c; sign * tau_j <= t * limit
+  // reads sign * r_j + limit * t >= -sign * tau_g_j.
+  for (int r = 0; r < static_cast<int>(joint_rows_.size()); ++r) {
+    row_lower_[kFirstJointRow + r] = -joint_rows_[r].sign * tau_g[joint_rows_[r].joint];
+  }
+
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const bool is_held = held[limb] != nullptr;
+    const FrictionConeGenerators generators =
+        is_held ? friction_cone_generators(*held[limb]) : FrictionConeGenerators{};
+    const Eigen::Vector3d lever = data.points[operational_point(limb)] - root;
+    const OperationalJacobian& jacobian = data.jacobians[operational_point(limb)];
+    for (int face = 0; face < kFrictionConeFaces; ++face) {
+      const int column = limb * kFrictionConeFaces + face;
+      column_upper_[column] = is_held ? kUnboundedRow : 0.0;
+      const Eigen::Vector3d edge = is_held ? generators[face] : Eigen::Vector3d::Zero();
+      const Eigen::Vector3d moment = lever.cross(edge);
+      for (int e = starts_[column]; e < starts_[column + 1]; ++e) {
+        const int row = rows_[e];
+        if (row < 3) {
+          values_[e] = edge[row];
+        } else if (row < kBalanceRows) {
+          values_[e] = moment[row - 3];
+        } else if (row < kFirstJointRow) {
+          values_[e] = 1.0;  // each edge has normal component 1
+        } else {
+          const JointRow& joint_row = joint_rows_[row - kFirstJointRow];
+          values_[e] = joint_row.sign * jacobian.col(joint_row.joint).dot(edge);
+        }
+      }
+    }
+  }
+  for (int e = starts_[kEffortColumn]; e < starts_[kEffortColumn + 1]; ++e) {
+    values_[e] = joint_rows_[rows_[e] - kFirstJointRow].limit;
+  }
+
+  ClpSimplex& solver = *solver_;
+  const int row_count = static_cast<int>(row_lower_.size());
+  // CLP copies the program in (it allocates there and in the solve); the last basis has
+  // the same rows and columns, so the primal simplex starts from it, and CLP keeps its work
+  // areas between solves (startFinishOptions 1): the fastest of the variants measured
+  // (docs/PERFORMANCE.md, "Static equilibrium").
+  solver.loadProblem(kEquilibriumColumns, row_count, starts_.data(), rows_.data(), values_.data(), column_lower_.data(),
+                     column_upper_.data(), objective_.data(), row_lower_.data(), row_upper_.data());
+  if (has_basis_) solver.copyinStatus(basis_.data());
+  solver.primal(0, 1);
+  if (!solver.isProvenOptimal() && !solver.isProvenPrimalInfeasible()) {
+    solver.allSlackBasis(true);
+    solver.primal();
+  }
+  if (!solver.isProvenOptimal() && !solver.isProvenPrimalInfeasible()) {
+    throw std::runtime_error("CLP neither solved the static equilibrium nor proved it infeasible");
+  }
+  std::copy_n(solver.statusArray(), basis_.size(), basis_.begin());
+  has_basis_ = true;
+
+  StaticEquilibriumResult& result = result_;
+  result.contact_forces.fill(Eigen::Vector3d::Zero());
+  result.joint_torques.setZero();
+  result.at_force_limit.fill(false);
+  result.binding_joint = -1;
+  if (solver.isProvenPrimalInfeasible()) {
+    result.feasible = result.balanced = false;
+    result.effort = std::numeric_limits<double>::infinity();
+    result.binding = EquilibriumBinding::Contacts;
+    return result;
+  }
+  const double* weights = solver.primalColumnSolution();
+  GeneralisedForce contact_forces = GeneralisedForce::Zero();
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    if (held[limb] == nullptr) continue;
+    const FrictionConeGenerators generators = friction_cone_generators(*held[limb]);
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();
+    double normal = 0.0;
+    for (int face = 0; face < kFrictionConeFaces; ++face) {
+      const double weight_k = std::max(0.0, weights[limb * kFrictionConeFaces + face]);
+      force += weight_k * generators[face];
+      normal += weight_k;
+    }
+    result.contact_forces[limb] = force;
+    result.at_force_limit[limb] = normal >= held[limb]->normal_force_limit - 1e-6;
+    contact_forces.noalias() += data.jacobians[operational_point(limb)].transpose() * force;
+  }
+  result.joint_torques = -(tau_g + contact_forces);
+  result.joint_torques.head<kRootDof>().setZero();
+  // The effort is t, the largest ratio: reported from the torques, with its joint.
+  result.effort = 0.0;
+  result.binding = EquilibriumBinding::None;
+  for (const JointRow& joint_row : joint_rows_) {
+    const double ratio = joint_row.sign * result.joint_torques[joint_row.joint] / joint_row.limit;
+    if (ratio > result.effort) {
+      result.effort = ratio;
+      result.binding_joint = joint_row.joint;
+      result.binding = joint_row.sign > 0 ? EquilibriumBinding::JointPositive : EquilibriumBinding::JointNegative;
+    }
+  }
+  result.balanced = true;
+  result.feasible = result.effort <= 1.0;
+  return result;
+}
+
+}  // namespace crux

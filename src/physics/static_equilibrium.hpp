@@ -1,0 +1,74 @@
+#pragma once
+// Whether a posture can be held still on its holds, and at what effort (docs/PHYSICS.md,
+// "Static equilibrium"): a linear program over the contact forces, solved with COIN-OR CLP.
+
+#include <array>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "body/body_data.hpp"
+#include "body/body_model.hpp"
+#include "body/gravity_forces.hpp"
+#include "physics/contact_model.hpp"
+#include "physics/strength_profile.hpp"
+
+class ClpSimplex;
+
+namespace crux {
+
+// What limits the stance: the joint whose torque-to-limit ratio is the effort, or, when
+// no equilibrium exists, the contacts (no forces in their cones and under their normal
+// force limits balance gravity; joint limits alone never make the program infeasible).
+enum class EquilibriumBinding { None, JointPositive, JointNegative, Contacts };
+
+struct StaticEquilibriumResult {
+  bool feasible = false;  // an equilibrium exists and effort <= 1
+  bool balanced = false;  // an equilibrium exists, within the contacts' limits, at any effort
+  // The largest torque-to-limit ratio, minimised over the equilibria; +infinity unbalanced.
+  double effort = 0.0;
+  // The force each hold exerts on its limb, newtons, limb order; zero for free limbs.
+  std::array<Eigen::Vector3d, kLimbCount> contact_forces;
+  // The torque each joint exerts, tau = -(tau_g + sum J_c^T f_c), newton-metres; zero on
+  // the three unactuated root translations.
+  GeneralisedForce joint_torques = GeneralisedForce::Zero();
+  EquilibriumBinding binding = EquilibriumBinding::None;
+  int binding_joint = -1;                         // coordinate of G for the Joint* bindings
+  std::array<bool, kLimbCount> at_force_limit{};  // normal force at its limit, within 1e-6
+};
+
+// One linear program, built once for a model and strength profile and reused (warm
+// started from the last basis) for every stance: one per thread, like BodyData.
+class StaticEquilibrium {
+ public:
+  StaticEquilibrium(const BodyModel& model, const StrengthProfile& strength);
+  ~StaticEquilibrium();
+  StaticEquilibrium(const StaticEquilibrium&) = delete;
+  StaticEquilibrium& operator=(const StaticEquilibrium&) = delete;
+
+  // The posture g held by `contacts` (at most one per limb, at the limb's grasp point).
+  // Places the body in `data`. A contact checked by check_contact is a precondition;
+  // two contacts of one limb are std::invalid_argument. The result stays valid until the
+  // next solve.
+  const StaticEquilibriumResult& solve(BodyData& data, const Posture& g, std::span<const PointContact> contacts,
+                                       const Eigen::Vector3d& gravity = kStandardGravity);
+
+ private:
+  struct JointRow {
+    int joint;
+    double sign;   // +1 bounds the torque from above by t * limit, -1 from below
+    double limit;  // newton-metres
+  };
+  const BodyModel& model_;
+  std::vector<JointRow> joint_rows_;
+  std::vector<int> starts_, rows_;
+  std::vector<double> values_, column_lower_, column_upper_, objective_, row_lower_, row_upper_;
+  std::vector<unsigned char> basis_;
+  bool has_basis_ = false;
+  std::unique_ptr<ClpSimplex> solver_;
+  StaticEquilibriumResult result_;
+};
+
+}  // namespace crux
