@@ -61,17 +61,7 @@ struct HangingLink {
 // grasp frames), all of whose mass hangs on `links` from a massless torso: the remaining
 // revolute joints are a massless chain, on which gravity exerts nothing.
 BodyModel hanging_chain_model(const std::string& name, const std::vector<HangingLink>& links) {
-  std::string urdf = "<robot name=\"hanging\"><link name=\"world\"/><link name=\"rx\"/><link name=\"ry\"/>";
-  urdf += "<link name=\"torso\"/>";
-  const char* const axes[kRootDof] = {"1 0 0", "0 1 0", "0 0 1"};
-  const char* const parents[kRootDof] = {"world", "rx", "ry"};
-  const char* const children[kRootDof] = {"rx", "ry", "torso"};
-  for (int i = 0; i < kRootDof; ++i) {
-    urdf += fmt::format(
-        "<joint name=\"root_{}\" type=\"prismatic\"><parent link=\"{}\"/><child link=\"{}\"/><axis xyz=\"{}\"/>"
-        "<limit lower=\"-100\" upper=\"100\" effort=\"1\" velocity=\"1\"/></joint>",
-        i, parents[i], children[i], axes[i]);
-  }
+  std::string urdf = "<robot name=\"hanging\">" + testing::root_translations_urdf() + "<link name=\"torso\"/>";
   const auto revolute = [&](const std::string& joint, const std::string& parent, const std::string& child,
                             const Eigen::Vector3d& origin, const char* axis) {
     urdf += fmt::format(

@@ -42,20 +42,11 @@ struct GraspFrame {
 // joints that carry nothing.
 BodyModel small_body(const std::string& name, double torso_mass, const std::vector<ArmLink>& arm,
                      const std::array<GraspFrame, kLimbCount>& grasps) {
-  std::string urdf = "<robot name=\"small\"><link name=\"world\"/><link name=\"rx\"/><link name=\"ry\"/>";
+  std::string urdf = "<robot name=\"small\">" + testing::root_translations_urdf();
   urdf += fmt::format(
       "<link name=\"torso\"><inertial><origin xyz=\"0 0 0\"/><mass value=\"{}\"/>"
       "<inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial></link>",
       torso_mass);
-  const char* const axes[kRootDof] = {"1 0 0", "0 1 0", "0 0 1"};
-  const char* const parents[kRootDof] = {"world", "rx", "ry"};
-  const char* const children[kRootDof] = {"rx", "ry", "torso"};
-  for (int i = 0; i < kRootDof; ++i) {
-    urdf += fmt::format(
-        "<joint name=\"root_{}\" type=\"prismatic\"><parent link=\"{}\"/><child link=\"{}\"/><axis xyz=\"{}\"/>"
-        "<limit lower=\"-100\" upper=\"100\" effort=\"1\" velocity=\"1\"/></joint>",
-        i, parents[i], children[i], axes[i]);
-  }
   const auto revolute = [&](const std::string& joint, const std::string& parent, const std::string& child,
                             const Eigen::Vector3d& origin, const char* axis) {
     urdf += fmt::format(

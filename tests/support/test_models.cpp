@@ -31,6 +31,20 @@ Posture random_posture(const BodyModel& model, Random& random, const Eigen::Vect
   return g;
 }
 
+std::string root_translations_urdf() {
+  std::string urdf = "<link name=\"world\"/><link name=\"rx\"/><link name=\"ry\"/>";
+  const char* const axes[kRootDof] = {"1 0 0", "0 1 0", "0 0 1"};
+  const char* const parents[kRootDof] = {"world", "rx", "ry"};
+  const char* const children[kRootDof] = {"rx", "ry", "torso"};
+  for (int i = 0; i < kRootDof; ++i) {
+    urdf += fmt::format(
+        "<joint name=\"root_{}\" type=\"prismatic\"><parent link=\"{}\"/><child link=\"{}\"/><axis xyz=\"{}\"/>"
+        "<limit lower=\"-100\" upper=\"100\" effort=\"1\" velocity=\"1\"/></joint>",
+        i, parents[i], children[i], axes[i]);
+  }
+  return urdf;
+}
+
 std::string synthetic_tree_urdf(std::uint64_t seed) {
   Random random(seed);
   std::ostringstream urdf;

@@ -21,6 +21,10 @@ Posture random_posture(const BodyModel& model, Random& random, const Eigen::Vect
 // revolute joints with random axes, origin rotations (rpy) and offsets, and masses.
 std::string synthetic_tree_urdf(std::uint64_t seed);
 
+// The start of a small inline URDF with crux's root: the links world, rx and ry and the
+// three prismatic root joints from the world to a link `torso`, which the caller declares.
+std::string root_translations_urdf();
+
 // The same with the human's own <mujoco> element, which MuJoCo needs to compile the
 // massless links and keep the fixed frames (models/crux_human.urdf says why).
 std::string synthetic_tree_urdf_for_mujoco(std::uint64_t seed);
