@@ -11,8 +11,4 @@ Eigen::Matrix3d wall_to_world(double incline_deg) {
   return Eigen::AngleAxisd(-incline_deg * std::numbers::pi / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
 }
 
-Eigen::Vector3d gravity_in_wall_frame(double incline_deg, double g) {
-  return wall_to_world(incline_deg).transpose() * Eigen::Vector3d(0.0, 0.0, -g);
-}
-
 }  // namespace crux

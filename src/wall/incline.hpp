@@ -11,14 +11,11 @@ namespace crux {
 
 // An incline must lie strictly between -kMaxInclineDeg and kMaxInclineDeg.
 inline constexpr double kMaxInclineDeg = 90.0;
-inline constexpr double kStandardGravityMagnitude = 9.81;  // m/s^2
 
 // The rotation that takes wall coordinates to the world's (z up): the wall's z axis is
-// (-sin theta, 0, cos theta) in the world.
+// (-sin theta, 0, cos theta) in the world. Its transpose turns world gravity into wall
+// coordinates, (-g sin theta, 0, -g cos theta): on an overhang part of it pulls the
+// climber away from the wall (towards -x).
 Eigen::Matrix3d wall_to_world(double incline_deg);
-
-// Gravity in wall coordinates: (-g sin theta, 0, -g cos theta), so that on an overhang
-// part of it pulls the climber away from the wall (towards -x).
-Eigen::Vector3d gravity_in_wall_frame(double incline_deg, double g = kStandardGravityMagnitude);
 
 }  // namespace crux

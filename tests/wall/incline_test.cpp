@@ -10,6 +10,10 @@
 namespace crux {
 namespace {
 
+Eigen::Vector3d gravity_in_wall_frame(double incline_deg) {
+  return wall_to_world(incline_deg).transpose() * Eigen::Vector3d(0.0, 0.0, -9.81);
+}
+
 // A 40-degree overhang leans its top towards the climber (x < 0), and gravity, in wall
 // coordinates, pulls partly away from the wall; a slab leans the other way.
 TEST(Incline, AnOverhangLeansTowardsTheClimberAndGravityPullsAwayFromTheWall) {
