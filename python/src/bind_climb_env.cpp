@@ -22,7 +22,7 @@ namespace crux::python {
 
 namespace {
 
-const ParameterSet kEnvKeys{{"experiment.urdf", "reward", "ik", "filter", "grid"}, {}};
+const ParameterSet kEnvKeys{{"experiment.urdf", "reward", "ik", "physics", "filter", "grid"}, {}};
 
 // Where the finishing move left the climber, described as any state: the MDP itself is
 // back at the start (Algorithm 2), but Gymnasium's terminal observation is this one.

@@ -24,7 +24,7 @@ namespace crux::cli {
 
 namespace {
 
-const ParameterSet kPlanKeys{{"experiment.urdf", "experiment.plan_max_solves", "ik", "filter", "wall"},
+const ParameterSet kPlanKeys{{"experiment.urdf", "experiment.plan_max_solves", "ik", "physics", "filter", "wall"},
                              {"wall.name", "wall.count"}};
 
 void require_wall(const ExperimentConfig& config) {

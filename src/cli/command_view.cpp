@@ -25,7 +25,7 @@ namespace crux::cli {
 namespace {
 
 // The IK settings solve a wall file's start; a run is drawn with its own config's.
-const ParameterSet kViewKeys{{"experiment.urdf", "wall.file", "ik"}, {"ik.cache_unreachable"}};
+const ParameterSet kViewKeys{{"experiment.urdf", "wall.file", "ik", "physics"}, {"ik.cache_unreachable"}};
 
 struct ViewCommand {
   ParameterBinding binding{"view", kViewKeys};
@@ -57,7 +57,7 @@ struct ViewCommand {
     const BodyModel model = load_configured_body(config);
     const Wall wall = load_wall(config.wall_file);
     const ReachabilityParameters& reach = config.settings.learning.climbing.reachability;
-    ConfigurationReacher reacher(model, wall, reach);
+    ConfigurationReacher reacher(model, wall, reach, config.settings.learning.climbing.physics);
     const Posture start = reacher.require_start(config.wall_file);
     write(model, start, wall, wall_view_caption(wall, output), reach);
   }

@@ -10,6 +10,7 @@ void add_model_command(CLI::App& app);
 void add_ik_commands(CLI::App& app);
 void add_demo_command(CLI::App& app);
 void add_filter_stats_command(CLI::App& app);
+void add_stances_command(CLI::App& app);
 void add_wall_command(CLI::App& app);
 void add_learning_commands(CLI::App& app);
 void add_sweep_command(CLI::App& app);

@@ -14,7 +14,7 @@ namespace crux {
 ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters)
     : wall_(wall),
       parameters_(parameters),
-      reacher_(model, wall, parameters.reachability),
+      reacher_(model, wall, parameters.reachability, parameters.physics),
       possible_(wall.hold_count()),
       candidates_(wall.hold_count()),
       tile_representative_(parameters.grid.tile_count()),
@@ -73,9 +73,13 @@ StepOutcome ClimbingMdp::step(ActionCode hold) {
   const Limb free = configuration_.free_limb();
   const HoldConfiguration complete = configuration_.with(free, hold);
   StepOutcome outcome;
-  const Posture* reached = reacher_.reach(posture_, complete);
+  const Posture* reached = reacher_.reach(posture_, complete, next_free_limb(free));
   if (reached == nullptr) {
     outcome.reward = parameters_.rewards.unreachable;
+    if (at_dead_end()) {
+      outcome.fell = true;
+      reset();
+    }
     return outcome;
   }
   outcome.reached = true;
@@ -95,6 +99,15 @@ StepOutcome ClimbingMdp::step(ActionCode hold) {
   configuration_ = complete.with(next_free_limb(free), kFree);
   describe(body);
   return outcome;
+}
+
+bool ClimbingMdp::at_dead_end() const {
+  const Limb free = configuration_.free_limb();
+  const Limb next = next_free_limb(free);
+  for (const ActionCandidate& candidate : candidates()) {
+    if (!reacher_.known_unreachable(configuration_.with(free, candidate.wall), next)) return false;
+  }
+  return true;
 }
 
 void ClimbingMdp::save_state(CheckpointWriter& out) const {

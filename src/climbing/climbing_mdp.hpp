@@ -25,12 +25,18 @@ struct ClimbingParameters {
   FilterParameters filter;
   GridParameters grid;
   ReachabilityParameters reachability;
+  PhysicsParameters physics;  // the kinematic model (the paper's) or the static one
   Rewards rewards;
 };
 
 struct StepOutcome {
   bool reached = false;   // the 4-configuration was C-reachable
   bool finished = false;  // ... and the centre of mass passed the finishing height
+  // Not reached, and now every candidate of the state is known unreachable: the climber
+  // cannot go on and falls; the MDP is back at the start. Only the static model has such
+  // dead ends (docs/MODEL.md, choice C27): under the kinematic one the hold just left is
+  // always reachable again.
+  bool fell = false;
   double reward = 0.0;
   double root_rise_m = 0.0;                                  // change of e0's height (0 when not reached)
   Eigen::Vector3d centre_of_mass = Eigen::Vector3d::Zero();  // at the new posture (zero when not reached)
@@ -77,6 +83,8 @@ class ClimbingMdp {
  private:
   // The state couple and candidates of configuration_, with `body` placed at posture_.
   void describe(const BodyData& body);
+  // Whether every candidate of the state is known unreachable.
+  bool at_dead_end() const;
 
   const Wall& wall_;
   ClimbingParameters parameters_;

@@ -7,17 +7,28 @@
 
 #include "body/body_data.hpp"
 #include "climbing/posture_cache.hpp"
+#include "climbing/stance_check.hpp"
 #include "configurations/reachability.hpp"
 
 namespace crux {
 
 class ConfigurationReacher {
  public:
-  ConfigurationReacher(const BodyModel& model, const Wall& wall, const ReachabilityParameters& parameters);
+  // Under the static model (physics.model) the IK keeps the body out of the wall
+  // whatever ik.wall says, and a reached posture must hold still (climbing/stance_check).
+  ConfigurationReacher(const BodyModel& model, const Wall& wall, const ReachabilityParameters& parameters,
+                       const PhysicsParameters& physics = {});
 
   // The posture grasping `complete`, solved by IK from `from` unless cached; null when
-  // not reachable. The pointer stays valid for the reacher's lifetime.
-  const Posture* reach(const Posture& from, const HoldConfiguration& complete);
+  // not reachable. `next_to_move` is the limb that lets go next (the static model checks
+  // the stance on the three holds left; the kinematic model ignores it, and caches by
+  // configuration alone, as the paper does). The pointer stays valid for the reacher's
+  // lifetime.
+  const Posture* reach(const Posture& from, const HoldConfiguration& complete, Limb next_to_move);
+
+  // Whether reach() already found `complete` unreachable (with the same next limb under
+  // the static model); false when ik.cache_unreachable keeps no such verdicts.
+  bool known_unreachable(const HoldConfiguration& complete, Limb next_to_move) const;
 
   // The start configuration solved from standing (and cached); null if unreachable.
   const Posture* reach_start();
@@ -36,10 +47,13 @@ class ConfigurationReacher {
   void load_state(CheckpointReader& in);
 
  private:
+  std::uint64_t cache_key(const HoldConfiguration& complete, Limb next_to_move) const;
+
   const BodyModel& model_;
   const Wall& wall_;
   ReachabilityParameters parameters_;
   BodyData data_;
+  std::optional<StanceCheck> stance_;  // the static model's
   PostureCache cache_;
   std::size_t solves_ = 0;
 };

@@ -14,6 +14,7 @@
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
 #include "common/printable.hpp"
+#include "experiments/stance_survey.hpp"
 #include "wall/incline.hpp"
 
 namespace crux {
@@ -95,7 +96,18 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        "The body and the wall: ignore (the paper's kinematic model), reject a solved posture that passes through it, "
        "or avoid (keep the body out while solving)",
        &c.wall_rule},
+      {"physics.model",
+       "kinematic (the paper's: IK alone decides) or static (the body kept out of the wall and each stance held "
+       "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md)",
+       &c.physics_model},
+      {"physics.friction", "Static model: Coulomb friction coefficient of every contact", &m.physics.friction},
+      {"physics.grip", "Static model: largest normal force of a hand on a hold (N)", &m.physics.grip},
+      {"physics.support_angle",
+       "Static model: a hold without a support direction pushes a hand up and this many degrees into the wall "
+       "(a jug's incut lip)",
+       &m.physics.support_angle_deg},
       {"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &c.compare_queries},
+      {"stances.moves", "Random kinematic moves per wall whose stances crux stances checks", &c.stance_moves},
       {"compare.walk_solver", "Solver whose reached postures start the next queries of ik-compare's climbing walk",
        &c.compare_walk_solver},
       {"filter.max_span", "Largest distance between two holds of a configuration (m)", &m.filter.max_span_m},
@@ -375,6 +387,16 @@ void finalize_config(ExperimentConfig& config) {
                      fmt::format("unknown rule '{}' (expected ignore, reject or avoid)", printable(config.wall_rule)));
   }
   s.learning.climbing.reachability.ik.wall = *wall_rule;
+  const auto physics_model = parse_physics_model(config.physics_model);
+  if (!physics_model) {
+    throw InputError("physics.model",
+                     fmt::format("unknown model '{}' (expected kinematic or static)", printable(config.physics_model)));
+  }
+  s.learning.climbing.physics.model = *physics_model;
+  require(s.learning.climbing.physics.friction >= 0, "physics.friction", "must be at least 0");
+  require(s.learning.climbing.physics.grip > 0, "physics.grip", "must be positive");
+  require(std::abs(s.learning.climbing.physics.support_angle_deg) <= 90.0, "physics.support_angle",
+          "must be from -90 to 90 degrees");
   const auto walk_solver = parse_ik_solver(config.compare_walk_solver);
   if (!walk_solver) {
     throw InputError("compare.walk_solver", fmt::format("unknown solver '{}' (expected fast or paper)",
@@ -382,6 +404,8 @@ void finalize_config(ExperimentConfig& config) {
   }
   config.compare_walk_solver_kind = *walk_solver;
   require(config.compare_queries > 0, "compare.queries", "must be positive");
+  require(config.stance_moves > 0 && config.stance_moves <= kMaxStanceMoves, "stances.moves",
+          fmt::format("must be from 1 to {}", kMaxStanceMoves));
   const auto planner = parse_planner(config.planner);
   if (!planner) {
     throw InputError("learning.planner",

@@ -35,12 +35,15 @@ struct ExperimentConfig {
   int beginning = 0;
   std::string solver = "fast";
   std::string wall_rule = wall_rule_name(WallRule::Ignore);
+  std::string physics_model = physics_model_name(PhysicsModel::Kinematic);
   std::string planner = planner_name(Planner::Uniform);
   std::string transfer = transfer_mode_name(TransferMode::Paper);
   std::string reading = reading_name(FilterParameters{}.feet_above_hands);
   // ik-compare: its climbing-like queries, and the solver whose reached postures start
   // the walk's next queries (parsed into compare_walk_solver_kind).
   int compare_queries = 2000;
+  // crux stances: random kinematic moves per wall whose stances it checks.
+  int stance_moves = 300;
   std::string compare_walk_solver = "paper";
   IkSolverKind compare_walk_solver_kind = IkSolverKind::Paper;
   // The [provenance] table of a config file read back (key -> value), to be checked

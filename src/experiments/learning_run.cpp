@@ -170,6 +170,7 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
     record.reward = outcome.reward;
     result.iterations.push_back(record);
     if (outcome.reached) climb.push_back(*outcome.posture);
+    if (outcome.fell) climb.assign(1, mdp.posture());  // the episode's climb starts again
     if (outcome.finished) {
       result.episode_lengths.push_back(iteration + 1 - episode_start);
       episode_start = iteration + 1;

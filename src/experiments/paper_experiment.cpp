@@ -57,7 +57,8 @@ ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& set
   for (int attempt = 0; attempt < kWallAttempts; ++attempt) {
     const std::uint64_t seed = derive_seed(stream, static_cast<std::uint64_t>(attempt));
     Wall wall = generate_random_wall(seed, settings.walls);
-    ConfigurationReacher reacher(model, wall, settings.learning.climbing.reachability);
+    ConfigurationReacher reacher(model, wall, settings.learning.climbing.reachability,
+                                 settings.learning.climbing.physics);
     if (reacher.reach_start() == nullptr) {
       out.rejected_seeds.push_back(seed);
       continue;

@@ -9,8 +9,8 @@
 namespace crux {
 
 ExperimentConfig read_run_config(const std::filesystem::path& path) {
-  static const ParameterSet kEveryKey{{"experiment", "learning", "reward", "ik", "compare", "filter", "grid", "wall"},
-                                      {}};
+  static const ParameterSet kEveryKey{
+      {"experiment", "learning", "reward", "ik", "physics", "compare", "filter", "grid", "wall"}, {}};
   const std::string file = path.string();
   ExperimentConfig config;
   const ConfigLines lines = apply_config_file(file, config, kEveryKey, "the run's config");

@@ -18,7 +18,7 @@ struct Node {
 
 Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
                    const PlanParameters& settings) {
-  ConfigurationReacher reacher(model, wall, parameters.reachability);
+  ConfigurationReacher reacher(model, wall, parameters.reachability, parameters.physics);
   const Posture* start = &reacher.require_start(wall.name);
   std::vector<Node> nodes{{start_configuration(wall).with(Limb::RightHand, kFree), start, -1, -1}};
   std::unordered_map<std::uint64_t, bool> seen{{encode(nodes[0].configuration, wall.hold_count()), true}};
@@ -54,7 +54,7 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
         break;
       }
       const HoldConfiguration complete = node.configuration.with(free, possible[i]);
-      const Posture* reached = reacher.reach(*node.posture, complete);
+      const Posture* reached = reacher.reach(*node.posture, complete, next_free_limb(free));
       if (reached == nullptr) continue;
       if (reacher.place(*reached).centre_of_mass.z() >= wall.finish_height) {
         finish(current, possible[i]);

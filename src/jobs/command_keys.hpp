@@ -11,16 +11,16 @@ namespace crux {
 inline const ParameterSet kTrainKeys{
     {"experiment.urdf", "experiment.seed", "experiment.iterations", "experiment.beginning",
      "experiment.threshold_length", "experiment.greedy_cap", "experiment.checkpoint_every", "experiment.transfer",
-     "learning", "reward", "ik", "filter", "grid", "wall"},
+     "learning", "reward", "ik", "physics", "filter", "grid", "wall"},
     {"wall.name", "wall.count"}};
 inline const ParameterSet kTransferKeys{
     {"experiment.urdf", "experiment.seed", "experiment.iterations", "experiment.beginning",
      "experiment.threshold_length", "experiment.greedy_cap", "experiment.checkpoint_every", "experiment.q_grid",
-     "experiment.transfer", "learning", "reward", "ik", "filter", "grid", "wall"},
+     "experiment.transfer", "learning", "reward", "ik", "physics", "filter", "grid", "wall"},
     {"wall.name", "wall.count"}};
 // The paper's experiment (crux paper): its walls are drawn from the experiment seed.
 inline const ParameterSet kPaperKeys{
-    {"experiment", "learning", "reward", "ik", "filter", "grid", "wall"},
+    {"experiment", "learning", "reward", "ik", "physics", "filter", "grid", "wall"},
     {"experiment.q_grid", "experiment.checkpoint_every", "wall.file", "wall.seed", "wall.name", "wall.count"}};
 
 // The IK's own keys (crux.solve_ik, crux.root_target); crux ik adds experiment.urdf,

@@ -46,6 +46,10 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
     if (step.episode != episode) continue;
     climb.steps.push_back(step);
     if (outcome.reached) climb.postures.push_back(*outcome.posture);
+    if (outcome.fell) {  // the episode's climb starts again: show its last attempt
+      climb.steps.clear();
+      climb.postures.assign(1, mdp.posture());
+    }
     climb.finished = outcome.finished;
   }
   return climb;

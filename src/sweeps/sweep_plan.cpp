@@ -12,9 +12,9 @@ namespace crux {
 bool shapes_walls(const std::string& key) {
   // The walls derive from the experiment seed and the wall and reachability keys; the
   // plan adds its budget and the filter (crux plan's keys).
-  static const ParameterSet kWallKeys{
-      {"experiment.seed", "experiment.urdf", "experiment.plan", "experiment.plan_max_solves", "ik", "filter", "wall"},
-      {}};
+  static const ParameterSet kWallKeys{{"experiment.seed", "experiment.urdf", "experiment.plan",
+                                       "experiment.plan_max_solves", "ik", "physics", "filter", "wall"},
+                                      {}};
   return kWallKeys.accepts(key);
 }
 

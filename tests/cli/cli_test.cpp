@@ -62,6 +62,45 @@ TEST(Cli, BadArgumentsExitWithCode2) {
   EXPECT_EQ(huge_grid.err.rfind("crux: --grid-columns: ", 0), 0u) << huge_grid.err;
 }
 
+// The static model's parameters: one line naming the flag, exit code 2, nothing written.
+TEST(Cli, BadPhysicsParametersAreOneLineNamingTheFlag) {
+  const std::filesystem::path never = testing::temporary_path("physics_never");
+  const struct {
+    std::string flags, message;
+  } cases[] = {
+      {"--physics-model dynamic", "crux: --physics-model: unknown model 'dynamic' (expected kinematic or static)"},
+      {"--physics-friction -0.5", "crux: --physics-friction: must be at least 0"},
+      {"--physics-grip 0", "crux: --physics-grip: must be positive"},
+      {"--physics-support-angle 91", "crux: --physics-support-angle: must be from -90 to 90 degrees"},
+  };
+  for (const auto& c : cases) {
+    for (const std::string& command :
+         {"train --wall-seed 3 --iterations 5 -o " + never.string() + " " + c.flags, "plan --wall-seed 3 " + c.flags}) {
+      const testing::Outcome run = testing::run_crux(command);
+      EXPECT_EQ(run.exit_code, 2) << command;
+      EXPECT_EQ(run.err, c.message + "\n") << command;
+    }
+  }
+  EXPECT_FALSE(std::filesystem::exists(never));
+}
+
+// crux stances surveys the stances of kinematic climbs under the static model's
+// parameters: its JSON adds up, and its own bound is one line naming the flag.
+TEST(Cli, StancesSurveysAndRefusesABadMoveCount) {
+  const testing::Outcome run = testing::run_crux("stances --wall-count 2 --stances-moves 40 --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_EQ(json["format"], "crux-stances");
+  EXPECT_EQ(json["moves_per_wall"], 40);
+  EXPECT_GT(json["stances"].get<int>(), 0);
+  int failures = 0;
+  for (const auto& [name, count] : json["four_failures"].items()) failures += count.get<int>();
+  EXPECT_EQ(json["four_held"].get<int>() + failures, json["stances"].get<int>());
+  const testing::Outcome refused = testing::run_crux("stances --stances-moves 0");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(refused.err, "crux: --stances-moves: must be from 1 to 100000\n");
+}
+
 // A refused value is quoted on one line with its control bytes escaped: a newline in it
 // cannot make two lines, nor an escape byte reach the terminal.
 TEST(Cli, RefusedValuesAreQuotedEscaped) {

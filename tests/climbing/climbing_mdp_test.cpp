@@ -117,6 +117,51 @@ TEST(ClimbingMdp, UnreachableStaysWithMinus1000AndReachableRotatesTheFreeLimb) {
   EXPECT_DOUBLE_EQ(moved.root_rise_m, mdp.posture()[2] - posture_before[2]);
 }
 
+// Under the static model a state can offer no reachable hold: on random wall 7, once the
+// right hand takes hold 14 and the left hand hold 20, every stance of the right foot
+// holds on four holds but none on the three left when the left foot lets go next (the
+// foot lies outside the hands' span: docs/PHYSICS.md). The climber tries each, and the
+// last failure is a fall: the MDP is back at the start. No earlier failure falls.
+TEST(ClimbingMdp, UnderTheStaticModelADeadEndIsAFallBackToTheStart) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = generate_random_wall(7);
+  ClimbingParameters parameters;
+  parameters.physics.model = PhysicsModel::Static;
+  ClimbingMdp mdp(model, wall, parameters);
+  ASSERT_TRUE(mdp.step(wall.index_of(14)).reached);
+  ASSERT_TRUE(mdp.step(wall.index_of(20)).reached);
+  ASSERT_EQ(mdp.configuration().free_limb(), Limb::RightFoot);
+  const HoldConfiguration dead_end = mdp.configuration();
+  std::vector<ActionCode> holds;
+  for (const ActionCandidate& c : mdp.candidates()) holds.push_back(c.wall);
+  ASSERT_GT(holds.size(), 3u);
+  for (std::size_t i = 0; i < holds.size(); ++i) {
+    const StepOutcome outcome = mdp.step(holds[i]);
+    ASSERT_FALSE(outcome.reached) << "hold " << wall.holds[holds[i]].id;
+    EXPECT_EQ(outcome.reward, -1000.0);
+    EXPECT_EQ(outcome.fell, i + 1 == holds.size()) << "hold " << wall.holds[holds[i]].id;
+    if (!outcome.fell) EXPECT_EQ(mdp.configuration().holds, dead_end.holds);
+  }
+  EXPECT_EQ(mdp.configuration().holds, start_configuration(wall).with(Limb::RightHand, kFree).holds);
+  EXPECT_EQ(mdp.posture(), mdp.start_posture());
+}
+
+// Under the kinematic model the hold just left is always reachable again (its
+// 4-configuration was reached), so no state is a dead end: 3000 random moves never fall.
+TEST(ClimbingMdp, TheKinematicModelNeverFalls) {
+  Fixture f;
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  Random pick(20261126);
+  int failures = 0;
+  for (int step = 0; step < 3000; ++step) {
+    const auto candidates = mdp.candidates();
+    const StepOutcome outcome = mdp.step(candidates[pick.below(candidates.size())].wall);
+    ASSERT_FALSE(outcome.fell) << "step " << step;
+    failures += !outcome.reached;
+  }
+  EXPECT_GT(failures, 300) << "the walk met many unreachable holds";
+}
+
 TEST(ClimbingMdp, IkRunsOncePer4Configuration) {
   Fixture f;
   ClimbingMdp mdp(f.model, f.wall, f.parameters);

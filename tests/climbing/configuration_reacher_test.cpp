@@ -79,7 +79,7 @@ TEST(ConfigurationReacher, ReachEnvelopeChangesNoVerdict) {
       }
       const ReachTarget target = reach_target(model, wall, complete, parameters.root);
       const IkResult direct = solve_ik(model, data, from, target, iterating);
-      const Posture* posture = reacher.reach(from, complete);
+      const Posture* posture = reacher.reach(from, complete, Limb::RightHand);
       ASSERT_EQ(posture != nullptr, direct.reached) << "seed " << kSeed << " sample " << sample;
       if (posture != nullptr) {
         EXPECT_EQ(*posture, direct.posture) << "seed " << kSeed << " sample " << sample;
@@ -90,6 +90,43 @@ TEST(ConfigurationReacher, ReachEnvelopeChangesNoVerdict) {
     EXPECT_GT(reached, samples / 20);
     EXPECT_GT(ruled_out, samples / 2) << "most holds are out of reach";
   }
+}
+
+// Under the static model a verdict depends on the limb that lets go next (the stance
+// must hold on the three holds left), so the cache keeps one per limb; the body is kept
+// out of the wall whatever ik.wall says. The kinematic model keeps one verdict per
+// configuration. Random wall 7, after the right hand takes hold 14 and the left hand
+// hold 20: the right foot on hold 2 holds on four holds but not on three once the left
+// foot lets go (ClimbingMdp.UnderTheStaticModelADeadEndIsAFallBackToTheStart).
+TEST(ConfigurationReacher, StaticVerdictsAreKeptPerLimbThatLetsGoNext) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = generate_random_wall(7);
+  const HoldConfiguration complete = start_configuration(wall)
+                                         .with(Limb::RightHand, wall.index_of(14))
+                                         .with(Limb::LeftHand, wall.index_of(20))
+                                         .with(Limb::RightFoot, wall.index_of(2));
+  ReachabilityParameters ignore_the_wall;  // ik.wall = ignore, which the static model overrides
+  ConfigurationReacher kinematic(model, wall, ignore_the_wall);
+  ConfigurationReacher stance(model, wall, ignore_the_wall, PhysicsParameters{PhysicsModel::Static});
+  const Posture& from = kinematic.require_start(wall.name);
+  ASSERT_NE(kinematic.reach(from, complete, Limb::LeftFoot), nullptr);
+  EXPECT_EQ(stance.reach(from, complete, Limb::LeftFoot), nullptr);
+  EXPECT_TRUE(stance.known_unreachable(complete, Limb::LeftFoot));
+  EXPECT_FALSE(stance.known_unreachable(complete, Limb::RightHand)) << "another limb's verdict is not known yet";
+  const std::size_t solves = stance.solves();
+  stance.reach(from, complete, Limb::RightHand);
+  EXPECT_EQ(stance.solves(), solves + 1) << "a new verdict for another next limb";
+  stance.reach(from, complete, Limb::LeftFoot);
+  EXPECT_EQ(stance.solves(), solves + 1) << "the cached verdict";
+  EXPECT_FALSE(kinematic.known_unreachable(complete, Limb::RightHand));
+
+  ReachabilityParameters avoid = ignore_the_wall;
+  avoid.ik.wall = WallRule::Avoid;
+  ConfigurationReacher avoiding(model, wall, avoid);
+  const Posture* avoided = avoiding.reach(from, complete, Limb::RightHand);
+  const Posture* held = stance.reach(from, complete, Limb::RightHand);
+  ASSERT_EQ(avoided != nullptr, held != nullptr || !avoiding.known_unreachable(complete, Limb::RightHand));
+  if (held != nullptr) EXPECT_EQ(*held, *avoided) << "the static model solves the IK as ik.wall = avoid does";
 }
 
 }  // namespace

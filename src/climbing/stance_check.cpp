@@ -1,0 +1,75 @@
+#include "climbing/stance_check.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "common/input_error.hpp"
+#include "physics/strength_profile.hpp"
+#include "wall/incline.hpp"
+
+namespace crux {
+
+const char* physics_model_name(PhysicsModel model) { return model == PhysicsModel::Static ? "static" : "kinematic"; }
+
+std::optional<PhysicsModel> parse_physics_model(std::string_view name) {
+  if (name == "kinematic") return PhysicsModel::Kinematic;
+  if (name == "static") return PhysicsModel::Static;
+  return std::nullopt;
+}
+
+namespace {
+
+// The static model scales the body's strength by its mass and stature (the loader
+// refuses a body without mass): a body without the head-top frame cannot be checked.
+const BodyModel& weighed_body(const BodyModel& model) {
+  if (!(model.stature > 0.0)) {
+    throw InputError(model.source, fmt::format("the static model (physics.model) needs the body's stature, from its "
+                                               "'{}' frame, and the body has none",
+                                               model.head_top_frame));
+  }
+  return model;
+}
+
+}  // namespace
+
+StanceCheck::StanceCheck(const BodyModel& model, const Wall& wall, const PhysicsParameters& physics)
+    : model_(weighed_body(model)),
+      wall_(wall),
+      physics_(physics),
+      gravity_(wall_to_world(wall.incline_deg).transpose() * kStandardGravity),
+      data_(model),
+      equilibrium_(model, published_strength_profile(model, model.total_mass, model.stature)) {}
+
+const StaticEquilibriumResult& StanceCheck::solve(const Posture& posture, const HoldConfiguration& configuration) {
+  const double angle = physics_.support_angle_deg * std::numbers::pi / 180.0;
+  // A hand hooks the incut lip of a jug, which pushes it up and into the wall; a foot
+  // stands on the hold's top, which pushes it up.
+  const Eigen::Vector3d lip(std::sin(angle), 0.0, std::cos(angle));
+  const Eigen::Vector3d top = Eigen::Vector3d::UnitZ();
+  std::array<PointContact, kLimbCount> contacts;
+  int count = 0;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const int hold = configuration.holds[limb];
+    if (hold == kFree) continue;
+    PointContact& contact = contacts[count++];
+    contact.limb = static_cast<Limb>(limb);
+    const bool hand = limb == static_cast<int>(Limb::RightHand) || limb == static_cast<int>(Limb::LeftHand);
+    contact.support_direction = wall_.holds[hold].support.value_or(hand ? lip : top);
+    contact.friction = physics_.friction;
+    contact.normal_force_limit = limb == static_cast<int>(Limb::RightHand) || limb == static_cast<int>(Limb::LeftHand)
+                                     ? physics_.grip
+                                     : std::numeric_limits<double>::infinity();
+  }
+  return equilibrium_.solve(data_, posture, std::span<const PointContact>(contacts.data(), count), gravity_);
+}
+
+bool StanceCheck::holds_still(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move) {
+  if (!solve(posture, complete).feasible) return false;
+  return solve(posture, complete.with(next_to_move, kFree)).feasible;
+}
+
+}  // namespace crux

@@ -1,0 +1,56 @@
+#pragma once
+// The static model (physics.model = "static"; docs/MODEL.md, choice C26; docs/PHYSICS.md):
+// a posture the IK reached (with the body kept out of the wall) counts only if it can be
+// held still twice over, as Bretl's planner checks: on its four holds, and on the three
+// left when the next limb to move lets go. Each hold is a point contact
+// (physics/contact_model) in the wall's gravity (wall/incline); the forces and the joint
+// torques come from one linear program (physics/static_equilibrium) per check.
+
+#include <optional>
+#include <string_view>
+
+#include "configurations/hold_configuration.hpp"
+#include "physics/static_equilibrium.hpp"
+#include "wall/wall.hpp"
+
+namespace crux {
+
+enum class PhysicsModel { Kinematic, Static };
+const char* physics_model_name(PhysicsModel model);
+std::optional<PhysicsModel> parse_physics_model(std::string_view name);
+
+struct PhysicsParameters {
+  PhysicsModel model = PhysicsModel::Kinematic;  // the paper's, and the default
+  // Coulomb's coefficient of every contact (a choice: the paper and the sources are silent).
+  double friction = 1.0;
+  // The largest normal force of a hand on a hold, newtons: the largest mean maximal force
+  // of advanced climbers on a 4 cm edge in Amca et al. (J. Sports Sci. 2012), the deepest
+  // hold they measured. Feet are bounded by the legs' joint torques and friction only.
+  double grip = 575.7;
+  // A hold without a support direction in its wall file: a hand hooks its incut lip,
+  // which pushes up and this many degrees into the wall (a jug); a foot stands on its
+  // top, which pushes straight up the wall.
+  double support_angle_deg = 45.0;
+};
+
+// Whether postures hold still on their holds, for one wall: one linear program, reused.
+class StanceCheck {
+ public:
+  StanceCheck(const BodyModel& model, const Wall& wall, const PhysicsParameters& physics);
+
+  // On the four holds of `complete`, and on three once `next_to_move` lets go.
+  bool holds_still(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move);
+
+  // The stance on the holds of `configuration` (kFree limbs hold nothing), and its result.
+  const StaticEquilibriumResult& solve(const Posture& posture, const HoldConfiguration& configuration);
+
+ private:
+  const BodyModel& model_;
+  const Wall& wall_;
+  PhysicsParameters physics_;
+  Eigen::Vector3d gravity_;
+  BodyData data_;
+  StaticEquilibrium equilibrium_;
+};
+
+}  // namespace crux
