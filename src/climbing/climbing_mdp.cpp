@@ -84,16 +84,17 @@ StepOutcome ClimbingMdp::step(ActionCode hold) {
   }
   outcome.reached = true;
   outcome.posture = reached;
+  outcome.effort = reacher_.effort(complete, next_free_limb(free));
   outcome.root_rise_m = (*reached)[2] - posture_[2];  // G[2] is e0's height
   const BodyData& body = reacher_.place(*reached);
   outcome.centre_of_mass = body.centre_of_mass;
   if (body.centre_of_mass.z() >= wall_.finish_height) {
     outcome.finished = true;
-    outcome.reward = parameters_.rewards.finish;
+    outcome.reward = parameters_.rewards.finish - parameters_.rewards.effort * outcome.effort;
     reset();
     return outcome;
   }
-  outcome.reward = parameters_.rewards.step;
+  outcome.reward = parameters_.rewards.step - parameters_.rewards.effort * outcome.effort;
   posture_ = *reached;
   left_hold_ = complete.hold(next_free_limb(free));
   configuration_ = complete.with(next_free_limb(free), kFree);

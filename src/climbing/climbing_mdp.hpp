@@ -19,6 +19,9 @@ struct Rewards {
   double unreachable = -1000.0;  // stay in place
   double step = -1.0;            // a reachable 4-configuration
   double finish = 200000.0;      // the centre of mass passed the finishing height
+  // Subtracted per unit of a reached stance's effort (the static model's; docs/MODEL.md,
+  // choice C28): 0, the paper's rewards, by default.
+  double effort = 0.0;
 };
 
 struct ClimbingParameters {
@@ -38,7 +41,8 @@ struct StepOutcome {
   // always reachable again.
   bool fell = false;
   double reward = 0.0;
-  double root_rise_m = 0.0;                                  // change of e0's height (0 when not reached)
+  double root_rise_m = 0.0;  // change of e0's height (0 when not reached)
+  double effort = 0.0;       // the reached stance's under the static model (0 otherwise, and when not reached)
   Eigen::Vector3d centre_of_mass = Eigen::Vector3d::Zero();  // at the new posture (zero when not reached)
   // The posture that grasps the new 4-configuration, also on the finishing move (after
   // which the MDP is back at the start); null when not reached. Owned by the MDP's cache.

@@ -1,5 +1,8 @@
 #include "climbing/configuration_reacher.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include "body/kinematics.hpp"
 #include "common/checkpoint_stream.hpp"
 #include "common/input_error.hpp"
@@ -21,6 +24,11 @@ std::uint64_t ConfigurationReacher::cache_key(const HoldConfiguration& complete,
   return stance_ ? configuration_code * kLimbCount + static_cast<std::uint64_t>(next_to_move) : configuration_code;
 }
 
+double ConfigurationReacher::effort(const HoldConfiguration& complete, Limb next_to_move) const {
+  if (!stance_) return 0.0;
+  return efforts_.at(cache_key(complete, next_to_move));
+}
+
 bool ConfigurationReacher::known_unreachable(const HoldConfiguration& complete, Limb next_to_move) const {
   return cache_.known_unreachable(cache_key(complete, next_to_move));
 }
@@ -32,7 +40,14 @@ const Posture* ConfigurationReacher::reach(const Posture& from, const HoldConfig
   const ReachTarget target = reach_target(model_, wall_, complete, parameters_.root);
   const IkResult result = solve_ik(model_, data_, from, target, parameters_.ik);
   ++solves_;
-  if (result.reached && (!stance_ || stance_->holds_still(result.posture, complete, next_to_move))) {
+  if (result.reached && stance_) {
+    const double effort = stance_->effort(result.posture, complete, next_to_move);
+    if (effort <= 1.0) {
+      efforts_.emplace(code, effort);
+      cache_.store_reached(code, result.posture);
+      return cache_.reached(code);
+    }
+  } else if (result.reached) {
     cache_.store_reached(code, result.posture);
     return cache_.reached(code);
   }
@@ -61,11 +76,31 @@ const BodyData& ConfigurationReacher::place(const Posture& posture) {
 void ConfigurationReacher::save_state(CheckpointWriter& out) const {
   cache_.save_state(out);
   out.value<std::uint64_t>(solves_);
+  if (!stance_) return;  // the kinematic model's checkpoints stay as they were
+  std::vector<std::pair<std::uint64_t, double>> efforts(efforts_.begin(), efforts_.end());
+  std::sort(efforts.begin(), efforts.end());  // the same bytes whatever the map's order
+  out.value<std::uint64_t>(efforts.size());
+  for (const auto& [code, effort] : efforts) {
+    out.value(code);
+    out.value(effort);
+  }
+  stance_->save_state(out);
 }
 
 void ConfigurationReacher::load_state(CheckpointReader& in) {
   cache_.load_state(in);
   solves_ = in.value<std::uint64_t>();
+  efforts_.clear();
+  if (!stance_) return;
+  const std::uint64_t count = in.value<std::uint64_t>();
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const std::uint64_t code = in.value<std::uint64_t>();
+    const double effort = in.value<double>();
+    if (cache_.reached(code) == nullptr || !(effort >= 0.0 && effort <= 1.0)) in.fail();
+    efforts_.emplace(code, effort);
+  }
+  if (efforts_.size() != cache_.reached_count()) in.fail();
+  stance_->load_state(in);
 }
 
 }  // namespace crux

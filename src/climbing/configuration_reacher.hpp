@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include <unordered_map>
+
 #include "body/body_data.hpp"
 #include "climbing/posture_cache.hpp"
 #include "climbing/stance_check.hpp"
@@ -25,6 +27,11 @@ class ConfigurationReacher {
   // configuration alone, as the paper does). The pointer stays valid for the reacher's
   // lifetime.
   const Posture* reach(const Posture& from, const HoldConfiguration& complete, Limb next_to_move);
+
+  // Under the static model, the effort of the stance reach() reached for `complete` and
+  // `next_to_move` (StanceCheck::effort); 0 under the kinematic model, which has none.
+  // reach() must have returned a posture for them.
+  double effort(const HoldConfiguration& complete, Limb next_to_move) const;
 
   // Whether reach() already found `complete` unreachable (with the same next limb under
   // the static model); false when ik.cache_unreachable keeps no such verdicts.
@@ -55,6 +62,9 @@ class ConfigurationReacher {
   BodyData data_;
   std::optional<StanceCheck> stance_;  // the static model's
   PostureCache cache_;
+  // The static model's efforts of the reached stances, by cache key: kept with the
+  // verdicts (and in checkpoints), so that a resumed run reads the same numbers.
+  std::unordered_map<std::uint64_t, double> efforts_;
   std::size_t solves_ = 0;
 };
 

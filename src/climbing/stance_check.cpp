@@ -1,5 +1,6 @@
 #include "climbing/stance_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -67,9 +68,10 @@ const StaticEquilibriumResult& StanceCheck::solve(const Posture& posture, const 
   return equilibrium_.solve(data_, posture, std::span<const PointContact>(contacts.data(), count), gravity_);
 }
 
-bool StanceCheck::holds_still(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move) {
-  if (!solve(posture, complete).feasible) return false;
-  return solve(posture, complete.with(next_to_move, kFree)).feasible;
+double StanceCheck::effort(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move) {
+  const double on_four = solve(posture, complete).effort;
+  if (!(on_four <= 1.0)) return on_four;  // the three-hold stance is not needed to refuse it
+  return std::max(on_four, solve(posture, complete.with(next_to_move, kFree)).effort);
 }
 
 }  // namespace crux

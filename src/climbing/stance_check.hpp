@@ -38,8 +38,17 @@ class StanceCheck {
  public:
   StanceCheck(const BodyModel& model, const Wall& wall, const PhysicsParameters& physics);
 
-  // On the four holds of `complete`, and on three once `next_to_move` lets go.
-  bool holds_still(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move);
+  // The stance's effort: the larger of the efforts on the four holds of `complete` and
+  // on the three left once `next_to_move` lets go (+infinity when either cannot
+  // balance). The posture holds still when it is at most 1.
+  double effort(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move);
+  bool holds_still(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move) {
+    return effort(posture, complete, next_to_move) <= 1.0;
+  }
+
+  // The program's warm-start basis, for a run's checkpoint (StaticEquilibrium::save_basis).
+  void save_state(CheckpointWriter& out) const { equilibrium_.save_basis(out); }
+  void load_state(CheckpointReader& in) { equilibrium_.load_basis(in); }
 
   // The stance on the holds of `configuration` (kFree limbs hold nothing), and its result.
   const StaticEquilibriumResult& solve(const Posture& posture, const HoldConfiguration& configuration);

@@ -68,6 +68,9 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"reward.unreachable", "Reward of an unreachable 4-configuration", &m.rewards.unreachable},
       {"reward.step", "Reward of a reachable 4-configuration", &m.rewards.step},
       {"reward.finish", "Reward when the centre of mass passes the finishing height", &m.rewards.finish},
+      {"reward.effort",
+       "Static model: subtracted from a reached move's reward per unit of its stance's effort (0: the paper's rewards)",
+       &m.rewards.effort},
       {"ik.solver", "IK solver: fast or paper (Algorithm 1)", &c.solver},
       {"ik.alpha", "Step size of the paper's gradient descent", &ik.paper.step_size},
       {"ik.time_step", "Simulated seconds per IK iteration (both solvers)", &ik.time_step_s},
@@ -393,6 +396,11 @@ void finalize_config(ExperimentConfig& config) {
                      fmt::format("unknown model '{}' (expected kinematic or static)", printable(config.physics_model)));
   }
   s.learning.climbing.physics.model = *physics_model;
+  const double effort_penalty = s.learning.climbing.rewards.effort;
+  require(effort_penalty >= 0.0 && std::isfinite(effort_penalty), "reward.effort",
+          "must be a finite number, 0 or more");
+  require(effort_penalty == 0.0 || *physics_model == PhysicsModel::Static, "reward.effort",
+          "needs physics.model = static: the kinematic model has no effort");
   require(s.learning.climbing.physics.friction >= 0, "physics.friction", "must be at least 0");
   require(s.learning.climbing.physics.grip > 0, "physics.grip", "must be positive");
   require(std::abs(s.learning.climbing.physics.support_angle_deg) <= 90.0, "physics.support_angle",

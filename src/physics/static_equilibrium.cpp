@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "body/kinematics.hpp"
+#include "common/checkpoint_stream.hpp"
 
 namespace crux {
 namespace {
@@ -139,13 +140,15 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
   ClpSimplex& solver = *solver_;
   const int row_count = static_cast<int>(row_lower_.size());
   // CLP copies the program in (it allocates there and in the solve); the last basis has
-  // the same rows and columns, so the primal simplex starts from it, and CLP keeps its work
-  // areas between solves (startFinishOptions 1): the fastest of the variants measured
+  // the same rows and columns, so the primal simplex starts from it. CLP does not keep its
+  // work areas between solves (startFinishOptions 0): keeping them was 9 % faster, but
+  // made the result depend on more than the program and the basis, so a run resumed from
+  // a checkpoint (which restores the basis) drifted in the efforts' last bits
   // (docs/PERFORMANCE.md, "Static equilibrium").
   solver.loadProblem(kEquilibriumColumns, row_count, starts_.data(), rows_.data(), values_.data(), column_lower_.data(),
                      column_upper_.data(), objective_.data(), row_lower_.data(), row_upper_.data());
   if (has_basis_) solver.copyinStatus(basis_.data());
-  solver.primal(0, 1);
+  solver.primal(0, 0);
   if (!solver.isProvenOptimal() && !solver.isProvenPrimalInfeasible()) {
     solver.allSlackBasis(true);
     solver.primal();
@@ -199,6 +202,18 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
   result.balanced = true;
   result.feasible = result.effort <= 1.0;
   return result;
+}
+
+void StaticEquilibrium::save_basis(CheckpointWriter& out) const {
+  out.value<std::uint8_t>(has_basis_ ? 1 : 0);
+  out.vector(basis_);
+}
+
+void StaticEquilibrium::load_basis(CheckpointReader& in) {
+  has_basis_ = in.flag();
+  const std::vector<unsigned char> basis = in.vector<unsigned char>();
+  if (basis.size() != basis_.size()) in.fail();
+  basis_ = basis;
 }
 
 }  // namespace crux

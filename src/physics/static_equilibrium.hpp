@@ -19,6 +19,9 @@ class ClpSimplex;
 
 namespace crux {
 
+class CheckpointReader;
+class CheckpointWriter;
+
 // What limits the stance: the joint whose torque-to-limit ratio is the effort, or, when
 // no equilibrium exists, the contacts (no forces in their cones and under their normal
 // force limits balance gravity; joint limits alone never make the program infeasible).
@@ -54,6 +57,12 @@ class StaticEquilibrium {
   // next solve.
   const StaticEquilibriumResult& solve(BodyData& data, const Posture& g, std::span<const PointContact> contacts,
                                        const Eigen::Vector3d& gravity = kStandardGravity);
+
+  // The basis the next solve starts from, for a run's checkpoint: a warm start from
+  // another basis may end on another optimal vertex, with an effort that differs in its
+  // last bits, so a resumed run restores it to continue bit for bit.
+  void save_basis(CheckpointWriter& out) const;
+  void load_basis(CheckpointReader& in);
 
  private:
   struct JointRow {

@@ -218,46 +218,90 @@ TEST(ClimbingMdp, EveryGridActionHasExactlyOneRepresentative) {
   for (const auto& [tile, count] : representatives) EXPECT_EQ(count, 1) << "tile " << tile;
 }
 
-// An MDP restored mid-climb offers the same state and candidates, answers the same
-// steps with the same postures, and keeps the reacher's cache and solve count.
+// An MDP restored mid-climb, under either model, offers the same state and candidates, answers the same
+// steps with the same postures and rewards, and keeps the reacher's cache, its efforts
+// (the static model's, in the rewards when reward.effort is set) and solve count.
 TEST(ClimbingMdp, ARestoredMdpContinuesAsTheSavedOne) {
   Fixture f;
-  ClimbingMdp mdp(f.model, f.wall, f.parameters);
-  const auto first_reachable = [](ClimbingMdp& m) {
-    for (const ActionCandidate& c : std::vector<ActionCandidate>(m.candidates().begin(), m.candidates().end())) {
-      if (m.step(c.wall).reached) return;
-    }
-  };
-  first_reachable(mdp);
-  first_reachable(mdp);
-  CheckpointWriter out;
-  mdp.save_state(out);
-  const std::string bytes = out.take();
-  ClimbingMdp restored(f.model, f.wall, f.parameters);
-  CheckpointReader in(bytes, "test");
-  restored.load_state(in);
-  EXPECT_TRUE(in.at_end());
-  EXPECT_EQ(restored.state().wall, mdp.state().wall);
-  EXPECT_EQ(restored.state().grid, mdp.state().grid);
-  EXPECT_EQ(restored.posture(), mdp.posture());
-  EXPECT_EQ(restored.left_hold(), mdp.left_hold());
-  EXPECT_EQ(restored.reacher().solves(), mdp.reacher().solves());
-  ASSERT_EQ(restored.candidates().size(), mdp.candidates().size());
-  for (std::size_t i = 0; i < mdp.candidates().size(); ++i) {
-    EXPECT_EQ(restored.candidates()[i].wall, mdp.candidates()[i].wall);
-    EXPECT_EQ(restored.candidates()[i].grid, mdp.candidates()[i].grid);
-    EXPECT_EQ(restored.candidates()[i].represents_grid_action, mdp.candidates()[i].represents_grid_action);
-  }
-  for (int step = 0; step < 6 && !mdp.candidates().empty(); ++step) {
-    const ActionCode hold = mdp.candidates()[static_cast<std::size_t>(step) % mdp.candidates().size()].wall;
-    const StepOutcome a = mdp.step(hold), b = restored.step(hold);
-    ASSERT_EQ(a.reached, b.reached) << "step " << step;
-    if (a.reached) {
-      EXPECT_EQ(*a.posture, *b.posture);
-    }
+  for (const PhysicsModel physics : {PhysicsModel::Kinematic, PhysicsModel::Static}) {
+    SCOPED_TRACE(physics_model_name(physics));
+    f.parameters.physics.model = physics;
+    f.parameters.rewards.effort = physics == PhysicsModel::Static ? 2.0 : 0.0;
+    ClimbingMdp mdp(f.model, f.wall, f.parameters);
+    const auto first_reachable = [](ClimbingMdp& m) {
+      for (const ActionCandidate& c : std::vector<ActionCandidate>(m.candidates().begin(), m.candidates().end())) {
+        if (m.step(c.wall).reached) return;
+      }
+    };
+    first_reachable(mdp);
+    first_reachable(mdp);
+    CheckpointWriter out;
+    mdp.save_state(out);
+    const std::string bytes = out.take();
+    ClimbingMdp restored(f.model, f.wall, f.parameters);
+    CheckpointReader in(bytes, "test");
+    restored.load_state(in);
+    EXPECT_TRUE(in.at_end());
     EXPECT_EQ(restored.state().wall, mdp.state().wall);
+    EXPECT_EQ(restored.state().grid, mdp.state().grid);
+    EXPECT_EQ(restored.posture(), mdp.posture());
+    EXPECT_EQ(restored.left_hold(), mdp.left_hold());
+    EXPECT_EQ(restored.reacher().solves(), mdp.reacher().solves());
+    ASSERT_EQ(restored.candidates().size(), mdp.candidates().size());
+    for (std::size_t i = 0; i < mdp.candidates().size(); ++i) {
+      EXPECT_EQ(restored.candidates()[i].wall, mdp.candidates()[i].wall);
+      EXPECT_EQ(restored.candidates()[i].grid, mdp.candidates()[i].grid);
+      EXPECT_EQ(restored.candidates()[i].represents_grid_action, mdp.candidates()[i].represents_grid_action);
+    }
+    int reached = 0;
+    for (int step = 0; step < 12 && !mdp.candidates().empty(); ++step) {
+      const ActionCode hold = mdp.candidates()[static_cast<std::size_t>(step) % mdp.candidates().size()].wall;
+      const StepOutcome a = mdp.step(hold), b = restored.step(hold);
+      ASSERT_EQ(a.reached, b.reached) << "step " << step;
+      EXPECT_EQ(a.reward, b.reward) << "step " << step;
+      EXPECT_EQ(a.effort, b.effort) << "step " << step;
+      if (a.reached) {
+        EXPECT_EQ(*a.posture, *b.posture);
+        ++reached;
+      }
+      EXPECT_EQ(restored.state().wall, mdp.state().wall);
+    }
+    EXPECT_GT(reached, 0);
+    EXPECT_EQ(restored.reacher().solves(), mdp.reacher().solves());
   }
-  EXPECT_EQ(restored.reacher().solves(), mdp.reacher().solves());
+}
+
+// reward.effort: a reached move's reward is reward.step minus the penalty times its
+// stance's effort, the larger of the efforts on four holds and on the three left
+// (StanceCheck::effort, recomputed here); unreached moves keep reward.unreachable.
+TEST(ClimbingMdp, TheEffortPenaltyIsProportionalToTheStancesEffort) {
+  Fixture f;
+  f.parameters.physics.model = PhysicsModel::Static;
+  f.parameters.rewards.effort = 3.0;
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  StanceCheck check(f.model, f.wall, f.parameters.physics);
+  Random pick(20261126);
+  int reached = 0;
+  for (int step = 0; step < 200 && reached < 10; ++step) {
+    const auto candidates = mdp.candidates();
+    const ActionCode hold = candidates[pick.below(candidates.size())].wall;
+    const Limb free = mdp.configuration().free_limb();
+    const HoldConfiguration complete = mdp.configuration().with(free, hold);
+    const StepOutcome outcome = mdp.step(hold);
+    if (!outcome.reached) {
+      EXPECT_EQ(outcome.reward, -1000.0);
+      EXPECT_EQ(outcome.effort, 0.0);
+      continue;
+    }
+    ++reached;
+    const double effort = check.effort(*outcome.posture, complete, next_free_limb(free));
+    EXPECT_NEAR(outcome.effort, effort, 1e-9) << "step " << step;
+    EXPECT_GT(outcome.effort, 0.0);
+    EXPECT_LE(outcome.effort, 1.0);
+    const double base = outcome.finished ? 200000.0 : -1.0;
+    EXPECT_DOUBLE_EQ(outcome.reward, base - 3.0 * outcome.effort) << "step " << step;
+  }
+  EXPECT_EQ(reached, 10);
 }
 
 // After a reached move, the flag marks exactly the candidate that puts the newly freed
