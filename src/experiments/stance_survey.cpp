@@ -6,6 +6,8 @@
 #include "common/input_error.hpp"
 #include "common/random.hpp"
 #include "common/random_stream.hpp"
+#include "configurations/reachability.hpp"
+#include "ik/ik_path.hpp"
 #include "wall/random_wall.hpp"
 
 namespace crux {
@@ -18,9 +20,16 @@ struct SurveyedStance {
   Limb next;
 };
 
+// A reached move: the posture it starts from and the three holds kept while it is made.
+struct SurveyedMove {
+  Posture from, to;
+  HoldConfiguration kept, complete;
+};
+
 // The distinct stances a random walk of kinematic moves reaches, body out of the wall.
 std::vector<SurveyedStance> walk(const BodyModel& model, const Wall& wall, const StanceSurveyParameters& parameters,
-                                 const RandomStream& moves, std::uint64_t wall_index, bool& start_reached) {
+                                 const RandomStream& moves, std::uint64_t wall_index, bool& start_reached,
+                                 std::vector<SurveyedMove>& reached_moves) {
   ClimbingParameters kinematic = parameters.climbing;
   kinematic.physics.model = PhysicsModel::Kinematic;
   kinematic.reachability.ik.wall = WallRule::Avoid;
@@ -33,9 +42,12 @@ std::vector<SurveyedStance> walk(const BodyModel& model, const Wall& wall, const
       const auto candidates = mdp.candidates();
       const ActionCode hold = candidates[moves.below(candidates.size(), wall_index, move)].wall;
       const Limb free = mdp.configuration().free_limb();
-      const HoldConfiguration complete = mdp.configuration().with(free, hold);
+      const HoldConfiguration kept = mdp.configuration();
+      const HoldConfiguration complete = kept.with(free, hold);
+      const Posture from = mdp.posture();
       const StepOutcome outcome = mdp.step(hold);
       if (!outcome.reached) continue;
+      reached_moves.push_back({from, *outcome.posture, kept, complete});
       const Limb next = next_free_limb(free);
       const std::uint64_t key = encode(complete, wall.hold_count()) * kLimbCount + static_cast<std::uint64_t>(next);
       if (seen.insert(key).second) stances.push_back({*outcome.posture, complete, next});
@@ -55,7 +67,31 @@ std::string failure(StanceCheck& check, StanceCheck& gripless, const BodyModel& 
       gripless.solve(posture, configuration).balanced ? StanceVerdict::Grip : StanceVerdict::Contacts, {});
 }
 
+// The replay's samples of each move, before its last (the new stance, checked on its
+// own), on the three holds kept during the move; only moves whose start holds on them.
+void check_paths(const BodyModel& model, const Wall& wall, const StanceSurveyParameters& parameters,
+                 const std::vector<SurveyedMove>& moves, StanceCheck& check, StanceTally& tally) {
+  BodyData data(model);
+  std::vector<Posture> path, samples;
+  for (const SurveyedMove& move : moves) {
+    if (!check.solve(move.from, move.kept).feasible) continue;
+    const ReachTarget target = reach_target(model, wall, move.complete, parameters.climbing.reachability.root);
+    ik_path_samples(model, data, move.from, move.to, target, parameters.climbing.reachability.ik,
+                    parameters.path_samples, path, samples);
+    int failing = 0;
+    for (std::size_t i = 0; i + 1 < samples.size(); ++i) failing += !check.solve(samples[i], move.kept).feasible;
+    ++tally.path_moves;
+    tally.path_moves_failing += failing > 0;
+    tally.path_samples += static_cast<int>(samples.size()) - 1;
+    tally.path_samples_failing += failing;
+  }
+}
+
 void add(StanceTally& into, const StanceTally& from) {
+  into.path_moves += from.path_moves;
+  into.path_moves_failing += from.path_moves_failing;
+  into.path_samples += from.path_samples;
+  into.path_samples_failing += from.path_samples_failing;
   into.stances += from.stances;
   into.four_held += from.four_held;
   into.three_held += from.three_held;
@@ -89,8 +125,9 @@ StanceSurvey survey_stances(const BodyModel& model, const StanceSurveyParameters
     WallStances& surveyed = survey.walls.emplace_back();
     surveyed.seed = derive_seed(parameters.wall_seed, static_cast<std::uint64_t>(i));
     const Wall wall = generate_random_wall(surveyed.seed, parameters.walls);
+    std::vector<SurveyedMove> reached_moves;
     const std::vector<SurveyedStance> stances =
-        walk(model, wall, parameters, moves, static_cast<std::uint64_t>(i), surveyed.start_reached);
+        walk(model, wall, parameters, moves, static_cast<std::uint64_t>(i), surveyed.start_reached, reached_moves);
     StanceCheck check(model, wall, parameters.climbing.physics);
     StanceCheck gripless(model, wall, gripless_physics);
     StanceTally& tally = surveyed.tally;
@@ -110,6 +147,7 @@ StanceSurvey survey_stances(const BodyModel& model, const StanceSurveyParameters
       }
       ++tally.three_held;
     }
+    check_paths(model, wall, parameters, reached_moves, check, tally);
     add(survey.total, tally);
     if (progress) progress(i + 1);
   }

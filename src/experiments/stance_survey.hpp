@@ -30,6 +30,11 @@ struct StanceTally {
   // Failures on four holds, and on three among those held on four: by verdict, and for
   // Joint by the joint's name.
   std::map<std::string, int> four_failures, three_failures;
+  // The movements between stances as the replay draws them (ik/ik_path): reached moves
+  // whose start holds on the three holds kept during the move, and of those the moves
+  // with a sample that does not; the samples before the last, and those that fail.
+  int path_moves = 0, path_moves_failing = 0;
+  int path_samples = 0, path_samples_failing = 0;
 };
 
 struct WallStances {
@@ -49,7 +54,8 @@ inline constexpr int kMaxStanceMoves = 100000;
 struct StanceSurveyParameters {
   std::uint64_t wall_seed = 1;  // wall i from derive_seed(wall_seed, i), as crux filter-stats
   int wall_count = 30;
-  int moves = 300;  // random moves per wall
+  int moves = 300;        // random moves per wall
+  int path_samples = 16;  // samples per movement, as the replay draws (the last is the new stance)
   RandomWallParameters walls;
   ClimbingParameters climbing;  // its physics are the static model's parameters
 };

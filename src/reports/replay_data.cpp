@@ -12,7 +12,7 @@
 #include "body/kinematics.hpp"
 #include "common/input_error.hpp"
 #include "configurations/hold_configuration.hpp"
-#include "ik/ik_solver.hpp"
+#include "ik/ik_path.hpp"
 
 namespace crux {
 namespace {
@@ -53,27 +53,6 @@ class FrameWriter {
   std::vector<double> values_;
   int count_ = 0;
 };
-
-// Frames along an IK path at equal joint-space distances (the solver's first iterates
-// move far more than its last), joined linearly to `end`: the last frame is exactly
-// `end`, the recorded posture.
-void add_path_frames(const std::vector<Posture>& path, const Posture& end, int count, FrameWriter& frames) {
-  std::vector<double> distance(path.size(), 0.0);
-  for (std::size_t i = 1; i < path.size(); ++i) distance[i] = distance[i - 1] + (path[i] - path[i - 1]).norm();
-  std::size_t segment = 1;
-  for (int f = 1; f <= count; ++f) {
-    const double fraction = static_cast<double>(f) / count;
-    Posture on_path = path.back();
-    if (distance.back() > 0) {
-      const double wanted = fraction * distance.back();
-      while (segment + 1 < path.size() && distance[segment] < wanted) ++segment;
-      const double length = distance[segment] - distance[segment - 1];
-      const double t = length > 0 ? std::clamp((wanted - distance[segment - 1]) / length, 0.0, 1.0) : 1.0;
-      on_path = (1 - t) * path[segment - 1] + t * path[segment];
-    }
-    frames.add((1 - fraction) * on_path + fraction * end);
-  }
-}
 
 }  // namespace
 
@@ -146,7 +125,7 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
   if (!climb.postures.empty()) frames.add(climb.postures.front());
   HoldConfiguration configuration = start_configuration(wall).with(Limb::RightHand, kFree);
   std::size_t posture = 0;  // index into the climb of the body's current posture
-  std::vector<Posture> path;
+  std::vector<Posture> path, samples;
   const std::size_t shown = std::min(climb.steps.size(), static_cast<std::size_t>(std::max(settings.max_moves, 0)));
   for (const RunStep& step : std::span(climb.steps).first(shown)) {
     const Limb free = configuration.free_limb();
@@ -161,15 +140,8 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
       const Posture& from = climb.postures[posture];
       const Posture& to = climb.postures[posture + 1];
       const ReachTarget target = reach_target(model, wall, complete, reach.root);
-      forward_kinematics(model, data, from);
-      // A move that the posture already grasps (back to the hold just left, say) needs no
-      // path; the gradient descent would wander off and come back.
-      if (target_reached(data.points, target, ik.tolerances)) {
-        path.assign(1, from);
-      } else {
-        solve_ik(model, data, from, target, ik, PathRecorder{&path, 1});
-      }
-      add_path_frames(path, to, settings.frames_per_move, frames);
+      ik_path_samples(model, data, from, to, target, ik, settings.frames_per_move, path, samples);
+      for (const Posture& sample : samples) frames.add(sample);
       ++posture;
       configuration = complete.with(next_free_limb(free), kFree);
     } else {

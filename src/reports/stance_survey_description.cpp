@@ -87,6 +87,11 @@ nlohmann::ordered_json stance_survey_json(const StanceSurvey& survey, const Stan
           {"share_four_held", share_json(shares.four)},
           {"share_three_held_of_four_held", share_json(shares.three_of_four)},
           {"share_held", share_json(shares.both)},
+          {"path_samples_per_move", parameters.path_samples},
+          {"path_moves", survey.total.path_moves},
+          {"path_moves_failing", survey.total.path_moves_failing},
+          {"path_samples", survey.total.path_samples},
+          {"path_samples_failing", survey.total.path_samples_failing},
           {"four_failures", failures_json(survey.total.four_failures)},
           {"three_failures", failures_json(survey.total.three_failures)},
           {"walls", walls}};
@@ -115,6 +120,14 @@ std::string stance_survey_text(const StanceSurvey& survey, const StanceSurveyPar
   text += fmt::format("  why {} stances held on four fail on three: {}", total.four_held - total.three_held,
                       total.three_failures.empty() ? "" : "\n");
   text += failures_text(total.three_failures, total.four_held - total.three_held);
+  const auto percent = [](int part, int whole) { return whole > 0 ? 100.0 * part / whole : 0.0; };
+  text += fmt::format(
+      "  the movements between stances, as the replay draws them ({} samples a move): of {} reached moves that start "
+      "held on the three holds they keep, {} ({:.1f} %) pass through a posture that does not hold on them ({} of {} "
+      "samples, {:.1f} %)\n",
+      parameters.path_samples, total.path_moves, total.path_moves_failing,
+      percent(total.path_moves_failing, total.path_moves), total.path_samples_failing, total.path_samples,
+      percent(total.path_samples_failing, total.path_samples));
   text +=
       "  (grip: it balances once the hands' grip is unbounded; contacts: no forces in the friction cones balance "
       "it; a joint's name: it balances, above that joint's torque limit)\n";

@@ -43,6 +43,13 @@ TEST(StanceSurvey, EveryStanceIsCountedOnceWithOneReason) {
     sums.four_held += t.four_held;
     sums.three_held += t.three_held;
   }
+  // The replay's 16 samples a move, the last being the new stance (checked as one):
+  // 15 checked per move; a move fails when one of them does.
+  const StanceTally& total = survey.total;
+  EXPECT_EQ(total.path_samples, 15 * total.path_moves);
+  EXPECT_GT(total.path_moves, 20);
+  EXPECT_LE(total.path_moves_failing, total.path_samples_failing);
+  EXPECT_LE(total.path_samples_failing, 15 * total.path_moves_failing);
   EXPECT_EQ(survey.total.stances, sums.stances);
   EXPECT_EQ(survey.total.four_held, sums.four_held);
   EXPECT_EQ(survey.total.three_held, sums.three_held);

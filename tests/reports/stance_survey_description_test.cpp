@@ -22,7 +22,11 @@ StanceSurvey hand_built() {
                   28,
                   19,
                   {{"contacts", 1}, {"left_elbow_flexion", 1}},
-                  {{"contacts", 3}, {"grip", 1}, {"left_elbow_flexion", 5}}};
+                  {{"contacts", 3}, {"grip", 1}, {"left_elbow_flexion", 5}},
+                  40,
+                  3,
+                  600,
+                  7};
   return survey;
 }
 
@@ -47,6 +51,10 @@ TEST(StanceSurveyDescription, JsonSharesAreMeansOverWallsWithTheirTIntervals) {
   EXPECT_EQ(three.key(), "left_elbow_flexion");
   EXPECT_EQ(three.value(), 5);
   EXPECT_EQ((++three).key(), "contacts");
+  EXPECT_EQ(json["path_samples_per_move"], 16);
+  EXPECT_EQ(json["path_moves"], 40);
+  EXPECT_EQ(json["path_moves_failing"], 3);
+  EXPECT_EQ(json["path_samples_failing"], 7);
   EXPECT_EQ(json["walls"].size(), 3u);
   EXPECT_EQ(json["walls"][2]["start_reached"], false);
 }
@@ -61,6 +69,10 @@ TEST(StanceSurveyDescription, TextGivesTheSharesAndTheReasons) {
       << text;
   EXPECT_NE(text.find("why 9 stances held on four fail on three"), std::string::npos) << text;
   EXPECT_NE(text.find("left_elbow_flexion                5  (55.6 %)"), std::string::npos) << text;
+  EXPECT_NE(text.find("of 40 reached moves that start held on the three holds they keep, 3 (7.5 %) pass through a "
+                      "posture that does not hold on them (7 of 600 samples, 1.2 %)"),
+            std::string::npos)
+      << text;
 }
 
 }  // namespace
