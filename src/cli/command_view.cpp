@@ -2,6 +2,7 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -46,7 +47,7 @@ struct ViewCommand {
     if (output.empty()) throw InputError("--output", "give the SVG file to write");
     if (!run.empty()) {
       for (const ConfigField& field : config_fields(config)) {
-        if (field.key.rfind("ik.", 0) == 0 && binding.is_set(field.key)) {
+        if ((field.key.rfind("ik.", 0) == 0 || field.key.rfind("physics.", 0) == 0) && binding.is_set(field.key)) {
           throw InputError(binding.where(field.key), "not used with --run: a run is drawn with its own config.toml");
         }
       }
@@ -59,7 +60,8 @@ struct ViewCommand {
     const ReachabilityParameters& reach = config.settings.learning.climbing.reachability;
     ConfigurationReacher reacher(model, wall, reach, config.settings.learning.climbing.physics);
     const Posture start = reacher.require_start(config.wall_file);
-    write(model, start, wall, wall_view_caption(wall, output), reach);
+    write(model, start, wall, wall_view_caption(wall, output), reach, config.settings.learning.climbing.physics,
+          start_configuration(wall));
   }
 
   void draw_run(ExperimentConfig& config) {
@@ -77,22 +79,32 @@ struct ViewCommand {
                                              climb.postures.size() - 1, step));
     }
     write(model, climb.postures[step], folder.wall, run_view_caption(folder, climb, step, output),
-          climbing.reachability);
+          climbing.reachability, climbing.physics, climb_configuration(folder.wall, climb, step));
   }
 
   void check_output(const ExperimentConfig& config) const {
     check_output_file(output, {run, config.wall_file, configured_urdf_path(config), binding.config_path()});
   }
 
+  // Under the static model the drawing and the JSON add what holds the posture on the
+  // holds of `configuration`.
   void write(const BodyModel& model, const Posture& posture, const Wall& wall, const ViewCaption& plain,
-             const ReachabilityParameters& reach) const {
-    const ViewCaption caption = with_wall_note(plain, model, posture);
+             const ReachabilityParameters& reach, const PhysicsParameters& physics,
+             const HoldConfiguration& configuration) const {
+    ViewCaption caption = with_wall_note(plain, model, posture);
     BodySvgOptions options;
+    options.grasp_radius = reach.ik.tolerances.grasp_radius;
+    std::optional<StanceLoads> loads;
+    if (physics.model == PhysicsModel::Static) {
+      StanceCheck check(model, wall, physics);
+      loads = check.loads(posture, configuration);
+      options.loads = &*loads;
+      caption = with_stance_note(caption, model, *loads);
+    }
     options.title = caption.title;
     options.subtitle = caption.subtitle;
-    options.grasp_radius = reach.ik.tolerances.grasp_radius;
     write_file_atomically(output, render_body_svg(model, posture, wall, options));
-    std::cout << (json ? view_json(model, posture, caption).dump(2) + "\n" : view_text(caption));
+    std::cout << (json ? view_json(model, posture, caption, options.loads).dump(2) + "\n" : view_text(caption));
   }
 };
 

@@ -43,7 +43,8 @@ StanceCheck::StanceCheck(const BodyModel& model, const Wall& wall, const Physics
       physics_(physics),
       gravity_(wall_to_world(wall.incline_deg).transpose() * kStandardGravity),
       data_(model),
-      equilibrium_(model, published_strength_profile(model, model.total_mass, model.stature)) {}
+      strength_(published_strength_profile(model, model.total_mass, model.stature)),
+      equilibrium_(model, strength_) {}
 
 const StaticEquilibriumResult& StanceCheck::solve(const Posture& posture, const HoldConfiguration& configuration) {
   const double angle = physics_.support_angle_deg * std::numbers::pi / 180.0;
@@ -72,6 +73,24 @@ double StanceCheck::effort(const Posture& posture, const HoldConfiguration& comp
   const double on_four = solve(posture, complete).effort;
   if (!(on_four <= 1.0)) return on_four;  // the three-hold stance is not needed to refuse it
   return std::max(on_four, solve(posture, complete.with(next_to_move, kFree)).effort);
+}
+
+StanceLoads StanceCheck::loads(const Posture& posture, const HoldConfiguration& configuration) {
+  const StaticEquilibriumResult& result = solve(posture, configuration);
+  StanceLoads loads;
+  loads.balanced = result.balanced;
+  loads.effort = result.effort;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    loads.held[limb] = configuration.holds[limb] != kFree;
+    loads.forces[limb] = result.contact_forces[limb];
+  }
+  if (!result.balanced) return loads;
+  for (int j = kRootDof; j < kConfigurationDof; ++j) {
+    const double torque = result.joint_torques[j];
+    const double limit = torque >= 0.0 ? strength_.joints[j].positive : strength_.joints[j].negative;
+    if (std::isfinite(limit)) loads.joint_ratios.emplace_back(j, std::abs(torque) / limit);
+  }
+  return loads;
 }
 
 }  // namespace crux

@@ -8,6 +8,8 @@
 
 #include <optional>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "configurations/hold_configuration.hpp"
 #include "physics/static_equilibrium.hpp"
@@ -33,6 +35,18 @@ struct PhysicsParameters {
   double support_angle_deg = 45.0;
 };
 
+// What holds a posture still on its holds, to draw it (crux view; docs/OUTPUTS.md).
+struct StanceLoads {
+  bool balanced = false;  // an equilibrium exists within the contacts' limits
+  double effort = 0.0;    // +infinity when not balanced
+  std::array<bool, kLimbCount> held{};
+  // The force of each held hold on its limb, newtons, wall coordinates.
+  std::array<Eigen::Vector3d, kLimbCount> forces{};
+  // Each bounded joint's torque over its limit in the torque's direction, by coordinate
+  // of G (empty when not balanced).
+  std::vector<std::pair<int, double>> joint_ratios;
+};
+
 // Whether postures hold still on their holds, for one wall: one linear program, reused.
 class StanceCheck {
  public:
@@ -53,12 +67,16 @@ class StanceCheck {
   // The stance on the holds of `configuration` (kFree limbs hold nothing), and its result.
   const StaticEquilibriumResult& solve(const Posture& posture, const HoldConfiguration& configuration);
 
+  // The same stance's forces and torque ratios.
+  StanceLoads loads(const Posture& posture, const HoldConfiguration& configuration);
+
  private:
   const BodyModel& model_;
   const Wall& wall_;
   PhysicsParameters physics_;
   Eigen::Vector3d gravity_;
   BodyData data_;
+  StrengthProfile strength_;
   StaticEquilibrium equilibrium_;
 };
 

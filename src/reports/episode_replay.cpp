@@ -55,6 +55,21 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
   return climb;
 }
 
+HoldConfiguration climb_configuration(const Wall& wall, const RecordedClimb& climb, int posture) {
+  HoldConfiguration complete = start_configuration(wall);
+  HoldConfiguration held = complete.with(Limb::RightHand, kFree);
+  int reached = 0;
+  for (const RunStep& step : climb.steps) {
+    if (reached == posture) break;
+    if (!step.success) continue;
+    const Limb free = held.free_limb();
+    complete = held.with(free, wall.index_of(step.hold_id));
+    held = complete.with(next_free_limb(free), kFree);
+    ++reached;
+  }
+  return complete;
+}
+
 RecordedClimb climb_to_show(const RunFolder& folder, const BodyModel& model, const ClimbingParameters& parameters,
                             const std::string& choice, const std::string& flag) {
   if (choice == "greedy" || choice == "last") return chosen_climb(folder, choice);

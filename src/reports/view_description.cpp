@@ -38,7 +38,26 @@ ViewCaption with_wall_note(ViewCaption caption, const BodyModel& model, const Po
   return caption;
 }
 
-nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption) {
+ViewCaption with_stance_note(ViewCaption caption, const BodyModel& model, const StanceLoads& loads) {
+  if (!loads.balanced) {
+    caption.subtitle += "; static model: no forces on these holds balance it";
+    return caption;
+  }
+  int binding = -1;
+  double largest = -1.0;
+  for (const auto& [joint, ratio] : loads.joint_ratios) {
+    if (ratio > largest) {
+      largest = ratio;
+      binding = joint;
+    }
+  }
+  caption.subtitle += fmt::format("; static model: {} at effort {:.2f}{}", loads.effort <= 1.0 ? "held" : "not held",
+                                  loads.effort, binding >= 0 ? fmt::format(" ({})", model.joints[binding].name) : "");
+  return caption;
+}
+
+nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption,
+                                 const StanceLoads* loads) {
   BodyData data(model);
   forward_kinematics(model, data, posture);
   const WallPenetration penetration = wall_penetration(model, data);
@@ -60,6 +79,20 @@ nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture,
       {"depth_m", penetration.depth_m},
       {"link", penetration.visual < 0 ? nlohmann::ordered_json()
                                       : nlohmann::ordered_json(model.visuals[penetration.visual].link)}};
+  if (loads == nullptr) return out;
+  nlohmann::ordered_json forces = nlohmann::ordered_json::object();
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    if (!loads->held[limb] || !loads->balanced) continue;
+    const Eigen::Vector3d& f = loads->forces[limb];
+    forces[limb_name(static_cast<Limb>(limb))] = {f.x(), f.y(), f.z()};
+  }
+  nlohmann::ordered_json ratios = nlohmann::ordered_json::object();
+  for (const auto& [joint, ratio] : loads->joint_ratios) ratios[model.joints[joint].name] = ratio;
+  out["stance"] = {{"balanced", loads->balanced},
+                   {"feasible", loads->balanced && loads->effort <= 1.0},
+                   {"effort", loads->balanced ? nlohmann::ordered_json(loads->effort) : nlohmann::ordered_json()},
+                   {"contact_forces_n", forces},
+                   {"torque_to_limit", ratios}};
   return out;
 }
 

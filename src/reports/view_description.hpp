@@ -8,6 +8,7 @@
 
 #include "body/body_model.hpp"
 #include "body/wall_penetration.hpp"
+#include "climbing/stance_check.hpp"
 #include "reports/run_folder.hpp"
 
 namespace crux {
@@ -27,10 +28,16 @@ ViewCaption wall_view_caption(const Wall& wall, const std::string& svg);
 // does, so a drawn posture may pass through it.
 ViewCaption with_wall_note(ViewCaption caption, const BodyModel& model, const Posture& posture);
 
+// The caption with the static model's verdict on the posture: "static model: held at
+// effort 0.11", "... not held: effort 1.40 (left shoulder flexion)" or "... cannot balance".
+ViewCaption with_stance_note(ViewCaption caption, const BodyModel& model, const StanceLoads& loads);
+
 // "the head is 0.061 m inside the wall", or "" when the body stays out of it.
 std::string wall_penetration_note(const BodyModel& model, const WallPenetration& penetration);
 
-nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption);
+// With the static model's `loads` (null under the kinematic model): their `stance`.
+nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption,
+                                 const StanceLoads* loads = nullptr);
 std::string view_text(const ViewCaption& caption);
 
 }  // namespace crux

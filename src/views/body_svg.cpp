@@ -280,6 +280,7 @@ class BodyFigure {
     write_holds(view);
     write_body(view);
     write_grasp_spheres(view);
+    if (options_.loads != nullptr) write_loads(view, *options_.loads);
     out_ += "</g>\n";
   }
 
@@ -336,6 +337,40 @@ class BodyFigure {
     out_ += "</g>\n";
   }
 
+  // The joints' torque ratios as dots, then the contact forces as arrows over them.
+  void write_loads(const View& view, const StanceLoads& loads) {
+    out_ += "<g class=\"joint-torques\" stroke=\"#333333\" stroke-width=\"0.6\">\n";
+    for (const auto& [joint, ratio] : loads.joint_ratios) {
+      const Eigen::Vector3d origin = tilt_ * data_.placements[joint].origin;
+      const Point c = view.project(origin);
+      append_format(
+          out_, "<circle data-joint=\"{}\" data-ratio=\"{:.3f}\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\"/>\n",
+          xml_escaped(model_.joints[joint].name), ratio, c[0], c[1], torque_ratio_colour(ratio));
+    }
+    out_ += "</g>\n<g class=\"contact-forces\">\n";
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      if (!loads.held[limb] || !loads.balanced) continue;
+      const Eigen::Vector3d from = grasp_point(limb);
+      const Eigen::Vector3d to = from + tilt_ * loads.forces[limb] * kMetresPerNewton;
+      write_arrow(view.project(from), view.project(to), kLimbStyles[limb].code, loads.forces[limb].norm());
+    }
+    out_ += "</g>\n";
+  }
+
+  // A line and its head (6 pixels long), the line naming the limb and the force for tools.
+  void write_arrow(const Point& from, const Point& to, const char* limb, double newtons) {
+    append_format(out_,
+                  "<line data-limb=\"{}\" data-newtons=\"{:.1f}\" x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" "
+                  "y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"2\"/>\n",
+                  limb, newtons, from[0], from[1], to[0], to[1], kForceColour);
+    const double dx = to[0] - from[0], dy = to[1] - from[1], length = std::hypot(dx, dy);
+    if (length < 1e-9) return;
+    const double ux = dx / length, uy = dy / length;
+    append_format(out_, "<polygon fill=\"{}\" points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\"/>\n", kForceColour,
+                  to[0], to[1], to[0] - 6 * ux - 3 * uy, to[1] - 6 * uy + 3 * ux, to[0] - 6 * ux + 3 * uy,
+                  to[1] - 6 * uy - 3 * ux);
+  }
+
   // A hold, each limb's grasp sphere, the finishing height.
   std::vector<LegendItem> legend_items() const {
     std::vector<LegendItem> items{{"hold", [](std::string& svg, double x, double y) {
@@ -350,6 +385,23 @@ class BodyFigure {
                              "stroke=\"{2}\" stroke-width=\"1.5\"/>\n",
                              x + 12, y, style.colour);
                        }});
+    }
+    if (options_.loads != nullptr) {
+      items.push_back({"contact force, 0.1 m per 100 N", [](std::string& svg, double x, double y) {
+                         append_format(svg,
+                                       "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" "
+                                       "stroke-width=\"2\"/>\n",
+                                       x, y, x + 24, y, kForceColour);
+                       }});
+      for (const double ratio : {0.0, 0.5, 1.0}) {
+        items.push_back(
+            {fmt::format("joint torque {:g} x its limit", ratio), [ratio](std::string& svg, double x, double y) {
+               append_format(svg,
+                             "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\" stroke=\"#333333\" "
+                             "stroke-width=\"0.6\"/>\n",
+                             x + 12, y, torque_ratio_colour(ratio));
+             }});
+      }
     }
     items.push_back({fmt::format("finish height, {:.2f} m{}", wall_.finish_height,
                                  wall_.incline_deg != 0.0 ? " along the wall" : ""),
@@ -373,6 +425,19 @@ class BodyFigure {
 };
 
 }  // namespace
+
+std::string torque_ratio_colour(double ratio) {
+  // Green (26, 152, 80) to yellow (254, 224, 139) to red (215, 48, 39), as ColorBrewer's RdYlGn.
+  constexpr std::array<std::array<double, 3>, 3> stops{{{26, 152, 80}, {254, 224, 139}, {215, 48, 39}}};
+  const double t = std::clamp(std::isfinite(ratio) ? ratio : 1.0, 0.0, 1.0) * 2.0;
+  const int segment = std::min(static_cast<int>(t), 1);
+  const double f = t - segment;
+  std::array<int, 3> rgb{};
+  for (int c = 0; c < 3; ++c) {
+    rgb[c] = static_cast<int>(std::lround((1 - f) * stops[segment][c] + f * stops[segment + 1][c]));
+  }
+  return fmt::format("#{:02x}{:02x}{:02x}", rgb[0], rgb[1], rgb[2]);
+}
 
 std::string render_body_svg(const BodyModel& model, const Posture& posture, const Wall& wall,
                             const BodySvgOptions& options) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "body/body_model.hpp"
+#include "climbing/stance_check.hpp"
 #include "wall/wall.hpp"
 
 namespace crux {
@@ -16,7 +17,18 @@ struct BodySvgOptions {
   double grasp_radius = 0.04;  // the grasp spheres drawn at the four grasp points
   std::string title;
   std::string subtitle;
+  // The static model's loads at this posture: each held limb's contact force, an arrow
+  // from its grasp point (kMetresPerNewton), and each bounded joint's torque-to-limit
+  // ratio, a dot at the joint coloured from green (0) through yellow to red (1 and over).
+  // Null: neither is drawn.
+  const StanceLoads* loads = nullptr;
 };
+
+// The contact force arrows' scale: 100 N is drawn 0.1 m long.
+inline constexpr double kMetresPerNewton = 0.001;
+
+// The colour of a torque-to-limit ratio: green at 0, yellow at 0.5, red from 1 on.
+std::string torque_ratio_colour(double ratio);
 
 // A standalone SVG 1.1 document; deterministic. Throws std::invalid_argument for a
 // non-positive scale.

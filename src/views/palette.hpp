@@ -41,6 +41,9 @@ struct Stroke {
   std::string_view dash;  // an SVG stroke-dasharray, e.g. "6 4"; empty for a solid line
 };
 
+// The static model's contact forces, in the body view and the replay.
+inline constexpr const char* kForceColour = "#222222";
+
 // The finishing height, in the wall and body views and their legends.
 inline constexpr Stroke kFinishStroke{kDarkGrey, 1.2, "6 4"};
 

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
@@ -102,6 +103,27 @@ TEST(Cli, StancesSurveysAndRefusesABadMoveCount) {
   const testing::Outcome refused = testing::run_crux("stances --stances-moves 0");
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_EQ(refused.err, "crux: --stances-moves: must be from 1 to 100000\n");
+}
+
+// crux view under the static model draws and lists what holds the posture; a run's
+// physics come from its own config, so --physics-* beside --run is refused.
+TEST(Cli, ViewUnderTheStaticModelShowsTheLoads) {
+  const std::filesystem::path svg = testing::temporary_path("static_view.svg");
+  const testing::Outcome run =
+      testing::run_crux(std::string("view --wall-file " CRUX_SOURCE_DIR "/walls/home_12.json") +
+                        " --physics-model static --json -o " + svg.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_EQ(json["stance"]["feasible"], true);
+  EXPECT_EQ(json["stance"]["contact_forces_n"].size(), 4u);
+  EXPECT_NE(json["subtitle"].get<std::string>().find("static model: held at effort"), std::string::npos);
+  std::ifstream file(svg);
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("class=\"contact-forces\""), std::string::npos);
+  const testing::Outcome refused =
+      testing::run_crux("view --run " + testing::test_folder().string() + " --physics-model static -o " + svg.string());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(refused.err, "crux: --physics-model: not used with --run: a run is drawn with its own config.toml\n");
 }
 
 // A refused value is quoted on one line with its control bytes escaped: a newline in it

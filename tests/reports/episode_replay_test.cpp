@@ -11,6 +11,7 @@
 #include "experiments/run_config_file.hpp"
 #include "support/test_models.hpp"
 #include "support/trained_run.hpp"
+#include "wall/random_wall.hpp"
 
 namespace crux {
 namespace {
@@ -164,6 +165,26 @@ TEST(EpisodeReplay, AShiftedEpisodeBoundaryIsRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(e.problem().find("episode 0 where the MDP is in episode 1"), std::string::npos) << e.what();
   }
+}
+
+// A climb's postures grasp the start, then each reached move's 4-configuration: the free
+// limb of the cycle (right hand, left hand, right foot, ...) on the move's hold; failed
+// moves change nothing.
+TEST(EpisodeReplay, EachPostureOfAClimbGraspsItsConfiguration) {
+  const Wall wall = generate_random_wall(1);
+  const HoldConfiguration start = start_configuration(wall);
+  const int a = wall.holds[0].id, b = wall.holds[1].id, c = wall.holds[2].id;
+  RecordedClimb climb;
+  climb.steps = {{1, 0, Regime::Random, a, true},
+                 {2, 0, Regime::Random, c, false},
+                 {3, 0, Regime::Random, b, true},
+                 {4, 0, Regime::Random, c, true}};
+  climb.postures.assign(4, Posture::Zero());
+  EXPECT_EQ(climb_configuration(wall, climb, 0).holds, start.holds);
+  EXPECT_EQ(climb_configuration(wall, climb, 1).holds, start.with(Limb::RightHand, 0).holds);
+  EXPECT_EQ(climb_configuration(wall, climb, 2).holds, start.with(Limb::RightHand, 0).with(Limb::LeftHand, 1).holds);
+  EXPECT_EQ(climb_configuration(wall, climb, 3).holds,
+            start.with(Limb::RightHand, 0).with(Limb::LeftHand, 1).with(Limb::RightFoot, 2).holds);
 }
 
 }  // namespace

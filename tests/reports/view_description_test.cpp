@@ -24,6 +24,39 @@ TEST(ViewDescription, ThePostureIsPlacedAndCaptioned) {
   EXPECT_EQ(view_text(caption), "wrote v.svg: title, subtitle\n");
 }
 
+// The static model's loads: the forces of the held limbs, each bounded joint's ratio, and
+// a note of the verdict and the most loaded joint.
+TEST(ViewDescription, TheStaticModelsLoadsAreListedAndNoted) {
+  const BodyModel& model = testing::human_model();
+  const Posture posture = standing_posture({-0.3, 0.6, 1.0});
+  StanceLoads loads;
+  loads.balanced = true;
+  loads.effort = 1.25;
+  loads.held = {true, false, true, true};
+  loads.forces = {Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(9, 9, 9), Eigen::Vector3d(4, 5, 6),
+                  Eigen::Vector3d(7, 8, 9)};
+  loads.joint_ratios = {{6, 0.5}, {9, 1.25}};
+  const ViewCaption caption{"v.svg", "title", "subtitle"};
+  const auto json = view_json(model, posture, caption, &loads);
+  EXPECT_EQ(json["stance"]["balanced"], true);
+  EXPECT_EQ(json["stance"]["feasible"], false);
+  EXPECT_EQ(json["stance"]["effort"], 1.25);
+  EXPECT_EQ(json["stance"]["contact_forces_n"]["right_hand"], nlohmann::ordered_json({1.0, 2.0, 3.0}));
+  EXPECT_FALSE(json["stance"]["contact_forces_n"].contains("left_hand"));
+  EXPECT_EQ(json["stance"]["torque_to_limit"][model.joints[9].name], 1.25);
+  EXPECT_FALSE(view_json(model, posture, caption).contains("stance"));
+  EXPECT_EQ(with_stance_note(caption, model, loads).subtitle,
+            "subtitle; static model: not held at effort 1.25 (" + model.joints[9].name + ")");
+  loads.effort = 0.5;
+  loads.joint_ratios = {{6, 0.5}};
+  EXPECT_EQ(with_stance_note(caption, model, loads).subtitle,
+            "subtitle; static model: held at effort 0.50 (" + model.joints[6].name + ")");
+  loads.balanced = false;
+  EXPECT_EQ(with_stance_note(caption, model, loads).subtitle,
+            "subtitle; static model: no forces on these holds balance it");
+  EXPECT_TRUE(view_json(model, posture, caption, &loads)["stance"]["effort"].is_null());
+}
+
 TEST(ViewDescription, CaptionsNameTheRunItsClimbAndStep) {
   RunFolder folder;
   folder.name = "training_2";

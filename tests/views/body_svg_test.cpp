@@ -112,6 +112,62 @@ TEST(BodySvg, SamePostureGivesIdenticalBytesAndAnotherPostureOtherBytes) {
   EXPECT_NE(first, render_body_svg(model, bent, four_hold_wall()));
 }
 
+// The static model's loads: one arrow per held limb from its grasp point, 0.1 m per
+// 100 N (a force straight up of 200 N is 0.2 m up the page, in pixels at the view's
+// scale; one straight into the wall, +x, points left in the side view), none for a free
+// limb or an unbalanced stance; one dot per bounded joint in its ratio's colour.
+TEST(BodySvg, LoadsAreArrowsAtTheGraspPointsAndColouredJoints) {
+  const BodyModel& model = testing::human_model();
+  const Posture posture = standing_posture({-0.35, 0.6, 1.0});
+  StanceLoads loads;
+  loads.balanced = true;
+  loads.effort = 0.4;
+  loads.held = {true, true, true, false};
+  loads.forces = {Eigen::Vector3d(0, 0, 200), Eigen::Vector3d(300, 0, 0), Eigen::Vector3d(0, 0, 100),
+                  Eigen::Vector3d(0, 0, 999)};
+  loads.joint_ratios = {{5, 0.0}, {6, 0.4}, {7, 1.7}};
+  BodySvgOptions options;
+  options.loads = &loads;
+  const std::string svg = render_body_svg(model, posture, four_hold_wall(), options);
+  check_well_formed(svg);
+  const std::string front = panel_group(svg, 0, "contact-forces"), side = panel_group(svg, 1, "contact-forces");
+  EXPECT_EQ(count_of(front, "<line"), 3) << "the free left foot has no arrow";
+  const std::regex line(
+      "<line data-limb=\"([A-Z]+)\" data-newtons=\"([0-9.]+)\" x1=\"([-0-9.]+)\" y1=\"([-0-9.]+)\" "
+      "x2=\"([-0-9.]+)\" y2=\"([-0-9.]+)\"");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(front, m, line));
+  EXPECT_EQ(m[1], "RH");
+  EXPECT_EQ(m[2], "200.0");
+  EXPECT_DOUBLE_EQ(std::stod(m[3]), std::stod(m[5])) << "straight up";
+  EXPECT_NEAR(std::stod(m[4]) - std::stod(m[6]), 0.2 * 160, 0.02) << "0.2 m at 160 pixels a metre";
+  const std::string left_hand = side.substr(side.find("<line data-limb=\"LH\""));
+  ASSERT_TRUE(std::regex_search(left_hand, m, line));
+  EXPECT_NEAR(std::stod(m[3]) - std::stod(m[5]), 0.3 * 160, 0.02) << "into the wall: to the left, towards it";
+  const std::string joints = panel_group(svg, 0, "joint-torques");
+  EXPECT_EQ(count_of(joints, "<circle"), 3);
+  EXPECT_NE(joints.find("data-ratio=\"1.700\""), std::string::npos);
+  EXPECT_NE(joints.find("fill=\"" + torque_ratio_colour(1.7) + "\""), std::string::npos);
+  EXPECT_NE(svg.find("contact force, 0.1 m per 100 N"), std::string::npos);
+
+  loads.balanced = false;
+  loads.joint_ratios.clear();
+  const std::string unbalanced = render_body_svg(model, posture, four_hold_wall(), options);
+  EXPECT_EQ(count_of(panel_group(unbalanced, 0, "contact-forces"), "<line"), 0);
+  const std::string plain = render_body_svg(model, posture, four_hold_wall());
+  EXPECT_EQ(plain.find("contact-forces"), std::string::npos) << "no loads, nothing drawn";
+  EXPECT_EQ(plain.find("contact force"), std::string::npos);
+}
+
+// Green at 0, yellow at 0.5, red from 1 on (ColorBrewer's RdYlGn ends and middle).
+TEST(BodySvg, TorqueRatioColoursRunFromGreenThroughYellowToRed) {
+  EXPECT_EQ(torque_ratio_colour(0.0), "#1a9850");
+  EXPECT_EQ(torque_ratio_colour(0.5), "#fee08b");
+  EXPECT_EQ(torque_ratio_colour(1.0), "#d73027");
+  EXPECT_EQ(torque_ratio_colour(3.0), "#d73027");
+  EXPECT_EQ(torque_ratio_colour(0.25), "#8cbc6e");  // halfway: (26+254)/2, (152+224)/2, (80+139)/2 rounded
+}
+
 TEST(BodySvg, RejectsANonPositiveScale) {
   EXPECT_THROW(render_body_svg(testing::human_model(), standing_posture({-0.35, 0.6, 1.0}), four_hold_wall(),
                                {.pixels_per_metre = 0}),
