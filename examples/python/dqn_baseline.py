@@ -2,10 +2,11 @@
 random walls and evaluated greedily on held-out walls, beside the paper's Dyna-Q and the
 random policy on the same walls (docs/BASELINES.md).
 
-    PYTHONPATH=build/release/python /usr/bin/python3 examples/python/dqn_baseline.py train --steps 30000
-    ... dqn_baseline.py search --out build/baseline     # the tuning grid, 3 seeds per setting
-    ... dqn_baseline.py compare --out build/baseline    # the best setting on the held-out walls
-    ... dqn_baseline.py plot --out build/baseline docs/images/baseline_curves.svg
+    export PYTHONPATH=build/release/python:../shared/third_party/gymnasium-1.4.0
+    /usr/bin/python3 examples/python/dqn_baseline.py train --steps 20000         # one run, as JSON
+    /usr/bin/python3 examples/python/dqn_baseline.py search --out build/baseline # the tuning grid, 3 seeds a setting
+    /usr/bin/python3 examples/python/dqn_baseline.py compare --out build/baseline   # on the held-out walls
+    /usr/bin/python3 examples/python/dqn_baseline.py plot --out build/baseline docs/images/baseline_curves.svg
 
 Walls are random walls named by their seeds: training walls 0 .. N-1, validation walls
 from 10000 (to choose the setting), held-out evaluation walls from 20000 (to report).
@@ -49,7 +50,7 @@ TRAIN_EVERY = 2
 TARGET_EVERY = 500
 FINAL_EPSILON = 0.05
 STATE_SIZE = 55  # free limb 4, held holds 12, root 3, joint angles 32, centre of mass 3, height to the finish 1
-CHECKPOINTS = 4  # validation evaluations besides the one before learning
+CHECKPOINTS = 2  # validation evaluations, evenly spaced, the last at the end
 SEARCH_GRID = {"lr": [3e-4, 1e-3], "epsilon_decay": [0.2, 0.6], "hidden": [64, 128]}
 SEEDS_PER_SETTING = 3
 DYNA_CONDITIONS = [("Dyna-Q paper, from scratch", "paper", False), ("Dyna-Q paper, transfer", "paper", True),
@@ -208,13 +209,16 @@ def greedy_climbs(net, env, walls, span):
     climb ends there ("finished" false), as Dyna-Q's greedy climb does. The same rollout goes
     on as the greedy policy without retries, which passes over the moves that failed in the
     current state (action elimination, as crux's `informed` transfer mode):
-    "finished_no_retry", "length_no_retry" (actions, failed ones included)."""
+    "finished_no_retry", "length_no_retry" (actions, failed ones included). Also: its failed
+    moves and all its moves, the greedy policy's successful moves before its first failure,
+    and the highest rise of the centre of mass (m) over the whole rollout."""
     results = []
     obs, info = env.reset(seed=0)  # a seeded reset starts the list again
     for index in range(walls):
         if index:
             obs, info = env.reset()
-        failed, failures, result = set(), 0, None
+        failed, failures, result, before_failure = set(), 0, None, None
+        start = lowest = float(obs["to_finish"][0])
         for length in itertools.count(1):
             state, candidates, mask = features(obs, span)
             allowed = mask.copy()
@@ -224,6 +228,7 @@ def greedy_climbs(net, env, walls, span):
             action = greedy_action(net, state, candidates, allowed)
             assert mask[action], "the greedy action is a masked one"
             obs, _, terminated, truncated, info = env.step(action)
+            lowest = min(lowest, float(obs["to_finish"][0]))
             if terminated or truncated:
                 result = (terminated, length)
                 break
@@ -232,12 +237,16 @@ def greedy_climbs(net, env, walls, span):
             else:
                 failed.add(action)
                 failures += 1
+                if before_failure is None:
+                    before_failure = length - 1
         finished = result is not None and result[0]
         results.append({"wall": info["wall_name"],
                         "finished": bool(finished and failures == 0), "length": length if finished and not failures
                         else None,
                         "finished_no_retry": bool(finished), "length_no_retry": length if finished else None,
-                        "failed_moves": failures})
+                        "failed_moves": failures, "moves": length,
+                        "moves_before_failure": length if before_failure is None else before_failure,
+                        "rise_m": round(start - lowest, 4)})
     return results
 
 
@@ -279,8 +288,6 @@ def train(args, validation_walls=None, log=None):
         curve.append({"step": step, "validation": greedy_climbs(net, validation, validation_walls, span)})
         validation_seconds += time.perf_counter() - started
 
-    if validation:
-        validate(0)
     for step in range(1, args.steps + 1):
         epsilon = max(FINAL_EPSILON, 1.0 - (1.0 - FINAL_EPSILON) * (step - 1) / decay_steps)
         possible = np.flatnonzero(mask)
@@ -388,7 +395,8 @@ def paired(a, b):
     pairs = [(x, y) for x, y in zip(a, b) if x is not None and y is not None]
     diff = np.array([x - y for x, y in pairs], float)
     result = interval(diff)
-    result["p"] = float(stats.ttest_1samp(diff, 0.0).pvalue) if diff.size > 1 and diff.std() > 0 else None
+    constant = diff.size < 2 or np.allclose(diff, diff[0])
+    result["p"] = None if constant else float(stats.ttest_1samp(diff, 0.0).pvalue)
     return result
 
 
@@ -396,7 +404,7 @@ def per_wall_mean(runs, key):
     """runs: per wall, a list of per-seed dicts; the mean of key over the seeds that have it."""
     out = []
     for wall in runs:
-        values = [run[key] for run in wall if run[key] is not None]
+        values = [run[key] for run in wall if run.get(key) is not None]
         out.append(float(np.mean(values)) if values else None)
     return out
 
@@ -424,14 +432,34 @@ def setting_name(setting):
     return f"lr{setting['lr']:g}-decay{setting['epsilon_decay']:g}-h{setting['hidden']}"
 
 
+def part(text):
+    try:
+        index, count = map(int, text.split("/"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be K/N, got {text!r}") from None
+    if not 1 <= index <= count:
+        raise argparse.ArgumentTypeError(f"must be K/N with 1 <= K <= N, got {text!r}")
+    return index, count
+
+
+def search_records(out):
+    """The records of every part of the search, in the grid's order."""
+    records = [json.loads(line) for path in sorted(out.glob("search*.jsonl")) for line in path.read_text().splitlines()]
+    order = {setting_name(setting): rank for rank, setting in enumerate(settings())}
+    return sorted(records, key=lambda r: (order[setting_name(r["setting"])], r["seed"]))
+
+
 def command_search(args):
     out = pathlib.Path(args.out)
     (out / "nets").mkdir(parents=True, exist_ok=True)
-    log_path = out / "search.jsonl"
+    index, count = args.part
+    log_path = out / ("search.jsonl" if count == 1 else f"search-{index}of{count}.jsonl")
     done = set()
     if log_path.exists():
         done = {(setting_name(r["setting"]), r["seed"]) for r in map(json.loads, log_path.read_text().splitlines())}
-    for setting in settings():
+    for rank, setting in enumerate(settings()):
+        if (rank // 2) % count != index - 1:  # each part gets both widths
+            continue
         for seed in range(args.seed, args.seed + SEEDS_PER_SETTING):
             name = setting_name(setting)
             if (name, seed) in done:
@@ -467,7 +495,7 @@ def search_table(records):
 
 def command_compare(args):
     out = pathlib.Path(args.out)
-    records = [json.loads(line) for line in (out / "search.jsonl").read_text().splitlines()]
+    records = search_records(out)
     table = search_table(records)
     best = max(table, key=lambda name: (np.mean([r["success"] for r in table[name]]),
                                         np.mean([r["success_no_retry"] for r in table[name]]),
@@ -493,9 +521,13 @@ def command_compare(args):
             first5, _ = early_episodes(epsilon_greedy(net), single_wall_env(wall), rng, span)
             early = {"first5": first5, "steps_to_first5": record["steps"] + first5,
                      "seconds_to_first5": record["wall_clock_s"]["training"] + time.perf_counter() - started}
-            dqn[index].append(dict(early, finished=float(climbs[index]["finished"]), length=climbs[index]["length"]))
-            dqn_no_retry[index].append(dict(early, finished=float(climbs[index]["finished_no_retry"]),
-                                            length=climbs[index]["length_no_retry"]))
+            climb = climbs[index]
+            dqn[index].append(dict(early, finished=float(climb["finished"]), length=climb["length"],
+                                   moves_before_failure=climb["moves_before_failure"]))
+            dqn_no_retry[index].append(dict(early, finished=float(climb["finished_no_retry"]),
+                                            length=climb["length_no_retry"], rise_m=climb["rise_m"],
+                                            moves_before_failure=climb["moves_before_failure"],
+                                            reached_share=1 - climb["failed_moves"] / climb["moves"]))
         print(f"DQN seed {record['seed']}: {sum(c['finished'] for c in climbs)}/{len(held_out)} held-out walls, "
               f"{sum(c['finished_no_retry'] for c in climbs)} without retries", flush=True)
     results["DQN, greedy (zero-shot)"] = dqn
@@ -510,7 +542,8 @@ def command_compare(args):
             env = single_wall_env(wall)
             for retries, rows in ((True, rand), (False, rand_no_retry)):
                 obs, info = env.reset(seed=0)
-                finished, length, failed = False, None, set()
+                finished, length, failed, failures, before_failure = False, None, set(), 0, None
+                start = lowest = float(obs["to_finish"][0])
                 for count in range(1, GREEDY_CAP + 1):
                     allowed = info["action_mask"].copy()
                     allowed[list(failed)] = 0
@@ -518,14 +551,20 @@ def command_compare(args):
                         break
                     action = random_policy(None, None, allowed, rng)
                     obs, _, terminated, _, info = env.step(action)
+                    lowest = min(lowest, float(obs["to_finish"][0]))
                     if terminated:
                         finished, length = True, count
                         break
                     if info["reached"]:
                         failed.clear()
-                    elif not retries:
-                        failed.add(action)
-                rows[index].append({"finished": float(finished), "length": length})
+                    else:
+                        failures += 1
+                        before_failure = count - 1 if before_failure is None else before_failure
+                        if not retries:
+                            failed.add(action)
+                rows[index].append({"finished": float(finished), "length": length,
+                                    "reached_share": 1 - failures / count, "rise_m": start - lowest,
+                                    "moves_before_failure": count if before_failure is None else before_failure})
             started = time.perf_counter()
             first5, ends = early_episodes(random_policy, single_wall_env(wall), rng, span)
             early = {"first5": first5, "steps_to_first5": first5, "seconds_to_first5": time.perf_counter() - started}
@@ -571,7 +610,8 @@ def command_compare(args):
     for label, runs in results.items():
         summary["methods"][label] = {key: interval(per_wall_mean(runs, key))
                                      for key in ("finished", "length", "first5", "steps_to_first5",
-                                                 "seconds_to_first5")}
+                                                 "seconds_to_first5", "moves_before_failure", "rise_m",
+                                                 "reached_share") if key in runs[0][0]}
     def success(label):
         return per_wall_mean(results[label], "finished")
 
@@ -605,6 +645,12 @@ def markdown(summary):
         lines.append(f"| {label} | {fmt(m['finished'], 0, True, walls)} | {fmt(m['length'], 1, walls=walls)} "
                      f"| {fmt(m['first5'], walls=walls)} | {fmt(m['steps_to_first5'], walls=walls)} "
                      f"| {fmt(m['seconds_to_first5'], 2, walls=walls)} |")
+    lines += ["", "| rollout | greedy moves before the first failure | moves that reached | highest rise (m) |",
+              "|---|---|---|---|"]
+    for label, m in summary["methods"].items():
+        if "rise_m" in m:
+            lines.append(f"| {label} | {fmt(m['moves_before_failure'], 1, walls=walls)} | {fmt(m['reached_share'], 0, True, walls)} "
+                         f"| {fmt(m['rise_m'], 2, walls=walls)} |")
     lines += ["", "| climbs finished, paired over walls | difference | p |", "|---|---|---|"]
     for label, cell in summary["paired"].items():
         p = "-" if cell["p"] is None else f"{cell['p']:.2g}"
@@ -632,7 +678,7 @@ def command_plot(args):
     import matplotlib.pyplot as plt
 
     out = pathlib.Path(args.out)
-    records = [json.loads(line) for line in (out / "search.jsonl").read_text().splitlines()]
+    records = search_records(out)
     summary = json.loads((out / "comparison.json").read_text())
     matplotlib.rcParams["svg.hashsalt"] = "crux"  # the same figure, the same bytes
     figure, (left, middle, right) = plt.subplots(1, 3, figsize=(16, 4.6))
@@ -673,7 +719,7 @@ def main(argv=None):
     parser = OneLineParser(description=__doc__.splitlines()[0])
     commands = parser.add_subparsers(dest="command", required=True, parser_class=OneLineParser)
     one = commands.add_parser("train", help="one DQN run; prints its record as JSON")
-    one.add_argument("--steps", type=positive, default=30000, help="environment steps of training")
+    one.add_argument("--steps", type=positive, default=20000, help="environment steps of training")
     one.add_argument("--seed", type=int, default=1)
     one.add_argument("--lr", type=learning_rate, default=1e-3)
     one.add_argument("--epsilon-decay", type=fraction, default=0.2,
@@ -684,10 +730,12 @@ def main(argv=None):
     one.add_argument("--save", help="where to write the network's state_dict")
     search = commands.add_parser("search", help="the tuning grid, appending to OUT/search.jsonl")
     search.add_argument("--out", required=True)
-    search.add_argument("--steps", type=positive, default=30000)
+    search.add_argument("--steps", type=positive, default=20000)
     search.add_argument("--seed", type=int, default=1)
     search.add_argument("--train-walls", type=positive, default=500)
     search.add_argument("--validation-walls", type=positive, default=30)
+    search.add_argument("--part", type=part, default=(1, 1),
+                        help="K/N: run the K-th of N shares of the grid, for N processes (one core each)")
     compare = commands.add_parser("compare", help="the chosen setting, Dyna-Q and random on the held-out walls")
     compare.add_argument("--out", required=True)
     compare.add_argument("--seed", type=int, default=1)

@@ -125,7 +125,7 @@ def test_the_same_seed_gives_the_same_bytes_and_the_record_its_fields(baseline):
     assert first["steps"] == 300 and first["train_walls"] == 2 and first["seed"] == 4
     assert sum(episode["length"] for episode in first["episodes"]) <= 300
     assert all(episode["end_step"] <= 300 and episode["finished"] in (True, False) for episode in first["episodes"])
-    assert [point["step"] for point in first["curve"]] == [0, 75, 150, 225, 300]
+    assert [point["step"] for point in first["curve"]] == [150, 300]
     for point in first["curve"]:
         assert [climb["wall"] for climb in point["validation"]] == ["random wall, seed 10000", "random wall, seed 10001"]
         for climb in point["validation"]:
