@@ -28,9 +28,10 @@ packages=(
   # The Python module, built for and tested with Debian's /usr/bin/python3; its examples
   # use pandas and matplotlib, crux.gym's rgb_array rendering matplotlib, and the vendored
   # Gymnasium 1.4.0 (../shared/third_party) that its tests run needs cloudpickle and
-  # typing-extensions.
+  # typing-extensions; the deep-RL baseline (examples/python/dqn_baseline.py) torch, its
+  # statistics scipy.
   python3-dev pybind11-dev python3-numpy python3-pytest python3-pandas python3-matplotlib
-  python3-cloudpickle python3-typing-extensions
+  python3-cloudpickle python3-typing-extensions python3-torch python3-scipy
   # The report's browser tests run Debian's Chromium headless.
   chromium fonts-dejavu-core
 )

@@ -1,0 +1,752 @@
+"""A deep-RL baseline for crux/Climb-v0: a masked DQN on the numeric features, trained on
+random walls and evaluated greedily on held-out walls, beside the paper's Dyna-Q and the
+random policy on the same walls (docs/BASELINES.md).
+
+    export PYTHONPATH=build/release/python:../shared/third_party/gymnasium-1.4.0
+    /usr/bin/python3 examples/python/dqn_baseline.py train --steps 20000         # one run, as JSON
+    /usr/bin/python3 examples/python/dqn_baseline.py search --out build/baseline # the tuning grid, 3 seeds a setting
+    /usr/bin/python3 examples/python/dqn_baseline.py compare --out build/baseline   # on the held-out walls
+    /usr/bin/python3 examples/python/dqn_baseline.py plot --out build/baseline docs/images/baseline_curves.svg
+
+Walls are random walls named by their seeds: training walls 0 .. N-1, validation walls
+from 10000 (to choose the setting), held-out evaluation walls from 20000 (to report).
+One --seed fixes everything else; torch runs deterministically on one CPU thread.
+"""
+
+import argparse
+import collections
+import hashlib
+import itertools
+import json
+import math
+import pathlib
+import sys
+import time
+
+import numpy as np
+import torch
+from torch import nn
+
+import crux
+import crux.gym  # registers crux/Climb-v0
+import gymnasium
+
+VALIDATION_FIRST_SEED = 10000
+HELD_OUT_FIRST_SEED = 20000
+# The greedy climbs' cap, experiment.greedy_cap's default: Dyna-Q's greedy climb gets as many.
+GREEDY_CAP = 500
+# Per held-out wall, the runs that count the iterations to the first 5 episodes (docs/REPRODUCTION.md).
+DYNA_ITERATIONS = 8000
+EARLY_EPISODES = 5
+# The paper's rewards (-1000 unreachable, -1 a step, +200000 the finish) scaled so that the
+# finish is worth 20: the same optimal policy, targets of a size a network fits.
+REWARD_SCALE = 1e-4
+# The paper's discount. Pilots with 0.99 and height shaping, or 0.95, learnt no ranking of
+# the candidates (docs/BASELINES.md, "Pilots").
+GAMMA = 0.9
+N_STEP = 3
+BATCH = 32
+TRAIN_EVERY = 2
+TARGET_EVERY = 500
+FINAL_EPSILON = 0.05
+STATE_SIZE = 55  # free limb 4, held holds 12, root 3, joint angles 32, centre of mass 3, height to the finish 1
+CHECKPOINTS = 2  # validation evaluations, evenly spaced, the last at the end
+SEARCH_GRID = {"lr": [3e-4, 1e-3], "epsilon_decay": [0.2, 0.6], "hidden": [64, 128]}
+SEEDS_PER_SETTING = 3
+DYNA_CONDITIONS = [("Dyna-Q paper, from scratch", "paper", False), ("Dyna-Q paper, transfer", "paper", True),
+                   ("Dyna-Q prior, from scratch", "prior", False), ("Dyna-Q prior, transfer", "prior", True)]
+
+
+class OneLineParser(argparse.ArgumentParser):
+    """Bad input: one line naming the argument, exit code 2 (argparse's code, without its usage)."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: {message}\n")
+
+
+def positive(text):
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be an integer, got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
+    return value
+
+
+def fraction(text):
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a number, got {text!r}") from None
+    if not 0 < value <= 1:
+        raise argparse.ArgumentTypeError(f"must be in (0, 1], got {value}")
+    return value
+
+
+def learning_rate(text):
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a number, got {text!r}") from None
+    if not (value > 0 and math.isfinite(value)):
+        raise argparse.ArgumentTypeError(f"must be a positive number, got {text}")
+    return value
+
+
+def deterministic(seed):
+    torch.manual_seed(seed)
+    torch.set_num_threads(1)
+    torch.use_deterministic_algorithms(True)
+
+
+def wall_seeds(first, count):
+    return list(range(first, first + count))
+
+
+def split(train_walls, evaluation_seeds):
+    return {"train": wall_seeds(0, train_walls), "evaluation": evaluation_seeds}
+
+
+# --- features and network ------------------------------------------------------------------
+
+
+def features(obs, span):
+    """The numeric observation as (state (55,), candidates (K, 3), mask (K,) bool), lengths in max_spans."""
+    posture = obs["posture"]
+    state = np.concatenate([obs["free_limb"], obs["held"].ravel() / span, posture[:3] / span, posture[3:],
+                            obs["centre_of_mass"] / span, obs["to_finish"] / span])
+    return state.astype(np.float32), (obs["candidates"] / span).astype(np.float32), obs["candidate_mask"] > 0.5
+
+
+class SlotQNetwork(nn.Module):
+    """Q(s, slot) from the state's features and the slot's candidate hold, the same weights
+    for every slot, so that a slot means "this hold", whatever wall and whatever order.
+    Width-1 convolutions over the slots are per-slot linear layers (Debian's torch runs
+    them through oneDNN, its linear layers through the reference BLAS, ten times slower)."""
+
+    def __init__(self, state_size, hidden):
+        super().__init__()
+        self.layers = nn.Sequential(nn.Conv1d(state_size + 3, hidden, 1), nn.ReLU(), nn.Conv1d(hidden, hidden, 1),
+                                    nn.ReLU(), nn.Conv1d(hidden, 1, 1))
+
+    def forward(self, state, candidates, mask):
+        batch, slots, _ = candidates.shape
+        x = torch.cat([state.unsqueeze(2).expand(batch, state.shape[1], slots), candidates.transpose(1, 2)], dim=1)
+        q = self.layers(x).squeeze(1)
+        return q.masked_fill(~mask, -math.inf)  # a masked action is never the argmax nor the max
+
+
+def greedy_action(net, state, candidates, mask):
+    with torch.no_grad():
+        q = net(torch.from_numpy(state)[None], torch.from_numpy(candidates)[None], torch.from_numpy(mask)[None])
+    return int(torch.argmax(q[0]))
+
+
+def network_digest(net):
+    digest = hashlib.sha256()
+    for name, tensor in net.state_dict().items():
+        digest.update(name.encode())
+        digest.update(tensor.numpy().tobytes())
+    return digest.hexdigest()
+
+
+class Replay:
+    """n-step transitions, all kept (the budget is small)."""
+
+    def __init__(self, capacity, state_size, slots):
+        self.size = 0
+        self.state = np.zeros((capacity, state_size), np.float32)
+        self.candidates = np.zeros((capacity, slots, 3), np.float32)
+        self.mask = np.zeros((capacity, slots), bool)
+        self.action = np.zeros(capacity, np.int64)
+        self.reward = np.zeros(capacity, np.float32)
+        self.discount = np.zeros(capacity, np.float32)  # gamma^n, 0 after a termination
+        self.next_state = np.zeros_like(self.state)
+        self.next_candidates = np.zeros_like(self.candidates)
+        self.next_mask = np.zeros_like(self.mask)
+
+    def add(self, pending, following, terminated):
+        (state, candidates, mask, action, _), index = pending[0], self.size
+        self.state[index], self.candidates[index], self.mask[index], self.action[index] = state, candidates, mask, action
+        self.reward[index] = sum(GAMMA**k * step[4] for k, step in enumerate(pending))
+        self.discount[index] = 0.0 if terminated else GAMMA ** len(pending)
+        self.next_state[index], self.next_candidates[index], self.next_mask[index] = following
+        self.size += 1
+
+    def batch(self, indices):
+        def t(array):
+            return torch.from_numpy(array[indices])
+
+        return (t(self.state), t(self.candidates), t(self.mask), t(self.action), t(self.reward), t(self.discount),
+                t(self.next_state), t(self.next_candidates), t(self.next_mask))
+
+
+def td_loss(net, target, batch):
+    """Double DQN's n-step target, maxima over the next state's possible actions only."""
+    state, candidates, mask, action, reward, discount, next_state, next_candidates, next_mask = batch
+    q = net(state, candidates, mask).gather(1, action[:, None]).squeeze(1)
+    with torch.no_grad():
+        best = torch.argmax(net(next_state, next_candidates, next_mask), dim=1, keepdim=True)
+        next_q = target(next_state, next_candidates, next_mask).gather(1, best).squeeze(1)
+        next_q = torch.where(next_mask.any(dim=1), next_q, torch.zeros_like(next_q))  # no move left: no future
+        y = reward + discount * next_q
+    return nn.functional.smooth_l1_loss(q, y)
+
+
+# --- training and evaluation ---------------------------------------------------------------
+
+
+def make_env(wall_split, evaluation=False, max_episode_steps=None):
+    return gymnasium.make("crux/Climb-v0", observation="numeric", wall_split=wall_split, evaluation=evaluation,
+                          wall_order="cycle" if evaluation else "sample", max_episode_steps=max_episode_steps)
+
+
+def greedy_climbs(net, env, walls, span):
+    """The greedy policy once on each wall of env's list, up to GREEDY_CAP actions.
+
+    A failed move leaves the state as it was, so the greedy policy repeats it forever: its
+    climb ends there ("finished" false), as Dyna-Q's greedy climb does. The same rollout goes
+    on as the greedy policy without retries, which passes over the moves that failed in the
+    current state (action elimination, as crux's `informed` transfer mode):
+    "finished_no_retry", "length_no_retry" (actions, failed ones included). Also: its failed
+    moves and all its moves, the greedy policy's successful moves before its first failure,
+    and the highest rise of the centre of mass (m) over the whole rollout."""
+    results = []
+    obs, info = env.reset(seed=0)  # a seeded reset starts the list again
+    for index in range(walls):
+        if index:
+            obs, info = env.reset()
+        failed, failures, result, before_failure = set(), 0, None, None
+        start = lowest = float(obs["to_finish"][0])
+        for length in itertools.count(1):
+            state, candidates, mask = features(obs, span)
+            allowed = mask.copy()
+            allowed[list(failed)] = False
+            if not allowed.any():
+                break
+            action = greedy_action(net, state, candidates, allowed)
+            assert mask[action], "the greedy action is a masked one"
+            obs, _, terminated, truncated, info = env.step(action)
+            lowest = min(lowest, float(obs["to_finish"][0]))
+            if terminated or truncated:
+                result = (terminated, length)
+                break
+            if info["reached"]:
+                failed.clear()
+            else:
+                failed.add(action)
+                failures += 1
+                if before_failure is None:
+                    before_failure = length - 1
+        finished = result is not None and result[0]
+        results.append({"wall": info["wall_name"],
+                        "finished": bool(finished and failures == 0), "length": length if finished and not failures
+                        else None,
+                        "finished_no_retry": bool(finished), "length_no_retry": length if finished else None,
+                        "failed_moves": failures, "moves": length,
+                        "moves_before_failure": length if before_failure is None else before_failure,
+                        "rise_m": round(start - lowest, 4)})
+    return results
+
+
+def train(args, validation_walls=None, log=None):
+    """One DQN run; returns its record (deterministic) and the network."""
+    for name in ("steps", "hidden", "train_walls"):
+        value = getattr(args, name)
+        if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+            raise ValueError(f"{name}: must be a positive integer, got {value!r}")
+    if not 0 < args.epsilon_decay <= 1:
+        raise ValueError(f"epsilon_decay: must be in (0, 1], got {args.epsilon_decay!r}")
+    if not (args.lr > 0 and math.isfinite(args.lr)):
+        raise ValueError(f"lr: must be a positive number, got {args.lr!r}")
+    deterministic(args.seed)
+    rng = np.random.default_rng(args.seed)
+    env = make_env(split(args.train_walls, [HELD_OUT_FIRST_SEED]), max_episode_steps=1000)
+    span = env.unwrapped._span
+    validation = None
+    if validation_walls:
+        validation = make_env(split(args.train_walls, wall_seeds(VALIDATION_FIRST_SEED, validation_walls)),
+                              evaluation=True, max_episode_steps=GREEDY_CAP)
+    obs, info = env.reset(seed=args.seed)
+    state, candidates, mask = features(obs, span)
+    net = SlotQNetwork(state.size, args.hidden)
+    target = SlotQNetwork(state.size, args.hidden)
+    target.load_state_dict(net.state_dict())
+    optimiser = torch.optim.Adam(net.parameters(), lr=args.lr)
+    replay = Replay(args.steps, state.size, mask.size)
+    decay_steps = max(1, round(args.epsilon_decay * args.steps))
+    learning_starts = min(1000, args.steps // 10)
+    pending = collections.deque()
+    episodes, length, losses, masked_choices = [], 0, [], 0
+    checkpoints = {round(args.steps * k / CHECKPOINTS) for k in range(1, CHECKPOINTS + 1)}
+    curve, validation_seconds = [], 0.0
+
+    def validate(step):
+        nonlocal validation_seconds
+        started = time.perf_counter()
+        curve.append({"step": step, "validation": greedy_climbs(net, validation, validation_walls, span)})
+        validation_seconds += time.perf_counter() - started
+
+    for step in range(1, args.steps + 1):
+        epsilon = max(FINAL_EPSILON, 1.0 - (1.0 - FINAL_EPSILON) * (step - 1) / decay_steps)
+        possible = np.flatnonzero(mask)
+        if rng.random() < epsilon:
+            action = int(rng.choice(possible))
+        else:
+            action = greedy_action(net, state, candidates, mask)
+        masked_choices += not mask[action]
+        obs, reward, terminated, truncated, info = env.step(action)
+        length += 1
+        pending.append((state, candidates, mask, action, reward * REWARD_SCALE))
+        state, candidates, mask = features(obs, span)
+        if terminated or truncated or not mask.any():
+            while pending:
+                replay.add(pending, (state, candidates, mask), terminated)
+                pending.popleft()
+            episodes.append({"end_step": step, "length": length, "finished": bool(terminated)})
+            length = 0
+            obs, info = env.reset()
+            state, candidates, mask = features(obs, span)
+        elif len(pending) == N_STEP:
+            replay.add(pending, (state, candidates, mask), False)
+            pending.popleft()
+        if step >= learning_starts and step % TRAIN_EVERY == 0 and replay.size >= BATCH:
+            loss = td_loss(net, target, replay.batch(rng.integers(replay.size, size=BATCH)))
+            optimiser.zero_grad()
+            loss.backward()
+            nn.utils.clip_grad_norm_(net.parameters(), 10.0)
+            optimiser.step()
+            losses.append(float(loss))
+        if step % TARGET_EVERY == 0:
+            target.load_state_dict(net.state_dict())
+        if validation and step in checkpoints:
+            validate(step)
+            if log:
+                done = sum(r["finished"] for r in curve[-1]["validation"])
+                no_retry = sum(r["finished_no_retry"] for r in curve[-1]["validation"])
+                log(f"  step {step}: {len(episodes)} episodes, validation {done}/{validation_walls} finished, "
+                    f"{no_retry} without retries")
+    record = {
+        "setting": {"lr": args.lr, "epsilon_decay": args.epsilon_decay, "hidden": args.hidden},
+        "seed": args.seed,
+        "steps": args.steps,
+        "train_walls": args.train_walls,
+        "episodes": episodes,
+        "masked_choices": masked_choices,
+        "mean_loss_per_tenth": [float(np.mean(part)) for part in np.array_split(np.array(losses), 10) if part.size],
+        "curve": curve,
+        "network_sha256": network_digest(net),
+    }
+    return record, net, validation_seconds
+
+
+def early_episodes(policy, env, rng, span, cap=DYNA_ITERATIONS):
+    """Iterations to complete the first EARLY_EPISODES episodes on one wall (capped at cap, as
+    crux paper's first_5_iterations), and the ends of the episodes completed within cap."""
+    obs, _ = env.reset(seed=0)
+    ends = []
+    for step in range(1, cap + 1):
+        state, candidates, mask = features(obs, span)
+        obs, _, terminated, _, _ = env.step(policy(state, candidates, mask, rng))
+        if terminated:
+            ends.append(step)
+            obs, _ = env.reset()
+    return (ends[EARLY_EPISODES - 1] if len(ends) >= EARLY_EPISODES else cap), ends
+
+
+def random_policy(state, candidates, mask, rng):
+    return int(rng.choice(np.flatnonzero(mask)))
+
+
+def epsilon_greedy(net):
+    def policy(state, candidates, mask, rng):
+        if rng.random() < FINAL_EPSILON:
+            return random_policy(state, candidates, mask, rng)
+        return greedy_action(net, state, candidates, mask)
+
+    return policy
+
+
+def single_wall_env(seed):
+    # No TimeLimit: an episode runs until it finishes, as Dyna-Q's learning episodes do.
+    return crux.gym.ClimbEnv(wall=[seed], observation="numeric")
+
+
+# --- statistics over walls -------------------------------------------------------------------
+
+
+def interval(values):
+    """Mean and 95 % Student-t interval over walls."""
+    from scipy import stats
+
+    values = np.asarray([v for v in values if v is not None and not math.isnan(v)], float)
+    if values.size < 2:
+        return {"mean": float(values.mean()) if values.size else None, "low": None, "high": None, "n": int(values.size)}
+    half = stats.t.ppf(0.975, values.size - 1) * values.std(ddof=1) / math.sqrt(values.size)
+    return {"mean": float(values.mean()), "low": float(values.mean() - half), "high": float(values.mean() + half),
+            "n": int(values.size)}
+
+
+def paired(a, b):
+    """a - b over walls, with its t-interval and the two-sided p of the t-test over walls."""
+    from scipy import stats
+
+    pairs = [(x, y) for x, y in zip(a, b) if x is not None and y is not None]
+    diff = np.array([x - y for x, y in pairs], float)
+    result = interval(diff)
+    constant = diff.size < 2 or np.allclose(diff, diff[0])
+    result["p"] = None if constant else float(stats.ttest_1samp(diff, 0.0).pvalue)
+    return result
+
+
+def per_wall_mean(runs, key):
+    """runs: per wall, a list of per-seed dicts; the mean of key over the seeds that have it."""
+    out = []
+    for wall in runs:
+        values = [run[key] for run in wall if run.get(key) is not None]
+        out.append(float(np.mean(values)) if values else None)
+    return out
+
+
+# --- commands ---------------------------------------------------------------------------------
+
+
+def command_train(args):
+    started = time.perf_counter()
+    record, net, validation_seconds = train(args, validation_walls=args.validation_walls)
+    if args.save:
+        torch.save(net.state_dict(), args.save)
+    # Machine-dependent, apart from the rest of the record, which the seed fixes.
+    record["wall_clock_s"] = {"training": round(time.perf_counter() - started - validation_seconds, 3),
+                              "validation": round(validation_seconds, 3)}
+    print(json.dumps(record, sort_keys=True))
+
+
+def settings():
+    for lr, decay, hidden in itertools.product(*SEARCH_GRID.values()):
+        yield {"lr": lr, "epsilon_decay": decay, "hidden": hidden}
+
+
+def setting_name(setting):
+    return f"lr{setting['lr']:g}-decay{setting['epsilon_decay']:g}-h{setting['hidden']}"
+
+
+def part(text):
+    try:
+        index, count = map(int, text.split("/"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be K/N, got {text!r}") from None
+    if not 1 <= index <= count:
+        raise argparse.ArgumentTypeError(f"must be K/N with 1 <= K <= N, got {text!r}")
+    return index, count
+
+
+def search_records(out):
+    """The records of every part of the search, in the grid's order."""
+    records = [json.loads(line) for path in sorted(out.glob("search*.jsonl")) for line in path.read_text().splitlines()]
+    order = {setting_name(setting): rank for rank, setting in enumerate(settings())}
+    return sorted(records, key=lambda r: (order[setting_name(r["setting"])], r["seed"]))
+
+
+def command_search(args):
+    out = pathlib.Path(args.out)
+    (out / "nets").mkdir(parents=True, exist_ok=True)
+    index, count = args.part
+    log_path = out / ("search.jsonl" if count == 1 else f"search-{index}of{count}.jsonl")
+    done = set()
+    if log_path.exists():
+        done = {(setting_name(r["setting"]), r["seed"]) for r in map(json.loads, log_path.read_text().splitlines())}
+    for rank, setting in enumerate(settings()):
+        if (rank // 2) % count != index - 1:  # each part gets both widths
+            continue
+        for seed in range(args.seed, args.seed + SEEDS_PER_SETTING):
+            name = setting_name(setting)
+            if (name, seed) in done:
+                continue
+            run = argparse.Namespace(steps=args.steps, seed=seed, train_walls=args.train_walls, **setting)
+            print(f"{name} seed {seed}", flush=True)
+            started = time.perf_counter()
+            record, net, validation_seconds = train(run, validation_walls=args.validation_walls,
+                                                    log=lambda m: print(m, flush=True))
+            record["wall_clock_s"] = {"training": round(time.perf_counter() - started - validation_seconds, 3),
+                                      "validation": round(validation_seconds, 3)}
+            torch.save(net.state_dict(), out / "nets" / f"{name}-s{seed}.pt")
+            with log_path.open("a") as file:
+                file.write(json.dumps(record, sort_keys=True) + "\n")
+
+
+def search_table(records):
+    """Per setting: final validation success (mean over seeds, each seed's rate over the walls)."""
+    table = collections.defaultdict(list)
+    for record in records:
+        final = record["curve"][-1]["validation"]
+        lengths = [r["length"] for r in final if r["finished"]]
+        table[setting_name(record["setting"])].append({
+            "setting": record["setting"], "seed": record["seed"],
+            "success": float(np.mean([r["finished"] for r in final])),
+            "success_no_retry": float(np.mean([r["finished_no_retry"] for r in final])),
+            "length": float(np.mean(lengths)) if lengths else None,
+            "train_episodes": sum(e["finished"] for e in record["episodes"]),
+            "wall_clock_s": sum(record["wall_clock_s"].values()),
+        })
+    return table
+
+
+def command_compare(args):
+    out = pathlib.Path(args.out)
+    records = search_records(out)
+    table = search_table(records)
+    best = max(table, key=lambda name: (np.mean([r["success"] for r in table[name]]),
+                                        np.mean([r["success_no_retry"] for r in table[name]]),
+                                        -np.mean([r["length"] or GREEDY_CAP for r in table[name]])))
+    best_records = [r for r in records if setting_name(r["setting"]) == best]
+    print(f"best on the validation walls: {best}", flush=True)
+    held_out = wall_seeds(HELD_OUT_FIRST_SEED, args.held_out_walls)
+    train_walls = best_records[0]["train_walls"]
+    walls_env = make_env(split(train_walls, held_out), evaluation=True, max_episode_steps=GREEDY_CAP)
+    span = walls_env.unwrapped._span
+    results = {}
+
+    # The DQN: zero-shot on each held-out wall, with no learning there.
+    dqn, dqn_no_retry = [[] for _ in held_out], [[] for _ in held_out]
+    for record in best_records:
+        deterministic(record["seed"])
+        net = SlotQNetwork(STATE_SIZE, record["setting"]["hidden"])
+        net.load_state_dict(torch.load(out / "nets" / f"{best}-s{record['seed']}.pt"))
+        climbs = greedy_climbs(net, walls_env, len(held_out), span)
+        for index, wall in enumerate(held_out):
+            rng = np.random.default_rng([record["seed"], wall])
+            started = time.perf_counter()
+            first5, _ = early_episodes(epsilon_greedy(net), single_wall_env(wall), rng, span)
+            early = {"first5": first5, "steps_to_first5": record["steps"] + first5,
+                     "seconds_to_first5": record["wall_clock_s"]["training"] + time.perf_counter() - started}
+            climb = climbs[index]
+            dqn[index].append(dict(early, finished=float(climb["finished"]), length=climb["length"],
+                                   moves_before_failure=climb["moves_before_failure"]))
+            dqn_no_retry[index].append(dict(early, finished=float(climb["finished_no_retry"]),
+                                            length=climb["length_no_retry"], rise_m=climb["rise_m"],
+                                            moves_before_failure=climb["moves_before_failure"],
+                                            reached_share=1 - climb["failed_moves"] / climb["moves"]))
+        print(f"DQN seed {record['seed']}: {sum(c['finished'] for c in climbs)}/{len(held_out)} held-out walls, "
+              f"{sum(c['finished_no_retry'] for c in climbs)} without retries", flush=True)
+    results["DQN, greedy (zero-shot)"] = dqn
+    results["DQN, greedy without retries (zero-shot)"] = dqn_no_retry
+
+    # The random policy: one capped episode for success, a walk of DYNA_ITERATIONS for the first 5 episodes.
+    rand, rand_no_retry = [[] for _ in held_out], [[] for _ in held_out]
+    curves = {"random": [], "Dyna-Q paper, from scratch": [], "Dyna-Q prior, from scratch": []}
+    for index, wall in enumerate(held_out):
+        for seed in range(args.seed, args.seed + SEEDS_PER_SETTING):
+            rng = np.random.default_rng([seed, wall])
+            env = single_wall_env(wall)
+            for retries, rows in ((True, rand), (False, rand_no_retry)):
+                obs, info = env.reset(seed=0)
+                finished, length, failed, failures, before_failure = False, None, set(), 0, None
+                start = lowest = float(obs["to_finish"][0])
+                for count in range(1, GREEDY_CAP + 1):
+                    allowed = info["action_mask"].copy()
+                    allowed[list(failed)] = 0
+                    if not allowed.any():
+                        break
+                    action = random_policy(None, None, allowed, rng)
+                    obs, _, terminated, _, info = env.step(action)
+                    lowest = min(lowest, float(obs["to_finish"][0]))
+                    if terminated:
+                        finished, length = True, count
+                        break
+                    if info["reached"]:
+                        failed.clear()
+                    else:
+                        failures += 1
+                        before_failure = count - 1 if before_failure is None else before_failure
+                        if not retries:
+                            failed.add(action)
+                rows[index].append({"finished": float(finished), "length": length,
+                                    "reached_share": 1 - failures / count, "rise_m": start - lowest,
+                                    "moves_before_failure": count if before_failure is None else before_failure})
+            started = time.perf_counter()
+            first5, ends = early_episodes(random_policy, single_wall_env(wall), rng, span)
+            early = {"first5": first5, "steps_to_first5": first5, "seconds_to_first5": time.perf_counter() - started}
+            rand[index][-1].update(early)
+            rand_no_retry[index][-1].update({key: None for key in early})
+            curves["random"].append(ends)
+    results["random (masked uniform)"] = rand
+    results["random without retries"] = rand_no_retry
+
+    # Dyna-Q, learning on each held-out wall itself; transfer starts from the Q_grid of the
+    # same seed's run on training wall i (one of the DQN's training walls).
+    for label, mode, transfer in DYNA_CONDITIONS:
+        runs = [[] for _ in held_out]
+        for index, wall_seed in enumerate(held_out):
+            wall = crux.Wall.random(wall_seed)
+            for seed in range(args.seed, args.seed + SEEDS_PER_SETTING):
+                config = {"experiment.iterations": DYNA_ITERATIONS, "experiment.transfer": mode}
+                q_grid, before = None, 0
+                if transfer:
+                    trained = crux.run_learning(crux.Wall.random(index % train_walls), config, seed=seed)
+                    q_grid, before = trained.q_grid, DYNA_ITERATIONS
+                run = crux.run_learning(wall, config, seed=seed, q_grid=q_grid)
+                ends = np.cumsum(run.episode_lengths).tolist()
+                first5 = ends[EARLY_EPISODES - 1] if len(ends) >= EARLY_EPISODES else DYNA_ITERATIONS
+                # The same seed repeats the same first iterations: a run stopped at first5 is
+                # the wall-clock to reach them (the training run's included for transfer).
+                started = time.perf_counter()
+                if transfer:
+                    trained = crux.run_learning(crux.Wall.random(index % train_walls), config, seed=seed)
+                crux.run_learning(wall, dict(config, **{"experiment.iterations": first5}), seed=seed,
+                                  q_grid=trained.q_grid if transfer else None)
+                seconds = time.perf_counter() - started
+                finished = run.greedy_length >= 0
+                runs[index].append({"finished": float(finished), "length": run.greedy_length if finished else None,
+                                    "first5": first5, "steps_to_first5": before + first5,
+                                    "seconds_to_first5": seconds})
+                if label in curves:
+                    curves[label].append(ends)
+        results[label] = runs
+        print(f"{label}: done", flush=True)
+
+    summary = {"best_setting": best, "held_out_walls": held_out, "methods": {}, "paired": {}}
+    for label, runs in results.items():
+        summary["methods"][label] = {key: interval(per_wall_mean(runs, key))
+                                     for key in ("finished", "length", "first5", "steps_to_first5",
+                                                 "seconds_to_first5", "moves_before_failure", "rise_m",
+                                                 "reached_share") if key in runs[0][0]}
+    def success(label):
+        return per_wall_mean(results[label], "finished")
+
+    for dqn_label in ("DQN, greedy (zero-shot)", "DQN, greedy without retries (zero-shot)"):
+        for label in results:
+            if not label.startswith("DQN"):
+                summary["paired"][f"{dqn_label} - {label}"] = paired(success(dqn_label), success(label))
+    summary["search"] = {name: rows for name, rows in table.items()}
+    summary["episode_ends"] = curves
+    summary["runs"] = results
+    (out / "comparison.json").write_text(json.dumps(summary, indent=1, sort_keys=True))
+    print(markdown(summary))
+
+
+def fmt(cell, digits=0, percent=False, walls=30):
+    if cell["mean"] is None:
+        return "-"
+    scale = 100 if percent else 1
+    unit = " %" if percent else ""
+    if cell["low"] is None:
+        return f"{cell['mean'] * scale:.{digits}f}{unit} (n = {cell['n']})"
+    text = f"{cell['mean'] * scale:.{digits}f} [{cell['low'] * scale:.{digits}f}, {cell['high'] * scale:.{digits}f}]"
+    return text + unit + ("" if cell["n"] == walls else f" (n = {cell['n']})")
+
+
+def markdown(summary):
+    lines = ["| method | greedy climbs finished | climb length (finished) | iterations to the first 5 episodes "
+             "| environment steps to them | wall-clock to them (s) |", "|---|---|---|---|---|---|"]
+    walls = len(summary["held_out_walls"])
+    for label, m in summary["methods"].items():
+        lines.append(f"| {label} | {fmt(m['finished'], 0, True, walls)} | {fmt(m['length'], 1, walls=walls)} "
+                     f"| {fmt(m['first5'], walls=walls)} | {fmt(m['steps_to_first5'], walls=walls)} "
+                     f"| {fmt(m['seconds_to_first5'], 2, walls=walls)} |")
+    lines += ["", "| rollout | greedy moves before the first failure | moves that reached | highest rise (m) |",
+              "|---|---|---|---|"]
+    for label, m in summary["methods"].items():
+        if "rise_m" in m:
+            lines.append(f"| {label} | {fmt(m['moves_before_failure'], 1, walls=walls)} | {fmt(m['reached_share'], 0, True, walls)} "
+                         f"| {fmt(m['rise_m'], 2, walls=walls)} |")
+    lines += ["", "| climbs finished, paired over walls | difference | p |", "|---|---|---|"]
+    for label, cell in summary["paired"].items():
+        p = "-" if cell["p"] is None else f"{cell['p']:.2g}"
+        lines.append(f"| {label} | {fmt(cell, 0, True, walls)} | {p} |")
+    lines += ["", "| setting | validation greedy climbs finished, per seed | mean | without retries, per seed "
+              "| mean | climb length | training episodes finished | wall-clock per run (s) |",
+              "|---|---|---|---|---|---|---|---|"]
+    for name, rows in summary["search"].items():
+        lengths = [r["length"] for r in rows if r["length"] is not None]
+        per_seed = ", ".join(f"{100 * r['success']:.0f} %" for r in rows)
+        no_retry = ", ".join(f"{100 * r['success_no_retry']:.0f} %" for r in rows)
+        mean_length = f"{np.mean(lengths):.1f}" if lengths else "-"
+        lines.append(f"| {name} | {per_seed} "
+                     f"| {100 * np.mean([r['success'] for r in rows]):.0f} % | {no_retry} "
+                     f"| {100 * np.mean([r['success_no_retry'] for r in rows]):.0f} % | {mean_length} "
+                     f"| {np.mean([r['train_episodes'] for r in rows]):.0f} "
+                     f"| {np.mean([r['wall_clock_s'] for r in rows]):.0f} |")
+    return "\n".join(lines)
+
+
+def command_plot(args):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    out = pathlib.Path(args.out)
+    records = search_records(out)
+    summary = json.loads((out / "comparison.json").read_text())
+    matplotlib.rcParams["svg.hashsalt"] = "crux"  # the same figure, the same bytes
+    figure, (left, middle, right) = plt.subplots(1, 3, figsize=(16, 4.6))
+    by_setting = collections.defaultdict(list)
+    for record in records:
+        by_setting[setting_name(record["setting"])].append(record)
+    for axes, key, title in ((left, "finished", "greedy"), (middle, "finished_no_retry", "greedy without retries")):
+        for name, runs in sorted(by_setting.items()):
+            steps = [point["step"] for point in runs[0]["curve"]]
+            rates = np.mean([[np.mean([r[key] for r in point["validation"]]) for point in run["curve"]]
+                             for run in runs], axis=0)
+            best = name == summary["best_setting"]
+            axes.plot(steps, 100 * rates, marker="o", linewidth=2.5 if best else 1, alpha=1 if best else 0.6,
+                      label=name + (" (chosen)" if best else ""))
+        axes.set(xlabel="environment steps of training (across training walls)",
+                 ylabel="climbs finished on the validation walls (%)", ylim=(-3, 103),
+                 title=f"DQN {title}, mean of 3 seeds")
+    left.legend(fontsize=7)
+    grid = np.arange(0, DYNA_ITERATIONS + 1, 100)
+    for label, ends_per_run in summary["episode_ends"].items():
+        counts = np.mean([np.searchsorted(ends, grid, side="right") for ends in ends_per_run], axis=0)
+        right.plot(grid, counts, label=f"{label} (held-out walls, per wall)")
+    best_runs = by_setting[summary["best_setting"]]
+    budget = best_runs[0]["steps"]
+    dqn_grid = np.arange(0, budget + 1, 100)
+    counts = np.mean([np.searchsorted([e["end_step"] for e in run["episodes"] if e["finished"]], dqn_grid,
+                                      side="right") for run in best_runs], axis=0)
+    right.plot(dqn_grid, counts, color="black", label="DQN chosen setting (training walls, across walls)")
+    right.set(xscale="log", yscale="log", xlim=(100, budget), xlabel="environment steps",
+              ylabel="episodes finished", title="Episodes finished while learning")
+    right.legend(fontsize=7)
+    figure.tight_layout()
+    figure.savefig(args.figure, metadata={"Date": None} if str(args.figure).endswith(".svg") else None)
+    print(f"wrote {args.figure}")
+
+
+def main(argv=None):
+    parser = OneLineParser(description=__doc__.splitlines()[0])
+    commands = parser.add_subparsers(dest="command", required=True, parser_class=OneLineParser)
+    one = commands.add_parser("train", help="one DQN run; prints its record as JSON")
+    one.add_argument("--steps", type=positive, default=20000, help="environment steps of training")
+    one.add_argument("--seed", type=int, default=1)
+    one.add_argument("--lr", type=learning_rate, default=1e-3)
+    one.add_argument("--epsilon-decay", type=fraction, default=0.2,
+                     help="share of the steps over which epsilon falls from 1 to 0.05")
+    one.add_argument("--hidden", type=positive, default=64, help="width of the two hidden layers")
+    one.add_argument("--train-walls", type=positive, default=500)
+    one.add_argument("--validation-walls", type=positive, default=30)
+    one.add_argument("--save", help="where to write the network's state_dict")
+    search = commands.add_parser("search", help="the tuning grid, appending to OUT/search.jsonl")
+    search.add_argument("--out", required=True)
+    search.add_argument("--steps", type=positive, default=20000)
+    search.add_argument("--seed", type=int, default=1)
+    search.add_argument("--train-walls", type=positive, default=500)
+    search.add_argument("--validation-walls", type=positive, default=30)
+    search.add_argument("--part", type=part, default=(1, 1),
+                        help="K/N: run the K-th of N shares of the grid, for N processes (one core each)")
+    compare = commands.add_parser("compare", help="the chosen setting, Dyna-Q and random on the held-out walls")
+    compare.add_argument("--out", required=True)
+    compare.add_argument("--seed", type=int, default=1)
+    compare.add_argument("--held-out-walls", type=positive, default=30)
+    plot = commands.add_parser("plot", help="the learning curves' figure")
+    plot.add_argument("--out", required=True)
+    plot.add_argument("figure")
+    args = parser.parse_args(argv)
+    {"train": command_train, "search": command_search, "compare": command_compare, "plot": command_plot}[
+        args.command](args)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,153 @@
+"""The deep-RL baseline of examples/python/dqn_baseline.py, in a short version: a few hundred
+steps on 2 training walls (docs/BASELINES.md has the real runs)."""
+
+import argparse
+import importlib.util
+import json
+import os
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import crux
+
+try:
+    import gymnasium
+    import torch
+except ImportError as error:
+    reason = (
+        f"the baseline needs Gymnasium (../shared/third_party/gymnasium-1.4.0) and Debian's python3-torch: {error}"
+    )
+    if os.environ.get("CI") == "true":
+        raise ImportError(f"under CI: {reason}") from error
+    pytest.skip(reason, allow_module_level=True)
+
+SCRIPT = pathlib.Path(__file__).resolve().parents[2] / "examples" / "python" / "dqn_baseline.py"
+SHORT = ["--steps", "300", "--train-walls", "2", "--validation-walls", "2"]
+
+
+@pytest.fixture(scope="module")
+def baseline():
+    spec = importlib.util.spec_from_file_location("dqn_baseline", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def run_script(*args):
+    # The example's interpreter finds crux and Gymnasium where this one did.
+    path = [str(pathlib.Path(crux.__file__).resolve().parents[1]), str(pathlib.Path(gymnasium.__file__).parents[1])]
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(path))
+    return subprocess.run([sys.executable, str(SCRIPT), *args], capture_output=True, text=True, env=env)
+
+
+def short_run(*extra):
+    done = run_script("train", *SHORT, *extra)
+    assert done.returncode == 0, done.stderr
+    record = json.loads(done.stdout)
+    record.pop("wall_clock_s")  # the only field the seed does not fix
+    return record
+
+
+def short_args(**changes):
+    values = dict(steps=300, seed=1, lr=1e-3, epsilon_decay=0.2, hidden=64, train_walls=2)
+    return argparse.Namespace(**dict(values, **changes))
+
+
+def random_transitions(baseline, count=200):
+    """A replay of a masked random policy's n-step transitions on 2 training walls."""
+    env = baseline.make_env(baseline.split(2, [baseline.HELD_OUT_FIRST_SEED]), max_episode_steps=1000)
+    span = env.unwrapped._span
+    rng = np.random.default_rng(0)
+    replay = baseline.Replay(count, baseline.STATE_SIZE, env.unwrapped.max_candidates)
+    obs, info = env.reset(seed=0)
+    for _ in range(count):
+        state, candidates, mask = baseline.features(obs, span)
+        action = baseline.random_policy(state, candidates, mask, rng)
+        obs, reward, terminated, truncated, info = env.step(action)
+        replay.add([(state, candidates, mask, action, reward * baseline.REWARD_SCALE)],
+                   baseline.features(obs, span), terminated)
+        if terminated or truncated:
+            obs, info = env.reset()
+    return replay
+
+
+def test_the_loss_falls_on_a_fixed_batch(baseline):
+    baseline.deterministic(0)
+    batch = random_transitions(baseline).batch(np.arange(64))
+    net, target = baseline.SlotQNetwork(baseline.STATE_SIZE, 32), baseline.SlotQNetwork(baseline.STATE_SIZE, 32)
+    optimiser = torch.optim.Adam(net.parameters(), lr=1e-3)
+    losses = []
+    for _ in range(60):
+        loss = baseline.td_loss(net, target, batch)
+        optimiser.zero_grad()
+        loss.backward()
+        optimiser.step()
+        losses.append(float(loss))
+    assert losses[-1] < 0.5 * losses[0], losses
+
+
+def test_masked_actions_are_never_chosen_nor_bootstrapped_from(baseline):
+    baseline.deterministic(0)
+    net = baseline.SlotQNetwork(baseline.STATE_SIZE, 16)
+    state = torch.zeros(1, baseline.STATE_SIZE)
+    candidates = torch.randn(1, 8, 3)
+    unmasked = net(state, candidates, torch.ones(1, 8, dtype=torch.bool))[0]
+    best = int(torch.argmax(unmasked))
+    mask = torch.ones(1, 8, dtype=torch.bool)
+    mask[0, best] = False  # the action the network prefers is not possible
+    masked = net(state, candidates, mask)[0]
+    assert torch.isinf(masked[best]) and masked[best] < 0
+    chosen = baseline.greedy_action(net, state[0].numpy(), candidates[0].numpy(), mask[0].numpy())
+    assert chosen != best and mask[0, chosen]
+    # The target's max is over the next state's possible actions: with the same network as
+    # target, a 1-step transition's target is reward + gamma * (best possible value).
+    batch = (state, candidates, torch.ones(1, 8, dtype=torch.bool), torch.tensor([best]), torch.tensor([0.0]),
+             torch.tensor([baseline.GAMMA]), state, candidates, mask)
+    expected = baseline.GAMMA * float(masked.max())
+    q = float(unmasked[best])
+    with torch.no_grad():
+        loss = float(baseline.td_loss(net, net, batch))
+    huber = 0.5 * (q - expected) ** 2 if abs(q - expected) < 1 else abs(q - expected) - 0.5
+    assert loss == pytest.approx(huber, rel=1e-5)
+
+
+def test_the_same_seed_gives_the_same_bytes_and_the_record_its_fields(baseline):
+    first, again = short_run("--seed", "4"), short_run("--seed", "4")
+    assert json.dumps(first, sort_keys=True) == json.dumps(again, sort_keys=True)
+    other, _, _ = baseline.train(short_args(seed=5), validation_walls=2)
+    assert first["network_sha256"] != other["network_sha256"]
+    assert first["masked_choices"] == 0  # neither exploration nor the greedy choice took a masked action
+    assert first["setting"] == {"lr": 1e-3, "epsilon_decay": 0.2, "hidden": 64}
+    assert first["steps"] == 300 and first["train_walls"] == 2 and first["seed"] == 4
+    assert sum(episode["length"] for episode in first["episodes"]) <= 300
+    assert all(episode["end_step"] <= 300 and episode["finished"] in (True, False) for episode in first["episodes"])
+    assert [point["step"] for point in first["curve"]] == [150, 300]
+    for point in first["curve"]:
+        assert [climb["wall"] for climb in point["validation"]] == ["random wall, seed 10000", "random wall, seed 10001"]
+        for climb in point["validation"]:
+            assert climb["finished"] == (climb["length"] is not None)
+            assert climb["finished_no_retry"] == (climb["length_no_retry"] is not None)
+            assert climb["length"] is None or 1 <= climb["length"] <= baseline.GREEDY_CAP
+            # A greedy climb finishes only without a failed move, and is then its own climb without retries.
+            assert not climb["finished"] or (climb["failed_moves"] == 0 and climb["length_no_retry"] == climb["length"])
+    assert first["mean_loss_per_tenth"] and all(np.isfinite(first["mean_loss_per_tenth"]))
+
+
+@pytest.mark.parametrize("argument, value", [("--steps", "0"), ("--hidden", "-3"), ("--lr", "0"),
+                                             ("--epsilon-decay", "1.5"), ("--train-walls", "two")])
+def test_bad_input_is_one_line_naming_the_argument(baseline, capsys, argument, value):
+    with pytest.raises(SystemExit) as exit:
+        baseline.main(["train", argument, value])
+    assert exit.value.code == 2
+    out, err = capsys.readouterr()
+    assert out == ""
+    assert len(err.splitlines()) == 1 and argument in err, err
+
+
+def test_train_refuses_a_budget_below_one(baseline):
+    with pytest.raises(ValueError, match="^steps: must be a positive integer"):
+        baseline.train(short_args(steps=0))
