@@ -5,7 +5,10 @@ For each environment count, both vector envs are reset with the same seed and st
 with the same actions, drawn from the action masks by one seeded sampler: they climb the
 same walls through the same states (VectorClimbEnv's results equal SyncVectorEnv's bit
 for bit), so they do the same IK work. Only the step calls are timed; a rate is
-environment steps (num_envs per call) per second of step calls.
+environment steps (num_envs per call) per second of step calls. By default every episode
+climbs a new random wall (new IK solves all along); --wall-seed fixes one wall and
+--warmup steps it untimed first, so that the timed steps mostly find their postures in
+the cache and measure the rest of the step.
 
     PYTHONPATH=build/release/python /usr/bin/python3 bench/vector_env_throughput.py
 """
@@ -31,34 +34,41 @@ parser.add_argument("--envs", type=int, nargs="+", default=[1, 8, 64])
 parser.add_argument("--steps", type=int, default=2000, help="step calls per environment count")
 parser.add_argument("--observation", choices=crux.gym.OBSERVATION_FORMS, default="numeric")
 parser.add_argument("--seed", type=int, default=0)
+parser.add_argument("--wall-seed", type=int, default=None, help="one random wall for every episode")
+parser.add_argument("--warmup", type=int, default=0, help="untimed step calls first")
 args = parser.parse_args()
 
 
-def run(envs, steps):
-    """Seconds spent in envs.step over `steps` calls, and the rewards' sum (the same for both)."""
+def run(envs):
+    """Seconds spent in envs.step over the timed calls, and the rewards' sum (the same for both)."""
     sampler = np.random.default_rng(args.seed)
     _, info = envs.reset(seed=args.seed)
     seconds, total = 0.0, 0.0
-    for _ in range(steps):
+    for call in range(args.warmup + args.steps):
         # A random offered action per environment: the masked argmax of uniform noise.
         actions = np.argmax(sampler.random(info["action_mask"].shape) * info["action_mask"], axis=1)
         start = time.perf_counter()
         _, rewards, _, _, info = envs.step(actions)
-        seconds += time.perf_counter() - start
+        if call >= args.warmup:
+            seconds += time.perf_counter() - start
         total += float(rewards.sum())
     return seconds, total
 
 
-print(f"{args.steps} step calls per count, {args.observation} observations, random walls per episode, "
+wall = None if args.wall_seed is None else crux.Wall.random(args.wall_seed)
+walls = "random walls per episode" if wall is None else f"random wall {args.wall_seed}"
+
+
+print(f"{args.steps} step calls per count after {args.warmup} untimed, {args.observation} observations, {walls}, "
       f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.2f}")
 print(f"{'envs':>5} {'SyncVectorEnv steps/s':>22} {'VectorClimbEnv steps/s':>23} {'ratio':>6}")
 for count in args.envs:
     sync = gymnasium.vector.SyncVectorEnv(
-        [lambda: gymnasium.make(crux.gym.ENV_ID, observation=args.observation) for _ in range(count)]
+        [lambda: gymnasium.make(crux.gym.ENV_ID, wall=wall, observation=args.observation) for _ in range(count)]
     )
-    vector = crux.gym.VectorClimbEnv(count, observation=args.observation)
-    sync_s, sync_total = run(sync, args.steps)
-    vector_s, vector_total = run(vector, args.steps)
+    vector = crux.gym.VectorClimbEnv(count, wall, observation=args.observation)
+    sync_s, sync_total = run(sync)
+    vector_s, vector_total = run(vector)
     assert sync_total == vector_total, "the two vector envs took different paths"
     sync_rate, vector_rate = count * args.steps / sync_s, count * args.steps / vector_s
     print(f"{count:>5} {sync_rate:>22.0f} {vector_rate:>23.0f} {vector_rate / sync_rate:>5.1f}x")

@@ -109,7 +109,7 @@ def test_make_vec_and_gymnasiums_vector_wrappers_accept_it():
 def test_masks_are_batched_in_info_and_action_masks():
     envs = crux.gym.VectorClimbEnv(3, crux.Wall.random(7))
     obs, info = envs.reset(seed=1)
-    rng = np.random.default_rng(2)
+    envs.action_space.seed(2)
     for _ in range(5):
         assert info["action_mask"].shape == (3, crux.gym.DEFAULT_MAX_CANDIDATES)
         assert info["action_mask"].dtype == np.int8
