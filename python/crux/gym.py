@@ -502,6 +502,8 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
                 raise ValueError(f"seed: {len(seeds)} seeds for {self.num_envs} environments")
         if options is not None and not isinstance(options, dict):
             raise ValueError("options: must be a dict or None")
+        if options is not None and "reset_mask" in options:
+            raise ValueError("options: reset_mask is not supported: reset() resets every environment")
         super().reset(seed=int(seed) if isinstance(seed, (int, np.integer)) else None)
         for env, env_seed in enumerate(seeds):
             if env_seed is not None or self._rngs[env] is None:

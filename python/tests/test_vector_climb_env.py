@@ -63,7 +63,8 @@ def test_matches_single_environments_under_sync_vector_env(case):
     assert vector.action_space == singles.action_space
     rng = np.random.default_rng(0)
     ends = {"terminated": 0, "truncated": 0, "mixed steps": 0}
-    for reset in ({"seed": 5}, {}, {"seed": [9, 8, 7, 6]}):  # seeded, then going on with each np_random
+    # Seeded, going on with each np_random, seeded per environment, and a named wall for one episode.
+    for reset in ({"seed": 5}, {}, {"seed": [9, 8, 7, 6]}, {"options": {"wall": 11}}):
         got, expected = vector.reset(**reset), singles.reset(**reset)
         assert_same(got[0], expected[0], f"reset {reset}: obs")
         assert_same(got[1], expected[1], f"reset {reset}: info")
@@ -146,6 +147,8 @@ def test_bad_input_is_a_value_error_naming_the_argument():
     envs = crux.gym.VectorClimbEnv(3, wall)
     with pytest.raises(ValueError, match="^seed: 2 seeds for 3 environments"):
         envs.reset(seed=[1, 2])
+    with pytest.raises(ValueError, match="^options: reset_mask is not supported"):
+        envs.reset(options={"reset_mask": np.array([True, False, True])})
     _, info = envs.reset(seed=0)
     actions = random_masked_actions(np.random.default_rng(0), info["action_mask"])
     outside = int(np.flatnonzero(info["action_mask"][1] == 0)[0])
