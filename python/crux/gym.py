@@ -515,6 +515,8 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
         return obs, self._info(parts)
 
     def step(self, actions):
+        if self._rngs[0] is None:
+            raise gymnasium.error.ResetNeeded("Cannot call step() before reset()")  # as OrderEnforcing
         for env in np.flatnonzero(self._vector.needs_reset()):
             self._choose_wall(int(env), None)
         obs, rewards, terminated, truncated, parts = self._vector.step(actions)

@@ -145,6 +145,8 @@ def test_bad_input_is_a_value_error_naming_the_argument():
     with pytest.raises(ValueError, match="^config: reward.step must be a finite number$"):
         crux.gym.VectorClimbEnv(2, wall, config={"reward": {"step": "x"}})
     envs = crux.gym.VectorClimbEnv(3, wall)
+    with pytest.raises(gymnasium.error.ResetNeeded):
+        envs.step([0, 0, 0])
     with pytest.raises(ValueError, match="^seed: 2 seeds for 3 environments"):
         envs.reset(seed=[1, 2])
     with pytest.raises(ValueError, match="^options: reset_mask is not supported"):
