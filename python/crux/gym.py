@@ -2,17 +2,22 @@
 
 Imported only when wanted (`import crux.gym`), so that `import crux` needs no Gymnasium.
 Importing it registers `crux/Climb-v0`; `gymnasium.make("crux/Climb-v0", ...)` passes
-its keyword arguments to `ClimbEnv`. docs/PYTHON.md describes the observation forms,
-their bounds, the actions and the walls.
+its keyword arguments to `ClimbEnv`, and `gymnasium.make_vec("crux/Climb-v0", num_envs,
+vectorization_mode="vector_entry_point", ...)` to `VectorClimbEnv`, which steps them all
+in one call into C++. docs/PYTHON.md describes the observation forms, their bounds, the
+actions and the walls.
 """
 
+import copy
 import operator
 import os
-import tomllib
 
 import gymnasium
 import numpy as np
 from gymnasium import spaces
+from gymnasium.utils import seeding
+from gymnasium.vector import AutoresetMode
+from gymnasium.vector.utils import batch_space
 
 from . import _crux
 
@@ -24,7 +29,6 @@ WALL_ORDERS = ("cycle", "sample")
 # 40,000 random steps on the paper's random walls (4 x 8 tiles) met at most 27
 # candidates; denser walls may need more (ValueError naming max_candidates otherwise).
 DEFAULT_MAX_CANDIDATES = 32
-_DEFAULT_MAX_SPAN_M = 2.8  # filter.max_span's default (src/configurations/geometric_filter.hpp)
 
 
 class MaskedDiscrete(spaces.Discrete):
@@ -40,20 +44,6 @@ class MaskedDiscrete(spaces.Discrete):
         if mask is None and probability is None:
             mask = self.offered
         return super().sample(mask=mask, probability=probability)
-
-
-def _config_value(config, dotted, default):
-    """A key of a config given as crux takes it: None, a config.toml path, or a dict of
-    dotted or nested keys."""
-    if config is None:
-        return default
-    if isinstance(config, (str, os.PathLike)):
-        with open(config, "rb") as file:
-            config = tomllib.load(file)
-    if dotted in config:
-        return config[dotted]
-    table, key = dotted.split(".", 1)
-    return config.get(table, {}).get(key, default)
 
 
 def _wall_key(wall):
@@ -140,6 +130,26 @@ def _split_side(wall_split, evaluation, wall_config):
     return held_out if evaluation else train
 
 
+def _next_wall(walls, rng, options, hold_count):
+    """The wall of the next episode as (index, wall, seed): index that of a wall of a list
+    (None for a random or a named wall, which serves that episode alone), seed a random
+    wall's. hold_count: the paper form's action count, which a named wall must have
+    (None: any)."""
+    named = None if options is None else options.get("wall")
+    if named is not None:
+        wall = _wall_from(named, walls.wall_config if isinstance(walls, _RandomWalls) else None, "options")
+        if hold_count is not None and wall.hold_count != hold_count:
+            raise ValueError(
+                f"options: the wall '{wall.name}' has {wall.hold_count} holds, not the {hold_count} "
+                "hold indices of the action space"
+            )
+        return None, wall, int(named) if isinstance(named, (int, np.integer)) else None
+    key, wall = walls.draw(rng)
+    if isinstance(walls, _RandomWalls):
+        return None, wall, key
+    return key, wall, None
+
+
 class ClimbEnv(gymnasium.Env):
     """The climbing MDP (paper, sections III-C and III-D) as a gymnasium.Env.
 
@@ -152,7 +162,7 @@ class ClimbEnv(gymnasium.Env):
     wall_split: {"train": walls, "evaluation": walls}, two lists that must not share a
         wall; the environment takes the evaluation walls when evaluation is true, the
         training walls otherwise. Instead of wall.
-    config: the keys of config.toml's [reward], [ik], [filter] and [grid] tables and experiment.urdf.
+    config: the keys of config.toml's [reward], [ik], [physics], [filter] and [grid] tables and experiment.urdf.
     max_candidates: the numeric form's action count, the most candidates a state may offer.
     model: a crux.BodyModel, or None for experiment.urdf's body or the default one.
     render_mode: None, "rgb_array" (the climber on the wall, by matplotlib) or "ansi".
@@ -187,7 +197,6 @@ class ClimbEnv(gymnasium.Env):
         self.max_candidates = int(max_candidates)
         self._config = config
         self._model_argument = model
-        self._span = float(_config_value(config, "filter.max_span", _DEFAULT_MAX_SPAN_M))
         if evaluation and wall_split is None:
             raise ValueError("evaluation: takes the evaluation walls of a wall_split, and there is none")
         if wall_split is not None:
@@ -206,10 +215,12 @@ class ClimbEnv(gymnasium.Env):
                 f"wall: walls of different hold counts ({sorted(counts)}) have no common hold index: "
                 "use observation='numeric'"
             )
+        self._paper_hold_count = max(counts) if observation == "paper" else None
         # One environment up front: the config is checked, the body and the grid's size known.
         self._draw_wall(np.random.default_rng(0))
         self._walls.restart()
         self._model = self._env.model
+        self._span = self._env.max_span
         self.action_space = MaskedDiscrete(max(counts) if observation == "paper" else self.max_candidates)
         self.observation_space = self._paper_space() if observation == "paper" else self._numeric_space()
 
@@ -255,28 +266,13 @@ class ClimbEnv(gymnasium.Env):
     # --- walls ----------------------------------------------------------------------
 
     def _draw_wall(self, rng, options=None):
-        named = None if options is None else options.get("wall")
-        if named is not None:
-            wall = _wall_from(named, self._walls_config(), "options")
-            self.wall_seed = int(named) if isinstance(named, (int, np.integer)) else None
-            self._env = self._climb_env(wall)
-            if self.observation_form == "paper" and wall.hold_count != self.action_space.n:
-                raise ValueError(
-                    f"options: the wall '{wall.name}' has {wall.hold_count} holds, not the {self.action_space.n} "
-                    "hold indices of the action space"
-                )
-            return
-        key, wall = self._walls.draw(rng)
-        self.wall_seed = key if isinstance(self._walls, _RandomWalls) else None
-        if isinstance(self._walls, _RandomWalls):
+        index, wall, self.wall_seed = _next_wall(self._walls, rng, options, self._paper_hold_count)
+        if index is None:
             self._env = self._climb_env(wall)
         else:
-            if key not in self._envs:
-                self._envs[key] = self._climb_env(wall)
-            self._env = self._envs[key]
-
-    def _walls_config(self):
-        return self._walls.wall_config if isinstance(self._walls, _RandomWalls) else None
+            if index not in self._envs:
+                self._envs[index] = self._climb_env(wall)
+            self._env = self._envs[index]
 
     def _climb_env(self, wall):
         return _crux.ClimbEnv(wall, config=self._config, max_steps=None, model=self._model_argument)
@@ -348,15 +344,11 @@ class ClimbEnv(gymnasium.Env):
                 "free_limb": int(raw["free_limb"]),
             }
         else:
-            if len(holds) > self.max_candidates:
-                raise ValueError(
-                    f"max_candidates: the wall '{self.wall.name}' offers {len(holds)} candidates, more than "
-                    f"{self.max_candidates}"
-                )
+            # The features are computed in C++, as the vector environment computes them.
+            obs = self._env.numeric_observation(self.max_candidates)
             mask = np.zeros(self.max_candidates, dtype=np.int8)
             mask[: len(holds)] = 1
             self._candidates = holds
-            obs = self._numeric(raw, holds, mask)
         self._mask = mask
         self.action_space.offered = mask
         info = dict(info)
@@ -370,27 +362,6 @@ class ClimbEnv(gymnasium.Env):
         if self.wall_seed is not None:
             info["wall_seed"] = self.wall_seed
         return obs, info
-
-    def _numeric(self, raw, holds, mask):
-        free = int(raw["free_limb"])
-        points = _crux.forward_kinematics(self._model, raw["posture"])["points"]
-        grasp = points[1 + free]
-        held = np.where(np.isnan(raw["holds"]), 0.0, raw["holds"] - grasp)
-        candidates = np.zeros((self.max_candidates, 3))
-        candidates[: len(holds)] = self.wall.positions[holds] - grasp
-        posture = np.concatenate([raw["posture"][:3] - grasp, raw["posture"][3:]])
-        one_hot = np.zeros(4)
-        one_hot[free] = 1.0
-        bound = 2 * self._span
-        return {
-            "free_limb": one_hot.astype(np.float32),
-            "held": held.astype(np.float32),
-            "candidates": candidates.astype(np.float32),
-            "candidate_mask": mask.astype(np.float32),
-            "posture": posture.astype(np.float32),
-            "centre_of_mass": (self._centre_of_mass - grasp).astype(np.float32),
-            "to_finish": np.clip([self.wall.finish_height - self._centre_of_mass[2]], -bound, bound).astype(np.float32),
-        }
 
     # --- rendering ----------------------------------------------------------------------
 
@@ -443,6 +414,157 @@ class ClimbEnv(gymnasium.Env):
         return np.asarray(figure.canvas.buffer_rgba())[:, :, :3].copy()
 
 
+class VectorClimbEnv(gymnasium.vector.VectorEnv):
+    """num_envs ClimbEnvs as one gymnasium.vector.VectorEnv, stepped together in one call
+    into C++ that releases the GIL and spreads the environments over threads.
+
+    Takes ClimbEnv's arguments (but render_mode), environment i being the ClimbEnv they
+    make: reset(seed=s) seeds it with s + i, and its observations, rewards, ends and masks
+    are, bit for bit, those of that ClimbEnv under Gymnasium's TimeLimit and SyncVectorEnv.
+    Autoreset is Gymnasium's next-step mode: the step after an episode's end resets that
+    environment (its action unused). Gymnasium's TimeLimit wraps no vector env, so the
+    truncation is here: after max_episode_steps actions (the registered limit; None for
+    none), as TimeLimit does it. info holds the masks, info["action_mask"] of shape
+    (num_envs, n), and what the single environments' infos hold, batched as SyncVectorEnv
+    batches them ("_key" marking the environments that have "key").
+    """
+
+    metadata = {"autoreset_mode": AutoresetMode.NEXT_STEP}
+
+    def __init__(
+        self,
+        num_envs,
+        wall=None,
+        observation="numeric",
+        *,
+        wall_config=None,
+        wall_order="cycle",
+        wall_split=None,
+        evaluation=False,
+        config=None,
+        max_candidates=DEFAULT_MAX_CANDIDATES,
+        model=None,
+        max_episode_steps=MAX_EPISODE_STEPS,
+    ):
+        if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or num_envs < 1:
+            raise ValueError(f"num_envs: must be a positive integer, got {num_envs!r}")
+        if max_episode_steps is not None and (
+            isinstance(max_episode_steps, bool)
+            or not isinstance(max_episode_steps, (int, np.integer))
+            or max_episode_steps < 1
+        ):
+            raise ValueError(f"max_episode_steps: must be a positive integer or None, got {max_episode_steps!r}")
+        # One single environment checks the arguments and gives the walls and the spaces.
+        single = ClimbEnv(
+            wall,
+            observation,
+            wall_config=wall_config,
+            wall_order=wall_order,
+            wall_split=wall_split,
+            evaluation=evaluation,
+            config=config,
+            max_candidates=max_candidates,
+            model=model,
+        )
+        self.num_envs = int(num_envs)
+        self.observation_form = observation
+        self.max_episode_steps = max_episode_steps
+        self.single_observation_space = single.observation_space
+        self.single_action_space = spaces.Discrete(single.action_space.n)
+        self.observation_space = batch_space(self.single_observation_space, self.num_envs)
+        self.action_space = batch_space(self.single_action_space, self.num_envs)
+        self._paper_hold_count = single._paper_hold_count
+        # Each environment takes the walls in its own turn, from its own np_random.
+        self._walls = [copy.copy(single._walls) for _ in range(self.num_envs)]
+        self._rngs = [None] * self.num_envs
+        listed = single._walls.walls if isinstance(single._walls, _FixedWalls) else []
+        single.close()
+        self._vector = _crux.VectorClimbEnv(
+            self.num_envs,
+            listed,
+            observation == "numeric",
+            single.action_space.n,
+            max_episode_steps,
+            config=config,
+            model=model,
+        )
+        self._wall_names = np.full(self.num_envs, None, dtype=object)
+        self._wall_seeds = np.zeros(self.num_envs, dtype=np.int64)
+        self._seeded = np.zeros(self.num_envs, dtype=np.bool_)
+        self._mask = None
+
+    def reset(self, *, seed=None, options=None):
+        if seed is None or isinstance(seed, (int, np.integer)):
+            seeds = [None if seed is None else int(seed) + i for i in range(self.num_envs)]
+        else:
+            seeds = list(seed)
+            if len(seeds) != self.num_envs:
+                raise ValueError(f"seed: {len(seeds)} seeds for {self.num_envs} environments")
+        if options is not None and not isinstance(options, dict):
+            raise ValueError("options: must be a dict or None")
+        if options is not None and "reset_mask" in options:
+            raise ValueError("options: reset_mask is not supported: reset() resets every environment")
+        super().reset(seed=int(seed) if isinstance(seed, (int, np.integer)) else None)
+        for env, env_seed in enumerate(seeds):
+            if env_seed is not None or self._rngs[env] is None:
+                self._rngs[env], _ = seeding.np_random(env_seed)
+            if env_seed is not None:
+                self._walls[env].restart()  # the same seed, the same walls
+            self._choose_wall(env, options)
+        obs, _, _, _, parts = self._vector.reset()
+        return obs, self._info(parts)
+
+    def step(self, actions):
+        if self._rngs[0] is None:
+            raise gymnasium.error.ResetNeeded("Cannot call step() before reset()")  # as OrderEnforcing
+        for env in np.flatnonzero(self._vector.needs_reset()):
+            self._choose_wall(int(env), None)
+        obs, rewards, terminated, truncated, parts = self._vector.step(actions)
+        return obs, rewards, terminated, truncated, self._info(parts)
+
+    def action_masks(self):
+        """The possible actions of each environment's state as bools, (num_envs, n), for maskable agents."""
+        return self._mask.astype(bool)
+
+    def close_extras(self, **kwargs):
+        self._vector = None
+
+    def _choose_wall(self, env, options):
+        index, wall, seed = _next_wall(self._walls[env], self._rngs[env], options, self._paper_hold_count)
+        self._vector.set_next_wall(env, wall if index is None else index)
+        self._wall_names[env] = wall.name
+        self._seeded[env] = seed is not None
+        self._wall_seeds[env] = 0 if seed is None else seed
+
+    def _info(self, parts):
+        """The single environments' infos, batched as SyncVectorEnv batches them."""
+        info = {}
+
+        def add(key, value, present):
+            info[key] = value
+            info[f"_{key}"] = present.copy()
+
+        everyone = np.ones(self.num_envs, dtype=np.bool_)
+        stepped = parts["stepped"]
+        if stepped.any():  # what a step's info holds and a reset's does not
+            for key in ("hold_id", "reached", "fell", "root_rise"):
+                add(key, parts[key], stepped)
+        add("centre_of_mass", parts["centre_of_mass"], everyone)
+        add("action_mask", parts["action_mask"], everyone)
+        if self.observation_form == "numeric":
+            add("candidate_holds", parts["candidate_holds"], everyone)
+        add("wall_name", self._wall_names.copy(), everyone)
+        if self._seeded.any():
+            add("wall_seed", self._wall_seeds.copy(), self._seeded)
+        self._mask = parts["action_mask"]
+        return info
+
+
 # By name, so that the spec serialises (EnvSpec.to_json) and
 # gymnasium.make("crux.gym:crux/Climb-v0") imports this module first.
-gymnasium.register(id=ENV_ID, entry_point="crux.gym:ClimbEnv", max_episode_steps=MAX_EPISODE_STEPS)
+gymnasium.register(
+    id=ENV_ID,
+    entry_point="crux.gym:ClimbEnv",
+    vector_entry_point="crux.gym:VectorClimbEnv",
+    max_episode_steps=MAX_EPISODE_STEPS,
+)

@@ -14,6 +14,7 @@ PYBIND11_MODULE(_crux, module) {
   crux::python::bind_ik(module);
   crux::python::bind_wall(module);
   crux::python::bind_climb_env(module);
+  crux::python::bind_vector_climb_env(module);
   crux::python::bind_learning(module);
   crux::python::bind_experiment(module);
 }

@@ -15,6 +15,8 @@ namespace crux::python {
 // The keys of one config section: what the functions over the grid or the filter take.
 inline const ParameterSet kGridKeys{{"grid"}, {}};
 inline const ParameterSet kFilterKeys{{"filter"}, {}};
+// What the climbing environments take, single or vector.
+inline const ParameterSet kClimbEnvKeys{{"experiment.urdf", "reward", "ik", "physics", "filter", "grid"}, {}};
 
 // `caller` names the Python function in errors: "ClimbEnv" gives "crux.ClimbEnv does
 // not take wall.seed".

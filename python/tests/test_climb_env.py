@@ -170,3 +170,21 @@ def test_config_changes_the_rewards(wall7):
     env.reset()
     rewards = {result[1] for _, result in random_policy_steps(env, 3, 200) if result[4]["reached"]}
     assert -2.0 in rewards and -1.0 not in rewards
+
+
+def test_numeric_observation_is_relative_to_the_free_limbs_grasp_point(wall7):
+    env = crux.ClimbEnv(wall7)
+    raw, info = env.reset()
+    obs = env.numeric_observation(32)
+    shapes = {"free_limb": (4,), "held": (4, 3), "candidates": (32, 3), "candidate_mask": (32,),
+              "posture": (35,), "centre_of_mass": (3,), "to_finish": (1,)}
+    assert {key: value.shape for key, value in obs.items()} == shapes
+    assert all(value.dtype == np.float32 for value in obs.values())
+    grasp = crux.forward_kinematics(None, raw["posture"])["points"][1]  # the right hand is free
+    holds = np.flatnonzero(env.action_mask())
+    assert np.array_equal(obs["candidates"][: len(holds)], (wall7.positions[holds] - grasp).astype(np.float32))
+    assert np.array_equal(obs["candidate_mask"], (np.arange(32) < len(holds)).astype(np.float32))
+    assert np.array_equal(obs["centre_of_mass"], (info["centre_of_mass"] - grasp).astype(np.float32))
+    assert env.max_span == 2.8
+    with pytest.raises(ValueError, match=f"^max_candidates: the wall '{wall7.name}' offers {len(holds)} candidates"):
+        env.numeric_observation(len(holds) - 1)

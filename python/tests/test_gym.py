@@ -268,3 +268,26 @@ def test_render_modes():
     text.reset(seed=0)
     out = text.render()
     assert out.startswith("random wall, seed 7: right_hand free") and "possible holds:" in out
+
+
+def test_a_fall_under_the_static_model_terminates_on_the_dead_end():
+    """Random wall 7 under the static model (docs/PHYSICS.md): after the right hand takes
+    hold 14 and the left hand hold 20, no stance of the right foot holds on the three holds
+    left, so every candidate fails; the last failure is a fall (docs/MODEL.md, choice C27),
+    which terminates the episode on the dead end, not on the start it falls back to."""
+    wall = crux.Wall.random(7)
+    env = crux.gym.ClimbEnv(wall, "paper", config={"physics": {"model": "static"}})
+    env.reset(seed=0)
+    for hold_id in (14, 20):
+        _, _, terminated, _, info = env.step(wall.index_of(hold_id))
+        assert info["reached"] and not info["fell"] and not terminated
+    candidates = list(np.flatnonzero(info["action_mask"]))
+    assert len(candidates) > 3
+    for k, hold in enumerate(candidates):
+        obs, reward, terminated, truncated, info = env.step(int(hold))
+        assert not info["reached"] and reward == -1000.0
+        assert terminated == info["fell"] == (k == len(candidates) - 1)
+    assert obs["free_limb"] == 2, "the dead end, with the right foot free, not the start"
+    kinematic = crux.gym.ClimbEnv(wall, "paper")
+    kinematic.reset(seed=0)
+    assert kinematic.step(wall.index_of(14))[4]["fell"] is False

@@ -1,0 +1,114 @@
+#include "climbing/numeric_observation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "body/kinematics.hpp"
+#include "climbing/climbing_mdp.hpp"
+#include "common/input_error.hpp"
+#include "support/test_models.hpp"
+#include "wall/random_wall.hpp"
+
+namespace crux {
+namespace {
+
+constexpr int kSlots = 32;
+constexpr double kSpan = 2.8;
+
+struct ObservationStorage {
+  std::vector<float> free_limb = std::vector<float>(4), held = std::vector<float>(12),
+                     candidates = std::vector<float>(3 * kSlots), mask = std::vector<float>(kSlots),
+                     posture = std::vector<float>(kConfigurationDof), com = std::vector<float>(3),
+                     to_finish = std::vector<float>(1);
+  NumericObservationRows rows() {
+    return {free_limb.data(), held.data(), candidates.data(), mask.data(),
+            posture.data(),   com.data(),  to_finish.data()};
+  }
+};
+
+struct StartState {
+  const BodyModel& model = testing::human_model();
+  Wall wall = generate_random_wall(1);
+  ClimbingParameters parameters;
+  ClimbingMdp mdp{model, wall, parameters};
+  std::vector<int> candidates;
+  Eigen::Vector3d centre_of_mass, grasp;
+  StartState() {
+    for (const ActionCandidate& c : mdp.candidates()) candidates.push_back(c.wall);
+    std::sort(candidates.begin(), candidates.end());
+    BodyData data(model);
+    forward_kinematics(model, data, mdp.posture());
+    centre_of_mass = centre_of_mass_of(data);
+    grasp = data.points[operational_point(Limb::RightHand)];
+  }
+  Eigen::Vector3d centre_of_mass_of(BodyData& data) { return crux::centre_of_mass(model, data); }
+  NumericObservationInput input(const Wall& w) const {
+    return {w, mdp.configuration(), mdp.posture(), centre_of_mass, candidates, kSpan};
+  }
+};
+
+float relative(double value, double origin) { return static_cast<float>(value - origin); }
+
+TEST(NumericObservation, PlacesTheStateRelativeToTheFreeLimbsGraspPoint) {
+  StartState s;
+  ObservationStorage out;
+  BodyData data(s.model);
+  write_numeric_observation(s.model, data, s.input(s.wall), kSlots, out.rows());
+
+  EXPECT_EQ(out.free_limb, (std::vector<float>{1, 0, 0, 0}));  // the start frees the right hand
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const int hold = s.mdp.configuration().holds[limb];
+    for (int k = 0; k < 3; ++k) {
+      const float expected = hold == kFree ? 0.0F : relative(s.wall.holds[hold].position[k], s.grasp[k]);
+      EXPECT_EQ(out.held[3 * limb + k], expected) << "limb " << limb;
+    }
+  }
+  const auto count = static_cast<int>(s.candidates.size());
+  ASSERT_GT(count, 0);
+  for (int slot = 0; slot < kSlots; ++slot) {
+    EXPECT_EQ(out.mask[slot], slot < count ? 1.0F : 0.0F);
+    for (int k = 0; k < 3; ++k) {
+      const float expected = slot < count ? relative(s.wall.holds[s.candidates[slot]].position[k], s.grasp[k]) : 0.0F;
+      EXPECT_EQ(out.candidates[3 * slot + k], expected) << "slot " << slot;
+    }
+  }
+  for (int i = 0; i < kConfigurationDof; ++i) {
+    const float expected = i < 3 ? relative(s.mdp.posture()[i], s.grasp[i]) : static_cast<float>(s.mdp.posture()[i]);
+    EXPECT_EQ(out.posture[i], expected) << "coordinate " << i;
+  }
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(out.com[k], relative(s.centre_of_mass[k], s.grasp[k]));
+  EXPECT_EQ(out.to_finish[0], relative(s.wall.finish_height, s.centre_of_mass.z()));
+}
+
+TEST(NumericObservation, ClipsTheHeightLeftToTwiceTheSpan) {
+  StartState s;
+  ObservationStorage out;
+  BodyData data(s.model);
+  Wall high = s.wall;
+  high.finish_height = 100.0;
+  write_numeric_observation(s.model, data, s.input(high), kSlots, out.rows());
+  EXPECT_EQ(out.to_finish[0], static_cast<float>(2 * kSpan));
+  Wall low = s.wall;
+  low.finish_height = -100.0;
+  write_numeric_observation(s.model, data, s.input(low), kSlots, out.rows());
+  EXPECT_EQ(out.to_finish[0], static_cast<float>(-2 * kSpan));
+}
+
+TEST(NumericObservation, RefusesMoreCandidatesThanSlotsNamingMaxCandidates) {
+  StartState s;
+  ObservationStorage out;
+  BodyData data(s.model);
+  const int too_few = static_cast<int>(s.candidates.size()) - 1;
+  try {
+    write_numeric_observation(s.model, data, s.input(s.wall), too_few, out.rows());
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "max_candidates");
+    EXPECT_NE(e.problem().find("more than " + std::to_string(too_few)), std::string::npos) << e.problem();
+  }
+}
+
+}  // namespace
+}  // namespace crux
