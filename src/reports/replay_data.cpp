@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -53,6 +54,21 @@ class FrameWriter {
   std::vector<double> values_;
   int count_ = 0;
 };
+
+// What holds a stance, as the replay draws it: the effort (null when no forces balance
+// it), each limb's contact force (null when free), and the bounded joints' torque ratios
+// as [joint, ratio] pairs, to a thousandth.
+nlohmann::ordered_json stance_json(const StanceLoads& loads) {
+  nlohmann::ordered_json forces = nlohmann::ordered_json::array();
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    forces.push_back(loads.held[limb] && loads.balanced ? vector_json(loads.forces[limb]) : nlohmann::ordered_json());
+  }
+  nlohmann::ordered_json ratios = nlohmann::ordered_json::array();
+  for (const auto& [joint, ratio] : loads.joint_ratios) ratios.push_back({joint, std::round(ratio * 1000) / 1000});
+  return {{"effort", loads.balanced ? nlohmann::ordered_json(loads.effort) : nlohmann::ordered_json()},
+          {"forces", forces},
+          {"joint_ratios", ratios}};
+}
 
 }  // namespace
 
@@ -126,6 +142,13 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
   HoldConfiguration configuration = start_configuration(wall).with(Limb::RightHand, kFree);
   std::size_t posture = 0;  // index into the climb of the body's current posture
   std::vector<Posture> path, samples;
+  std::optional<StanceCheck> stances;
+  if (settings.physics.model == PhysicsModel::Static) {
+    stances.emplace(model, wall, settings.physics);
+    if (!climb.postures.empty()) {
+      out["start_stance"] = stance_json(stances->loads(climb.postures.front(), start_configuration(wall)));
+    }
+  }
   const std::size_t shown = std::min(climb.steps.size(), static_cast<std::size_t>(std::max(settings.max_moves, 0)));
   for (const RunStep& step : std::span(climb.steps).first(shown)) {
     const Limb free = configuration.free_limb();
@@ -157,6 +180,8 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
                      {"configuration", configuration_json(wall, step.success ? complete : configuration)},
                      {"first_frame", first},
                      {"last_frame", frames.count() - 1}});
+    if (step.success && stances)
+      moves.back()["stance"] = stance_json(stances->loads(climb.postures[posture], complete));
   }
   out["climb_moves"] = climb.steps.size();
   out["frames"] = {{"count", frames.count()}, {"postures", frames.values()}};

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "climbing/stance_check.hpp"
 #include "configurations/reachability.hpp"
 #include "reports/run_folder.hpp"
 
@@ -26,6 +27,9 @@ struct ReplayOptions {
   int frames_per_failure = 8;           // an unreachable move: the body stays, the tried hold is shown
   double decimals = 1e5;                // postures are rounded to 1e-5 (m, rad) to keep the report small
   int max_moves = kDefaultReplayMoves;  // the replay shows the climb's first max_moves moves
+  // Under the static model each stance (the start, and where each reached move ends)
+  // carries what holds it: its contact forces and its joints' torque ratios.
+  PhysicsParameters physics;
 };
 
 // `climb` is one of a folder read by read_run_climb with `model`, on `wall`. `reach`

@@ -42,6 +42,7 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
   if (!climb.postures.empty()) {
     ReplayOptions options;
     options.max_moves = replay_moves;
+    options.physics = climbing.physics;
     page.replay =
         replay_data(model, run.wall, climb, climbing.reachability, page.replay_title, run.directory.string(), options);
   }

@@ -215,6 +215,32 @@ async function main() {
       if (!(worst <= 1e-6)) fail(`grasp points at frame ${info.check.frame} are off by ${worst.toExponential(3)} m (> 1e-6): got ${JSON.stringify(got)}, expected ${JSON.stringify(info.check.grasp_points)}`);
     } else fail('the data has no check');
 
+    // Issue 26: under the static model each stance draws its contact forces: one arrow per
+    // held limb from its grasp point, along the force, 0.1 m per 100 N; none while a limb moves.
+    const stanceData = await page.evaluate(() => {
+      const raw = JSON.parse(document.getElementById('crux-replay-data').textContent);
+      if (raw.start_stance === undefined) return null;
+      const moving = raw.moves.find((m) => m.success && m.last_frame > m.first_frame);
+      return { start: raw.start_stance.forces, movingFrame: moving ? moving.first_frame : null };
+    });
+    if (stanceData) {
+      const grasp = await page.evaluate(() => window.cruxReplay.graspPoints(0));
+      const arrows = await page.evaluate(() => window.cruxReplay.stanceArrows());
+      stanceData.start.forEach((force, i) => {
+        const arrow = arrows[i];
+        if (force === null) { if (arrow !== null) fail(`limb ${i} holds nothing at the start but has an arrow`); return; }
+        if (arrow === null) fail(`limb ${i}'s start force has no arrow`);
+        const n = Math.hypot(...force);
+        const worst = Math.max(...force.map((x, k) => Math.abs(x / n - arrow.direction[k])), ...grasp[i].map((x, k) => Math.abs(x - arrow.origin[k])));
+        if (!(worst <= 1e-6) || !(Math.abs(arrow.length - 0.001 * n) <= 1e-6)) fail(`limb ${i}'s arrow ${JSON.stringify(arrow)} is not its force ${JSON.stringify(force)} at ${JSON.stringify(grasp[i])}`);
+      });
+      await panel.screenshot({ path: path.join(args.out, 'replay_stance.png') });
+      if (stanceData.movingFrame !== null) {
+        const during = await page.evaluate((f) => { window.cruxReplay.setFrame(f); return window.cruxReplay.stanceArrows(); }, stanceData.movingFrame);
+        if (during.some((a) => a !== null)) fail(`frame ${stanceData.movingFrame}, during a move, still draws forces`);
+      }
+    }
+
     // Issue 26: an inclined wall stands as it does in the world: a metre up the wall is
     // (-sin, 0, cos) of the incline (its top leans towards the climber, at x < 0, on an overhang).
     const incline = await page.evaluate(() => JSON.parse(document.getElementById('crux-replay-data').textContent).wall.incline || 0);

@@ -37,6 +37,8 @@ export class Body {
     });
 
     const materials = new Map();
+    this.visualMeshes = [];
+    this.ratioMaterials = new Map();
     for (const v of model.visuals || []) {
       const geometry = makeGeometry(v.shape, v.size);
       if (!geometry) continue;
@@ -52,6 +54,7 @@ export class Body {
         }));
       }
       const mesh = new Mesh(geometry, materials.get(key));
+      this.visualMeshes.push({ mesh, joint: v.joint, material: mesh.material });
       mesh.name = `${v.link}:visual`;
       mesh.position.set(v.xyz[0], v.xyz[1], v.xyz[2]);
       mesh.quaternion.set(v.quat[0], v.quat[1], v.quat[2], v.quat[3]).normalize();
@@ -79,6 +82,25 @@ export class Body {
       } else {
         m.quaternion.setFromAxisAngle(this.axes[i], value);
       }
+    }
+  }
+
+  /**
+   * Paints each segment whose carrying joint has a torque ratio in `ratios` (joint -> ratio)
+   * with colour(ratio), and gives the others their own colours back (ratios null: all).
+   */
+  paintByJoint(ratios, colour) {
+    for (const v of this.visualMeshes) {
+      const ratio = ratios ? ratios.get(v.joint) : undefined;
+      if (ratio === undefined) {
+        v.mesh.material = v.material;
+        continue;
+      }
+      const hex = colour(ratio);
+      if (!this.ratioMaterials.has(hex)) {
+        this.ratioMaterials.set(hex, new MeshLambertMaterial({ color: new Color(hex) }));
+      }
+      v.mesh.material = this.ratioMaterials.get(hex);
     }
   }
 

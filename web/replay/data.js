@@ -45,6 +45,31 @@ export function prepareReplayData(raw) {
   // Frames after the last move (if any) stay with the last move.
   if (moves.length > 0) moveAt.fill(moves.length - 1, moves[moves.length - 1].last_frame + 1);
 
+  // Under the static model: the stance in effect at each frame (null while a limb moves, or
+  // under the kinematic model). A failed move leaves the body in the stance it was in.
+  const checkStance = (s, where) => {
+    if (!s || !Array.isArray(s.forces) || s.forces.length !== 4 || !Array.isArray(s.joint_ratios)) fail(`${where} is not a stance`);
+    s.forces.forEach((f, i) => { if (f !== null && !isVec(f, 3)) fail(`${where}.forces[${i}] is not a force`); });
+    s.joint_ratios.forEach((r) => {
+      if (!(Array.isArray(r) && Number.isInteger(r[0]) && r[0] >= 0 && r[0] < dof && Number.isFinite(r[1]))) fail(`${where}.joint_ratios has a bad entry`);
+    });
+    return s;
+  };
+  const stances = new Array(frames.count).fill(null);
+  if (raw.start_stance !== undefined) {
+    let current = checkStance(raw.start_stance, 'start_stance');
+    stances[0] = current;
+    moves.forEach((m, k) => {
+      if (m.success) {
+        current = m.stance === undefined ? null : checkStance(m.stance, `moves[${k}].stance`);
+        stances[m.last_frame] = current;
+      } else {
+        stances.fill(current, m.first_frame, m.last_frame + 1);
+      }
+    });
+    if (moves.length > 0) stances.fill(current, moves[moves.length - 1].last_frame + 1);
+  }
+
   const wall = raw.wall || { holds: [], start: {} };
   const holdIndex = new Map();
   (wall.holds || []).forEach((h, i) => holdIndex.set(h.id, i));
@@ -61,6 +86,8 @@ export function prepareReplayData(raw) {
     postures,
     moves,
     moveAt,
+    stances,
+    hasStances: raw.start_stance !== undefined,
     check: raw.check || null,
   };
 }

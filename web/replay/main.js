@@ -21,6 +21,7 @@ function start() {
     screenPoints: (i) => viewer.screenPoints(i),
     wallToWorld: (p) => viewer.wallToWorld(p),
     get playing() { return viewer.playing; },
+    stanceArrows: () => viewer.stanceArrows(),
   };
 }
 

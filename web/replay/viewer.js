@@ -1,6 +1,6 @@
 // The replay panel: renderer, camera, orbit controls, playback loop, controls and info line.
 import {
-  AmbientLight, DirectionalLight, HemisphereLight, Mesh, MeshBasicMaterial, PerspectiveCamera, Scene,
+  AmbientLight, ArrowHelper, DirectionalLight, HemisphereLight, Mesh, MeshBasicMaterial, PerspectiveCamera, Scene,
   SphereGeometry, Vector3, WebGLRenderer, Group,
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
@@ -12,6 +12,21 @@ export const BASE_FPS = 30; // 1x = 30 replay frames per second
 export const SPEEDS = [0.25, 0.5, 1, 2, 4];
 const LIMB_NAMES = { right_hand: 'right hand', left_hand: 'left hand', right_foot: 'right foot', left_foot: 'left foot' };
 const REGIME_NAMES = { w_greedy: 'w-greedy', g_greedy: 'g-greedy', random: 'random' };
+
+// The static model's drawing (docs/OUTPUTS.md, "crux report"): contact forces 0.1 m per
+// 100 N, as crux view draws them, and segments coloured by their joint's torque over its
+// limit, green at 0, yellow at 0.5, red from 1 (the same ramp as crux view's).
+const METRES_PER_NEWTON = 0.001;
+const FORCE_COLOUR = 0x222222;
+const RATIO_STOPS = [[26, 152, 80], [254, 224, 139], [215, 48, 39]];
+
+export function torqueRatioColour(ratio) {
+  const t = Math.min(Math.max(Number.isFinite(ratio) ? ratio : 1, 0), 1) * 2;
+  const segment = Math.min(Math.floor(t), 1);
+  const f = t - segment;
+  const rgb = [0, 1, 2].map((c) => Math.round((1 - f) * RATIO_STOPS[segment][c] + f * RATIO_STOPS[segment + 1][c]));
+  return `#${rgb.map((c) => c.toString(16).padStart(2, '0')).join('')}`;
+}
 
 function el(tag, props = {}, children = []) {
   const e = document.createElement(tag);
@@ -84,6 +99,12 @@ export class ReplayViewer {
       swatch(COLORS.reached, 'tried, reached'), swatch(COLORS.unreachable, 'tried, unreachable'),
       swatch(COLORS.grasp[0], 'grasp zone', 'ring'), swatch(COLORS.finish, 'finish height', 'line'),
     ]);
+    if (this.data.hasStances) {
+      legend.append(swatch(FORCE_COLOUR, 'contact force, 0.1 m per 100 N', 'line'),
+        swatch(parseInt(torqueRatioColour(0).slice(1), 16), 'joint torque 0'),
+        swatch(parseInt(torqueRatioColour(0.5).slice(1), 16), '0.5'),
+        swatch(parseInt(torqueRatioColour(1).slice(1), 16), '1 x its limit'));
+    }
     const title = el('div', { class: 'crux-replay-title', text: this.data.title });
     c.append(title, this.view, this.info, controls, legend);
   }
@@ -126,6 +147,20 @@ export class ReplayViewer {
       g.add(s);
       return s;
     });
+
+    // The static model's contact forces, in the wall's frame, shown at the stances.
+    this.forceArrows = data.hasStances ? LIMBS.map((limb) => {
+      const arrow = new ArrowHelper(new Vector3(0, 0, 1), new Vector3(), 0.1, FORCE_COLOUR, 0.04, 0.025);
+      arrow.name = `force:${limb}`;
+      arrow.visible = false;
+      // Drawn over the body, like the grasp zones: a force at a palm starts inside the hand.
+      for (const part of [arrow.line, arrow.cone]) {
+        part.material.depthTest = false;
+        part.renderOrder = 11;
+      }
+      this.tilted.add(arrow);
+      return arrow;
+    }) : [];
 
     const hemi = new HemisphereLight(0xffffff, 0x8c8a86, 1.6);
     hemi.position.set(0, 0, 1); // z is up
@@ -267,11 +302,39 @@ export class ReplayViewer {
     } else {
       this.lastRoot.copy(this.rootPosition());
     }
+    this.showStance(data.stances[f]);
     const k = data.moveAt[f];
     const move = data.moves[k];
     this.wall.highlight(data, configurationAt(data, f), move ? move.hold : undefined, move ? move.success : false);
     this.updateInfo(f, k, move);
     this.render();
+  }
+
+  /** The stance's forces as arrows from the grasp points, its torque ratios on the segments. */
+  showStance(stance) {
+    if (!this.data.hasStances) return;
+    const grasp = this.body.graspWorld();
+    this.forceArrows.forEach((arrow, i) => {
+      const force = stance ? stance.forces[i] : null;
+      const newtons = force ? Math.hypot(force[0], force[1], force[2]) : 0;
+      arrow.visible = newtons > 0;
+      if (!arrow.visible) return;
+      arrow.position.copy(this.tilted.worldToLocal(new Vector3(grasp[i][0], grasp[i][1], grasp[i][2])));
+      arrow.setDirection(new Vector3(force[0], force[1], force[2]).divideScalar(newtons));
+      const length = newtons * METRES_PER_NEWTON;
+      arrow.setLength(length, Math.min(0.04, 0.5 * length), Math.min(0.025, 0.3 * length));
+    });
+    this.body.paintByJoint(stance ? new Map(stance.joint_ratios) : null, torqueRatioColour);
+    this.stance = stance;
+  }
+
+  /** The arrows drawn now, per limb: null when hidden, else origin, unit direction (wall coordinates) and length (m). */
+  stanceArrows() {
+    return this.forceArrows.map((a) => {
+      if (!a.visible) return null;
+      const d = new Vector3(0, 1, 0).applyQuaternion(a.quaternion);
+      return { origin: [a.position.x, a.position.y, a.position.z], direction: [d.x, d.y, d.z], length: a.line.scale.y + a.cone.scale.y };
+    });
   }
 
   updateInfo(f, k, move) {
@@ -292,6 +355,7 @@ export class ReplayViewer {
         `reward ${exact(move.reward)}`,
         `root rise ${typeof rise === 'number' && rise > 0 ? '+' : ''}${fmt(rise, 1)} cm`,
       ].join(' · ');
+      if (this.stance) text += this.stance.effort === null ? ' · stance: no balance' : ` · stance effort ${fmt(this.stance.effort, 2)}`;
     }
     if (text !== this.infoText) {
       this.infoText = text;
