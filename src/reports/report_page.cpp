@@ -9,8 +9,24 @@
 #include "reports/replay_data.hpp"
 #include "reports/report_figures.hpp"
 #include "reports/view_description.hpp"
+#include "views/effort_plot.hpp"
 
 namespace crux {
+
+EffortAlongClimb effort_along_climb(const BodyModel& model, const Wall& wall, const RecordedClimb& climb,
+                                    const PhysicsParameters& physics, const std::string& title) {
+  StanceCheck check(model, wall, physics);
+  EffortAlongClimb efforts{fmt::format("Effort along the climb: {}", title), {}, {}};
+  for (std::size_t k = 0; k < climb.postures.size(); ++k) {
+    const HoldConfiguration configuration = climb_configuration(wall, climb, static_cast<int>(k));
+    // Posture k was reached by the k-th move, of the limb (k - 1) mod 4 in the cycle, so the
+    // next to let go is k mod 4; the start's is the right hand.
+    const Limb next = static_cast<Limb>(k % kLimbCount);
+    efforts.on_four_holds.push_back(check.solve(climb.postures[k], configuration).effort);
+    efforts.on_three_holds.push_back(check.solve(climb.postures[k], configuration.with(next, kFree)).effort);
+  }
+  return efforts;
+}
 
 ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& reported, RunFolder& run,
                        const BodyModel& model, const ExperimentConfig& recorded, const std::string& climb_choice,
@@ -26,6 +42,14 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
   page.replay_climb = climb.kind;
   page.replay_episode = climb.episode;
   page.replay_reason = shown_climb_reason(run, climb, climb_choice, recorded.settings.learning.greedy_cap, "--climb");
+  if (climbing.physics.model == PhysicsModel::Static && !climb.postures.empty()) {
+    page.figures.push_back(
+        {"Effort along the climb",
+         "The static model's effort of each stance of the replayed climb (the largest joint torque "
+         "over its limit), on its four holds and on the three left when the next limb lets go; "
+         "above 1 the stance could not be held.",
+         render_effort_plot(effort_along_climb(model, run.wall, climb, climbing.physics, page.replay_title))});
+  }
   BodyData data(model);
   page.climb_postures = climb.postures.size();
   for (std::size_t k = 0; k < climb.postures.size(); ++k) {

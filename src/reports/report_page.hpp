@@ -9,8 +9,14 @@
 #include "reports/html_report.hpp"
 #include "reports/replay_data.hpp"
 #include "reports/run_folder.hpp"
+#include "views/effort_plot.hpp"
 
 namespace crux {
+
+// The static model's effort of each stance of `climb` on `wall`, the start first, for the
+// report's figure: on its four holds, and on the three left when the next limb lets go.
+EffortAlongClimb effort_along_climb(const BodyModel& model, const Wall& wall, const RecordedClimb& climb,
+                                    const PhysicsParameters& physics, const std::string& title);
 
 // The page's style and script are left to the caller (crux_web_assets, which only the
 // binary embeds). `run` is the replayed run of `reported`, its climb read with `model`
