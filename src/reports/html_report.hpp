@@ -34,6 +34,9 @@ struct ReportPage {
   double deepest_in_wall_m = 0.0;
   std::string deepest_in_wall;
   int deepest_in_wall_posture = -1;
+  // Under the static model, each stance's effort on four and on three holds (the effort
+  // figure's); empty otherwise.
+  std::vector<double> stance_effort_four, stance_effort_three;
   std::string_view style;   // the page's CSS
   std::string_view script;  // the replay's script (three.js bundled in)
 };

@@ -1,5 +1,7 @@
 #include "reports/report_page.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "body/kinematics.hpp"
@@ -43,12 +45,14 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
   page.replay_episode = climb.episode;
   page.replay_reason = shown_climb_reason(run, climb, climb_choice, recorded.settings.learning.greedy_cap, "--climb");
   if (climbing.physics.model == PhysicsModel::Static && !climb.postures.empty()) {
-    page.figures.push_back(
-        {"Effort along the climb",
-         "The static model's effort of each stance of the replayed climb (the largest joint torque "
-         "over its limit), on its four holds and on the three left when the next limb lets go; "
-         "above 1 the stance could not be held.",
-         render_effort_plot(effort_along_climb(model, run.wall, climb, climbing.physics, page.replay_title))});
+    const EffortAlongClimb efforts = effort_along_climb(model, run.wall, climb, climbing.physics, page.replay_title);
+    page.stance_effort_four = efforts.on_four_holds;
+    page.stance_effort_three = efforts.on_three_holds;
+    page.figures.push_back({"Effort along the climb",
+                            "The static model's effort of each stance of the replayed climb (the largest joint torque "
+                            "over its limit), on its four holds and on the three left when the next limb lets go; "
+                            "above 1 the stance could not be held.",
+                            render_effort_plot(efforts)});
   }
   BodyData data(model);
   page.climb_postures = climb.postures.size();
@@ -105,6 +109,17 @@ nlohmann::ordered_json written_report_json(const ReportPage& page, const std::st
   out["postures_in_wall"] = page.postures_in_wall;
   out["deepest_in_wall_m"] =
       page.deepest_in_wall_posture < 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(page.deepest_in_wall_m);
+  if (!page.stance_effort_four.empty()) {
+    // +infinity (no balance) is null in JSON.
+    const auto series = [](const std::vector<double>& values) {
+      nlohmann::ordered_json out = nlohmann::ordered_json::array();
+      for (const double v : values)
+        out.push_back(std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json());
+      return out;
+    };
+    out["stance_effort"] = {{"on_four_holds", series(page.stance_effort_four)},
+                            {"on_three_holds", series(page.stance_effort_three)}};
+  }
   out["seconds"] = seconds;
   return out;
 }
