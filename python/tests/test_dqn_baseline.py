@@ -14,16 +14,11 @@ import pytest
 
 import crux
 
-try:
-    import gymnasium
-    import torch
-except ImportError as error:
-    reason = (
-        f"the baseline needs Gymnasium (../shared/third_party/gymnasium-1.4.0) and Debian's python3-torch: {error}"
-    )
-    if os.environ.get("CI") == "true":
-        raise ImportError(f"under CI: {reason}") from error
-    pytest.skip(reason, allow_module_level=True)
+from needed import need
+
+gymnasium, torch = need(
+    ["gymnasium", "torch"], "the baseline needs Gymnasium (../shared/third_party/gymnasium-1.4.0) and Debian's python3-torch"
+)
 
 SCRIPT = pathlib.Path(__file__).resolve().parents[2] / "examples" / "python" / "dqn_baseline.py"
 SHORT = ["--steps", "300", "--train-walls", "2", "--validation-walls", "2"]

@@ -1,7 +1,6 @@
 """crux.gym against the real Gymnasium 1.4.0: its checker, make, wrappers and vector env,
 masks, seeds, the finishing observation, walls per episode and the held-out split."""
 
-import os
 import subprocess
 import sys
 
@@ -10,19 +9,12 @@ import pytest
 
 import crux
 
-try:
-    import gymnasium
-    from gymnasium.utils.env_checker import check_env
-except ImportError as error:
-    reason = (
-        f"Gymnasium is not importable ({error}): crux.gym's tests need its source in "
-        "../shared/third_party/gymnasium-1.4.0 and Debian's python3-cloudpickle and python3-typing-extensions"
-    )
-    if os.environ.get("CI") == "true":
-        raise ImportError(f"under CI: {reason}") from error
-    pytest.skip(reason, allow_module_level=True)
+from needed import GYMNASIUM, need
 
-import crux.gym  # noqa: E402 (after Gymnasium is known to be there)
+(gymnasium,) = need(["gymnasium"], GYMNASIUM)
+from gymnasium.utils.env_checker import check_env  # noqa: E402 (after Gymnasium is known to be there)
+
+import crux.gym  # noqa: E402
 
 FORMS = ("numeric", "paper")
 

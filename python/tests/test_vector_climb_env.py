@@ -2,7 +2,6 @@
 SyncVectorEnv, Gymnasium's vector API (make_vec, its vector wrappers' autoreset checks),
 the batched masks, and bad input."""
 
-import os
 import warnings
 
 import numpy as np
@@ -10,19 +9,12 @@ import pytest
 
 import crux
 
-try:
-    import gymnasium
-    from gymnasium.vector import AutoresetMode, SyncVectorEnv
-except ImportError as error:
-    reason = (
-        f"Gymnasium is not importable ({error}): crux.gym's tests need its source in "
-        "../shared/third_party/gymnasium-1.4.0 and Debian's python3-cloudpickle and python3-typing-extensions"
-    )
-    if os.environ.get("CI") == "true":
-        raise ImportError(f"under CI: {reason}") from error
-    pytest.skip(reason, allow_module_level=True)
+from needed import GYMNASIUM, need
 
-import crux.gym  # noqa: E402 (after Gymnasium is known to be there)
+(gymnasium,) = need(["gymnasium"], GYMNASIUM)
+from gymnasium.vector import AutoresetMode, SyncVectorEnv  # noqa: E402 (after Gymnasium is known to be there)
+
+import crux.gym  # noqa: E402
 
 # Walls whose finish is low enough that random climbs finish often: episodes end both ways.
 LOW_FINISH = {"wall": {"finish_height": 1.3}}
