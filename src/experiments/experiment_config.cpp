@@ -31,6 +31,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"experiment.runs", "N walls with one seed each: sets walls = N and seeds_per_wall = 1", &c.runs},
       {"experiment.walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs},
       {"experiment.seeds_per_wall", "Learning seeds per wall pair", &s.seeds_per_wall},
+      {"experiment.training_walls",
+       "Walls each training run learns Q_grid on in sequence before transfer (docs/TRANSFER.md): the last is the "
+       "pair's training wall",
+       &s.training_walls},
       {"experiment.threads", "Worker threads (0: all cores); results do not depend on it", &s.threads},
       {"experiment.iterations", "Learning iterations (real actions) per run", &l.iterations},
       {"experiment.beginning",
@@ -352,6 +356,8 @@ ConfigLines apply_config_document(const ConfigDocument& document, ExperimentConf
 namespace {
 
 constexpr long long kMaxRunsPerCondition = 1000000;
+// Each training run learns K times its iterations: beyond this a typo, not an experiment.
+constexpr int kMaxTrainingWalls = 1000;
 
 void require(bool ok, const char* key, const std::string& problem) {
   if (!ok) throw InputError(key, problem);
@@ -437,6 +443,8 @@ void finalize_config(ExperimentConfig& config) {
   }
   require(s.wall_pairs > 0, "experiment.walls", "must be positive");
   require(s.seeds_per_wall > 0, "experiment.seeds_per_wall", "must be positive");
+  require(s.training_walls >= 1 && s.training_walls <= kMaxTrainingWalls, "experiment.training_walls",
+          fmt::format("must be from 1 to {}", kMaxTrainingWalls));
   require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition, "experiment.walls",
           "walls x seeds_per_wall must be at most 1000000 runs per condition");
   require(s.threads >= 0 && s.threads <= kMaxThreads, "experiment.threads",

@@ -253,6 +253,28 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   EXPECT_NE(nested.err.find("(did you mean 'wall generate'?)"), std::string::npos) << nested.err;
 }
 
+TEST(CliLearning, TrainingWallsOutsideTheirRangeAreOneLine) {
+  for (const char* count : {"0", "1001"}) {
+    const auto outcome = run_crux(std::string("paper --training-walls ") + count);
+    EXPECT_EQ(outcome.exit_code, 2);
+    EXPECT_EQ(outcome.err, "crux: --training-walls: must be from 1 to 1000\n");
+  }
+}
+
+TEST(CliLearning, PaperWithTrainingWallsReportsTheTotalIterations) {
+  const fs::path folder = learning_scratch("training_walls");
+  fs::remove_all(folder);
+  const auto outcome =
+      run_crux("paper --walls 1 --training-walls 2 --iterations 150 --plan false -o " + folder.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find(
+                "Iterations spent per transfer run: training over 2 walls 300, transfer 150, total 450; control 150"),
+            std::string::npos)
+      << outcome.out;
+  std::ifstream in(folder / "summary.json");
+  EXPECT_EQ(nlohmann::json::parse(in)["iterations_spent"]["total"], 450);
+}
+
 TEST(CliLearning, ViewAndReportAnswerBadInputWithOneLine) {
   const fs::path never = learning_scratch("never_report.html");
   const auto no_folder = run_crux("report /nonexistent/crux_folder -o " + never.string());

@@ -10,6 +10,7 @@
 
 #include "experiments/experiment_config.hpp"
 #include "experiments/table_one.hpp"
+#include "learning/q_table_file.hpp"
 #include "reports/output_folder.hpp"
 #include "reports/summary.hpp"
 #include "support/test_models.hpp"
@@ -112,6 +113,74 @@ TEST(PaperExperiment, SeedsPerWallShareTheWallAndFormItsCluster) {
   four.learning.iterations = two.learning.iterations = 10;
   EXPECT_EQ(run_paper_experiment(model, four).conditions[0].learning_seeds[1],
             run_paper_experiment(model, two).conditions[0].learning_seeds[1]);
+}
+
+std::string q_table_bytes(const QTable& table, const std::string& name) {
+  const fs::path path = testing::test_folder() / name;
+  save_q_table(path.string(), table, "test space");
+  return read_bytes(path);
+}
+
+TEST(PaperExperiment, TrainingWallsLearnInSequenceEachFromThePreviousQGrid) {
+  const BodyModel& model = testing::human_model();
+  ExperimentParameters one = small_settings(2);
+  one.wall_pairs = 1;
+  one.learning.iterations = 150;
+  ExperimentParameters two = one;
+  two.training_walls = 2;
+  EXPECT_EQ(one.learning_runs(), 3);
+  EXPECT_EQ(two.learning_runs(), 4) << "total runs: K training runs, then transfer and control";
+  const ExperimentResult k1 = run_paper_experiment(model, one), k2 = run_paper_experiment(model, two);
+  ASSERT_EQ(k2.preceding_training_walls.size(), 1u);
+  EXPECT_TRUE(k1.preceding_training_walls.empty());
+  // By hand: the first run learns on the preceding wall from an empty Q_grid, the second
+  // on the pair's training wall from the first's Q_grid.
+  const ExperimentWall preceding = draw_preceding_training_wall(model, two, 0, 0);
+  EXPECT_EQ(preceding.seed, k2.preceding_training_walls[0].seed);
+  const RunResult first =
+      run_learning(model, preceding.wall, two.learning, preceding_learning_seed(two.seed, 0, 0), nullptr);
+  const RunResult second = run_learning(model, k2.walls[0].wall, two.learning,
+                                        learning_seed(two.seed, Condition::Training, 0), &first.q_grid);
+  const auto& training = k2.conditions[static_cast<int>(Condition::Training)].runs[0];
+  EXPECT_EQ(q_table_bytes(training.q_grid, "k2_training.bin"), q_table_bytes(second.q_grid, "by_hand.bin"));
+  EXPECT_EQ(training.episode_lengths, second.episode_lengths);
+  EXPECT_NE(q_table_bytes(training.q_grid, "k2_training.bin"),
+            q_table_bytes(k1.conditions[0].runs[0].q_grid, "k1_training.bin"))
+      << "the second run starts from knowledge";
+  // The preceding walls' stream shifts no other draw.
+  for (std::size_t w = 0; w < k1.walls.size(); ++w) EXPECT_EQ(k1.walls[w].seed, k2.walls[w].seed);
+  EXPECT_NE(preceding.seed, k2.walls[0].seed);
+  for (const Condition c : kConditions) {
+    EXPECT_EQ(k1.conditions[static_cast<int>(c)].learning_seeds, k2.conditions[static_cast<int>(c)].learning_seeds);
+  }
+  EXPECT_EQ(k1.conditions[static_cast<int>(Condition::Control)].runs[0].episode_lengths,
+            k2.conditions[static_cast<int>(Condition::Control)].runs[0].episode_lengths);
+  // Taylor and Stone's total: K x iterations of training, then the transfer run's.
+  const ExperimentAnalysis analysis = analyse_experiment(k2, two);
+  const auto spent = summary_json(k2, &analysis, two, {})["iterations_spent"];
+  EXPECT_EQ(spent["training_walls"], 2);
+  EXPECT_EQ(spent["training"], 300);
+  EXPECT_EQ(spent["transfer"], 150);
+  EXPECT_EQ(spent["total"], 450);
+  EXPECT_EQ(spent["control"], 150);
+  EXPECT_EQ(spent["preceding_training_walls"][0]["seed"], preceding.seed);
+  const ExperimentAnalysis analysis1 = analyse_experiment(k1, one);
+  EXPECT_FALSE(summary_json(k1, &analysis1, one, {}).contains("iterations_spent")) << "K = 1: the paper's summary";
+}
+
+TEST(PaperExperiment, TrainingWallsGiveTheSameBytesWithOneOrTwoThreads) {
+  const BodyModel& model = testing::human_model();
+  std::vector<std::string> summaries;
+  for (const int threads : {1, 2}) {
+    ExperimentParameters settings = small_settings(threads);
+    settings.learning.iterations = 120;
+    settings.training_walls = 3;
+    const ExperimentResult result = run_paper_experiment(model, settings);
+    const ExperimentAnalysis analysis = analyse_experiment(result, settings);
+    summaries.push_back(summary_json(result, &analysis, settings, {}).dump(1) +
+                        q_table_bytes(result.conditions[0].runs[1].q_grid, "threads.bin"));
+  }
+  EXPECT_EQ(summaries[0], summaries[1]);
 }
 
 }  // namespace
