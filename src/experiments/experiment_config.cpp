@@ -119,6 +119,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        &c.compare_walk_solver},
       {"filter.max_span", "Largest distance between two holds of a configuration (m)", &m.filter.max_span_m},
       {"filter.reading", "Reading of 'both feet above the hands'", &c.reading},
+      {"grid.agent_space",
+       "Agent space (docs/TRANSFER.md): grid (the paper's moving grid) or reach (direction sectors = columns and "
+       "distance rings of tile_height m = rows around the free limb's shoulder or hip)",
+       &c.agent_space},
       {"grid.columns", "Columns of the moving grid", &m.grid.columns},
       {"grid.rows", "Rows of the moving grid", &m.grid.rows},
       {"grid.tile_width", "Tile width of the moving grid (m)", &m.grid.tile_width},
@@ -432,6 +436,12 @@ void finalize_config(ExperimentConfig& config) {
                                                         printable(config.transfer), transfer_mode_names()));
   }
   s.learning.dyna.transfer = *transfer;
+  const auto agent_space = parse_agent_space(config.agent_space);
+  if (!agent_space) {
+    throw InputError("grid.agent_space", fmt::format("unknown agent space '{}' (expected {})",
+                                                     printable(config.agent_space), agent_space_names()));
+  }
+  s.learning.climbing.grid.space = *agent_space;
   const auto reading = parse_reading(config.reading);
   if (!reading) throw InputError("filter.reading", fmt::format("unknown reading '{}'", printable(config.reading)));
   s.learning.climbing.filter.feet_above_hands = *reading;
@@ -474,7 +484,8 @@ void finalize_config(ExperimentConfig& config) {
   require(grid.rows > 0, "grid.rows", "must be positive");
   static const char* const anchor_keys[kLimbCount] = {"grid.right_hand_anchor_column", "grid.left_hand_anchor_column",
                                                       "grid.right_foot_anchor_column", "grid.left_foot_anchor_column"};
-  for (int limb = 0; limb < kLimbCount; ++limb) {
+  // The reach agent space has no anchors.
+  for (int limb = 0; limb < kLimbCount && grid.space == AgentSpaceKind::Grid; ++limb) {
     const auto& anchor = grid.anchors[limb];
     require(anchor[0] >= 0 && anchor[0] < grid.columns && anchor[1] >= 0 && anchor[1] < grid.rows, anchor_keys[limb],
             "every grid anchor must be a tile of the grid");

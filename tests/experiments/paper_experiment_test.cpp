@@ -183,5 +183,26 @@ TEST(PaperExperiment, TrainingWallsGiveTheSameBytesWithOneOrTwoThreads) {
   EXPECT_EQ(summaries[0], summaries[1]);
 }
 
+TEST(PaperExperiment, TheReachAgentSpaceGivesTheSameBytesWithOneOrTwoThreads) {
+  const BodyModel& model = testing::human_model();
+  std::vector<std::string> outputs;
+  for (const int threads : {1, 2}) {
+    ExperimentParameters settings = small_settings(threads);
+    settings.learning.iterations = 200;
+    GridParameters& grid = settings.learning.climbing.grid;
+    grid.space = AgentSpaceKind::Reach;
+    grid.columns = 8;
+    grid.rows = 4;
+    grid.tile_height = 0.3;
+    const ExperimentResult result = run_paper_experiment(model, settings);
+    const ExperimentAnalysis analysis = analyse_experiment(result, settings);
+    outputs.push_back(summary_json(result, &analysis, settings, {}).dump(1) +
+                      q_table_bytes(result.conditions[0].runs[1].q_grid, "reach_threads.bin"));
+    EXPECT_EQ(result.conditions[0].runs[1].q_grid.action_count(), 32);
+    EXPECT_GT(result.conditions[0].runs[1].q_grid.state_count(), 0u);
+  }
+  EXPECT_EQ(outputs[0], outputs[1]);
+}
+
 }  // namespace
 }  // namespace crux
