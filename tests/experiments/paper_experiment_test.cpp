@@ -126,44 +126,50 @@ TEST(PaperExperiment, TrainingWallsLearnInSequenceEachFromThePreviousQGrid) {
   ExperimentParameters one = small_settings(2);
   one.wall_pairs = 1;
   one.learning.iterations = 150;
-  ExperimentParameters two = one;
-  two.training_walls = 2;
+  ExperimentParameters three = one;
+  three.training_walls = 3;
   EXPECT_EQ(one.learning_runs(), 3);
-  EXPECT_EQ(two.learning_runs(), 4) << "total runs: K training runs, then transfer and control";
-  const ExperimentResult k1 = run_paper_experiment(model, one), k2 = run_paper_experiment(model, two);
-  ASSERT_EQ(k2.preceding_training_walls.size(), 1u);
+  EXPECT_EQ(three.learning_runs(), 5) << "total runs: K training runs, then transfer and control";
+  const ExperimentResult k1 = run_paper_experiment(model, one), k3 = run_paper_experiment(model, three);
+  ASSERT_EQ(k3.preceding_training_walls.size(), 2u);
   EXPECT_TRUE(k1.preceding_training_walls.empty());
-  // By hand: the first run learns on the preceding wall from an empty Q_grid, the second
-  // on the pair's training wall from the first's Q_grid.
-  const ExperimentWall preceding = draw_preceding_training_wall(model, two, 0, 0);
-  EXPECT_EQ(preceding.seed, k2.preceding_training_walls[0].seed);
+  // By hand: the first run learns on preceding wall 0 from an empty Q_grid, the second on
+  // preceding wall 1 from the first's Q_grid, the third on the pair's training wall from
+  // the second's.
+  const ExperimentWall first_wall = draw_preceding_training_wall(model, three, 0, 0),
+                       second_wall = draw_preceding_training_wall(model, three, 0, 1);
+  EXPECT_EQ(first_wall.seed, k3.preceding_training_walls[0].seed);
+  EXPECT_EQ(second_wall.seed, k3.preceding_training_walls[1].seed);
   const RunResult first =
-      run_learning(model, preceding.wall, two.learning, preceding_learning_seed(two.seed, 0, 0), nullptr);
-  const RunResult second = run_learning(model, k2.walls[0].wall, two.learning,
-                                        learning_seed(two.seed, Condition::Training, 0), &first.q_grid);
-  const auto& training = k2.conditions[static_cast<int>(Condition::Training)].runs[0];
-  EXPECT_EQ(q_table_bytes(training.q_grid, "k2_training.bin"), q_table_bytes(second.q_grid, "by_hand.bin"));
-  EXPECT_EQ(training.episode_lengths, second.episode_lengths);
-  EXPECT_NE(q_table_bytes(training.q_grid, "k2_training.bin"),
+      run_learning(model, first_wall.wall, three.learning, preceding_learning_seed(three.seed, 0, 0), nullptr);
+  const RunResult second =
+      run_learning(model, second_wall.wall, three.learning, preceding_learning_seed(three.seed, 0, 1), &first.q_grid);
+  const RunResult third = run_learning(model, k3.walls[0].wall, three.learning,
+                                       learning_seed(three.seed, Condition::Training, 0), &second.q_grid);
+  const auto& training = k3.conditions[static_cast<int>(Condition::Training)].runs[0];
+  EXPECT_EQ(q_table_bytes(training.q_grid, "k3_training.bin"), q_table_bytes(third.q_grid, "by_hand.bin"));
+  EXPECT_EQ(training.episode_lengths, third.episode_lengths);
+  EXPECT_NE(q_table_bytes(training.q_grid, "k3_training.bin"),
             q_table_bytes(k1.conditions[0].runs[0].q_grid, "k1_training.bin"))
-      << "the second run starts from knowledge";
+      << "the last run starts from knowledge";
   // The preceding walls' stream shifts no other draw.
-  for (std::size_t w = 0; w < k1.walls.size(); ++w) EXPECT_EQ(k1.walls[w].seed, k2.walls[w].seed);
-  EXPECT_NE(preceding.seed, k2.walls[0].seed);
+  for (std::size_t w = 0; w < k1.walls.size(); ++w) EXPECT_EQ(k1.walls[w].seed, k3.walls[w].seed);
+  EXPECT_NE(first_wall.seed, k3.walls[0].seed);
+  EXPECT_NE(first_wall.seed, second_wall.seed);
   for (const Condition c : kConditions) {
-    EXPECT_EQ(k1.conditions[static_cast<int>(c)].learning_seeds, k2.conditions[static_cast<int>(c)].learning_seeds);
+    EXPECT_EQ(k1.conditions[static_cast<int>(c)].learning_seeds, k3.conditions[static_cast<int>(c)].learning_seeds);
   }
   EXPECT_EQ(k1.conditions[static_cast<int>(Condition::Control)].runs[0].episode_lengths,
-            k2.conditions[static_cast<int>(Condition::Control)].runs[0].episode_lengths);
+            k3.conditions[static_cast<int>(Condition::Control)].runs[0].episode_lengths);
   // Taylor and Stone's total: K x iterations of training, then the transfer run's.
-  const ExperimentAnalysis analysis = analyse_experiment(k2, two);
-  const auto spent = summary_json(k2, &analysis, two, {})["iterations_spent"];
-  EXPECT_EQ(spent["training_walls"], 2);
-  EXPECT_EQ(spent["training"], 300);
+  const ExperimentAnalysis analysis = analyse_experiment(k3, three);
+  const auto spent = summary_json(k3, &analysis, three, {})["iterations_spent"];
+  EXPECT_EQ(spent["training_walls"], 3);
+  EXPECT_EQ(spent["training"], 450);
   EXPECT_EQ(spent["transfer"], 150);
-  EXPECT_EQ(spent["total"], 450);
+  EXPECT_EQ(spent["total"], 600);
   EXPECT_EQ(spent["control"], 150);
-  EXPECT_EQ(spent["preceding_training_walls"][0]["seed"], preceding.seed);
+  EXPECT_EQ(spent["preceding_training_walls"][1]["seed"], second_wall.seed);
   const ExperimentAnalysis analysis1 = analyse_experiment(k1, one);
   EXPECT_FALSE(summary_json(k1, &analysis1, one, {}).contains("iterations_spent")) << "K = 1: the paper's summary";
 }
