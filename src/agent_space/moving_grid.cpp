@@ -21,7 +21,16 @@ GridPlacement place_grid(const GridParameters& grid, Limb free_limb, const Eigen
   return placement;
 }
 
+GridPlacement place_reach_sectors(const GridParameters& grid, const Eigen::Vector3d& base) {
+  GridPlacement placement;
+  placement.columns = grid.columns;
+  placement.rows = grid.rows;
+  placement.reach = ReachSectors{{base.y(), base.z()}, grid.columns, grid.rows, grid.tile_height};
+  return placement;
+}
+
 int GridPlacement::tile_of(const Eigen::Vector3d& point) const {
+  if (reach) return reach->cell_of(point);
   const double column = std::floor((point.y() - origin.x()) / tile_width);
   const double row = std::floor((point.z() - origin.y()) / tile_height);
   if (!(column >= 0 && column < columns && row >= 0 && row < rows)) return kOutsideGrid;  // NaN is outside too
@@ -29,6 +38,7 @@ int GridPlacement::tile_of(const Eigen::Vector3d& point) const {
 }
 
 Eigen::Vector3d GridPlacement::tile_centre(int tile) const {
+  if (reach) return reach->cell_centre(tile);
   const int column = tile % columns, row = tile / columns;
   return {0.0, origin.x() + (column + 0.5) * tile_width, origin.y() + (row + 0.5) * tile_height};
 }
@@ -54,6 +64,10 @@ int hold_in_tile(const Wall& wall, const GridPlacement& placement, int tile) {
 }
 
 std::string describe_grid(const GridParameters& grid) {
+  if (grid.space == AgentSpaceKind::Reach) {
+    return fmt::format("reach sectors: {} directions x {} rings of {} m around the free limb's shoulder or hip",
+                       grid.columns, grid.rows, grid.tile_height);
+  }
   std::string anchors;
   for (const auto& anchor : grid.anchors) anchors += fmt::format(" ({}, {})", anchor[0], anchor[1]);
   return fmt::format("a {} x {} moving grid of {} x {} m tiles, anchors{}", grid.columns, grid.rows, grid.tile_width,

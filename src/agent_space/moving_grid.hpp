@@ -5,11 +5,14 @@
 // nearest its centre among the holds lying in it.
 
 #include <array>
+#include <optional>
 #include <span>
 #include <string>
 
 #include <Eigen/Core>
 
+#include "agent_space/agent_space_kind.hpp"
+#include "agent_space/reach_sectors.hpp"
 #include "body/body_model.hpp"
 #include "wall/wall.hpp"
 
@@ -25,6 +28,10 @@ struct GridParameters {
   // Anchor tile (column, row) of each limb, whose centre is placed on that limb
   // (docs/MODEL.md, choice C15), limb order.
   std::array<std::array<int, 2>, kLimbCount> anchors{{{1, 4}, {3, 4}, {1, 1}, {3, 1}}};
+  // Under the reach agent space (reach_sectors.hpp) the tiles are its cells: columns are
+  // the direction sectors, rows the distance rings, tile_height the ring width; tile_width
+  // and the anchors play no part. Every table, file and figure then keeps its shape.
+  AgentSpaceKind space = AgentSpaceKind::Grid;
 
   int tile_count() const { return columns * rows; }
 };
@@ -34,7 +41,8 @@ struct GridPlacement {
   Eigen::Vector2d origin;  // (y, z) of the corner of tile (0, 0): smallest y and z
   double tile_width = 0.3, tile_height = 0.5;
   int columns = 5, rows = 7;
-  int anchor_tile = kOutsideGrid;  // the tile whose centre is on the free limb
+  int anchor_tile = kOutsideGrid;     // the tile whose centre is on the free limb
+  std::optional<ReachSectors> reach;  // set under the reach agent space: tiles are its cells
 
   // Tile number (row * columns + column) containing the point, or kOutsideGrid.
   // Tiles are half-open: a point on the edge between two tiles belongs to the tile of
@@ -47,6 +55,8 @@ struct GridPlacement {
 };
 
 GridPlacement place_grid(const GridParameters& grid, Limb free_limb, const Eigen::Vector3d& limb_position);
+// The reach agent space's cells around the free limb's shoulder or hip (`base`).
+GridPlacement place_reach_sectors(const GridParameters& grid, const Eigen::Vector3d& base);
 
 // The grid in words, shape, tile size and anchors: what a tile code means. Q_grid files
 // record it, so that a table is only read back on the grid it was learnt on.

@@ -60,7 +60,7 @@ struct PaperCommand {
     const ExperimentParameters settings = job.config.settings;  // the job takes the config
     ProgressBar progress(fmt::format("paper: {} x {} x 3 conditions", counted(settings.wall_pairs, "wall"),
                                      counted(settings.seeds_per_wall, "seed")),
-                         3L * settings.runs());
+                         settings.learning_runs());
     const PaperJobOutcome outcome = run_with_flags(binding, [&] {
       return run_paper_job(std::move(job), {"crux paper", [&](int done) { progress.update(done); }, {}, {}});
     });

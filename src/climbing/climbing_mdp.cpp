@@ -19,6 +19,7 @@ ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const Climbin
       candidates_(wall.hold_count()),
       tile_representative_(parameters.grid.tile_count()),
       tile_best_distance_(parameters.grid.tile_count()) {
+  limb_bases_ = model.reach_envelope.chain_base;
   start_posture_ = reacher_.require_start(wall_.name);
   reset();
   // Every later state offers at least the hold its free limb just left; the start must
@@ -39,7 +40,9 @@ void ClimbingMdp::reset() {
 
 void ClimbingMdp::describe(const BodyData& body) {
   const Limb free = configuration_.free_limb();
-  placement_ = place_grid(parameters_.grid, free, body.points[operational_point(free)]);
+  placement_ = parameters_.grid.space == AgentSpaceKind::Reach
+                   ? place_reach_sectors(parameters_.grid, body.points[0] + limb_bases_[static_cast<int>(free)])
+                   : place_grid(parameters_.grid, free, body.points[operational_point(free)]);
   state_.wall = encode(configuration_, wall_.hold_count());
   state_.grid = encode(describe_state(wall_, configuration_, placement_), parameters_.grid);
 

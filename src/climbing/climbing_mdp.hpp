@@ -96,6 +96,7 @@ class ClimbingMdp {
   Posture start_posture_, posture_;
   HoldConfiguration configuration_;  // a 3-configuration
   GridPlacement placement_;
+  std::array<Eigen::Vector3d, kLimbCount> limb_bases_;  // shoulders and hips, relative to e0
   int left_hold_ = kFree;
   StateCouple state_;
   std::vector<int> possible_;

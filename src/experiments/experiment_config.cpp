@@ -31,6 +31,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"experiment.runs", "N walls with one seed each: sets walls = N and seeds_per_wall = 1", &c.runs},
       {"experiment.walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs},
       {"experiment.seeds_per_wall", "Learning seeds per wall pair", &s.seeds_per_wall},
+      {"experiment.training_walls",
+       "Walls each training run learns Q_grid on in sequence before transfer (docs/TRANSFER.md): the last is the "
+       "pair's training wall",
+       &s.training_walls},
       {"experiment.threads", "Worker threads (0: all cores); results do not depend on it", &s.threads},
       {"experiment.iterations", "Learning iterations (real actions) per run", &l.iterations},
       {"experiment.beginning",
@@ -115,6 +119,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        &c.compare_walk_solver},
       {"filter.max_span", "Largest distance between two holds of a configuration (m)", &m.filter.max_span_m},
       {"filter.reading", "Reading of 'both feet above the hands'", &c.reading},
+      {"grid.agent_space",
+       "Agent space (docs/TRANSFER.md): grid (the paper's moving grid) or reach (direction sectors = columns and "
+       "distance rings of tile_height m = rows around the free limb's shoulder or hip)",
+       &c.agent_space},
       {"grid.columns", "Columns of the moving grid", &m.grid.columns},
       {"grid.rows", "Rows of the moving grid", &m.grid.rows},
       {"grid.tile_width", "Tile width of the moving grid (m)", &m.grid.tile_width},
@@ -352,6 +360,8 @@ ConfigLines apply_config_document(const ConfigDocument& document, ExperimentConf
 namespace {
 
 constexpr long long kMaxRunsPerCondition = 1000000;
+// Each training run learns K times its iterations: beyond this a typo, not an experiment.
+constexpr int kMaxTrainingWalls = 1000;
 
 void require(bool ok, const char* key, const std::string& problem) {
   if (!ok) throw InputError(key, problem);
@@ -426,6 +436,12 @@ void finalize_config(ExperimentConfig& config) {
                                                         printable(config.transfer), transfer_mode_names()));
   }
   s.learning.dyna.transfer = *transfer;
+  const auto agent_space = parse_agent_space(config.agent_space);
+  if (!agent_space) {
+    throw InputError("grid.agent_space", fmt::format("unknown agent space '{}' (expected {})",
+                                                     printable(config.agent_space), agent_space_names()));
+  }
+  s.learning.climbing.grid.space = *agent_space;
   const auto reading = parse_reading(config.reading);
   if (!reading) throw InputError("filter.reading", fmt::format("unknown reading '{}'", printable(config.reading)));
   s.learning.climbing.filter.feet_above_hands = *reading;
@@ -437,6 +453,8 @@ void finalize_config(ExperimentConfig& config) {
   }
   require(s.wall_pairs > 0, "experiment.walls", "must be positive");
   require(s.seeds_per_wall > 0, "experiment.seeds_per_wall", "must be positive");
+  require(s.training_walls >= 1 && s.training_walls <= kMaxTrainingWalls, "experiment.training_walls",
+          fmt::format("must be from 1 to {}", kMaxTrainingWalls));
   require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition, "experiment.walls",
           "walls x seeds_per_wall must be at most 1000000 runs per condition");
   require(s.threads >= 0 && s.threads <= kMaxThreads, "experiment.threads",
@@ -466,7 +484,8 @@ void finalize_config(ExperimentConfig& config) {
   require(grid.rows > 0, "grid.rows", "must be positive");
   static const char* const anchor_keys[kLimbCount] = {"grid.right_hand_anchor_column", "grid.left_hand_anchor_column",
                                                       "grid.right_foot_anchor_column", "grid.left_foot_anchor_column"};
-  for (int limb = 0; limb < kLimbCount; ++limb) {
+  // The reach agent space has no anchors.
+  for (int limb = 0; limb < kLimbCount && grid.space == AgentSpaceKind::Grid; ++limb) {
     const auto& anchor = grid.anchors[limb];
     require(anchor[0] >= 0 && anchor[0] < grid.columns && anchor[1] >= 0 && anchor[1] < grid.rows, anchor_keys[limb],
             "every grid anchor must be a tile of the grid");

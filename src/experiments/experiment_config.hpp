@@ -38,6 +38,7 @@ struct ExperimentConfig {
   std::string physics_model = physics_model_name(PhysicsModel::Kinematic);
   std::string planner = planner_name(Planner::Uniform);
   std::string transfer = transfer_mode_name(TransferMode::Paper);
+  std::string agent_space = agent_space_name(AgentSpaceKind::Grid);
   std::string reading = reading_name(FilterParameters{}.feet_above_hands);
   // ik-compare: its climbing-like queries, and the solver whose reached postures start
   // the walk's next queries (parsed into compare_walk_solver_kind).

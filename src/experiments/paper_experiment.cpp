@@ -51,9 +51,17 @@ std::uint64_t learning_seed(std::uint64_t seed, Condition condition, int run) {
   return derive_seed(derive_seed(seed, 1000 + stream), static_cast<std::uint64_t>(run));
 }
 
-ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& settings, int role, int run) {
+std::uint64_t preceding_learning_seed(std::uint64_t seed, int run, int j) {
+  return derive_seed(derive_seed(derive_seed(seed, 1002), static_cast<std::uint64_t>(run)),
+                     static_cast<std::uint64_t>(j));
+}
+
+namespace {
+
+// The first wall of `stream`'s candidates whose start is reachable.
+ExperimentWall draw_wall_from(const BodyModel& model, const ExperimentParameters& settings, std::uint64_t stream,
+                              const std::string& label) {
   ExperimentWall out;
-  const std::uint64_t stream = derive_seed(derive_seed(settings.seed, static_cast<std::uint64_t>(role)), run);
   for (int attempt = 0; attempt < kWallAttempts; ++attempt) {
     const std::uint64_t seed = derive_seed(stream, static_cast<std::uint64_t>(attempt));
     Wall wall = generate_random_wall(seed, settings.walls);
@@ -63,7 +71,7 @@ ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& set
       out.rejected_seeds.push_back(seed);
       continue;
     }
-    wall.name = fmt::format("{} wall {} (seed {})", role == kTrainingWalls ? "training" : "transfer", run, seed);
+    wall.name = fmt::format("{} (seed {})", label, seed);
     out.wall = std::move(wall);
     out.seed = seed;
     return out;
@@ -71,6 +79,34 @@ ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& set
   // Only the parameters can make every random wall's start unreachable.
   throw InputError("--wall-* and --ik-* parameters",
                    fmt::format("no random wall drawn with them has a reachable start ({} tried)", kWallAttempts));
+}
+
+}  // namespace
+
+ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& settings, int role, int run) {
+  const std::uint64_t stream = derive_seed(derive_seed(settings.seed, static_cast<std::uint64_t>(role)), run);
+  return draw_wall_from(model, settings, stream,
+                        fmt::format("{} wall {}", role == kTrainingWalls ? "training" : "transfer", run));
+}
+
+ExperimentWall draw_preceding_training_wall(const BodyModel& model, const ExperimentParameters& settings, int pair,
+                                            int j) {
+  const std::uint64_t stream = derive_seed(
+      derive_seed(derive_seed(settings.seed, static_cast<std::uint64_t>(kPrecedingTrainingWalls)), pair), j);
+  return draw_wall_from(model, settings, stream, fmt::format("training wall {}, preceding wall {}", pair, j));
+}
+
+QTable preceding_q_grid(const BodyModel& model, std::span<const ExperimentWall> walls,
+                        const ExperimentParameters& settings, int run,
+                        const std::function<void(int)>& interruption_point) {
+  std::optional<QTable> q_grid;
+  for (std::size_t j = 0; j < walls.size(); ++j) {
+    RunResult learnt = run_learning(model, walls[j].wall, settings.learning,
+                                    preceding_learning_seed(settings.seed, run, static_cast<int>(j)),
+                                    q_grid ? &*q_grid : nullptr, interruption_point);
+    q_grid = std::move(learnt.q_grid);
+  }
+  return std::move(*q_grid);
 }
 
 ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& settings,
@@ -82,10 +118,16 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentPa
   if (settings.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
 
   ExperimentResult result;
+  const int preceding = settings.training_walls - 1;
   result.walls.resize(2 * walls);
+  result.preceding_training_walls.resize(static_cast<std::size_t>(walls) * preceding);
   const auto interruptible = [&](int) {
     if (interruption_point) interruption_point();
   };
+  tbb::parallel_for(0, walls * preceding, [&](int w) {
+    interruptible(w);
+    result.preceding_training_walls[w] = draw_preceding_training_wall(model, settings, w / preceding, w % preceding);
+  });
   tbb::parallel_for(0, 2 * walls, [&](int w) {
     interruptible(w);
     ExperimentWall& wall = result.walls[w];
@@ -102,6 +144,11 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentPa
   }
   std::mutex progress_mutex;
   int done = 0;
+  const auto count_done = [&] {
+    if (!progress) return;
+    const std::lock_guard lock(progress_mutex);
+    progress(++done);
+  };
   const auto run_one = [&](Condition condition, int i, const QTable* initial) {
     ConditionResult& c = result.conditions[static_cast<int>(condition)];
     const int pair = i / settings.seeds_per_wall;
@@ -110,12 +157,17 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentPa
     c.learning_seeds[i] = learning_seed(settings.seed, condition, i);
     c.runs[i] = run_learning(model, result.walls[c.wall_of_run[i]].wall, settings.learning, c.learning_seeds[i],
                              initial, interruptible);
-    if (progress) {
-      const std::lock_guard lock(progress_mutex);
-      progress(++done);
-    }
+    count_done();
   };
-  tbb::parallel_for(0, runs, [&](int i) { run_one(Condition::Training, i, nullptr); });
+  tbb::parallel_for(0, runs, [&](int i) {
+    if (preceding == 0) return run_one(Condition::Training, i, nullptr);
+    const std::span<const ExperimentWall> pair_walls(
+        result.preceding_training_walls.data() + static_cast<std::size_t>(i / settings.seeds_per_wall) * preceding,
+        preceding);
+    const QTable q_grid = preceding_q_grid(model, pair_walls, settings, i, interruptible);
+    for (int j = 0; j < preceding; ++j) count_done();
+    run_one(Condition::Training, i, &q_grid);
+  });
   tbb::parallel_for(0, 2 * runs, [&](int k) {
     const int i = k / 2;
     if (k % 2 == 0) {

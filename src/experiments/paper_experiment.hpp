@@ -1,7 +1,10 @@
 #pragma once
 // The experiment of section IV, in three paired conditions, over W wall pairs with K
 // learning seeds each (run r = w K + k):
-//   training: learning on training wall w from empty tables;
+//   training: learning on training wall w from empty tables (with K training walls, on
+//             pair w's K - 1 preceding training walls in order and then on training
+//             wall w, each run starting from the Q_grid the previous one ended with and
+//             an empty Q_wall; the training result is the last run's);
 //   transfer: learning on transfer wall w starting from training run r's Q_grid only;
 //   control:  learning on transfer wall w from empty tables, with transfer run r's seed
 //             (what transfer must beat).
@@ -13,6 +16,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,12 +44,15 @@ struct ExperimentParameters {
   RandomWallParameters walls;
   int wall_pairs = 6;      // training wall w and transfer wall w
   int seeds_per_wall = 1;  // learning seeds per wall pair
+  int training_walls = 1;  // K: walls a training run learns Q_grid on, in sequence
   std::uint64_t seed = 1;
   int threads = 0;   // 0: all cores
   bool plan = true;  // compute each wall's exact shortest climb
   PlanParameters plan_search;
 
   int runs() const { return wall_pairs * seeds_per_wall; }  // per condition
+  // Every learning run: K per training run, one per transfer and control run.
+  long learning_runs() const { return static_cast<long>(training_walls + 2) * runs(); }
 };
 
 struct ExperimentWall {
@@ -65,27 +72,44 @@ struct ConditionResult {
 
 struct ExperimentResult {
   std::vector<ExperimentWall> walls;  // training walls 0..W-1, then transfer walls
+  // Pair w's preceding training wall j at w (K - 1) + j (no plan, no filtered pairs).
+  std::vector<ExperimentWall> preceding_training_walls;
   std::array<ConditionResult, 3> conditions;
   double seconds = 0.0;  // wall clock, informative
 };
 
-// Progress: the number of runs finished out of 3 x runs() (called under a lock).
+// Progress: the number of runs finished out of learning_runs() (called under a lock).
 // `interruption_point` is called often from the worker threads (before each wall and at
 // every learning iteration); an exception it throws stops the experiment and leaves it.
 ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& settings,
                                       const std::function<void(int runs_done)>& progress = {},
                                       const std::function<void()>& interruption_point = {});
 
-// The roles of draw_wall.
-inline constexpr int kTrainingWalls = 0, kTransferWalls = 1;
+// The roles of draw_wall: each role is its own random stream of the experiment seed, so
+// drawing preceding training walls shifts no other wall.
+inline constexpr int kTrainingWalls = 0, kTransferWalls = 1, kPrecedingTrainingWalls = 2;
 
 // Draws the wall of (role, wall pair) from the experiment seed, skipping candidates
 // whose start configuration is unreachable (they are recorded, never used).
 ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& settings, int role, int pair);
+// Preceding training wall j (0..K-2) of a pair: the stream of kPrecedingTrainingWalls and
+// the pair, then j.
+ExperimentWall draw_preceding_training_wall(const BodyModel& model, const ExperimentParameters& settings, int pair,
+                                            int j);
 
 // The learning seed of run `run` of `condition`: its own stream of the experiment seed.
 // Transfer and control share run r's seed (common random numbers for the paired test).
 std::uint64_t learning_seed(std::uint64_t seed, Condition condition, int run);
+// The learning seed of training run `run` on its preceding training wall j: a stream of
+// its own, so that the last training run keeps learning_seed's.
+std::uint64_t preceding_learning_seed(std::uint64_t seed, int run, int j);
+
+// Training run `run` over its K - 1 preceding training walls (`walls`, in order), each
+// starting from the Q_grid the previous one ended with (the first from an empty one): the
+// Q_grid that the run on the pair's training wall starts from. `walls` is not empty.
+QTable preceding_q_grid(const BodyModel& model, std::span<const ExperimentWall> walls,
+                        const ExperimentParameters& settings, int run,
+                        const std::function<void(int)>& interruption_point = {});
 
 // The (3-configuration, possible action) pairs of `wall` that pass the filter.
 std::uint64_t filtered_pairs(const Wall& wall, const FilterParameters& filter);

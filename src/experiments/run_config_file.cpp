@@ -15,7 +15,8 @@ ExperimentConfig read_run_config(const std::filesystem::path& path) {
   ExperimentConfig config;
   const ConfigLines lines = apply_config_file(file, config, kEveryKey, "the run's config");
   for (const ConfigField& field : config_fields(config)) {
-    if (field.key.starts_with("grid.") && !lines.contains(field.key)) {
+    // Folders written before the reach agent space have no grid.agent_space: the grid's.
+    if (field.key.starts_with("grid.") && field.key != "grid.agent_space" && !lines.contains(field.key)) {
       throw InputError(file, fmt::format("{} is missing (crux writes every grid key)", field.key));
     }
   }

@@ -10,7 +10,8 @@
 namespace crux {
 
 // Every key, checked and finalized as a --config file is. crux writes every grid key,
-// and a view cannot draw the grid from defaults, so each must be in the file.
+// and a view cannot draw the grid from defaults, so each must be in the file, except
+// grid.agent_space, which folders written before it lack (their space is the grid).
 // InputError(file, problem), or InputError("<file>: line N: <key>", problem) for a
 // value that finalize_config refuses.
 ExperimentConfig read_run_config(const std::filesystem::path& file);

@@ -29,7 +29,7 @@ struct PaperJobOutcome {
   nlohmann::ordered_json summary;
 };
 
-// Progress counts finished runs, out of 3 x runs().
+// Progress counts finished learning runs, out of learning_runs().
 PaperJobOutcome run_paper_job(PaperJob job, const JobHooks& hooks);
 
 }  // namespace crux

@@ -163,6 +163,26 @@ nlohmann::ordered_json divergence_json(const ExperimentAnalysis& analysis) {
           {"first_divergence", analysis.first_divergence}};
 }
 
+namespace {
+
+// Taylor and Stone's total time: the iterations behind each transfer run, training over
+// K walls included, beside control's; and the preceding training walls that cost them.
+nlohmann::ordered_json iterations_spent_json(const ExperimentResult& result, const ExperimentParameters& settings) {
+  const long iterations = settings.learning.iterations;
+  nlohmann::ordered_json preceding = nlohmann::json::array();
+  for (const ExperimentWall& w : result.preceding_training_walls) {
+    preceding.push_back({{"name", w.wall.name}, {"seed", w.seed}, {"rejected_seeds", w.rejected_seeds}});
+  }
+  return {{"training_walls", settings.training_walls},
+          {"training", settings.training_walls * iterations},
+          {"transfer", iterations},
+          {"total", (settings.training_walls + 1) * iterations},
+          {"control", iterations},
+          {"preceding_training_walls", preceding}};
+}
+
+}  // namespace
+
 nlohmann::ordered_json summary_json(const ExperimentResult& result, const ExperimentAnalysis* analysis,
                                     const ExperimentParameters& settings, const Provenance& provenance) {
   const int beginning = settings.analysis.beginning;
@@ -187,6 +207,7 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
   if (analysis != nullptr) {
     out["table1_over_runs"] = table_one_over_runs_json(result, beginning);
     out["transfer_vs_control"] = transfer_vs_control_json(*analysis);
+    if (settings.training_walls > 1) out["iterations_spent"] = iterations_spent_json(result, settings);
     out["take_off"] = take_off_json(*analysis);
     out["transfer_choices"] = transfer_choices_json(*analysis);
     out["transfer_control_divergence"] = divergence_json(*analysis);

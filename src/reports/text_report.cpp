@@ -65,6 +65,13 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentPa
   std::string text = fmt::format(
       "\nTransfer against control, paired by wall and seed ({} x {}); means over walls with 95 % intervals:\n",
       counted(settings.wall_pairs, "wall"), counted(settings.seeds_per_wall, "seed"));
+  if (settings.training_walls > 1) {
+    // Taylor and Stone's total time: transfer's runs were paid for by K training runs.
+    const long iterations = settings.learning.iterations;
+    text += fmt::format("  Iterations spent per transfer run: training over {} {}, transfer {}, total {}; control {}\n",
+                        counted(settings.training_walls, "wall"), settings.training_walls * iterations, iterations,
+                        (settings.training_walls + 1) * iterations, iterations);
+  }
   for (const MetricComparison& m : analysis.metrics) {
     const auto& tr = m.per_condition[static_cast<int>(Condition::Transfer)];
     const auto& co = m.per_condition[static_cast<int>(Condition::Control)];

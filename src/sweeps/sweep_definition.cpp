@@ -7,7 +7,19 @@
 
 namespace crux {
 
-const ParameterSet kSweepKeys = kPaperKeys;
+namespace {
+
+// A sweep's tasks are single runs with one training run each: learning over several
+// training walls is crux paper's alone for now.
+ParameterSet sweep_keys() {
+  ParameterSet keys = kPaperKeys;
+  keys.exclude.push_back("experiment.training_walls");
+  return keys;
+}
+
+}  // namespace
+
+const ParameterSet kSweepKeys = sweep_keys();
 
 SweepDefinition define_sweep(const SweepGrid& grid, const std::function<ExperimentConfig(const ListChoice&)>& resolve,
                              std::size_t max_tasks) {

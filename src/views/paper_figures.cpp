@@ -241,6 +241,7 @@ std::string fig2b_svg(const PaperFigureData& data) {
           "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
           "stroke-width=\"1\"/>\n",
           map_left(l), y, map_width, map_height, kPlotFrameColour);
+      if (grid.space != AgentSpaceKind::Grid) continue;  // the reach agent space has no anchors
       const auto [anchor_column, anchor_row] = grid.anchors[l];
       svg += fmt::format(
           "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"4.5\" fill=\"{}\" stroke=\"white\" "

@@ -253,6 +253,61 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   EXPECT_NE(nested.err.find("(did you mean 'wall generate'?)"), std::string::npos) << nested.err;
 }
 
+TEST(CliLearning, TrainingWallsOutsideTheirRangeAreOneLine) {
+  for (const char* count : {"0", "1001"}) {
+    const auto outcome = run_crux(std::string("paper --training-walls ") + count);
+    EXPECT_EQ(outcome.exit_code, 2);
+    EXPECT_EQ(outcome.err, "crux: --training-walls: must be from 1 to 1000\n");
+  }
+}
+
+TEST(CliLearning, PaperWithTrainingWallsReportsTheTotalIterations) {
+  const fs::path folder = learning_scratch("training_walls");
+  fs::remove_all(folder);
+  const auto outcome =
+      run_crux("paper --walls 1 --training-walls 2 --iterations 150 --plan false -o " + folder.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find(
+                "Iterations spent per transfer run: training over 2 walls 300, transfer 150, total 450; control 150"),
+            std::string::npos)
+      << outcome.out;
+  std::ifstream in(folder / "summary.json");
+  EXPECT_EQ(nlohmann::json::parse(in)["iterations_spent"]["total"], 450);
+}
+
+TEST(CliLearning, AnUnknownAgentSpaceIsOneLine) {
+  const auto outcome = run_crux("paper --grid-agent-space hexagons");
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.err, "crux: --grid-agent-space: unknown agent space 'hexagons' (expected grid or reach)\n");
+}
+
+TEST(CliLearning, TheReachAgentSpaceLearnsAndRefusesAGridsQGrid) {
+  const fs::path train = learning_scratch("reach_train"), transfer = learning_scratch("reach_transfer"),
+                 never = learning_scratch("reach_never"), reach_train = learning_scratch("reach_train_reach");
+  for (const fs::path& folder : {train, transfer, reach_train}) fs::remove_all(folder);
+  const std::string reach = " --grid-agent-space reach --grid-columns 8 --grid-rows 4 --grid-tile-height 0.3";
+  ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 300 -o " + train.string()).exit_code, 0);
+  const std::string q_grid = (train / "q_grid.bin").string();
+  const auto refused =
+      run_crux("transfer --q-grid " + q_grid + " --wall-seed 4 --iterations 300" + reach + " -o " + never.string());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(refused.err, "crux: " + q_grid + ": the table has 35 actions where 32 are expected (a different grid?)\n");
+  const auto same_shape = run_crux("transfer --q-grid " + q_grid +
+                                   " --wall-seed 4 --iterations 300 --grid-agent-space reach -o " + never.string());
+  EXPECT_EQ(same_shape.exit_code, 2);
+  EXPECT_EQ(same_shape.err.rfind("crux: " + q_grid + ": the table was learnt on a 5 x 7 moving grid", 0), 0u)
+      << same_shape.err;
+  EXPECT_NE(same_shape.err.find("this run uses reach sectors: 5 directions x 7 rings"), std::string::npos)
+      << same_shape.err;
+  EXPECT_EQ(testing::count_lines(same_shape.err), 1);
+  EXPECT_FALSE(fs::exists(never));
+  // Learnt under the reach space, the table transfers under it.
+  ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 300" + reach + " -o " + reach_train.string()).exit_code, 0);
+  const auto transferred = run_crux("transfer --q-grid " + (reach_train / "q_grid.bin").string() +
+                                    " --wall-seed 4 --iterations 300" + reach + " -o " + transfer.string());
+  ASSERT_EQ(transferred.exit_code, 0) << transferred.err;
+}
+
 TEST(CliLearning, ViewAndReportAnswerBadInputWithOneLine) {
   const fs::path never = learning_scratch("never_report.html");
   const auto no_folder = run_crux("report /nonexistent/crux_folder -o " + never.string());

@@ -134,6 +134,11 @@ TEST(CliSweep, BadListsAndAnotherSweepsFolderAreOneLineErrors) {
   auto outcome = run_crux("sweep --config " + threads.string() + " -o " + testing::sweep_scratch("bad").string());
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(outcome.err, "crux: " + threads.string() + ": line 2: experiment.threads takes one value, not a list\n");
+  const fs::path training_walls = testing::write_temporary("training_walls.toml", "[experiment]\ntraining_walls = 2\n");
+  outcome = run_crux("sweep --config " + training_walls.string() + " -o " + testing::sweep_scratch("bad").string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.err,
+            "crux: " + training_walls.string() + ": line 2: crux sweep does not take experiment.training_walls\n");
   outcome = run_crux("paper --config " + sweep_file().string() + " -o " + testing::sweep_scratch("paper").string());
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_NE(outcome.err.find("learning.epsilon must be one value; only crux sweep takes lists"), std::string::npos)

@@ -10,6 +10,7 @@
 
 #include "experiments/experiment_config.hpp"
 #include "experiments/table_one.hpp"
+#include "learning/q_table_file.hpp"
 #include "reports/output_folder.hpp"
 #include "reports/summary.hpp"
 #include "support/test_models.hpp"
@@ -112,6 +113,101 @@ TEST(PaperExperiment, SeedsPerWallShareTheWallAndFormItsCluster) {
   four.learning.iterations = two.learning.iterations = 10;
   EXPECT_EQ(run_paper_experiment(model, four).conditions[0].learning_seeds[1],
             run_paper_experiment(model, two).conditions[0].learning_seeds[1]);
+}
+
+std::string q_table_bytes(const QTable& table, const std::string& name) {
+  const fs::path path = testing::test_folder() / name;
+  save_q_table(path.string(), table, "test space");
+  return read_bytes(path);
+}
+
+TEST(PaperExperiment, TrainingWallsLearnInSequenceEachFromThePreviousQGrid) {
+  const BodyModel& model = testing::human_model();
+  ExperimentParameters one = small_settings(2);
+  one.wall_pairs = 1;
+  one.learning.iterations = 150;
+  ExperimentParameters three = one;
+  three.training_walls = 3;
+  EXPECT_EQ(one.learning_runs(), 3);
+  EXPECT_EQ(three.learning_runs(), 5) << "total runs: K training runs, then transfer and control";
+  const ExperimentResult k1 = run_paper_experiment(model, one), k3 = run_paper_experiment(model, three);
+  ASSERT_EQ(k3.preceding_training_walls.size(), 2u);
+  EXPECT_TRUE(k1.preceding_training_walls.empty());
+  // By hand: the first run learns on preceding wall 0 from an empty Q_grid, the second on
+  // preceding wall 1 from the first's Q_grid, the third on the pair's training wall from
+  // the second's.
+  const ExperimentWall first_wall = draw_preceding_training_wall(model, three, 0, 0),
+                       second_wall = draw_preceding_training_wall(model, three, 0, 1);
+  EXPECT_EQ(first_wall.seed, k3.preceding_training_walls[0].seed);
+  EXPECT_EQ(second_wall.seed, k3.preceding_training_walls[1].seed);
+  const RunResult first =
+      run_learning(model, first_wall.wall, three.learning, preceding_learning_seed(three.seed, 0, 0), nullptr);
+  const RunResult second =
+      run_learning(model, second_wall.wall, three.learning, preceding_learning_seed(three.seed, 0, 1), &first.q_grid);
+  const RunResult third = run_learning(model, k3.walls[0].wall, three.learning,
+                                       learning_seed(three.seed, Condition::Training, 0), &second.q_grid);
+  const auto& training = k3.conditions[static_cast<int>(Condition::Training)].runs[0];
+  EXPECT_EQ(q_table_bytes(training.q_grid, "k3_training.bin"), q_table_bytes(third.q_grid, "by_hand.bin"));
+  EXPECT_EQ(training.episode_lengths, third.episode_lengths);
+  EXPECT_NE(q_table_bytes(training.q_grid, "k3_training.bin"),
+            q_table_bytes(k1.conditions[0].runs[0].q_grid, "k1_training.bin"))
+      << "the last run starts from knowledge";
+  // The preceding walls' stream shifts no other draw.
+  for (std::size_t w = 0; w < k1.walls.size(); ++w) EXPECT_EQ(k1.walls[w].seed, k3.walls[w].seed);
+  EXPECT_NE(first_wall.seed, k3.walls[0].seed);
+  EXPECT_NE(first_wall.seed, second_wall.seed);
+  for (const Condition c : kConditions) {
+    EXPECT_EQ(k1.conditions[static_cast<int>(c)].learning_seeds, k3.conditions[static_cast<int>(c)].learning_seeds);
+  }
+  EXPECT_EQ(k1.conditions[static_cast<int>(Condition::Control)].runs[0].episode_lengths,
+            k3.conditions[static_cast<int>(Condition::Control)].runs[0].episode_lengths);
+  // Taylor and Stone's total: K x iterations of training, then the transfer run's.
+  const ExperimentAnalysis analysis = analyse_experiment(k3, three);
+  const auto spent = summary_json(k3, &analysis, three, {})["iterations_spent"];
+  EXPECT_EQ(spent["training_walls"], 3);
+  EXPECT_EQ(spent["training"], 450);
+  EXPECT_EQ(spent["transfer"], 150);
+  EXPECT_EQ(spent["total"], 600);
+  EXPECT_EQ(spent["control"], 150);
+  EXPECT_EQ(spent["preceding_training_walls"][1]["seed"], second_wall.seed);
+  const ExperimentAnalysis analysis1 = analyse_experiment(k1, one);
+  EXPECT_FALSE(summary_json(k1, &analysis1, one, {}).contains("iterations_spent")) << "K = 1: the paper's summary";
+}
+
+TEST(PaperExperiment, TrainingWallsGiveTheSameBytesWithOneOrTwoThreads) {
+  const BodyModel& model = testing::human_model();
+  std::vector<std::string> summaries;
+  for (const int threads : {1, 2}) {
+    ExperimentParameters settings = small_settings(threads);
+    settings.learning.iterations = 120;
+    settings.training_walls = 3;
+    const ExperimentResult result = run_paper_experiment(model, settings);
+    const ExperimentAnalysis analysis = analyse_experiment(result, settings);
+    summaries.push_back(summary_json(result, &analysis, settings, {}).dump(1) +
+                        q_table_bytes(result.conditions[0].runs[1].q_grid, "threads.bin"));
+  }
+  EXPECT_EQ(summaries[0], summaries[1]);
+}
+
+TEST(PaperExperiment, TheReachAgentSpaceGivesTheSameBytesWithOneOrTwoThreads) {
+  const BodyModel& model = testing::human_model();
+  std::vector<std::string> outputs;
+  for (const int threads : {1, 2}) {
+    ExperimentParameters settings = small_settings(threads);
+    settings.learning.iterations = 200;
+    GridParameters& grid = settings.learning.climbing.grid;
+    grid.space = AgentSpaceKind::Reach;
+    grid.columns = 8;
+    grid.rows = 4;
+    grid.tile_height = 0.3;
+    const ExperimentResult result = run_paper_experiment(model, settings);
+    const ExperimentAnalysis analysis = analyse_experiment(result, settings);
+    outputs.push_back(summary_json(result, &analysis, settings, {}).dump(1) +
+                      q_table_bytes(result.conditions[0].runs[1].q_grid, "reach_threads.bin"));
+    EXPECT_EQ(result.conditions[0].runs[1].q_grid.action_count(), 32);
+    EXPECT_GT(result.conditions[0].runs[1].q_grid.state_count(), 0u);
+  }
+  EXPECT_EQ(outputs[0], outputs[1]);
 }
 
 }  // namespace

@@ -63,6 +63,15 @@ TEST(RunConfigFile, ReadsEveryKeyWithItsProvenance) {
   EXPECT_EQ(config.recorded_provenance.at("crux_version"), "1.0");
 }
 
+// Folders written before grid.agent_space existed hold the grid's tables.
+TEST(RunConfigFile, TheAgentSpaceIsTheGridUnlessTheFileNamesAnother) {
+  const ExperimentConfig old = read_run_config(testing::write_temporary("run_config_no_space.toml", kRunConfig));
+  EXPECT_EQ(old.settings.learning.climbing.grid.space, AgentSpaceKind::Grid);
+  const ExperimentConfig reach = read_run_config(testing::write_temporary(
+      "run_config_reach.toml", edited_run_config("[grid]\n", "[grid]\nagent_space = \"reach\"\n")));
+  EXPECT_EQ(reach.settings.learning.climbing.grid.space, AgentSpaceKind::Reach);
+}
+
 TEST(RunConfigFile, EveryGridKeyMustBeGiven) {
   const InputError e = run_config_error("run_config_no_rows.toml", edited_run_config("rows = 2\n", ""));
   EXPECT_TRUE(e.source().ends_with("run_config_no_rows.toml")) << e.source();
