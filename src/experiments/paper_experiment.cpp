@@ -77,7 +77,9 @@ ExperimentWall draw_wall_from(const BodyModel& model, const ExperimentParameters
     return out;
   }
   // Only the parameters can make every random wall's start unreachable.
-  throw InputError("--wall-* and --ik-* parameters",
+  throw InputError(settings.learning.climbing.physics.model == PhysicsModel::Static
+                       ? "--wall-*, --ik-* and --physics-* parameters"
+                       : "--wall-* and --ik-* parameters",
                    fmt::format("no random wall drawn with them has a reachable start ({} tried)", kWallAttempts));
 }
 

@@ -241,8 +241,15 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   EXPECT_FALSE(fs::exists(never)) << "nothing written before the input is checked";
   const auto no_start = run_crux("paper --walls 1 --iterations 10 --wall-sigma 3 -o " + never.string());
   EXPECT_EQ(no_start.exit_code, 2);
-  EXPECT_NE(no_start.err.find("no random wall drawn with them has a reachable start"), std::string::npos);
+  EXPECT_EQ(no_start.err,
+            "crux: --wall-* and --ik-* parameters: no random wall drawn with them has a reachable start (100 tried)\n");
   EXPECT_FALSE(fs::exists(never)) << "nothing written when the run fails";
+  // Under the static model its parameters can refuse every start too, and are named.
+  const auto no_static_start =
+      run_crux("paper --walls 1 --iterations 10 --wall-sigma 3 --physics-model static -o " + never.string());
+  EXPECT_EQ(no_static_start.err.rfind("crux: --wall-*, --ik-* and --physics-* parameters: no random wall", 0), 0u)
+      << no_static_start.err;
+  EXPECT_FALSE(fs::exists(never));
   const auto seed = run_crux("train --wall-seed -1");
   EXPECT_EQ(seed.exit_code, 2);
   EXPECT_NE(seed.err.find("--wall-seed"), std::string::npos) << seed.err;
