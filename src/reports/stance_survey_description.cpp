@@ -38,7 +38,11 @@ nlohmann::ordered_json share_json(const MeanInterval& share) {
 // Failures, most frequent first (ties by name).
 std::vector<std::pair<std::string, int>> ranked(const std::map<std::string, int>& failures) {
   std::vector<std::pair<std::string, int>> sorted(failures.begin(), failures.end());
-  std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  // std::sort with the name as the tie-break, not std::stable_sort, whose temporary buffer
+  // libstdc++ 12 frees in a way ASan reports as a mismatch (as in views/body_svg).
+  std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) {
+    return a.second != b.second ? a.second > b.second : a.first < b.first;
+  });
   return sorted;
 }
 
