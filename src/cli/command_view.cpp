@@ -79,7 +79,7 @@ struct ViewCommand {
                                              climb.postures.size() - 1, step));
     }
     write(model, climb.postures[step], folder.wall, run_view_caption(folder, climb, step, output),
-          climbing.reachability, climbing.physics, climb_configuration(folder.wall, climb, step));
+          climbing.reachability, climbing.physics, climb_configurations(folder.wall, climb)[step]);
   }
 
   void check_output(const ExperimentConfig& config) const {

@@ -40,16 +40,13 @@ const Posture* ConfigurationReacher::reach(const Posture& from, const HoldConfig
   const ReachTarget target = reach_target(model_, wall_, complete, parameters_.root);
   const IkResult result = solve_ik(model_, data_, from, target, parameters_.ik);
   ++solves_;
-  if (result.reached && stance_) {
-    const double effort = stance_->effort(result.posture, complete, next_to_move);
+  if (result.reached) {
+    const double effort = stance_ ? stance_->effort(result.posture, complete, next_to_move) : 0.0;
     if (effort <= 1.0) {
-      efforts_.emplace(code, effort);
+      if (stance_) efforts_.emplace(code, effort);
       cache_.store_reached(code, result.posture);
       return cache_.reached(code);
     }
-  } else if (result.reached) {
-    cache_.store_reached(code, result.posture);
-    return cache_.reached(code);
   }
   if (parameters_.cache_unreachable) cache_.store_unreachable(code);
   return nullptr;

@@ -62,9 +62,7 @@ const StaticEquilibriumResult& StanceCheck::solve(const Posture& posture, const 
     const bool hand = limb == static_cast<int>(Limb::RightHand) || limb == static_cast<int>(Limb::LeftHand);
     contact.support_direction = wall_.holds[hold].support.value_or(hand ? lip : top);
     contact.friction = physics_.friction;
-    contact.normal_force_limit = limb == static_cast<int>(Limb::RightHand) || limb == static_cast<int>(Limb::LeftHand)
-                                     ? physics_.grip
-                                     : std::numeric_limits<double>::infinity();
+    contact.normal_force_limit = hand ? physics_.grip : std::numeric_limits<double>::infinity();
   }
   return equilibrium_.solve(data_, posture, std::span<const PointContact>(contacts.data(), count), gravity_);
 }

@@ -55,19 +55,16 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
   return climb;
 }
 
-HoldConfiguration climb_configuration(const Wall& wall, const RecordedClimb& climb, int posture) {
-  HoldConfiguration complete = start_configuration(wall);
-  HoldConfiguration held = complete.with(Limb::RightHand, kFree);
-  int reached = 0;
+std::vector<HoldConfiguration> climb_configurations(const Wall& wall, const RecordedClimb& climb) {
+  std::vector<HoldConfiguration> configurations{start_configuration(wall)};
+  HoldConfiguration held = configurations.back().with(Limb::RightHand, kFree);
   for (const RunStep& step : climb.steps) {
-    if (reached == posture) break;
     if (!step.success) continue;
     const Limb free = held.free_limb();
-    complete = held.with(free, wall.index_of(step.hold_id));
-    held = complete.with(next_free_limb(free), kFree);
-    ++reached;
+    configurations.push_back(held.with(free, wall.index_of(step.hold_id)));
+    held = configurations.back().with(next_free_limb(free), kFree);
   }
-  return complete;
+  return configurations;
 }
 
 RecordedClimb climb_to_show(const RunFolder& folder, const BodyModel& model, const ClimbingParameters& parameters,

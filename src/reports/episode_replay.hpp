@@ -24,9 +24,9 @@ RecordedClimb replay_episode(const RunFolder& folder, const BodyModel& model, co
 RecordedClimb climb_to_show(const RunFolder& folder, const BodyModel& model, const ClimbingParameters& parameters,
                             const std::string& choice, const std::string& flag);
 
-// The 4-configuration that posture `posture` (an index into climb.postures, 0 the start)
-// of `climb` grasps, on `wall`: the start's, then each reached move's.
-HoldConfiguration climb_configuration(const Wall& wall, const RecordedClimb& climb, int posture);
+// The 4-configuration each posture of `climb` grasps on `wall`, in climb.postures' order:
+// the start's, then each reached move's.
+std::vector<HoldConfiguration> climb_configurations(const Wall& wall, const RecordedClimb& climb);
 
 // Which climb `shown` (climb_to_show's for `choice`) is and why it is the one, for the
 // reader of a report: the greedy climb, or the last completed episode because the greedy

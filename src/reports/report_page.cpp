@@ -19,8 +19,9 @@ EffortAlongClimb effort_along_climb(const BodyModel& model, const Wall& wall, co
                                     const PhysicsParameters& physics, const std::string& title) {
   StanceCheck check(model, wall, physics);
   EffortAlongClimb efforts{fmt::format("Effort along the climb: {}", title), {}, {}};
+  const std::vector<HoldConfiguration> configurations = climb_configurations(wall, climb);
   for (std::size_t k = 0; k < climb.postures.size(); ++k) {
-    const HoldConfiguration configuration = climb_configuration(wall, climb, static_cast<int>(k));
+    const HoldConfiguration& configuration = configurations[k];
     // Posture k was reached by the k-th move, of the limb (k - 1) mod 4 in the cycle, so the
     // next to let go is k mod 4; the start's is the right hand.
     const Limb next = static_cast<Limb>(k % kLimbCount);

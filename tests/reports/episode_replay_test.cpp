@@ -180,10 +180,12 @@ TEST(EpisodeReplay, EachPostureOfAClimbGraspsItsConfiguration) {
                  {3, 0, Regime::Random, b, true},
                  {4, 0, Regime::Random, c, true}};
   climb.postures.assign(4, Posture::Zero());
-  EXPECT_EQ(climb_configuration(wall, climb, 0).holds, start.holds);
-  EXPECT_EQ(climb_configuration(wall, climb, 1).holds, start.with(Limb::RightHand, 0).holds);
-  EXPECT_EQ(climb_configuration(wall, climb, 2).holds, start.with(Limb::RightHand, 0).with(Limb::LeftHand, 1).holds);
-  EXPECT_EQ(climb_configuration(wall, climb, 3).holds,
+  const std::vector<HoldConfiguration> configurations = climb_configurations(wall, climb);
+  ASSERT_EQ(configurations.size(), 4u);
+  EXPECT_EQ(configurations[0].holds, start.holds);
+  EXPECT_EQ(configurations[1].holds, start.with(Limb::RightHand, 0).holds);
+  EXPECT_EQ(configurations[2].holds, start.with(Limb::RightHand, 0).with(Limb::LeftHand, 1).holds);
+  EXPECT_EQ(configurations[3].holds,
             start.with(Limb::RightHand, 0).with(Limb::LeftHand, 1).with(Limb::RightFoot, 2).holds);
 }
 
