@@ -1,10 +1,8 @@
 #include "climbing/stance_check.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <vector>
 
 #include <fmt/format.h>
 
@@ -68,9 +66,11 @@ const StaticEquilibriumResult& StanceCheck::solve(const Posture& posture, const 
 }
 
 double StanceCheck::effort(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move) {
-  const double on_four = solve(posture, complete).effort;
-  if (!(on_four <= 1.0)) return on_four;  // the three-hold stance is not needed to refuse it
-  return std::max(on_four, solve(posture, complete.with(next_to_move, kFree)).effort);
+  // One program, not two: the four-hold program is the three-hold one with the fourth
+  // limb's forces freed from zero, so any equilibrium on three holds is one on four at the
+  // same effort, and the four-hold effort is never larger (docs/PHYSICS.md, "One program
+  // per stance").
+  return solve(posture, complete.with(next_to_move, kFree)).effort;
 }
 
 StanceLoads StanceCheck::loads(const Posture& posture, const HoldConfiguration& configuration) {

@@ -54,7 +54,7 @@ class StanceCheck {
 
   // The stance's effort: the larger of the efforts on the four holds of `complete` and
   // on the three left once `next_to_move` lets go (+infinity when either cannot
-  // balance). The posture holds still when it is at most 1.
+  // balance), which is the three-hold effort. The posture holds still when it is at most 1.
   double effort(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move);
   bool holds_still(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move) {
     return effort(posture, complete, next_to_move) <= 1.0;

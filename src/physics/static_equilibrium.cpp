@@ -31,8 +31,7 @@ bool moves_limb(const BodyModel& model, int limb, int joint) {
 
 }  // namespace
 
-StaticEquilibrium::StaticEquilibrium(const BodyModel& model, const StrengthProfile& strength)
-    : model_(model), solver_(std::make_unique<ClpSimplex>()) {
+StaticEquilibrium::StaticEquilibrium(const BodyModel& model, const StrengthProfile& strength) : model_(model) {
   for (int j = kRootDof; j < static_cast<int>(model.joints.size()); ++j) {
     const JointStrength& limits = strength.joints[j];
     if (!(limits.positive > 0.0) || !(limits.negative > 0.0)) {
@@ -64,11 +63,6 @@ StaticEquilibrium::StaticEquilibrium(const BodyModel& model, const StrengthProfi
   row_lower_.assign(row_count, -kUnboundedRow);
   row_upper_.assign(row_count, kUnboundedRow);
   basis_.assign(row_count + kEquilibriumColumns, 0);
-  solver_->setLogLevel(0);
-  // Unscaled: reloaded into one object, CLP's scaled programs gave different optima warm and
-  // cold (by up to 0.26 in effort on random postures); unscaled they agree
-  // (StaticEquilibrium.WarmStartsGiveTheColdSolvesEffort).
-  solver_->scaling(0);
 }
 
 StaticEquilibrium::~StaticEquilibrium() = default;
@@ -137,13 +131,18 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
     values_[e] = joint_rows_[rows_[e] - kFirstJointRow].limit;
   }
 
-  ClpSimplex& solver = *solver_;
+  // A fresh solver object each time, given the program and the last basis: CLP adjusts
+  // its own parameters during a solve (its infeasibility cost, perturbation), so a reused
+  // object's result would depend on every earlier solve, and a run resumed from a
+  // checkpoint, which restores the basis alone, would drift in the efforts' last bits.
+  ClpSimplex solver;
+  solver.setLogLevel(0);
+  // Unscaled: reloaded into one object, CLP's scaled programs gave different optima warm and
+  // cold (by up to 0.26 in effort on random postures); unscaled they agree
+  // (StaticEquilibrium.WarmStartsGiveTheColdSolvesEffort).
+  solver.scaling(0);
   const int row_count = static_cast<int>(row_lower_.size());
-  // CLP copies the program in (it allocates there and in the solve); the last basis has
-  // the same rows and columns, so the primal simplex starts from it. CLP does not keep its
-  // work areas between solves (startFinishOptions 0): keeping them was 9 % faster, but
-  // made the result depend on more than the program and the basis, so a run resumed from
-  // a checkpoint (which restores the basis) drifted in the efforts' last bits
+  // The last basis has the same rows and columns, so the primal simplex starts from it
   // (docs/PERFORMANCE.md, "Static equilibrium").
   solver.loadProblem(kEquilibriumColumns, row_count, starts_.data(), rows_.data(), values_.data(), column_lower_.data(),
                      column_upper_.data(), objective_.data(), row_lower_.data(), row_upper_.data());

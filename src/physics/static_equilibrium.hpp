@@ -3,7 +3,6 @@
 // "Static equilibrium"): a linear program over the contact forces, solved with COIN-OR CLP.
 
 #include <array>
-#include <memory>
 #include <span>
 #include <vector>
 
@@ -14,8 +13,6 @@
 #include "body/gravity_forces.hpp"
 #include "physics/contact_model.hpp"
 #include "physics/strength_profile.hpp"
-
-class ClpSimplex;
 
 namespace crux {
 
@@ -76,7 +73,6 @@ class StaticEquilibrium {
   std::vector<double> values_, column_lower_, column_upper_, objective_, row_lower_, row_upper_;
   std::vector<unsigned char> basis_;
   bool has_basis_ = false;
-  std::unique_ptr<ClpSimplex> solver_;
   StaticEquilibriumResult result_;
 };
 

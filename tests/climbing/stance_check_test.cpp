@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -102,6 +103,40 @@ TEST(StanceCheck, ChecksTheFourHoldsAndTheThreeLeftWithTheDescribedContacts) {
   }
   EXPECT_GT(four_held, static_cast<int>(stances.size()) / 2);
   EXPECT_GT(three_failed, 0);
+}
+
+// One program decides a stance: the four-hold program relaxes the three-hold one (the
+// fourth limb's forces may be zero), so its effort is never larger, and the stance's
+// effort is the three-hold effort. Checked on every stance of the walk against both
+// programs solved apart.
+TEST(StanceCheck, TheThreeHoldEffortIsTheStancesEffort) {
+  const BodyModel& model = testing::human_model();
+  for (const double incline : {0.0, 40.0}) {
+    Wall wall = generate_random_wall(3);
+    wall.incline_deg = incline;
+    const std::vector<ReachedStance> stances = reached_stances(wall, 120);
+    ASSERT_GT(stances.size(), 20u);
+    const PhysicsParameters physics{PhysicsModel::Static};
+    StanceCheck check(model, wall, physics);
+    StanceCheck apart(model, wall, physics);
+    int three_failed = 0, both_held = 0;
+    for (int i = 0; i < static_cast<int>(stances.size()); ++i) {
+      const ReachedStance& s = stances[i];
+      const double on_four = apart.solve(s.posture, s.complete).effort;
+      const double on_three = apart.solve(s.posture, s.complete.with(s.next, kFree)).effort;
+      const double effort = check.effort(s.posture, s.complete, s.next);
+      if (std::isfinite(on_three)) {
+        EXPECT_LE(on_four, on_three + 1e-9) << "incline " << incline << ", stance " << i;
+        EXPECT_NEAR(effort, std::max(on_four, on_three), 1e-9) << "incline " << incline << ", stance " << i;
+      } else {
+        EXPECT_EQ(effort, on_three) << "incline " << incline << ", stance " << i;
+      }
+      three_failed += on_four <= 1.0 && !(on_three <= 1.0);
+      both_held += on_three <= 1.0;
+    }
+    EXPECT_GT(three_failed, 0) << "incline " << incline;
+    EXPECT_GT(both_held, 0) << "incline " << incline;
+  }
 }
 
 // A hold's support direction from its wall file replaces the default, and an inclined
