@@ -39,8 +39,8 @@ struct StaticEquilibriumResult {
   std::array<bool, kLimbCount> at_force_limit{};  // normal force at its limit, within 1e-6
 };
 
-// One linear program, built once for a model and strength profile and reused (warm
-// started from the last basis) for every stance: one per thread, like BodyData.
+// One linear program, built once for a model and strength profile and refilled for every
+// stance, each solve warm started from the last one's basis: one per thread, like BodyData.
 class StaticEquilibrium {
  public:
   StaticEquilibrium(const BodyModel& model, const StrengthProfile& strength);
