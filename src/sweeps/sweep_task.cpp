@@ -53,6 +53,9 @@ void write_run_task(const SweepPlan& plan, const SweepTask& task, const BodyMode
   job.config = cell.config;
   job.config.settings.seed = learning_seed(settings.seed, task.condition, task.index);
   job.config.wall_seed = draw_wall(model, settings, training_wall ? kTrainingWalls : kTransferWalls, pair).seed;
+  // crux train draws the wall of that seed with [wall]'s keys: a training wall's are
+  // [training_wall]'s, which the run's config.toml then records under [wall].
+  if (training_wall) job.config.settings.walls = settings.training_wall_parameters();
   if (task.condition == Condition::Transfer) {
     const SweepTask& training = plan.tasks[static_cast<std::size_t>(task.depends_on)];
     job.config.q_grid = fs::absolute(sweep_folder / training.folder / "q_grid.bin").lexically_normal().string();

@@ -18,6 +18,7 @@
 #include "support/test_models.hpp"
 #include "sweeps/sweep_run.hpp"
 #include "sweeps/sweep_task.hpp"
+#include "wall/wall_file.hpp"
 
 namespace crux {
 namespace {
@@ -92,11 +93,12 @@ TEST(SweepResults, ACellsAnalysisIsCruxPapersOnTheSameRuns) {
   EXPECT_GT(fractions, 0);
 }
 
-// A cell with K = 3 training walls: each training task learns on its three walls in
-// sequence as crux paper does, so every run, every Q_grid and the analysis are crux
-// paper's, and the cell carries Taylor and Stone's total.
+// A cell with K = 3 training walls of their own: each training task learns on its three
+// walls in sequence as crux paper does, so every wall, run, Q_grid and the analysis are
+// crux paper's, and the cell carries Taylor and Stone's total.
 TEST(SweepResults, ACellOverThreeTrainingWallsIsCruxPapersExperiment) {
-  const ExperimentConfig config = small_sweep_config(2, 1000, "[experiment]\ntraining_walls = 3\n");
+  const ExperimentConfig config =
+      small_sweep_config(2, 1000, "[experiment]\ntraining_walls = 3\n[training_wall]\nsigma = 0.12\n");
   SweepJob job;
   job.plan = plan_sweep({}, {sweep_cell(config)});
   job.folder = fs::absolute(testing::sweep_scratch("training-walls"));
@@ -131,9 +133,20 @@ TEST(SweepResults, ACellOverThreeTrainingWallsIsCruxPapersExperiment) {
       EXPECT_EQ(read_bytes(run / "q_grid.bin"), read_bytes(paper_q_grid)) << condition_name(condition) << r;
     }
   }
-  // The preceding walls are crux paper's, pair w's wall j at w (K - 1) + j.
+  // The walls are crux paper's, pair w's preceding wall j at w (K - 1) + j.
   const nlohmann::json facts = read_json(job.folder / "walls/g0/preceding_1_1" / kWallFactsFile);
   EXPECT_EQ(facts.at("seed"), paper.preceding_training_walls[3].seed);
+  const fs::path paper_walls = job.folder / "paper_walls";
+  fs::create_directories(paper_walls);
+  save_wall((paper_walls / "training.json").string(), paper.walls[1].wall);
+  save_wall((paper_walls / "preceding.json").string(), paper.preceding_training_walls[3].wall);
+  EXPECT_EQ(read_bytes(job.folder / "walls/g0/training_1/wall.json"), read_bytes(paper_walls / "training.json"));
+  EXPECT_EQ(read_bytes(job.folder / "walls/g0/preceding_1_1/wall.json"), read_bytes(paper_walls / "preceding.json"));
+  const Wall trained_on = load_wall((job.folder / "runs/c0/training_1/wall.json").string());
+  ASSERT_EQ(trained_on.holds.size(), paper.walls[1].wall.holds.size());
+  for (std::size_t h = 0; h < trained_on.holds.size(); ++h) {
+    EXPECT_EQ(trained_on.holds[h].position, paper.walls[1].wall.holds[h].position) << "hold " << h;
+  }
 }
 
 TEST(SweepResults, PValuesAreHolmAdjustedOverTheCells) {
