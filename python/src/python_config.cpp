@@ -43,7 +43,7 @@ void assign(const ConfigField& field, const py::handle& value) {
   std::visit(
       [&](auto* target) {
         using T = std::remove_pointer_t<decltype(target)>;
-        if constexpr (std::is_same_v<T, double>) {
+        if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) {
           // Python's and numpy's numbers, through __float__.
           if (is_bool || is_text) fail("a finite number");
           const double v = PyFloat_AsDouble(value.ptr());

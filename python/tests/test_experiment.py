@@ -65,6 +65,17 @@ def test_run_experiment_equals_crux_paper(run_cli, tmp_path):
     assert folder_without_callers(tmp_path / "py") == folder_without_callers(tmp_path / "cli")
 
 
+def test_run_experiment_takes_training_walls_of_their_own(run_cli, tmp_path):
+    code, out, err = run_cli("paper", "--walls", 1, "--iterations", 200, "--plan", "false", "--bootstrap-resamples",
+                             200, "--training-wall-sigma", 0.16, "-o", tmp_path / "cli", "--json")
+    assert code == 0, err
+    config = {"experiment": {"walls": 1, "iterations": 200, "plan": False, "bootstrap_resamples": 200},
+              "training_wall": {"sigma": 0.16}}
+    assert without_caller(crux.run_experiment(config)) == without_caller(json.loads(out))
+    same_walls = {"experiment": config["experiment"]}
+    assert without_caller(crux.run_experiment(same_walls)) != without_caller(json.loads(out))
+
+
 def test_run_learning_equals_crux_train_and_transfer(run_cli, tmp_path):
     code, out, err = run_cli("train", "--wall-seed", 3, "--seed", 5, "--iterations", 600, "-o", tmp_path / "train",
                              "--json")
@@ -115,6 +126,8 @@ def test_same_seed_same_run_and_another_seed_another(wall7):
 def test_config_errors_name_the_key():
     with pytest.raises(ValueError, match="^experiment.walls: must be positive$"):
         crux.run_experiment({"experiment": {"walls": 0}})
+    with pytest.raises(ValueError, match="^training_wall.sigma: must be 0 or positive$"):
+        crux.run_experiment({"training_wall": {"sigma": -0.1}})
     with pytest.raises(ValueError, match="^config: unknown key learning.epsilonn$"):
         crux.run_experiment({"learning": {"epsilonn": 0.1}})
     with pytest.raises(ValueError, match="^config: crux.run_experiment does not take wall.seed$"):

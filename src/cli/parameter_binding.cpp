@@ -38,8 +38,9 @@ void ParameterBinding::bind(CLI::App* command) {
           if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, std::optional<std::uint64_t>>) {
             option->check(kSeedDigits);
           }
-          if constexpr (std::is_same_v<T, std::optional<std::uint64_t>> || std::is_same_v<T, std::optional<int>>) {
-            if (target->has_value()) option->default_str(std::to_string(**target));
+          if constexpr (std::is_same_v<T, std::optional<std::uint64_t>> || std::is_same_v<T, std::optional<int>> ||
+                        std::is_same_v<T, std::optional<double>>) {
+            if (target->has_value()) option->default_str(fmt::format("{}", **target));
           } else if constexpr (std::is_same_v<T, std::string>) {
             if (!target->empty()) option->capture_default_str();
           } else {

@@ -149,6 +149,21 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        &s.walls.finish_height},
       {"wall.incline", "Incline of a random wall from vertical (degrees; > 0 overhanging, < 0 slab)",
        &s.walls.incline_deg},
+      {"training_wall.columns", "Tiles across a training wall (unset: wall.columns)", &c.training_wall.columns},
+      {"training_wall.rows", "Tiles up a training wall (unset: wall.rows)", &c.training_wall.rows},
+      {"training_wall.tile_width", "Tile width of a training wall (m; unset: wall.tile_width)",
+       &c.training_wall.tile_width},
+      {"training_wall.tile_height", "Tile height of a training wall (m; unset: wall.tile_height)",
+       &c.training_wall.tile_height},
+      {"training_wall.sigma", "Standard deviation of a training wall's hold displacement (m; unset: wall.sigma)",
+       &c.training_wall.sigma},
+      {"training_wall.hold_radius", "Hold radius of a training wall (m; unset: wall.hold_radius)",
+       &c.training_wall.hold_radius},
+      {"training_wall.finish_height",
+       "Finishing height of the centre of mass on a training wall (m; unset: wall.finish_height)",
+       &c.training_wall.finish_height},
+      {"training_wall.incline", "Incline of a training wall from vertical (degrees; unset: wall.incline)",
+       &c.training_wall.incline},
   };
 }
 
@@ -205,7 +220,7 @@ void assign(const std::string& path, const ConfigField& field, const toml::node&
   std::visit(
       [&](auto* target) {
         using T = std::remove_pointer_t<decltype(target)>;
-        if constexpr (std::is_same_v<T, double>) {
+        if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) {
           const auto v = node.value<double>();
           if (!v || !std::isfinite(*v)) fail("a finite number");
           *target = *v;
@@ -363,8 +378,48 @@ constexpr long long kMaxRunsPerCondition = 1000000;
 // Each training run learns K times its iterations: beyond this a typo, not an experiment.
 constexpr int kMaxTrainingWalls = 1000;
 
-void require(bool ok, const char* key, const std::string& problem) {
+void require(bool ok, const std::string& key, const std::string& problem) {
   if (!ok) throw InputError(key, problem);
+}
+
+// The checks of a random wall's generator keys, those of `section` ("wall" or "training_wall").
+void require_wall_generator(const RandomWallParameters& walls, const std::string& section) {
+  int start_columns = 0, start_rows = 0;
+  for (const auto& vertex : walls.start_vertices) {
+    start_columns = std::max(start_columns, vertex[0]);
+    start_rows = std::max(start_rows, vertex[1]);
+  }
+  const auto key = [&](const char* name) { return section + "." + name; };
+  require(walls.columns >= start_columns, key("columns"), "must reach the start holds (at least 3 tiles)");
+  require(walls.rows >= start_rows, key("rows"), "must reach the start holds (at least 3 tiles)");
+  require((walls.columns + 1LL) * (walls.rows + 1LL) <= kMaxHoldCount, key("columns"),
+          fmt::format("(columns + 1) x (rows + 1) holds must be at most {}", kMaxHoldCount));
+  require(walls.tile_width > 0, key("tile_width"), "must be positive");
+  require(std::abs(walls.incline_deg) < kMaxInclineDeg, key("incline"),
+          "must be between -90 and 90 degrees (exclusive): 0 is vertical, > 0 overhanging");
+  require(walls.tile_height > 0, key("tile_height"), "must be positive");
+  require(walls.sigma >= 0, key("sigma"), "must be 0 or positive");
+  require(walls.hold_radius > 0, key("hold_radius"), "must be positive");
+}
+
+// The transfer walls' parameters with every [training_wall] key set; none when no key is
+// set, so that the default stays one set of parameters for both kinds of wall.
+std::optional<RandomWallParameters> training_wall_parameters(const ExperimentConfig::TrainingWallKeys& keys,
+                                                             const RandomWallParameters& walls) {
+  if (!keys.columns && !keys.rows && !keys.tile_width && !keys.tile_height && !keys.sigma && !keys.hold_radius &&
+      !keys.finish_height && !keys.incline) {
+    return std::nullopt;
+  }
+  RandomWallParameters out = walls;
+  out.columns = keys.columns.value_or(walls.columns);
+  out.rows = keys.rows.value_or(walls.rows);
+  out.tile_width = keys.tile_width.value_or(walls.tile_width);
+  out.tile_height = keys.tile_height.value_or(walls.tile_height);
+  out.sigma = keys.sigma.value_or(walls.sigma);
+  out.hold_radius = keys.hold_radius.value_or(walls.hold_radius);
+  out.finish_height = keys.finish_height.value_or(walls.finish_height);
+  out.incline_deg = keys.incline.value_or(walls.incline_deg);
+  return out;
 }
 
 }  // namespace
@@ -386,6 +441,10 @@ void finalize_config(ExperimentConfig& config) {
   // Flags may spell nan or inf; no parameter means anything then.
   for (const ConfigField& field : config_fields(config)) {
     if (const auto* value = std::get_if<double*>(&field.target); value != nullptr && !std::isfinite(**value)) {
+      throw InputError(field.key, "must be a finite number");
+    }
+    if (const auto* value = std::get_if<std::optional<double>*>(&field.target);
+        value != nullptr && **value && !std::isfinite(***value)) {
       throw InputError(field.key, "must be a finite number");
     }
   }
@@ -495,21 +554,9 @@ void finalize_config(ExperimentConfig& config) {
   const double state_codes =
       4.0 * std::pow(static_cast<double>(grid.columns) * grid.rows + 1.0, 3.0);  // no int overflow
   require(state_codes < 4294967296.0, "grid.columns", "the grid has too many tiles for 32-bit agent-state codes");
-  int start_columns = 0, start_rows = 0;
-  for (const auto& vertex : s.walls.start_vertices) {
-    start_columns = std::max(start_columns, vertex[0]);
-    start_rows = std::max(start_rows, vertex[1]);
-  }
-  require(s.walls.columns >= start_columns, "wall.columns", "must reach the start holds (at least 3 tiles)");
-  require(s.walls.rows >= start_rows, "wall.rows", "must reach the start holds (at least 3 tiles)");
-  require((s.walls.columns + 1LL) * (s.walls.rows + 1LL) <= kMaxHoldCount, "wall.columns",
-          fmt::format("(columns + 1) x (rows + 1) holds must be at most {}", kMaxHoldCount));
-  require(s.walls.tile_width > 0, "wall.tile_width", "must be positive");
-  require(std::abs(s.walls.incline_deg) < kMaxInclineDeg, "wall.incline",
-          "must be between -90 and 90 degrees (exclusive): 0 is vertical, > 0 overhanging");
-  require(s.walls.tile_height > 0, "wall.tile_height", "must be positive");
-  require(s.walls.sigma >= 0, "wall.sigma", "must be 0 or positive");
-  require(s.walls.hold_radius > 0, "wall.hold_radius", "must be positive");
+  require_wall_generator(s.walls, "wall");
+  s.training_wall = training_wall_parameters(config.training_wall, s.walls);
+  if (s.training_wall) require_wall_generator(*s.training_wall, "training_wall");
   const IkParameters& ik = s.learning.climbing.reachability.ik;
   require(ik.paper.step_size > 0, "ik.alpha", "must be positive");
   require(ik.time_step_s > 0, "ik.time_step", "must be positive");
@@ -569,6 +616,8 @@ std::string value_text(const ConfigField& field, bool toml) {
           if (*target) value = seed_text(**target);
         } else if constexpr (std::is_same_v<T, std::optional<int>>) {
           if (*target) value = fmt::format("{}", **target);
+        } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+          if (*target) value = toml_double(**target);
         } else {
           value = fmt::format("{}", *target);
         }

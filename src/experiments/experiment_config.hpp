@@ -30,6 +30,12 @@ struct ExperimentConfig {
   // N walls with one seed each, the paper's design, when given: finalize_config turns it
   // into walls = N, seeds_per_wall = 1 and clears it.
   std::optional<int> runs;
+  // [training_wall]: each key unset follows its [wall] key; finalize_config resolves
+  // them into settings.training_wall.
+  struct TrainingWallKeys {
+    std::optional<int> columns, rows;
+    std::optional<double> tile_width, tile_height, sigma, hold_radius, finish_height, incline;
+  } training_wall;
   // Table I's beginning window; 0: the paper's 2000 iterations, or all of them when a
   // run is shorter (kept as 0, so that a replay with fewer iterations still works).
   int beginning = 0;
@@ -59,8 +65,8 @@ struct ExperimentConfig {
 // gives its holds and finishing height itself, so none applies to it.
 bool is_wall_generator_key(const std::string& key);
 
-using ConfigTarget = std::variant<double*, int*, std::optional<int>*, std::uint64_t*, std::optional<std::uint64_t>*,
-                                  bool*, std::string*>;
+using ConfigTarget = std::variant<double*, std::optional<double>*, int*, std::optional<int>*, std::uint64_t*,
+                                  std::optional<std::uint64_t>*, bool*, std::string*>;
 
 struct ConfigField {
   std::string key;  // TOML "section.name"

@@ -59,12 +59,12 @@ std::uint64_t preceding_learning_seed(std::uint64_t seed, int run, int j) {
 namespace {
 
 // The first wall of `stream`'s candidates whose start is reachable.
-ExperimentWall draw_wall_from(const BodyModel& model, const ExperimentParameters& settings, std::uint64_t stream,
-                              const std::string& label) {
+ExperimentWall draw_wall_from(const BodyModel& model, const ExperimentParameters& settings, bool training,
+                              std::uint64_t stream, const std::string& label) {
   ExperimentWall out;
   for (int attempt = 0; attempt < kWallAttempts; ++attempt) {
     const std::uint64_t seed = derive_seed(stream, static_cast<std::uint64_t>(attempt));
-    Wall wall = generate_random_wall(seed, settings.walls);
+    Wall wall = generate_random_wall(seed, training ? settings.training_wall_parameters() : settings.walls);
     ConfigurationReacher reacher(model, wall, settings.learning.climbing.reachability,
                                  settings.learning.climbing.physics);
     if (reacher.reach_start() == nullptr) {
@@ -77,9 +77,10 @@ ExperimentWall draw_wall_from(const BodyModel& model, const ExperimentParameters
     return out;
   }
   // Only the parameters can make every random wall's start unreachable.
+  const std::string walls = training && settings.training_wall ? "--training-wall-*" : "--wall-*";
   throw InputError(settings.learning.climbing.physics.model == PhysicsModel::Static
-                       ? "--wall-*, --ik-* and --physics-* parameters"
-                       : "--wall-* and --ik-* parameters",
+                       ? walls + ", --ik-* and --physics-* parameters"
+                       : walls + " and --ik-* parameters",
                    fmt::format("no random wall drawn with them has a reachable start ({} tried)", kWallAttempts));
 }
 
@@ -87,7 +88,7 @@ ExperimentWall draw_wall_from(const BodyModel& model, const ExperimentParameters
 
 ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& settings, int role, int run) {
   const std::uint64_t stream = derive_seed(derive_seed(settings.seed, static_cast<std::uint64_t>(role)), run);
-  return draw_wall_from(model, settings, stream,
+  return draw_wall_from(model, settings, role != kTransferWalls, stream,
                         fmt::format("{} wall {}", role == kTrainingWalls ? "training" : "transfer", run));
 }
 
@@ -95,7 +96,7 @@ ExperimentWall draw_preceding_training_wall(const BodyModel& model, const Experi
                                             int j) {
   const std::uint64_t stream = derive_seed(
       derive_seed(derive_seed(settings.seed, static_cast<std::uint64_t>(kPrecedingTrainingWalls)), pair), j);
-  return draw_wall_from(model, settings, stream, fmt::format("training wall {}, preceding wall {}", pair, j));
+  return draw_wall_from(model, settings, true, stream, fmt::format("training wall {}, preceding wall {}", pair, j));
 }
 
 QTable preceding_q_grid(const BodyModel& model, std::span<const ExperimentWall> walls,

@@ -16,6 +16,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -42,6 +43,9 @@ struct ExperimentParameters {
   LearningParameters learning;
   AnalysisParameters analysis;
   RandomWallParameters walls;
+  // The training walls' generator parameters ([training_wall]) when they differ from the
+  // transfer walls' (`walls`); none: the training walls are shaped like the transfer walls.
+  std::optional<RandomWallParameters> training_wall;
   int wall_pairs = 6;      // training wall w and transfer wall w
   int seeds_per_wall = 1;  // learning seeds per wall pair
   int training_walls = 1;  // K: walls a training run learns Q_grid on, in sequence
@@ -51,6 +55,8 @@ struct ExperimentParameters {
   PlanParameters plan_search;
 
   int runs() const { return wall_pairs * seeds_per_wall; }  // per condition
+  // What shapes the training walls, preceding ones included.
+  const RandomWallParameters& training_wall_parameters() const { return training_wall ? *training_wall : walls; }
   // Every learning run: K per training run, one per transfer and control run.
   long learning_runs() const { return static_cast<long>(training_walls + 2) * runs(); }
 };

@@ -10,7 +10,7 @@ namespace crux {
 
 ExperimentConfig read_run_config(const std::filesystem::path& path) {
   static const ParameterSet kEveryKey{
-      {"experiment", "learning", "reward", "ik", "physics", "compare", "filter", "grid", "wall"}, {}};
+      {"experiment", "learning", "reward", "ik", "physics", "compare", "filter", "grid", "wall", "training_wall"}, {}};
   const std::string file = path.string();
   ExperimentConfig config;
   const ConfigLines lines = apply_config_file(file, config, kEveryKey, "the run's config");

@@ -20,7 +20,7 @@ inline const ParameterSet kTransferKeys{
     {"wall.name", "wall.count"}};
 // The paper's experiment (crux paper): its walls are drawn from the experiment seed.
 inline const ParameterSet kPaperKeys{
-    {"experiment", "learning", "reward", "ik", "physics", "filter", "grid", "wall"},
+    {"experiment", "learning", "reward", "ik", "physics", "filter", "grid", "wall", "training_wall"},
     {"experiment.q_grid", "experiment.checkpoint_every", "wall.file", "wall.seed", "wall.name", "wall.count"}};
 
 // The IK's own keys (crux.solve_ik, crux.root_target); crux ik adds experiment.urdf,

@@ -12,10 +12,11 @@ namespace crux {
 LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
   ExperimentConfig& config = job.config;
   // Before any input is loaded: a transfer run starts from a Q_grid, the others from empty tables.
-  if (job.condition == Condition::Transfer && !job.q_grid && config.q_grid.empty()) {
+  const bool starts_from_q_grid = job.condition == Condition::Transfer || job.continues_training;
+  if (starts_from_q_grid && !job.q_grid && config.q_grid.empty()) {
     throw InputError("experiment.q_grid", "give the Q_grid to transfer (q_grid.bin of a training run)");
   }
-  if (job.condition != Condition::Transfer && (job.q_grid || !config.q_grid.empty())) {
+  if (!starts_from_q_grid && (job.q_grid || !config.q_grid.empty())) {
     throw InputError("experiment.q_grid", "only a transfer run starts from a Q_grid");
   }
   const bool writes_folder = job.output.has_value();
@@ -42,7 +43,7 @@ LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
     initial = load_q_grid(config.q_grid, grid);
   }
 
-  const ParameterSet& keys = job.condition == Condition::Transfer ? kTransferKeys : kTrainKeys;
+  const ParameterSet& keys = starts_from_q_grid ? kTransferKeys : kTrainKeys;
   RunCheckpoints checkpoints{config.checkpoint_every, {}, {}, {}, {}};
   std::string config_toml;
   LearningJobOutcome outcome;

@@ -21,6 +21,10 @@ struct LearningJob {
   // Which of the paper's conditions the run is (a sweep runs all three); a transfer run
   // needs a Q_grid, the others start from empty tables.
   Condition condition = Condition::Training;
+  // A training run over K > 1 walls (a sweep's task): its last run continues the Q_grid
+  // of the preceding training walls, given as config.q_grid, and its config.toml is
+  // crux transfer's, which replays that run.
+  bool continues_training = false;
   ExperimentConfig config;
   // The config file `config` was read from, if any: an input, and its recorded
   // provenance is checked against the inputs used now.

@@ -7,19 +7,7 @@
 
 namespace crux {
 
-namespace {
-
-// A sweep's tasks are single runs with one training run each: learning over several
-// training walls is crux paper's alone for now.
-ParameterSet sweep_keys() {
-  ParameterSet keys = kPaperKeys;
-  keys.exclude.push_back("experiment.training_walls");
-  return keys;
-}
-
-}  // namespace
-
-const ParameterSet kSweepKeys = sweep_keys();
+const ParameterSet kSweepKeys = kPaperKeys;
 
 SweepDefinition define_sweep(const SweepGrid& grid, const std::function<ExperimentConfig(const ListChoice&)>& resolve,
                              std::size_t max_tasks) {
@@ -41,7 +29,8 @@ SweepDefinition define_sweep(const SweepGrid& grid, const std::function<Experime
     cell.config = resolve(choice);
     const ExperimentParameters& parameters = cell.config.settings;
     run_tasks += 3 * static_cast<std::size_t>(parameters.runs());
-    wall_tasks = std::max(wall_tasks, 2 * static_cast<std::size_t>(parameters.wall_pairs));
+    wall_tasks = std::max(wall_tasks, static_cast<std::size_t>(parameters.training_walls + 1) *
+                                          static_cast<std::size_t>(parameters.wall_pairs));
     check_task_count(run_tasks + wall_tasks, max_tasks);
     for (std::size_t k = 0; k < keys.size(); ++k) {
       cell.values.push_back(config_value_text(cell.config, keys[k], false));

@@ -12,11 +12,14 @@ namespace crux {
 bool shapes_walls(const std::string& key) {
   // The walls derive from the experiment seed and the wall and reachability keys; the
   // plan adds its budget and the filter (crux plan's keys).
-  static const ParameterSet kWallKeys{{"experiment.seed", "experiment.urdf", "experiment.plan",
-                                       "experiment.plan_max_solves", "ik", "physics", "filter", "wall"},
-                                      {}};
+  static const ParameterSet kWallKeys{
+      {"experiment.seed", "experiment.urdf", "experiment.plan", "experiment.plan_max_solves", "ik", "physics", "filter",
+       "wall", "training_wall"},
+      {}};
   return kWallKeys.accepts(key);
 }
+
+std::string preceding_wall_folder(int pair, int j) { return fmt::format("preceding_{}_{}", pair, j); }
 
 std::size_t SweepPlan::run_tasks() const {
   return static_cast<std::size_t>(
@@ -35,7 +38,9 @@ SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells
   plan.keys = std::move(keys);
   // Wall groups: cells with equal values of every listed key that shapes walls.
   std::map<std::vector<std::string>, std::size_t> groups;
-  std::vector<std::size_t> first_cell, group_walls;
+  // A group's preceding training walls: K - 1 per pair for its largest K (pair w's wall j
+  // is the same for every K > j).
+  std::vector<std::size_t> first_cell, group_walls, group_preceding;
   std::size_t total = 0;
   for (std::size_t c = 0; c < cells.size(); ++c) {
     std::vector<std::string> identity;
@@ -48,11 +53,13 @@ SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells
     if (inserted) {
       first_cell.push_back(c);
       group_walls.push_back(0);
+      group_preceding.push_back(0);
     }
     group_walls[group->second] = std::max<std::size_t>(group_walls[group->second], s.wall_pairs);
+    group_preceding[group->second] = std::max<std::size_t>(group_preceding[group->second], s.training_walls - 1);
     total += 3 * static_cast<std::size_t>(s.runs());
   }
-  for (const std::size_t walls : group_walls) total += 2 * walls;
+  for (std::size_t g = 0; g < group_walls.size(); ++g) total += (2 + group_preceding[g]) * group_walls[g];
   check_task_count(total, max_tasks);
   plan.wall_groups = groups.size();
   plan.tasks.reserve(total);
@@ -62,6 +69,14 @@ SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells
         plan.tasks.push_back(
             {SweepTaskKind::Wall, first_cell[g], role, static_cast<int>(w), -1,
              std::filesystem::path("walls") / fmt::format("g{}", g) / fmt::format("{}_{}", condition_name(role), w)});
+      }
+    }
+    for (std::size_t w = 0; w < group_walls[g]; ++w) {
+      for (std::size_t j = 0; j < group_preceding[g]; ++j) {
+        plan.tasks.push_back({SweepTaskKind::Wall, first_cell[g], Condition::Training, static_cast<int>(w), -1,
+                              std::filesystem::path("walls") / fmt::format("g{}", g) /
+                                  preceding_wall_folder(static_cast<int>(w), static_cast<int>(j)),
+                              static_cast<int>(j)});
       }
     }
   }

@@ -2,7 +2,10 @@
 // What a sweep computes (docs/OUTPUTS.md), as independent tasks in a fixed order:
 //   a wall task per wall of each wall group: draws it, counts its filtered pairs and,
 //     with experiment.plan, finds its exact shortest climb (walls/g<G>/<role>_<w>/);
-//   a run task per cell, condition and run, as in crux paper (runs/c<C>/<condition>_<r>/).
+//     with experiment.training_walls K > 1, also each pair's K - 1 preceding training
+//     walls, without a plan as in crux paper (walls/g<G>/preceding_<w>_<j>/);
+//   a run task per cell, condition and run, as in crux paper (runs/c<C>/<condition>_<r>/);
+//     a training run with K > 1 learns on its K walls in sequence within its one task.
 // Cells that agree on every listed key that shapes walls or plans form one wall group
 // and share its walls. A transfer run starts from its training run's Q_grid, so it
 // depends on that task; every other task can start at once. Runs draw their walls
@@ -21,6 +24,9 @@ namespace crux {
 // Whether a key changes the walls a cell draws or their plans.
 bool shapes_walls(const std::string& key);
 
+// The folder, under walls/g<G>/, of pair w's preceding training wall j (K > 1).
+std::string preceding_wall_folder(int pair, int j);
+
 struct SweepCell {
   ExperimentConfig config;          // finalized
   std::vector<std::string> values;  // each listed key's value in this cell, as plain text
@@ -36,6 +42,7 @@ struct SweepTask {
   int index = 0;                              // a run's r, a wall's pair w
   int depends_on = -1;                        // the task that must finish first (a transfer run's training run)
   std::filesystem::path folder;               // relative to the sweep folder
+  int preceding = -1;                         // a preceding training wall's j (0..K-2); -1 for any other task
 };
 
 struct SweepPlan {

@@ -148,6 +148,14 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
     entry["wall_pairs"] = settings.wall_pairs;
     entry["seeds_per_wall"] = settings.seeds_per_wall;
     entry["iterations"] = settings.learning.iterations;
+    // Taylor and Stone's total time per transfer run, for every K (crux paper's
+    // iterations_spent, whose preceding walls are the sweep's walls/g<G>/preceding_*).
+    const long iterations = settings.learning.iterations;
+    entry["iterations_spent"] = {{"training_walls", settings.training_walls},
+                                 {"training", settings.training_walls * iterations},
+                                 {"transfer", iterations},
+                                 {"total", (settings.training_walls + 1) * iterations},
+                                 {"control", iterations}};
     entry["transfer_vs_control"] = transfer_vs_control_json(analysis);
     entry["take_off"] = take_off_json(analysis);
     entry["transfer_control_divergence"] = divergence_json(analysis);

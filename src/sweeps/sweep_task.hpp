@@ -19,6 +19,11 @@ inline constexpr const char* kPartialFolder = ".partial";
 void run_sweep_task(const SweepPlan& plan, std::size_t task, const BodyModel& model,
                     const std::filesystem::path& sweep_folder);
 
+// A training task with K > 1 training walls: the file of the Q_grid its K - 1 preceding
+// runs left, which its last run starts from, beside the task's folder
+// (runs/c<C>/training_<r>.preceding_q_grid.bin), relative to the sweep folder.
+std::filesystem::path preceding_q_grid_file(const SweepTask& task);
+
 // A wall task's facts file (beside its wall.json).
 inline constexpr const char* kWallFactsFile = "wall_facts.json";
 

@@ -282,6 +282,34 @@ TEST(CliLearning, PaperWithTrainingWallsReportsTheTotalIterations) {
   EXPECT_EQ(nlohmann::json::parse(in)["iterations_spent"]["total"], 450);
 }
 
+TEST(CliLearning, TrainingWallKeysAreCheckedAsTheWallKeys) {
+  auto outcome = run_crux("paper --training-wall-sigma -0.1");
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.err, "crux: --training-wall-sigma: must be 0 or positive\n");
+  outcome = run_crux("paper --training-wall-rows 2");
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.err, "crux: --training-wall-rows: must reach the start holds (at least 3 tiles)\n");
+  outcome = run_crux("paper --training-wall-tile-width nan");
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
+  EXPECT_NE(outcome.err.find("--training-wall-tile-width"), std::string::npos) << outcome.err;
+}
+
+// The section is written only when set, and the written config.toml replays it.
+TEST(CliLearning, PaperWithTrainingWallsOfTheirOwnReplaysFromItsConfig) {
+  const fs::path folder = learning_scratch("training_wall"), again = learning_scratch("training_wall_again");
+  fs::remove_all(folder);
+  fs::remove_all(again);
+  const auto outcome =
+      run_crux("paper --walls 1 --iterations 150 --plan false --training-wall-sigma 0.16 -o " + folder.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(read_text(folder / "config.toml").find("[training_wall]\nsigma = 0.16  #"), std::string::npos);
+  ASSERT_EQ(run_crux("paper --config " + (folder / "config.toml").string() + " -o " + again.string()).exit_code, 0);
+  for (const char* file : {"walls/training_0.json", "walls/transfer_0.json", "runs/training_0/iterations.csv"}) {
+    EXPECT_EQ(read_text(again / file), read_text(folder / file)) << file;
+  }
+}
+
 TEST(CliLearning, AnUnknownAgentSpaceIsOneLine) {
   const auto outcome = run_crux("paper --grid-agent-space hexagons");
   EXPECT_EQ(outcome.exit_code, 2);

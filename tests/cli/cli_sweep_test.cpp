@@ -134,11 +134,20 @@ TEST(CliSweep, BadListsAndAnotherSweepsFolderAreOneLineErrors) {
   auto outcome = run_crux("sweep --config " + threads.string() + " -o " + testing::sweep_scratch("bad").string());
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(outcome.err, "crux: " + threads.string() + ": line 2: experiment.threads takes one value, not a list\n");
-  const fs::path training_walls = testing::write_temporary("training_walls.toml", "[experiment]\ntraining_walls = 2\n");
+  // K and the training walls' keys are axes like any other, and checked as crux paper checks them.
+  const fs::path training_walls =
+      testing::write_temporary("training_walls.toml", "[experiment]\ntraining_walls = [2, 0]\n");
   outcome = run_crux("sweep --config " + training_walls.string() + " -o " + testing::sweep_scratch("bad").string());
   EXPECT_EQ(outcome.exit_code, 2);
-  EXPECT_EQ(outcome.err,
-            "crux: " + training_walls.string() + ": line 2: crux sweep does not take experiment.training_walls\n");
+  EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
+  EXPECT_NE(outcome.err.find("experiment.training_walls"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("must be from 1 to 1000"), std::string::npos) << outcome.err;
+  const fs::path sigma = testing::write_temporary("sigma.toml", "[training_wall]\nsigma = [0.1, -0.1]\n");
+  outcome = run_crux("sweep --config " + sigma.string() + " -o " + testing::sweep_scratch("bad").string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
+  EXPECT_NE(outcome.err.find("training_wall.sigma"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("must be 0 or positive"), std::string::npos) << outcome.err;
   outcome = run_crux("paper --config " + sweep_file().string() + " -o " + testing::sweep_scratch("paper").string());
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_NE(outcome.err.find("learning.epsilon must be one value; only crux sweep takes lists"), std::string::npos)

@@ -43,9 +43,10 @@ TEST(ExperimentConfig, EveryKeyHasItsOwnFlagMirroringIt) {
   for (const ConfigField& field : config_fields(config)) {
     const std::string flag = flag_for_key(field.key);
     EXPECT_TRUE(flags.insert(flag).second) << "two keys share " << flag;
-    const std::string section = field.key.substr(0, field.key.find('.'));
+    std::string section = field.key.substr(0, field.key.find('.'));
     std::string name = field.key.substr(field.key.find('.') + 1);
     std::replace(name.begin(), name.end(), '_', '-');
+    std::replace(section.begin(), section.end(), '_', '-');
     EXPECT_EQ(flag, section == "experiment" ? "--" + name : "--" + section + "-" + name) << field.key;
   }
   EXPECT_EQ(flag_for_key("ik.time_step"), "--ik-time-step");
@@ -227,6 +228,54 @@ TEST(ExperimentConfig, RangesThatWouldBreakWallsOrCodesAreRefusedNamingTheKey) {
   ExperimentConfig bad_anchor;
   bad_anchor.settings.learning.climbing.grid.anchors[0] = {5, 4};
   EXPECT_EQ(refused_key(bad_anchor), "grid.right_hand_anchor_column");
+}
+
+// [training_wall]: a key left unset follows its [wall] key, and only keys set are
+// written, so a default config.toml keeps no such section and every config.toml replays
+// to the same bytes.
+TEST(ExperimentConfig, TrainingWallKeysFollowTheWallKeysUnlessSet) {
+  const ParameterSet keys{{"wall", "training_wall"}, {}};
+  ExperimentConfig defaults;
+  finalize_config(defaults);
+  EXPECT_FALSE(defaults.settings.training_wall.has_value());
+  EXPECT_EQ(config_to_toml(defaults, keys).find("training_wall"), std::string::npos);
+
+  ExperimentConfig wall_only;
+  apply_config_text("[wall]\nsigma = 0.2\n", "wall.toml", wall_only, keys, "test");
+  finalize_config(wall_only);
+  EXPECT_FALSE(wall_only.settings.training_wall.has_value());
+  EXPECT_DOUBLE_EQ(wall_only.settings.training_wall_parameters().sigma, 0.2);
+
+  ExperimentConfig own;
+  apply_config_text("[wall]\nsigma = 0.2\ncolumns = 5\n[training_wall]\nsigma = 0.3\ntile_width = 0.4\n", "own.toml",
+                    own, keys, "test");
+  finalize_config(own);
+  ASSERT_TRUE(own.settings.training_wall.has_value());
+  EXPECT_DOUBLE_EQ(own.settings.training_wall->sigma, 0.3);
+  EXPECT_DOUBLE_EQ(own.settings.training_wall->tile_width, 0.4);
+  EXPECT_EQ(own.settings.training_wall->columns, 5) << "unset: wall.columns";
+  EXPECT_DOUBLE_EQ(own.settings.walls.sigma, 0.2) << "the transfer walls keep [wall]";
+  const std::string written = config_to_toml(own, keys);
+  EXPECT_NE(written.find("[training_wall]\ntile_width = 0.4  #"), std::string::npos) << written;
+  EXPECT_EQ(written.find("training_wall.columns"), std::string::npos);
+  ExperimentConfig replayed;
+  apply_config_text(written, "written.toml", replayed, keys, "test");
+  finalize_config(replayed);
+  EXPECT_EQ(config_to_toml(replayed, keys), written);
+
+  ExperimentConfig narrow;
+  narrow.training_wall.rows = 2;  // the hands start on row 3
+  EXPECT_THROW(
+      {
+        try {
+          finalize_config(narrow);
+        } catch (const InputError& e) {
+          EXPECT_EQ(e.source(), "training_wall.rows");
+          throw;
+        }
+      },
+      InputError);
+  EXPECT_EQ(flag_for_key("training_wall.tile_width"), "--training-wall-tile-width");
 }
 
 // Issue 25: a thread per value aborted crux sweep, and a run's memory grows with its

@@ -174,6 +174,45 @@ TEST(PaperExperiment, TrainingWallsLearnInSequenceEachFromThePreviousQGrid) {
   EXPECT_FALSE(summary_json(k1, &analysis1, one, {}).contains("iterations_spent")) << "K = 1: the paper's summary";
 }
 
+// A similarity cell: only the training walls' geometry moves; the transfer walls, every
+// learning seed and control's runs stay those of the default, so cells stay paired.
+TEST(PaperExperiment, TrainingWallParametersShapeTheTrainingWallsAlone) {
+  const BodyModel& model = testing::human_model();
+  ExperimentParameters same = small_settings(2);
+  same.learning.iterations = 150;
+  same.training_walls = 2;
+  ExperimentParameters sparse = same;
+  sparse.training_wall = sparse.walls;
+  sparse.training_wall->sigma = 0.2;
+  sparse.training_wall->tile_width = 0.4;
+  EXPECT_EQ(&same.training_wall_parameters(), &same.walls) << "none set: shaped like the transfer walls";
+  const ExperimentResult base = run_paper_experiment(model, same), other = run_paper_experiment(model, sparse);
+  const int pairs = same.wall_pairs;
+  for (int w = 0; w < pairs; ++w) {
+    const Wall& trained = other.walls[w].wall;
+    EXPECT_NE(trained.holds[5].position, base.walls[w].wall.holds[5].position) << "training wall " << w;
+    // The same seed stream draws the wall with the other parameters.
+    Wall expected = generate_random_wall(other.walls[w].seed, *sparse.training_wall);
+    EXPECT_EQ(trained.holds[5].position, expected.holds[5].position);
+    EXPECT_EQ(other.walls[pairs + w].seed, base.walls[pairs + w].seed) << "transfer wall " << w;
+    EXPECT_EQ(other.walls[pairs + w].wall.holds[5].position, base.walls[pairs + w].wall.holds[5].position);
+  }
+  for (std::size_t j = 0; j < base.preceding_training_walls.size(); ++j) {
+    const ExperimentWall& drawn = other.preceding_training_walls[j];
+    EXPECT_EQ(drawn.wall.holds[5].position, generate_random_wall(drawn.seed, *sparse.training_wall).holds[5].position);
+  }
+  for (const Condition c : kConditions) {
+    EXPECT_EQ(base.conditions[static_cast<int>(c)].learning_seeds,
+              other.conditions[static_cast<int>(c)].learning_seeds);
+  }
+  const auto& control = base.conditions[static_cast<int>(Condition::Control)].runs;
+  const auto& control_other = other.conditions[static_cast<int>(Condition::Control)].runs;
+  for (std::size_t r = 0; r < control.size(); ++r) {
+    EXPECT_EQ(control[r].episode_lengths, control_other[r].episode_lengths);
+    EXPECT_EQ(q_table_bytes(control[r].q_grid, "control.bin"), q_table_bytes(control_other[r].q_grid, "other.bin"));
+  }
+}
+
 TEST(PaperExperiment, TrainingWallsGiveTheSameBytesWithOneOrTwoThreads) {
   const BodyModel& model = testing::human_model();
   std::vector<std::string> summaries;

@@ -60,6 +60,30 @@ TEST(SweepPlan, CellsThatDrawOtherWallsHaveTheirOwnWallGroup) {
   EXPECT_FALSE(shapes_walls("grid.columns"));
 }
 
+// K training walls: a group draws each pair's K - 1 preceding training walls for its
+// largest K (pair w's wall j is the same for every K above j); the training walls' own
+// keys draw other walls.
+TEST(SweepPlan, AGroupDrawsThePrecedingTrainingWallsOfItsLargestK) {
+  std::vector<SweepCell> cells;
+  for (const int k : {1, 3}) {
+    cells.push_back(sweep_cell(small_sweep_config(2, 100, fmt::format("[experiment]\ntraining_walls = {}\n", k)),
+                               {std::to_string(k)}));
+  }
+  const SweepPlan plan = plan_sweep({"experiment.training_walls"}, std::move(cells));
+  EXPECT_EQ(plan.wall_groups, 1u);
+  ASSERT_EQ(plan.tasks.size(), 2u * 2 + 2 * 2 + 2 * 3 * 2);
+  EXPECT_EQ(plan.run_tasks(), 12u);
+  EXPECT_EQ(plan.tasks[4].folder, "walls/g0/preceding_0_0");
+  EXPECT_EQ(plan.tasks[4].preceding, 0);
+  EXPECT_EQ(plan.tasks[7].folder, "walls/g0/preceding_1_1");
+  EXPECT_EQ(plan.tasks[7].index, 1);
+  EXPECT_EQ(plan.tasks[7].preceding, 1);
+  EXPECT_EQ(plan.tasks[3].preceding, -1);
+  EXPECT_EQ(plan.tasks[run_task_index(plan, 1, Condition::Training, 0)].preceding, -1);
+  EXPECT_FALSE(shapes_walls("experiment.training_walls"));
+  EXPECT_TRUE(shapes_walls("training_wall.sigma"));
+}
+
 TEST(SweepPlan, AGroupDrawsAsManyWallsAsItsLargestCell) {
   std::vector<SweepCell> cells{sweep_cell(small_sweep_config(1, 100), {"1"}),
                                sweep_cell(small_sweep_config(3, 100), {"3"})};

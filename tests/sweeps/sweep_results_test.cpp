@@ -8,12 +8,17 @@
 
 #include <fmt/format.h>
 
+#include "agent_space/moving_grid.hpp"
 #include "experiments/experiment_analysis.hpp"
+#include "experiments/iterations_file.hpp"
 #include "experiments/statistics.hpp"
+#include "learning/q_table_file.hpp"
 #include "reports/summary.hpp"
 #include "support/sweep_cells.hpp"
 #include "support/test_models.hpp"
 #include "sweeps/sweep_run.hpp"
+#include "sweeps/sweep_task.hpp"
+#include "wall/wall_file.hpp"
 
 namespace crux {
 namespace {
@@ -27,6 +32,11 @@ nlohmann::json as_json(const nlohmann::ordered_json& value) { return nlohmann::j
 nlohmann::json read_json(const fs::path& file) {
   std::ifstream in(file);
   return nlohmann::json::parse(in);
+}
+
+std::string read_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 std::vector<std::string> lines_of(const fs::path& file) {
@@ -81,6 +91,62 @@ TEST(SweepResults, ACellsAnalysisIsCruxPapersOnTheSameRuns) {
     }
   }
   EXPECT_GT(fractions, 0);
+}
+
+// A cell with K = 3 training walls of their own: each training task learns on its three
+// walls in sequence as crux paper does, so every wall, run, Q_grid and the analysis are
+// crux paper's, and the cell carries Taylor and Stone's total.
+TEST(SweepResults, ACellOverThreeTrainingWallsIsCruxPapersExperiment) {
+  const ExperimentConfig config =
+      small_sweep_config(2, 1000, "[experiment]\ntraining_walls = 3\n[training_wall]\nsigma = 0.12\n");
+  SweepJob job;
+  job.plan = plan_sweep({}, {sweep_cell(config)});
+  job.folder = fs::absolute(testing::sweep_scratch("training-walls"));
+  job.threads = 2;
+  run_sweep(job, testing::human_model(), nullptr);
+
+  const ExperimentResult paper = run_paper_experiment(testing::human_model(), config.settings);
+  const ExperimentAnalysis analysis = analyse_experiment(paper, config.settings);
+  nlohmann::json cell = read_json(job.folder / "summary.json").at("cells").at(0);
+  for (auto& [name, metric] : cell.at("transfer_vs_control").items()) {
+    metric.at("transfer_minus_control").erase("p_value_holm_over_cells");
+  }
+  EXPECT_EQ(cell.at("transfer_vs_control"), as_json(transfer_vs_control_json(analysis)));
+  EXPECT_EQ(cell.at("take_off"), as_json(take_off_json(analysis)));
+  EXPECT_EQ(cell.at("iterations_spent"),
+            nlohmann::json::parse(
+                R"({"training_walls": 3, "training": 3000, "transfer": 1000, "total": 4000, "control": 1000})"));
+  const std::string grid = describe_grid(config.settings.learning.climbing.grid);
+  for (const Condition condition : kConditions) {
+    const ConditionResult& expected = paper.conditions[static_cast<int>(condition)];
+    for (int r = 0; r < config.settings.runs(); ++r) {
+      const fs::path run = job.folder / job.plan.tasks[run_task_index(job.plan, 0, condition, r)].folder;
+      const std::vector<RunStep> steps =
+          read_iterations_file(run / "iterations.csv", config.settings.learning.iterations);
+      ASSERT_EQ(steps.size(), expected.runs[r].iterations.size());
+      for (std::size_t i = 0; i < steps.size(); ++i) {
+        ASSERT_EQ(steps[i].hold_id, expected.runs[r].iterations[i].hold_id) << condition_name(condition) << r;
+        ASSERT_EQ(steps[i].success, expected.runs[r].iterations[i].success) << condition_name(condition) << r;
+      }
+      const fs::path paper_q_grid = job.folder / fmt::format("paper_{}_{}.bin", condition_name(condition), r);
+      save_q_table(paper_q_grid.string(), expected.runs[r].q_grid, grid);
+      EXPECT_EQ(read_bytes(run / "q_grid.bin"), read_bytes(paper_q_grid)) << condition_name(condition) << r;
+    }
+  }
+  // The walls are crux paper's, pair w's preceding wall j at w (K - 1) + j.
+  const nlohmann::json facts = read_json(job.folder / "walls/g0/preceding_1_1" / kWallFactsFile);
+  EXPECT_EQ(facts.at("seed"), paper.preceding_training_walls[3].seed);
+  const fs::path paper_walls = job.folder / "paper_walls";
+  fs::create_directories(paper_walls);
+  save_wall((paper_walls / "training.json").string(), paper.walls[1].wall);
+  save_wall((paper_walls / "preceding.json").string(), paper.preceding_training_walls[3].wall);
+  EXPECT_EQ(read_bytes(job.folder / "walls/g0/training_1/wall.json"), read_bytes(paper_walls / "training.json"));
+  EXPECT_EQ(read_bytes(job.folder / "walls/g0/preceding_1_1/wall.json"), read_bytes(paper_walls / "preceding.json"));
+  const Wall trained_on = load_wall((job.folder / "runs/c0/training_1/wall.json").string());
+  ASSERT_EQ(trained_on.holds.size(), paper.walls[1].wall.holds.size());
+  for (std::size_t h = 0; h < trained_on.holds.size(); ++h) {
+    EXPECT_EQ(trained_on.holds[h].position, paper.walls[1].wall.holds[h].position) << "hold " << h;
+  }
 }
 
 TEST(SweepResults, PValuesAreHolmAdjustedOverTheCells) {
