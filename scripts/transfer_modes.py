@@ -6,7 +6,11 @@
 First, per cell (a transfer mode, when experiment.transfer is the listed key), transfer
 minus control for each metric of summary.json: the mean over walls, its Student-t 95 %
 interval, the p-value and the p-value Holm-adjusted over the cells; for total reward,
-the difference relative to control's total. Then, per cell and for its
+the difference relative to control's total. Where summary.json has them (since issue
+28): the same for time to threshold at half, once, twice and four times the threshold
+length, and rliable's view of every metric: the interquartile mean of the pair
+differences and the probability that transfer beats control, each with its stratified
+bootstrap interval. Then, per cell and for its
 transfer and control runs, over their first N iterations: the share of actions each
 regime of Algorithm 3 took, how often those actions reached, the mean rise of the root
 per action, and how often an action retried the hold that failed at the iteration
@@ -21,18 +25,23 @@ import os
 REGIMES = ("w_greedy", "g_greedy", "random")
 METRICS = ("jumpstart", "early_episodes", "first_5_iterations", "time_to_threshold", "total_reward", "late_episodes",
            "last_10_length")
+THRESHOLDS = ("time_to_threshold_half", "time_to_threshold", "time_to_threshold_2x", "time_to_threshold_4x")
 
 
 def cell_name(cell):
     return ", ".join(str(v) for v in cell["parameters"].values()) or str(cell["cell"])
 
 
-def metric_table(summary):
-    print("| cell | " + " | ".join(METRICS) + " |")
-    print("|---" * (len(METRICS) + 1) + "|")
+def has_metric(summary, metric, field="transfer_minus_control"):
+    return any(field in cell["transfer_vs_control"].get(metric, {}) for cell in summary["cells"])
+
+
+def metric_table(summary, metrics):
+    print("| cell | " + " | ".join(metrics) + " |")
+    print("|---" * (len(metrics) + 1) + "|")
     for cell in summary["cells"]:
         cells = []
-        for metric in METRICS:
+        for metric in metrics:
             comparison = cell["transfer_vs_control"].get(metric)
             if comparison is None:
                 cells.append("-")
@@ -48,7 +57,28 @@ def metric_table(summary):
             text += f", p = {d['p_value']:.2g} (Holm {d['p_value_holm_over_cells']:.2g})"
             cells.append(text)
         print(f"| {cell_name(cell)} | " + " | ".join(cells) + " |")
-    print("\nTotal reward in millions, its difference relative to control's total in brackets.\n")
+
+
+def estimate(e, form):
+    """rliable's {value, low, high} as "value [low, high]"; "-" for null."""
+    parts = [format(e[k], form) if e[k] is not None else "-" for k in ("value", "low", "high")]
+    return f"{parts[0]} [{parts[1]}, {parts[2]}]"
+
+
+def rliable_table(summary, metrics):
+    print("| cell | " + " | ".join(metrics) + " |")
+    print("|---" * (len(metrics) + 1) + "|")
+    for cell in summary["cells"]:
+        cells = []
+        for metric in metrics:
+            comparison = cell["transfer_vs_control"].get(metric)
+            if comparison is None or "iqm" not in comparison:
+                cells.append("-")
+                continue
+            scale = 1e6 if metric == "total_reward" else 1.0
+            difference = {k: (v / scale if v is not None else None) for k, v in comparison["iqm"]["difference"].items()}
+            cells.append(f"{estimate(difference, '+.3g')}, P {estimate(comparison['probability_of_improvement'], '.2f')}")
+        print(f"| {cell_name(cell)} | " + " | ".join(cells) + " |")
 
 
 def profile(run_folders, iterations):
@@ -80,7 +110,18 @@ def main():
     args = parser.parse_args()
     with open(os.path.join(args.sweep, "summary.json")) as f:
         summary = json.load(f)
-    metric_table(summary)
+    metric_table(summary, METRICS)
+    print("\nTotal reward in millions, its difference relative to control's total in brackets.\n")
+    if all(has_metric(summary, m) for m in THRESHOLDS):
+        print("Time to threshold at half, once, twice and four times the threshold length.\n")
+        metric_table(summary, THRESHOLDS)
+        print()
+    if has_metric(summary, "jumpstart", "iqm"):
+        rliable = METRICS + THRESHOLDS[:1] + THRESHOLDS[2:]
+        print("rliable's view: IQM of transfer minus control (pairs: same wall, same seed) and P(transfer beats "
+              "control), 95 % stratified bootstrap intervals (walls kept, seeds resampled).\n")
+        rliable_table(summary, [m for m in rliable if has_metric(summary, m, "iqm")])
+        print()
     print(f"First {args.iterations} iterations; per regime: share of actions, reached, mean root rise per action, "
           "retries of the hold that failed just before.\n")
     print("| cell | condition | " + " | ".join(REGIMES) + " | all actions reached |")

@@ -10,6 +10,10 @@ std::uint64_t bootstrap_seed(const ExperimentParameters& settings) {
   return RandomStream(settings.seed, "bootstrap").bits(0, 0);
 }
 
+RandomStream stratified_bootstrap_stream(const ExperimentParameters& settings) {
+  return RandomStream(settings.seed, "stratified_bootstrap");
+}
+
 namespace {
 
 double median(std::vector<double> values) {
@@ -27,7 +31,7 @@ MetricWindows metric_windows(const ExperimentParameters& settings) {
 ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const ExperimentParameters& settings) {
   ExperimentAnalysis out;
   out.metrics = compare_transfer(result, metric_windows(settings), bootstrap_seed(settings),
-                                 settings.analysis.bootstrap_resamples);
+                                 settings.analysis.bootstrap_resamples, stratified_bootstrap_stream(settings));
   for (const Condition condition : kConditions) {
     ExperimentAnalysis::TakeOff& t = out.take_off[static_cast<int>(condition)];
     std::vector<double> iterations;

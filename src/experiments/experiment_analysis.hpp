@@ -13,6 +13,8 @@ namespace crux {
 
 // The seed of the cluster bootstrap: its own named stream of the experiment seed.
 std::uint64_t bootstrap_seed(const ExperimentParameters& settings);
+// The stratified bootstrap's stream (rliable's intervals): another named stream of it.
+RandomStream stratified_bootstrap_stream(const ExperimentParameters& settings);
 
 // The windows of the transfer metrics under `settings`.
 MetricWindows metric_windows(const ExperimentParameters& settings);

@@ -35,13 +35,23 @@ double first_episodes(const RunResult& run, const MetricWindows& w) {
 double jumpstart(const RunResult& run, const MetricWindows& w) {
   return run.episode_lengths.empty() ? w.iterations : run.episode_lengths.front();
 }
-double time_to_threshold(const RunResult& run, const MetricWindows& w) {
+// A run that never completes an episode that short: its length, a lower bound.
+double iterations_to_length(const RunResult& run, long long threshold_length, int iterations) {
   int end = 0;
   for (const int length : run.episode_lengths) {
     end += length;
-    if (length <= w.threshold_length) return end;
+    if (length <= threshold_length) return end;
   }
-  return w.iterations;
+  return iterations;
+}
+double time_to_threshold(const RunResult& run, const MetricWindows& w) {
+  return iterations_to_length(run, w.threshold_length, w.iterations);
+}
+// Time to threshold at a multiple of threshold_length (episode lengths are whole, so
+// half of an odd threshold rounds down without changing which episodes qualify).
+template <int Doubled>
+double time_to_scaled_threshold(const RunResult& run, const MetricWindows& w) {
+  return iterations_to_length(run, Doubled * static_cast<long long>(w.threshold_length) / 2, w.iterations);
 }
 double total_reward(const RunResult& run, const MetricWindows&) {
   double sum = 0.0;
@@ -109,11 +119,23 @@ std::vector<EpisodeMetric> episode_metrics(const MetricWindows& w) {
   }
   metrics.push_back(
       {"last_10_length", "mean length of the last 10 episodes (asymptotic performance)", false, last_lengths});
+  // Several thresholds (issue 28), after the metrics of earlier versions so their order holds.
+  const auto at_length = [&](const char* name, int doubled, double (*of_run)(const RunResult&, const MetricWindows&)) {
+    metrics.push_back(
+        {name,
+         fmt::format("iterations to the end of the first episode of at most {} (the run's length if none)",
+                     doubled * static_cast<long long>(w.threshold_length) / 2),
+         false, of_run});
+  };
+  at_length("time_to_threshold_half", 1, time_to_scaled_threshold<1>);
+  at_length("time_to_threshold_2x", 4, time_to_scaled_threshold<4>);
+  at_length("time_to_threshold_4x", 8, time_to_scaled_threshold<8>);
   return metrics;
 }
 
 std::vector<MetricComparison> compare_transfer(const ExperimentResult& result, const MetricWindows& windows,
-                                               std::uint64_t bootstrap_seed, int bootstrap_resamples) {
+                                               std::uint64_t bootstrap_seed, int bootstrap_resamples,
+                                               const RandomStream& stratified_stream) {
   std::vector<MetricComparison> out;
   const auto& transfer = result.conditions[static_cast<int>(Condition::Transfer)];
   for (const EpisodeMetric& metric : episode_metrics(windows)) {
@@ -142,6 +164,8 @@ std::vector<MetricComparison> compare_transfer(const ExperimentResult& result, c
                                      ? -1
                                      : clusters_for_power(comparison.transfer_minus_control.mean,
                                                           comparison.transfer_minus_control.standard_deviation);
+    comparison.stratified =
+        stratified_comparison(t, c, transfer.cluster_of_run, metric.higher_is_better, stratified_stream);
     out.push_back(comparison);
   }
   return out;

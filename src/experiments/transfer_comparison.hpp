@@ -13,6 +13,7 @@
 
 #include "experiments/paper_experiment.hpp"
 #include "experiments/statistics.hpp"
+#include "experiments/stratified_bootstrap.hpp"
 
 namespace crux {
 
@@ -45,11 +46,17 @@ struct MetricComparison {
   double paired_correlation = 0.0;  // Pearson r of transfer and control runs, pair by pair
   double wall_correlation = 0.0;    // ... of their means per wall, the unit of inference
   int walls_for_power = -1;         // walls for 80 % power at the effect seen (-1: none)
+  // rliable's view beside the t-interval: the IQMs of transfer's runs, of control's and
+  // of the pair differences, and P(transfer beats control), with stratified bootstrap
+  // intervals (strata: walls).
+  StratifiedComparison stratified;
 };
 
-// `bootstrap_seed` keys the cluster bootstrap's resampling.
+// `bootstrap_seed` keys the cluster bootstrap's resampling, `stratified_stream` the
+// stratified bootstrap's.
 std::vector<MetricComparison> compare_transfer(const ExperimentResult& result, const MetricWindows& windows,
-                                               std::uint64_t bootstrap_seed, int bootstrap_resamples);
+                                               std::uint64_t bootstrap_seed, int bootstrap_resamples,
+                                               const RandomStream& stratified_stream);
 
 // Iterations until the end of the first `episodes` episodes, or the run's length when
 // it completes fewer (a lower bound): comparable across runs that finish few episodes.

@@ -179,7 +179,32 @@ class Page {
           interval(at(difference, {"ci95_cluster_bootstrap"})), number(at(difference, {"p_value"}), "{:.3f}"),
           number(at(difference, {"walls"}), "{:.0f}"));
     }
-    out_ += "</tbody>\n</table>\n</section>\n";
+    out_ += "</tbody>\n</table>\n";
+    write_stratified_statistics(comparisons);
+    out_ += "</section>\n";
+  }
+
+  // rliable's view beside the t-intervals, when the summary has it.
+  void write_stratified_statistics(const Json& comparisons) {
+    if (comparisons.empty() || !at(comparisons.begin().value(), {"iqm"}).is_object()) return;
+    out_ +=
+        "<p>rliable's view (Agarwal et al., NeurIPS 2021): interquartile means (IQM) over runs and the probability "
+        "that transfer beats control on a wall, with 95&nbsp;% stratified bootstrap intervals: the walls are kept "
+        "and their seeds resampled, so these intervals leave out wall-to-wall variation, which the t-intervals "
+        "include.</p>\n<table class=\"numbers\">\n<thead><tr><th>metric</th><th>IQM transfer</th><th>IQM "
+        "control</th><th>IQM difference</th><th>P(transfer better)</th></tr></thead>\n<tbody>\n";
+    const auto estimate = [](const Json& e, const char* format) {
+      return fmt::format("{} [{}, {}]", number(at(e, {"value"}), format), number(at(e, {"low"}), format),
+                         number(at(e, {"high"}), format));
+    };
+    for (const auto& [metric, values] : comparisons.items()) {
+      append_format(out_, "<tr><th>{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n", xml_escaped(metric),
+                    estimate(at(values, {"iqm", "transfer"}), "{:.3g}"),
+                    estimate(at(values, {"iqm", "control"}), "{:.3g}"),
+                    estimate(at(values, {"iqm", "difference"}), "{:+.3g}"),
+                    estimate(at(values, {"probability_of_improvement"}), "{:.2f}"));
+    }
+    out_ += "</tbody>\n</table>\n";
   }
 
   void write_run_facts() {

@@ -34,6 +34,10 @@ nlohmann::json interval_json(const MeanInterval& m) {
 // A number that may be NaN (a correlation without variance) as JSON: null then.
 nlohmann::json finite_or_null(double value) { return std::isfinite(value) ? nlohmann::json(value) : nullptr; }
 
+nlohmann::ordered_json estimate_json(const BootstrapEstimate& e) {
+  return {{"value", finite_or_null(e.value)}, {"low", finite_or_null(e.low)}, {"high", finite_or_null(e.high)}};
+}
+
 std::vector<Condition> present_conditions(const ExperimentResult& result) {
   std::vector<Condition> present;
   for (const Condition c : kConditions) {
@@ -140,6 +144,11 @@ nlohmann::ordered_json transfer_vs_control_json(const ExperimentAnalysis& analys
     entry["paired_correlation"] = finite_or_null(m.paired_correlation);
     entry["wall_correlation"] = finite_or_null(m.wall_correlation);
     entry["walls_for_80_percent_power"] = m.walls_for_power > 0 ? nlohmann::json(m.walls_for_power) : nullptr;
+    const StratifiedComparison& r = m.stratified;
+    entry["iqm"] = {{"transfer", estimate_json(r.iqm_a)},
+                    {"control", estimate_json(r.iqm_b)},
+                    {"difference", estimate_json(r.iqm_difference)}};
+    entry["probability_of_improvement"] = estimate_json(r.probability_of_improvement);
     comparison[m.metric.name] = entry;
   }
   return comparison;

@@ -31,6 +31,21 @@ std::string difference_cell(const nlohmann::ordered_json& comparison) {
                             d.at("p_value_holm_over_cells").get<double>());
 }
 
+// rliable's view: "-95 [-180, -20]<br>P 0.62 [0.51, 0.72]", blank for a summary.json
+// written before these fields.
+std::string stratified_cell(const nlohmann::ordered_json& comparison) {
+  if (!comparison.contains("iqm") || !comparison.contains("probability_of_improvement")) return {};
+  const auto number = [](const nlohmann::ordered_json& v, const char* format) {
+    return v.is_number() ? fmt::format(fmt::runtime(format), v.get<double>()) : std::string("-");
+  };
+  const auto estimate = [&](const nlohmann::ordered_json& e, const char* format) {
+    return fmt::format("{} [{}, {}]", number(e.at("value"), format), number(e.at("low"), format),
+                       number(e.at("high"), format));
+  };
+  return estimate(comparison.at("iqm").at("difference"), "{:+.4g}") + "<br>P " +
+         estimate(comparison.at("probability_of_improvement"), "{:.2f}");
+}
+
 }  // namespace
 
 std::string sweep_report_html(const nlohmann::ordered_json& summary, const std::vector<std::string>& cell_figures) {
@@ -63,6 +78,23 @@ std::string sweep_report_html(const nlohmann::ordered_json& summary, const std::
       const auto& comparisons = cell.at("transfer_vs_control");
       html +=
           "<td>" + (comparisons.contains(metric) ? difference_cell(comparisons.at(metric)) : std::string()) + "</td>";
+    }
+    html += "</tr>\n";
+  }
+  html +=
+      "</table>\n<p>rliable's view (Agarwal et al., NeurIPS 2021): the interquartile mean of the pair differences "
+      "(transfer minus control, same wall and seed) and the probability that transfer beats control on a wall (P), "
+      "each with a 95 % stratified bootstrap interval: the walls are kept and their seeds resampled, so these "
+      "intervals leave out wall-to-wall variation, which the t-intervals above "
+      "include.</p>\n<table>\n<tr><th>cell</th>";
+  for (const std::string& metric : metrics) html += fmt::format("<th>{}</th>", xml_escaped(metric));
+  html += "</tr>\n";
+  for (const auto& cell : cells) {
+    html += fmt::format("<tr><td>{}</td>", xml_escaped(sweep_cell_title(cell)));
+    for (const std::string& metric : metrics) {
+      const auto& comparisons = cell.at("transfer_vs_control");
+      html +=
+          "<td>" + (comparisons.contains(metric) ? stratified_cell(comparisons.at(metric)) : std::string()) + "</td>";
     }
     html += "</tr>\n";
   }

@@ -88,6 +88,21 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentPa
                                             : "undefined (needs 2 pairs or more and spread in both conditions)",
         walls_for_power_text(m));
   }
+  text += fmt::format(
+      "\nrliable's view (Agarwal et al., NeurIPS 2021): interquartile means over runs and the probability that "
+      "transfer beats control on a wall, with 95 % stratified bootstrap intervals ({} replicates; the walls are kept "
+      "and their seeds resampled, so they leave out wall-to-wall variation, unlike the t-intervals above):\n",
+      kStratifiedBootstrapReplicates);
+  const auto estimate = [](const BootstrapEstimate& e, const char* format) {
+    return fmt::format(fmt::runtime(format), e.value, e.low, e.high);
+  };
+  for (const MetricComparison& m : analysis.metrics) {
+    const StratifiedComparison& r = m.stratified;
+    text += fmt::format("  {:<22} IQM transfer {}, control {}, difference {}; P(improvement) {}\n", m.metric.name,
+                        estimate(r.iqm_a, "{:.4g} [{:.4g}, {:.4g}]"), estimate(r.iqm_b, "{:.4g} [{:.4g}, {:.4g}]"),
+                        estimate(r.iqm_difference, "{:+.4g} [{:+.4g}, {:+.4g}]"),
+                        estimate(r.probability_of_improvement, "{:.2f} [{:.2f}, {:.2f}]"));
+  }
   text += fmt::format("\nTake-off (first episode of at most {}, at least half w-greedy):\n",
                       counted(settings.analysis.threshold_length, "iteration"));
   for (const Condition c : kConditions) {

@@ -147,7 +147,8 @@ TEST(ExperimentAnalysis, MetricsAreCompareTransferWithTheExperimentsBootstrapSee
   const ExperimentParameters settings = small_settings();
   const ExperimentAnalysis analysis = analyse_experiment(result, settings);
   const std::vector<MetricComparison> direct =
-      compare_transfer(result, {kIterations, 4, 3}, bootstrap_seed(settings), settings.analysis.bootstrap_resamples);
+      compare_transfer(result, {kIterations, 4, 3}, bootstrap_seed(settings), settings.analysis.bootstrap_resamples,
+                       stratified_bootstrap_stream(settings));
   ASSERT_EQ(analysis.metrics.size(), direct.size());
   for (std::size_t m = 0; m < direct.size(); ++m) {
     EXPECT_EQ(analysis.metrics[m].metric.name, direct[m].metric.name);
@@ -155,6 +156,9 @@ TEST(ExperimentAnalysis, MetricsAreCompareTransferWithTheExperimentsBootstrapSee
     EXPECT_EQ(a.mean, d.mean) << direct[m].metric.name;
     EXPECT_EQ(a.bootstrap_low, d.bootstrap_low) << direct[m].metric.name;
     EXPECT_EQ(a.bootstrap_high, d.bootstrap_high) << direct[m].metric.name;
+    const StratifiedComparison &ra = analysis.metrics[m].stratified, &rd = direct[m].stratified;
+    EXPECT_EQ(ra.iqm_difference.low, rd.iqm_difference.low) << direct[m].metric.name;
+    EXPECT_EQ(ra.probability_of_improvement.high, rd.probability_of_improvement.high) << direct[m].metric.name;
   }
 }
 

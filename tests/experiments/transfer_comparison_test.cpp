@@ -51,6 +51,29 @@ TEST(TransferComparison, MetricsByHand) {
   EXPECT_EQ(metric("last_10_length", none, windows), 20);
 }
 
+TEST(TransferComparison, TimeToThresholdAtHalfTwiceAndFourTimesTheLength) {
+  // Episodes of 21, 11, 7, 3 and 2 actions, ending at 21, 32, 39, 42 and 44;
+  // threshold_length 5 gives thresholds 2 (half, rounded down), 5, 10 and 20.
+  const RunResult run = run_of({std::string(21, 'r'), std::string(11, 'r'), "rrrrrrr", "rrr", "rr"}, 6);
+  const MetricWindows windows{50, 10, 5};
+  EXPECT_EQ(metric("time_to_threshold_half", run, windows), 44) << "the episode of 2";
+  EXPECT_EQ(metric("time_to_threshold", run, windows), 42) << "the episode of 3";
+  EXPECT_EQ(metric("time_to_threshold_2x", run, windows), 39) << "the episode of 7";
+  EXPECT_EQ(metric("time_to_threshold_4x", run, windows), 32) << "the episode of 11";
+  // Never that short: the run's length, as for the single threshold.
+  EXPECT_EQ(metric("time_to_threshold_half", run_of({"rrrr"}, 46), windows), 50);
+}
+
+TEST(TransferComparison, TheThresholdMultiplesFollowTheMetricsOfEarlierVersions) {
+  std::vector<std::string> names;
+  for (const EpisodeMetric& m : episode_metrics({8000, 2000, 61})) names.push_back(m.name);
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"early_episodes", "jumpstart", "time_to_threshold", "first_5_iterations",
+                                      "total_reward", "late_episodes", "last_10_length", "time_to_threshold_half",
+                                      "time_to_threshold_2x", "time_to_threshold_4x"}));
+  EXPECT_NE(episode_metrics({8000, 2000, 61})[7].description.find("at most 30 "), std::string::npos);
+}
+
 TEST(TransferComparison, TakeOffNeedsAShortEpisodeMostlyWGreedy) {
   // Episode 2 is short but one w-greedy action in three; episode 3 has two of four.
   const RunResult run = run_of({"rrrrrr", "wgr", "wwrg", "w"});

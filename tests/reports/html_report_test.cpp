@@ -22,7 +22,10 @@ ReportPage experiment_page() {
     "transfer_vs_control": {"jumpstart": {"description": "length of the first episode", "higher_is_better": false,
       "transfer": {"mean": 725.3}, "control": {"mean": 551.8},
       "transfer_minus_control": {"mean": 173.5, "ci95_t_over_walls": [-677.7, 1024.7],
-                                 "ci95_cluster_bootstrap": [-453.7, 692.7], "p_value": 0.6227, "walls": 6}}}
+                                 "ci95_cluster_bootstrap": [-453.7, 692.7], "p_value": 0.6227, "walls": 6},
+      "iqm": {"transfer": {"value": 700.5, "low": 650, "high": 760}, "control": {"value": 540, "low": 500, "high": 590},
+              "difference": {"value": 150.25, "low": -20, "high": null}},
+      "probability_of_improvement": {"value": 0.375, "low": 0.25, "high": 0.5}}}
   })");
   page.figures.push_back({"Fig. 4", "lengths", "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"/>"});
   page.replay_title = "training_0";
@@ -68,6 +71,10 @@ TEST(HtmlReport, TableOneShowsOursBesideThePapersAndTheStatisticsTheirIntervals)
   EXPECT_NE(html.find("<td>174</td><td>[-678, 1.02e+03]</td><td>[-454, 693]</td><td>0.623</td><td>6</td>"),
             std::string::npos);
   EXPECT_NE(html.find("crux report: &lt;test&gt;"), std::string::npos);
+  EXPECT_NE(html.find("<tr><th>jumpstart</th><td>700 [650, 760]</td><td>540 [500, 590]</td><td>+150 [-20, "
+                      "&ndash;]</td><td>0.38 [0.25, 0.50]</td></tr>"),
+            std::string::npos)
+      << html;
 }
 
 TEST(HtmlReport, FiguresAreInlinedWithoutTheirXmlDeclaration) {

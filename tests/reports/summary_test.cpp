@@ -57,7 +57,20 @@ TEST(Summary, ExperimentHasTheDocumentedKeys) {
     EXPECT_EQ(entry["transfer_minus_control"]["walls"], 2) << metric;
     EXPECT_TRUE(entry.contains("paired_correlation")) << metric;
     EXPECT_EQ(entry["transfer_minus_control"]["ci95_cluster_bootstrap"].size(), 2u) << metric;
+    for (const char* side : {"transfer", "control", "difference"}) {
+      for (const char* field : {"value", "low", "high"}) EXPECT_TRUE(entry["iqm"][side].contains(field)) << metric;
+    }
+    EXPECT_LE(entry["probability_of_improvement"]["low"].get<double>(),
+              entry["probability_of_improvement"]["high"].get<double>())
+        << metric;
   }
+  // The metrics of earlier versions keep their places; the extra thresholds follow.
+  std::vector<std::string> metrics;
+  for (const auto& item : summary["transfer_vs_control"].items()) metrics.push_back(item.key());
+  ASSERT_GE(metrics.size(), 3u);
+  EXPECT_EQ(std::vector<std::string>(metrics.end() - 3, metrics.end()),
+            (std::vector<std::string>{"time_to_threshold_half", "time_to_threshold_2x", "time_to_threshold_4x"}));
+  EXPECT_EQ(metrics[0], "early_episodes");
   EXPECT_EQ(summary["transfer_control_divergence"]["first_divergence"].size(), 2u);
 }
 

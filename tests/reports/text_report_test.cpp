@@ -79,6 +79,11 @@ TEST(TextReport, NoDifferenceHasNoPowerAndSaysSo) {
             std::string::npos)
       << text;
   EXPECT_NE(text.find("(2 walls x 1 seed)"), std::string::npos) << text;
+  // rliable's view agrees: an IQM difference of 0 and every pair a tie, P = 1/2, with one
+  // seed per wall nothing to resample.
+  EXPECT_NE(text.find("\n  jumpstart              IQM transfer "), std::string::npos) << text;
+  EXPECT_NE(text.find("difference +0 [+0, +0]; P(improvement) 0.50 [0.50, 0.50]\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("(2000 replicates; the walls are kept"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -173,6 +173,10 @@ TEST(SweepResults, PValuesAreHolmAdjustedOverTheCells) {
     }
     EXPECT_EQ(holm, holm_adjusted(p)) << name;
   }
+  // The extra thresholds are families of their own, and every metric has rliable's view.
+  const auto& first = summary.at("cells").at(0).at("transfer_vs_control");
+  EXPECT_TRUE(first.at("time_to_threshold_4x").at("transfer_minus_control").contains("p_value_holm_over_cells"));
+  EXPECT_TRUE(first.at("first_5_iterations").at("probability_of_improvement").contains("low"));
   const std::vector<std::string> rows = lines_of(job.folder / "results.csv");
   ASSERT_EQ(rows.size(), 1u + 3 * 6);
   EXPECT_EQ(rows[0].rfind("cell,learning.epsilon,condition,", 0), 0u);
