@@ -24,8 +24,9 @@ namespace crux::cli {
 
 namespace {
 
-const ParameterSet kPlanKeys{{"experiment.urdf", "experiment.plan_max_solves", "ik", "physics", "filter", "wall"},
-                             {"wall.name", "wall.count"}};
+const ParameterSet kPlanKeys{
+    {"experiment.urdf", "experiment.plan_max_solves", "experiment.plan_check_moves", "ik", "physics", "filter", "wall"},
+    {"wall.name", "wall.count"}};
 
 void require_wall(const ExperimentConfig& config) {
   if (config.wall_file.empty() && !config.wall_seed) {

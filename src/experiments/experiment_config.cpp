@@ -50,6 +50,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"experiment.plan_max_solves",
        "IK solves the exact planner may spend on a wall; it stops there without a plan (12-20 us each on average)",
        &s.plan_search.max_ik_solves},
+      {"experiment.plan_check_moves",
+       "Static model: the exact planner also refuses a move whose IK path (the replay's 16 postures) does not hold "
+       "still on the three holds kept",
+       &s.plan_search.check_moves},
       {"experiment.greedy_cap", "Actions allowed to the greedy policy's evaluation climb", &l.greedy_cap},
       {"experiment.checkpoint_every",
        "Iterations between checkpoints of a run (0: none); the same command started again resumes from the last",
@@ -529,6 +533,8 @@ void finalize_config(ExperimentConfig& config) {
   require(s.analysis.bootstrap_resamples >= 100 && s.analysis.bootstrap_resamples <= 10000000,
           "experiment.bootstrap_resamples", "must be in [100, 10000000]");
   require(s.plan_search.max_ik_solves > 0, "experiment.plan_max_solves", "must be positive");
+  require(!s.plan_search.check_moves || s.learning.climbing.physics.model == PhysicsModel::Static,
+          "experiment.plan_check_moves", "needs physics.model = static: the kinematic model checks no stance");
   require(s.learning.greedy_cap > 0, "experiment.greedy_cap", "must be positive");
   require(config.checkpoint_every >= 0, "experiment.checkpoint_every", "must be 0 (none) or positive");
   require(config.wall_count > 0, "wall.count", "must be positive");

@@ -1,7 +1,12 @@
 #include "experiments/shortest_plan.hpp"
 
 #include <deque>
+#include <optional>
 #include <unordered_map>
+
+#include "climbing/stance_check.hpp"
+#include "configurations/reachability.hpp"
+#include "ik/ik_path.hpp"
 
 namespace crux {
 
@@ -25,6 +30,22 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
   std::deque<std::size_t> frontier{0};
   std::vector<int> possible(wall.hold_count());
   Plan plan;
+  // The path's postures are checked on the three holds kept during the move; its first
+  // posture is the last stance, which holds on them.
+  std::optional<StanceCheck> move_check;
+  if (settings.check_moves) move_check.emplace(model, wall, parameters.physics);
+  plan.checked_moves = settings.check_moves;
+  BodyData path_data(model);
+  std::vector<Posture> path, samples;
+  const auto holds_on_the_way = [&](const Node& node, const HoldConfiguration& complete, const Posture& reached) {
+    const ReachTarget target = reach_target(model, wall, complete, parameters.reachability.root);
+    ik_path_samples(model, path_data, *node.posture, reached, target, parameters.reachability.ik, settings.move_samples,
+                    path, samples);
+    for (std::size_t s = 1; s + 1 < samples.size(); ++s) {
+      if (!move_check->solve(samples[s], node.configuration).feasible) return false;
+    }
+    return true;
+  };
   const auto finish = [&](std::size_t parent, int hold) {
     plan.found = true;
     std::vector<std::pair<int, Limb>> steps{{hold, nodes[parent].configuration.free_limb()}};
@@ -56,6 +77,10 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
       const HoldConfiguration complete = node.configuration.with(free, possible[i]);
       const Posture* reached = reacher.reach(*node.posture, complete, next_free_limb(free));
       if (reached == nullptr) continue;
+      if (move_check && !holds_on_the_way(node, complete, *reached)) {
+        ++plan.moves_refused_on_the_way;
+        continue;
+      }
       if (reacher.place(*reached).centre_of_mass.z() >= wall.finish_height) {
         finish(current, possible[i]);
         break;

@@ -17,6 +17,10 @@ namespace crux {
 // on this machine, since a query the reach envelope rules out does not iterate).
 struct PlanParameters {
   int max_ik_solves = 50000;
+  // Static model only: a move counts when, besides its new stance, every posture along its
+  // IK path (the replay's samples) holds still on the three holds kept during it.
+  bool check_moves = false;
+  int move_samples = 16;  // per move, as the replay draws them (the last is the new stance)
 };
 
 struct Plan {
@@ -27,6 +31,8 @@ struct Plan {
   std::vector<Limb> limbs;        // the limb that moved at each action
   std::size_t expanded_states = 0;
   std::size_t ik_solves = 0;
+  bool checked_moves = false;                // PlanParameters::check_moves
+  std::size_t moves_refused_on_the_way = 0;  // reached stances whose path did not hold
 };
 
 Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,

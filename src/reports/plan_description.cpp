@@ -19,6 +19,7 @@ nlohmann::ordered_json plan_json(const Wall& wall, const Plan& plan) {
   out["limbs"] = limbs;
   out["expanded_states"] = plan.expanded_states;
   out["ik_solves"] = plan.ik_solves;
+  if (plan.checked_moves) out["moves_refused_on_the_way"] = plan.moves_refused_on_the_way;
   return out;
 }
 

@@ -13,8 +13,8 @@ bool shapes_walls(const std::string& key) {
   // The walls derive from the experiment seed and the wall and reachability keys; the
   // plan adds its budget and the filter (crux plan's keys).
   static const ParameterSet kWallKeys{
-      {"experiment.seed", "experiment.urdf", "experiment.plan", "experiment.plan_max_solves", "ik", "physics", "filter",
-       "wall", "training_wall"},
+      {"experiment.seed", "experiment.urdf", "experiment.plan", "experiment.plan_max_solves",
+       "experiment.plan_check_moves", "ik", "physics", "filter", "wall", "training_wall"},
       {}};
   return kWallKeys.accepts(key);
 }

@@ -66,5 +66,27 @@ TEST(ShortestPlan, AnExhaustedSearchIsNotALimit) {
   EXPECT_LT(plan.ik_solves, static_cast<std::size_t>(PlanParameters{}.max_ik_solves));
 }
 
+// Under the static model a move may reach a stance that holds while a posture on the way
+// does not; checking the way (the replay's samples, on the three holds kept) refuses such
+// moves, so the search can only find longer climbs, and on this wall it does.
+TEST(ShortestPlan, CheckingTheMovesOnTheWayRefusesSomeAndLengthensTheClimb) {
+  const BodyModel& model = testing::human_model();
+  Wall wall = generate_random_wall(2);
+  wall.finish_height = 1.7;
+  ClimbingParameters parameters;
+  parameters.physics.model = PhysicsModel::Static;
+  const Plan stances_only = shortest_plan(model, wall, parameters);
+  PlanParameters checked;
+  checked.check_moves = true;
+  const Plan on_the_way = shortest_plan(model, wall, parameters, checked);
+  ASSERT_TRUE(stances_only.found);
+  ASSERT_TRUE(on_the_way.found);
+  EXPECT_FALSE(stances_only.checked_moves);
+  EXPECT_EQ(stances_only.moves_refused_on_the_way, 0u);
+  EXPECT_TRUE(on_the_way.checked_moves);
+  EXPECT_GT(on_the_way.moves_refused_on_the_way, 0u);
+  EXPECT_GT(on_the_way.length, stances_only.length);
+}
+
 }  // namespace
 }  // namespace crux
