@@ -36,27 +36,34 @@ def has_metric(summary, metric, field="transfer_minus_control"):
     return any(field in cell["transfer_vs_control"].get(metric, {}) for cell in summary["cells"])
 
 
-def metric_table(summary, metrics):
+def table(summary, metrics, cell_text):
+    """One row per cell, one column per metric, each written by cell_text(metric, comparison)
+    ("-" where the cell lacks the metric or cell_text returns None)."""
     print("| cell | " + " | ".join(metrics) + " |")
     print("|---" * (len(metrics) + 1) + "|")
     for cell in summary["cells"]:
         cells = []
         for metric in metrics:
             comparison = cell["transfer_vs_control"].get(metric)
-            if comparison is None:
-                cells.append("-")
-                continue
-            d = comparison["transfer_minus_control"]
-            scale = 1e6 if metric == "total_reward" else 1.0
-            text = f"{d['mean'] / scale:+.3g}"
-            if d["ci95_t_over_walls"]:
-                low, high = d["ci95_t_over_walls"]
-                text += f" [{low / scale:+.3g}, {high / scale:+.3g}]"
-            if metric == "total_reward" and comparison.get("relative_difference") is not None:
-                text += f" ({100 * comparison['relative_difference']:+.0f} %)"
-            text += f", p = {d['p_value']:.2g} (Holm {d['p_value_holm_over_cells']:.2g})"
-            cells.append(text)
+            text = cell_text(metric, comparison) if comparison is not None else None
+            cells.append("-" if text is None else text)
         print(f"| {cell_name(cell)} | " + " | ".join(cells) + " |")
+
+
+def metric_table(summary, metrics):
+    table(summary, metrics, difference_text)
+
+
+def difference_text(metric, comparison):
+    d = comparison["transfer_minus_control"]
+    scale = 1e6 if metric == "total_reward" else 1.0
+    text = f"{d['mean'] / scale:+.3g}"
+    if d["ci95_t_over_walls"]:
+        low, high = d["ci95_t_over_walls"]
+        text += f" [{low / scale:+.3g}, {high / scale:+.3g}]"
+    if metric == "total_reward" and comparison.get("relative_difference") is not None:
+        text += f" ({100 * comparison['relative_difference']:+.0f} %)"
+    return text + f", p = {d['p_value']:.2g} (Holm {d['p_value_holm_over_cells']:.2g})"
 
 
 def estimate(e, form):
@@ -65,20 +72,16 @@ def estimate(e, form):
     return f"{parts[0]} [{parts[1]}, {parts[2]}]"
 
 
+def rliable_text(metric, comparison):
+    if "iqm" not in comparison:
+        return None
+    scale = 1e6 if metric == "total_reward" else 1.0
+    difference = {k: (v / scale if v is not None else None) for k, v in comparison["iqm"]["difference"].items()}
+    return f"{estimate(difference, '+.3g')}, P {estimate(comparison['probability_of_improvement'], '.2f')}"
+
+
 def rliable_table(summary, metrics):
-    print("| cell | " + " | ".join(metrics) + " |")
-    print("|---" * (len(metrics) + 1) + "|")
-    for cell in summary["cells"]:
-        cells = []
-        for metric in metrics:
-            comparison = cell["transfer_vs_control"].get(metric)
-            if comparison is None or "iqm" not in comparison:
-                cells.append("-")
-                continue
-            scale = 1e6 if metric == "total_reward" else 1.0
-            difference = {k: (v / scale if v is not None else None) for k, v in comparison["iqm"]["difference"].items()}
-            cells.append(f"{estimate(difference, '+.3g')}, P {estimate(comparison['probability_of_improvement'], '.2f')}")
-        print(f"| {cell_name(cell)} | " + " | ".join(cells) + " |")
+    table(summary, metrics, rliable_text)
 
 
 def profile(run_folders, iterations):

@@ -46,6 +46,23 @@ std::string stratified_cell(const nlohmann::ordered_json& comparison) {
          estimate(comparison.at("probability_of_improvement"), "{:.2f}");
 }
 
+// One row per cell, one column per metric, each table cell written by `cell_text` (empty
+// where the cell lacks the metric).
+template <typename CellText>
+std::string metric_rows(const nlohmann::ordered_json& cells, const std::vector<std::string>& metrics,
+                        const CellText& cell_text) {
+  std::string rows;
+  for (const auto& cell : cells) {
+    rows += fmt::format("<tr><td>{}</td>", xml_escaped(sweep_cell_title(cell)));
+    const auto& comparisons = cell.at("transfer_vs_control");
+    for (const std::string& metric : metrics) {
+      rows += "<td>" + (comparisons.contains(metric) ? cell_text(comparisons.at(metric)) : std::string()) + "</td>";
+    }
+    rows += "</tr>\n";
+  }
+  return rows;
+}
+
 }  // namespace
 
 std::string sweep_report_html(const nlohmann::ordered_json& summary, const std::vector<std::string>& cell_figures) {
@@ -72,15 +89,7 @@ std::string sweep_report_html(const nlohmann::ordered_json& summary, const std::
                     xml_escaped(metric));
   }
   html += "</tr>\n";
-  for (const auto& cell : cells) {
-    html += fmt::format("<tr><td>{}</td>", xml_escaped(sweep_cell_title(cell)));
-    for (const std::string& metric : metrics) {
-      const auto& comparisons = cell.at("transfer_vs_control");
-      html +=
-          "<td>" + (comparisons.contains(metric) ? difference_cell(comparisons.at(metric)) : std::string()) + "</td>";
-    }
-    html += "</tr>\n";
-  }
+  html += metric_rows(cells, metrics, difference_cell);
   html +=
       "</table>\n<p>rliable's view (Agarwal et al., NeurIPS 2021): the interquartile mean of the pair differences "
       "(transfer minus control, same wall and seed) and the probability that transfer beats control on a wall (P), "
@@ -89,15 +98,7 @@ std::string sweep_report_html(const nlohmann::ordered_json& summary, const std::
       "include.</p>\n<table>\n<tr><th>cell</th>";
   for (const std::string& metric : metrics) html += fmt::format("<th>{}</th>", xml_escaped(metric));
   html += "</tr>\n";
-  for (const auto& cell : cells) {
-    html += fmt::format("<tr><td>{}</td>", xml_escaped(sweep_cell_title(cell)));
-    for (const std::string& metric : metrics) {
-      const auto& comparisons = cell.at("transfer_vs_control");
-      html +=
-          "<td>" + (comparisons.contains(metric) ? stratified_cell(comparisons.at(metric)) : std::string()) + "</td>";
-    }
-    html += "</tr>\n";
-  }
+  html += metric_rows(cells, metrics, stratified_cell);
   html += "</table>\n<h2>Episode lengths per cell</h2>\n<div class=\"figures\">\n";
   for (std::string_view svg : cell_figures) {
     if (svg.starts_with("<?xml")) svg.remove_prefix(svg.find("?>") + 2);  // a declaration has no place in HTML
