@@ -46,15 +46,21 @@ std::vector<std::string> lines_of(const fs::path& file) {
   return lines;
 }
 
+// A sweep of `config` alone, on two threads, in a scratch folder named `name`.
+SweepJob run_one_cell_sweep(const ExperimentConfig& config, const std::string& name) {
+  SweepJob job;
+  job.plan = plan_sweep({}, {sweep_cell(config)});
+  job.folder = fs::absolute(testing::sweep_scratch(name));
+  job.threads = 2;
+  run_sweep(job, testing::human_model(), nullptr);
+  return job;
+}
+
 // A cell read back from its run folders is analysed as crux paper analyses the same
 // runs held in memory: the sweep adds no statistics of its own.
 TEST(SweepResults, ACellsAnalysisIsCruxPapersOnTheSameRuns) {
   const ExperimentConfig config = small_sweep_config(3, 1500);
-  SweepJob job;
-  job.plan = plan_sweep({}, {sweep_cell(config)});
-  job.folder = fs::absolute(testing::sweep_scratch("paper"));
-  job.threads = 2;
-  run_sweep(job, testing::human_model(), nullptr);
+  const SweepJob job = run_one_cell_sweep(config, "paper");
 
   const ExperimentResult paper = run_paper_experiment(testing::human_model(), config.settings);
   const ExperimentAnalysis analysis = analyse_experiment(paper, config.settings);
@@ -99,11 +105,7 @@ TEST(SweepResults, ACellsAnalysisIsCruxPapersOnTheSameRuns) {
 TEST(SweepResults, ACellOverThreeTrainingWallsIsCruxPapersExperiment) {
   const ExperimentConfig config =
       small_sweep_config(2, 1000, "[experiment]\ntraining_walls = 3\n[training_wall]\nsigma = 0.12\n");
-  SweepJob job;
-  job.plan = plan_sweep({}, {sweep_cell(config)});
-  job.folder = fs::absolute(testing::sweep_scratch("training-walls"));
-  job.threads = 2;
-  run_sweep(job, testing::human_model(), nullptr);
+  const SweepJob job = run_one_cell_sweep(config, "training-walls");
 
   const ExperimentResult paper = run_paper_experiment(testing::human_model(), config.settings);
   const ExperimentAnalysis analysis = analyse_experiment(paper, config.settings);
