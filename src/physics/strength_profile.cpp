@@ -61,6 +61,7 @@ constexpr PublishedStrength kPublishedStrengths[] = {
 // Each level's grip is one study's mean maximal finger force for a group of that level
 // (docs/MODEL.md, "Grip and push limits": the grades, the protocols, and why the three do
 // not rise with the level). The studies' protocols differ: the levels are not one scale.
+constexpr double kKilogramForceN = 9.81;
 constexpr ClimbingLevel kClimbingLevels[] = {
     // Grant et al. (2003), J. Sports Sci. 21(8): nine intermediate male rock climbers'
     // maximal voluntary contraction on a climbing-specific finger apparatus, 383 N.
@@ -68,9 +69,9 @@ constexpr ClimbingLevel kClimbingLevels[] = {
     // Amca, Vigouroux, Aritan & Berton (2012), J. Sports Sci. 30(7): ten advanced climbers'
     // largest mean maximal vertical finger force over hold depths and grip techniques.
     {"advanced", kAdvancedClimberGripN},
-    // Quaine, Vigouroux & Martin (2003), Int. J. Sports Med. 24(6): ten elite climbers'
-    // maximal isometric fingertip force, 420 N.
-    {"elite", 420.0},
+    // Binney & Cochrane (2003): ten elite British competition climbers (men), maximal
+    // isometric crimp grip 57.4 kg.
+    {"elite", 57.4 * kKilogramForceN},
 };
 
 std::string_view without_side(std::string_view name) {

@@ -51,7 +51,7 @@ inline constexpr double kAdvancedClimberGripN = 575.7;
 // Every named level, from the lowest climbing level to the highest.
 std::span<const ClimbingLevel> climbing_levels();
 std::optional<ClimbingLevel> find_climbing_level(std::string_view name);
-// "intermediate (383.0 N), advanced (575.7 N) or elite (420.0 N)", for help and errors.
+// "intermediate (383.0 N), advanced (575.7 N) or elite (563.1 N)", for help and errors.
 std::string climbing_level_descriptions();
 
 }  // namespace crux

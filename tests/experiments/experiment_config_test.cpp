@@ -264,7 +264,7 @@ TEST(ExperimentConfig, AStrengthLevelSetsTheGripUnlessTheGripIsGiven) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.source(), "physics.strength");
     EXPECT_EQ(e.problem(),
-              "unknown level 'pro' (expected intermediate (383.0 N), advanced (575.7 N) or elite (420.0 N))");
+              "unknown level 'pro' (expected intermediate (383.0 N), advanced (575.7 N) or elite (563.1 N))");
   }
 }
 
