@@ -130,6 +130,9 @@ def test_config_errors_name_the_key():
         crux.run_experiment({"training_wall": {"sigma": -0.1}})
     with pytest.raises(ValueError, match="^config: unknown key learning.epsilonn$"):
         crux.run_experiment({"learning": {"epsilonn": 0.1}})
+    with pytest.raises(ValueError, match=r"^physics.strength: unknown level 'pro' \(expected intermediate \(383.0 N\), "
+                                         r"advanced \(575.7 N\) or elite \(563.1 N\)\)$"):
+        crux.run_experiment({"physics": {"strength": "pro"}})
     with pytest.raises(ValueError, match="^config: crux.run_experiment does not take wall.seed$"):
         crux.run_experiment({"wall.seed": 1})
     with pytest.raises(ValueError, match="^config: grid.columns must be an integer from -2147483648 to 2147483647$"):

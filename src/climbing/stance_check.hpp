@@ -13,6 +13,7 @@
 
 #include "configurations/hold_configuration.hpp"
 #include "physics/static_equilibrium.hpp"
+#include "physics/strength_profile.hpp"
 #include "wall/wall.hpp"
 
 namespace crux {
@@ -25,10 +26,10 @@ struct PhysicsParameters {
   PhysicsModel model = PhysicsModel::Kinematic;  // the paper's, and the default
   // Coulomb's coefficient of every contact (a choice: the paper and the sources are silent).
   double friction = 1.0;
-  // The largest normal force of a hand on a hold, newtons: the largest mean maximal force
-  // of advanced climbers on a 4 cm edge in Amca et al. (J. Sports Sci. 2012), the deepest
-  // hold they measured. Feet are bounded by the legs' joint torques and friction only.
-  double grip = 575.7;
+  // The largest normal force of a hand on a hold, newtons: by default the advanced
+  // climbers' (physics/strength_profile), else physics.strength's level or physics.grip.
+  // Feet are bounded by the legs' joint torques and friction only.
+  double grip = kAdvancedClimberGripN;
   // A hold without a support direction in its wall file: a hand hooks its incut lip,
   // which pushes up and this many degrees into the wall (a jug); a foot stands on its
   // top, which pushes straight up the wall.

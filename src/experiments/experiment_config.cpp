@@ -15,6 +15,7 @@
 #include "common/input_file.hpp"
 #include "common/printable.hpp"
 #include "experiments/stance_survey.hpp"
+#include "physics/strength_profile.hpp"
 #include "wall/incline.hpp"
 
 namespace crux {
@@ -112,6 +113,11 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md)",
        &c.physics_model},
       {"physics.friction", "Static model: Coulomb friction coefficient of every contact", &m.physics.friction},
+      {"physics.strength",
+       fmt::format("Static model: a climbing level whose published grip sets physics.grip: {} (docs/MODEL.md); an "
+                   "explicit physics.grip overrides it",
+                   climbing_level_descriptions()),
+       &c.physics_strength},
       {"physics.grip", "Static model: largest normal force of a hand on a hold (N)", &m.physics.grip},
       {"physics.support_angle",
        "Static model: a hold without a support direction pushes a hand up and this many degrees into the wall "
@@ -475,6 +481,15 @@ void finalize_config(ExperimentConfig& config) {
   require(effort_penalty == 0.0 || *physics_model == PhysicsModel::Static, "reward.effort",
           "needs physics.model = static: the kinematic model has no effort");
   require(s.learning.climbing.physics.friction >= 0, "physics.friction", "must be at least 0");
+  if (!config.physics_strength.empty()) {
+    const auto level = find_climbing_level(config.physics_strength);
+    if (!level) {
+      throw InputError("physics.strength",
+                       fmt::format("unknown level '{}' (expected {})", printable(config.physics_strength),
+                                   climbing_level_descriptions()));
+    }
+    if (!config.given.contains("physics.grip")) s.learning.climbing.physics.grip = level->grip_n;
+  }
   require(s.learning.climbing.physics.grip > 0, "physics.grip", "must be positive");
   require(std::abs(s.learning.climbing.physics.support_angle_deg) <= 90.0, "physics.support_angle",
           "must be from -90 to 90 degrees");

@@ -42,6 +42,9 @@ struct ExperimentConfig {
   std::string solver = "fast";
   std::string wall_rule = wall_rule_name(WallRule::Ignore);
   std::string physics_model = physics_model_name(PhysicsModel::Kinematic);
+  // physics.strength: a climbing level whose grip finalize_config sets, unless physics.grip
+  // is given; empty (unset, and then not written to config.toml): physics.grip alone.
+  std::string physics_strength;
   std::string planner = planner_name(Planner::Uniform);
   std::string transfer = transfer_mode_name(TransferMode::Paper);
   std::string agent_space = agent_space_name(AgentSpaceKind::Grid);

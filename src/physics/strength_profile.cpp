@@ -1,6 +1,9 @@
 #include "physics/strength_profile.hpp"
 
+#include <algorithm>
 #include <string_view>
+
+#include <fmt/format.h>
 
 namespace crux {
 namespace {
@@ -55,6 +58,22 @@ constexpr PublishedStrength kPublishedStrengths[] = {
     {"wrist_deviation", StrengthSource::Gymnast, 23.8345, 31.4217},
 };
 
+// Each level's grip is one study's mean maximal finger force for a group of that level
+// (docs/MODEL.md, "Grip and push limits": the grades, the protocols, and why the three do
+// not rise with the level). The studies' protocols differ: the levels are not one scale.
+constexpr double kKilogramForceN = 9.81;
+constexpr ClimbingLevel kClimbingLevels[] = {
+    // Grant et al. (2003), J. Sports Sci. 21(8): nine intermediate male rock climbers'
+    // maximal voluntary contraction on a climbing-specific finger apparatus, 383 N.
+    {"intermediate", 383.0},
+    // Amca, Vigouroux, Aritan & Berton (2012), J. Sports Sci. 30(7): ten advanced climbers'
+    // largest mean maximal vertical finger force over hold depths and grip techniques.
+    {"advanced", kAdvancedClimberGripN},
+    // Binney & Cochrane (2003): ten elite British competition climbers (men), maximal
+    // isometric crimp grip 57.4 kg.
+    {"elite", 57.4 * kKilogramForceN},
+};
+
 std::string_view without_side(std::string_view name) {
   for (const std::string_view side : {"right_", "left_"}) {
     if (name.substr(0, side.size()) == side) return name.substr(side.size());
@@ -77,6 +96,25 @@ StrengthProfile published_strength_profile(const BodyModel& model, double body_m
     }
   }
   return profile;
+}
+
+std::span<const ClimbingLevel> climbing_levels() { return kClimbingLevels; }
+
+std::optional<ClimbingLevel> find_climbing_level(std::string_view name) {
+  const auto* level = std::find_if(std::begin(kClimbingLevels), std::end(kClimbingLevels),
+                                   [&](const ClimbingLevel& l) { return l.name == name; });
+  if (level == std::end(kClimbingLevels)) return std::nullopt;
+  return *level;
+}
+
+std::string climbing_level_descriptions() {
+  std::string text;
+  const std::span<const ClimbingLevel> levels = climbing_levels();
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    const char* separator = i == 0 ? "" : i + 1 == levels.size() ? " or " : ", ";
+    text += fmt::format("{}{} ({:.1f} N)", separator, levels[i].name, levels[i].grip_n);
+  }
+  return text;
 }
 
 }  // namespace crux

@@ -5,6 +5,10 @@
 
 #include <array>
 #include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
 
 #include "body/body_model.hpp"
 
@@ -32,5 +36,22 @@ struct StrengthProfile {
 // joint neither source measures (lumbar bending and twisting, the neck, hip abduction and
 // rotation, ankle inversion) is left unbounded.
 StrengthProfile published_strength_profile(const BodyModel& model, double body_mass_kg, double stature_m);
+
+// The largest normal force of one hand on a hold that a study measured on climbers of one
+// level, newtons (physics.strength; docs/MODEL.md, "Grip and push limits"). Only the grip
+// varies with the level: no source read gives joint torques by climbing level.
+struct ClimbingLevel {
+  std::string_view name;
+  double grip_n;
+};
+
+// Amca et al. (2012)'s advanced climbers: crux's grip unless physics.strength names a level.
+inline constexpr double kAdvancedClimberGripN = 575.7;
+
+// Every named level, from the lowest climbing level to the highest.
+std::span<const ClimbingLevel> climbing_levels();
+std::optional<ClimbingLevel> find_climbing_level(std::string_view name);
+// "intermediate (383.0 N), advanced (575.7 N) or elite (563.1 N)", for help and errors.
+std::string climbing_level_descriptions();
 
 }  // namespace crux

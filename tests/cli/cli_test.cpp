@@ -72,6 +72,9 @@ TEST(Cli, BadPhysicsParametersAreOneLineNamingTheFlag) {
       {"--physics-model dynamic", "crux: --physics-model: unknown model 'dynamic' (expected kinematic or static)"},
       {"--physics-friction -0.5", "crux: --physics-friction: must be at least 0"},
       {"--physics-grip 0", "crux: --physics-grip: must be positive"},
+      {"--physics-strength pro",
+       "crux: --physics-strength: unknown level 'pro' (expected intermediate (383.0 N), advanced (575.7 N) or elite "
+       "(563.1 N))"},
       {"--physics-support-angle 91", "crux: --physics-support-angle: must be from -90 to 90 degrees"},
       {"--reward-effort 1", "crux: --reward-effort: needs physics.model = static: the kinematic model has no effort"},
       {"--physics-model static --reward-effort -1", "crux: --reward-effort: must be a finite number, 0 or more"},

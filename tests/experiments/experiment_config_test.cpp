@@ -233,6 +233,41 @@ TEST(ExperimentConfig, RangesThatWouldBreakWallsOrCodesAreRefusedNamingTheKey) {
 // [training_wall]: a key left unset follows its [wall] key, and only keys set are
 // written, so a default config.toml keeps no such section and every config.toml replays
 // to the same bytes.
+// physics.strength sets the hands' grip from its level unless physics.grip is given
+// (a flag, a file or Python alike mark it given); config.toml records the level only
+// when set, so that the default's config stays byte for byte.
+TEST(ExperimentConfig, AStrengthLevelSetsTheGripUnlessTheGripIsGiven) {
+  const ParameterSet keys{{"physics"}, {}};
+  ExperimentConfig defaults;
+  finalize_config(defaults);
+  EXPECT_DOUBLE_EQ(defaults.settings.learning.climbing.physics.grip, 575.7);
+  EXPECT_EQ(config_to_toml(defaults, keys).find("strength"), std::string::npos);
+
+  ExperimentConfig level;
+  apply_config_text("[physics]\nstrength = \"intermediate\"\n", "level.toml", level, keys, "test");
+  finalize_config(level);
+  EXPECT_DOUBLE_EQ(level.settings.learning.climbing.physics.grip, 383.0);
+  const std::string written = config_to_toml(level, keys);
+  EXPECT_NE(written.find("strength = \"intermediate\"  #"), std::string::npos) << written;
+  EXPECT_NE(written.find("grip = 383.0  #"), std::string::npos) << written;
+
+  ExperimentConfig both;
+  apply_config_text("[physics]\nstrength = \"elite\"\ngrip = 300\n", "both.toml", both, keys, "test");
+  finalize_config(both);
+  EXPECT_DOUBLE_EQ(both.settings.learning.climbing.physics.grip, 300.0) << "an explicit grip overrides the level";
+
+  ExperimentConfig unknown;
+  apply_config_text("[physics]\nstrength = \"pro\"\n", "unknown.toml", unknown, keys, "test");
+  try {
+    finalize_config(unknown);
+    FAIL() << "an unknown level is refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "physics.strength");
+    EXPECT_EQ(e.problem(),
+              "unknown level 'pro' (expected intermediate (383.0 N), advanced (575.7 N) or elite (563.1 N))");
+  }
+}
+
 TEST(ExperimentConfig, TrainingWallKeysFollowTheWallKeysUnlessSet) {
   const ParameterSet keys{{"wall", "training_wall"}, {}};
   ExperimentConfig defaults;

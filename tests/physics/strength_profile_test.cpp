@@ -46,5 +46,19 @@ TEST(StrengthProfile, HumanLimitsAreTheScaledPublishedValues) {
   EXPECT_EQ(bounded, 1 + 2 * 7 + 2 * 3);  // lumbar flexion, 7 arm joints and 3 leg joints a side
 }
 
+// Each level's grip is its study's number (docs/MODEL.md, "Grip and push limits"):
+// Grant et al. 2003's 383 N, Amca et al. 2012's 575.7 N, and Binney & Cochrane 2003's
+// 57.4 kg x 9.81 m/s^2 = 563.094 N; the default grip is the advanced level's.
+TEST(ClimbingLevels, GripsAreTheCitedMeasurementsInNewtons) {
+  ASSERT_EQ(climbing_levels().size(), 3u);
+  EXPECT_DOUBLE_EQ(find_climbing_level("intermediate")->grip_n, 383.0);
+  EXPECT_DOUBLE_EQ(find_climbing_level("advanced")->grip_n, 575.7);
+  EXPECT_NEAR(find_climbing_level("elite")->grip_n, 563.094, 1e-9);
+  EXPECT_DOUBLE_EQ(kAdvancedClimberGripN, 575.7);
+  EXPECT_FALSE(find_climbing_level("Advanced").has_value()) << "names are exact";
+  EXPECT_FALSE(find_climbing_level("").has_value());
+  EXPECT_EQ(climbing_level_descriptions(), "intermediate (383.0 N), advanced (575.7 N) or elite (563.1 N)");
+}
+
 }  // namespace
 }  // namespace crux
