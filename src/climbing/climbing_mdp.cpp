@@ -73,6 +73,28 @@ bool ClimbingMdp::offers(ActionCode hold) const {
 
 StepOutcome ClimbingMdp::step(ActionCode hold) {
   if (!offers(hold)) throw std::invalid_argument("ClimbingMdp::step: the state does not offer this hold");
+  // Without shaping the paper's rewards are returned untouched, to the last bit.
+  if (parameters_.rewards.height == 0.0) return unshaped_step(hold);
+  const double potential_before = height_potential();
+  StepOutcome outcome = unshaped_step(hold);
+  // After the finishing move the climb is over: the terminal state's potential is 0.
+  const double potential_after = outcome.finished ? 0.0 : height_potential();
+  outcome.reward += parameters_.rewards.discount * potential_after - potential_before;
+  return outcome;
+}
+
+double ClimbingMdp::height_potential() const {
+  double height_sum = 0.0;
+  int held = 0;
+  for (const int hold : configuration_.holds) {
+    if (hold == kFree) continue;
+    height_sum += wall_.holds[hold].position.z();
+    ++held;
+  }
+  return parameters_.rewards.height * height_sum / held;
+}
+
+StepOutcome ClimbingMdp::unshaped_step(ActionCode hold) {
   const Limb free = configuration_.free_limb();
   const HoldConfiguration complete = configuration_.with(free, hold);
   StepOutcome outcome;

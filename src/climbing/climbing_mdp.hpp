@@ -22,6 +22,12 @@ struct Rewards {
   // Subtracted per unit of a reached stance's effort (the static model's; docs/MODEL.md,
   // choice C28): 0, the paper's rewards, by default.
   double effort = 0.0;
+  // Potential-based height shaping (Ng, Harada and Russell 1999; docs/MODEL.md, choice
+  // C29): every step's reward gains discount * phi(s') - phi(s), where phi(s) is `height`
+  // times the mean height, along the wall, of the holds held in the 3-configuration s, and
+  // phi = 0 once the climb is finished. 0 by default: the paper's rewards.
+  double height = 0.0;
+  double discount = 0.9;  // the learner's gamma: with it the shaping keeps the optimal policy
 };
 
 struct ClimbingParameters {
@@ -89,6 +95,10 @@ class ClimbingMdp {
   void describe(const BodyData& body);
   // Whether every candidate of the state is known unreachable.
   bool at_dead_end() const;
+  // The paper's step, without the height shaping that step() adds.
+  StepOutcome unshaped_step(ActionCode hold);
+  // phi of the height shaping (Rewards::height) at the current 3-configuration.
+  double height_potential() const;
 
   const Wall& wall_;
   ClimbingParameters parameters_;

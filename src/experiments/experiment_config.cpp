@@ -79,6 +79,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"reward.effort",
        "Static model: subtracted from a reached move's reward per unit of its stance's effort (0: the paper's rewards)",
        &m.rewards.effort},
+      {"reward.height",
+       "Potential-based height shaping: weight per metre of the mean height of the held holds (0: the paper's "
+       "rewards)",
+       &m.rewards.height},
       {"ik.solver", "IK solver: fast or paper (Algorithm 1)", &c.solver},
       {"ik.alpha", "Step size of the paper's gradient descent", &ik.paper.step_size},
       {"ik.time_step", "Simulated seconds per IK iteration (both solvers)", &ik.time_step_s},
@@ -474,6 +478,10 @@ void finalize_config(ExperimentConfig& config) {
           "must be a finite number, 0 or more");
   require(effort_penalty == 0.0 || *physics_model == PhysicsModel::Static, "reward.effort",
           "needs physics.model = static: the kinematic model has no effort");
+  const double height_shaping = s.learning.climbing.rewards.height;
+  require(height_shaping >= 0.0 && std::isfinite(height_shaping), "reward.height",
+          "must be a finite number, 0 or more");
+  s.learning.climbing.rewards.discount = s.learning.dyna.rates.gamma;
   require(s.learning.climbing.physics.friction >= 0, "physics.friction", "must be at least 0");
   require(s.learning.climbing.physics.grip > 0, "physics.grip", "must be positive");
   require(std::abs(s.learning.climbing.physics.support_angle_deg) <= 90.0, "physics.support_angle",
