@@ -111,6 +111,11 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        "The body and the wall: ignore (the paper's kinematic model), reject a solved posture that passes through it, "
        "or avoid (keep the body out while solving)",
        &c.wall_rule},
+      {"ik.guess",
+       "Where the IK starts a configuration's solve: previous (the posture the climber holds, the paper's) or "
+       "standing (the standing posture at the configuration's root target, so that a verdict does not depend on "
+       "the climb)",
+       &c.ik_guess},
       {"physics.model",
        "kinematic (the paper's: IK alone decides) or static (the body kept out of the wall and each stance held "
        "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md)",
@@ -467,6 +472,12 @@ void finalize_config(ExperimentConfig& config) {
                      fmt::format("unknown rule '{}' (expected ignore, reject or avoid)", printable(config.wall_rule)));
   }
   s.learning.climbing.reachability.ik.wall = *wall_rule;
+  const auto ik_guess = parse_ik_guess(config.ik_guess);
+  if (!ik_guess) {
+    throw InputError("ik.guess",
+                     fmt::format("unknown guess '{}' (expected previous or standing)", printable(config.ik_guess)));
+  }
+  s.learning.climbing.reachability.guess = *ik_guess;
   const auto physics_model = parse_physics_model(config.physics_model);
   if (!physics_model) {
     throw InputError("physics.model",

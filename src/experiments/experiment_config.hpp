@@ -41,6 +41,7 @@ struct ExperimentConfig {
   int beginning = 0;
   std::string solver = "fast";
   std::string wall_rule = wall_rule_name(WallRule::Ignore);
+  std::string ik_guess = ik_guess_name(IkGuess::Previous);
   std::string physics_model = physics_model_name(PhysicsModel::Kinematic);
   std::string planner = planner_name(Planner::Uniform);
   std::string transfer = transfer_mode_name(TransferMode::Paper);
