@@ -18,7 +18,8 @@ ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const Climbin
       possible_(wall.hold_count()),
       candidates_(wall.hold_count()),
       tile_representative_(parameters.grid.tile_count()),
-      tile_best_distance_(parameters.grid.tile_count()) {
+      tile_best_distance_(parameters.grid.tile_count()),
+      stuck_possible_(wall.hold_count()) {
   limb_bases_ = model.reach_envelope.chain_base;
   start_posture_ = reacher_.require_start(wall_.name);
   reset();
@@ -101,7 +102,7 @@ StepOutcome ClimbingMdp::unshaped_step(ActionCode hold) {
   const Posture* reached = reacher_.reach(posture_, complete, next_free_limb(free));
   if (reached == nullptr) {
     outcome.reward = parameters_.rewards.unreachable;
-    if (at_dead_end()) {
+    if (at_dead_end() || (parameters_.fall_when_stuck && stuck_in_stance())) {
       outcome.fell = true;
       reset();
     }
@@ -132,6 +133,21 @@ bool ClimbingMdp::at_dead_end() const {
   const Limb next = next_free_limb(free);
   for (const ActionCandidate& candidate : candidates()) {
     if (!reacher_.known_unreachable(configuration_.with(free, candidate.wall), next)) return false;
+  }
+  return true;
+}
+
+bool ClimbingMdp::stuck_in_stance() {
+  const HoldConfiguration stance = configuration_.with(configuration_.free_limb(), left_hold_);
+  for (int index = 0; index < kLimbCount; ++index) {
+    const Limb limb = static_cast<Limb>(index);
+    const HoldConfiguration three = stance.with(limb, kFree);
+    const int count = possible_actions(wall_, three, parameters_.filter, stuck_possible_);
+    for (int i = 0; i < count; ++i) {
+      const int hold = stuck_possible_[static_cast<std::size_t>(i)];
+      if (hold == stance.hold(limb)) continue;
+      if (!reacher_.known_unreachable(three.with(limb, hold), next_free_limb(limb))) return false;
+    }
   }
   return true;
 }

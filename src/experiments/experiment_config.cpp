@@ -126,6 +126,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        "Static model: a hold without a support direction pushes a hand up and this many degrees into the wall "
        "(a jug's incut lip)",
        &m.physics.support_angle_deg},
+      {"physics.fall_when_stuck",
+       "A failed move also falls when no limb can move to another hold of the stance, every such move known "
+       "unreachable (a trap that C27's dead ends miss)",
+       &m.fall_when_stuck},
       {"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &c.compare_queries},
       {"stances.moves", "Random kinematic moves per wall whose stances crux stances checks", &c.stance_moves},
       {"compare.walk_solver", "Solver whose reached postures start the next queries of ik-compare's climbing walk",

@@ -387,6 +387,40 @@ TEST(ClimbingMdp, WithoutDiscountTheHeightShapingOfAWalkTelescopes) {
   EXPECT_NEAR(shaping_sum, phi_last - phi_first, 1e-6);
 }
 
+// physics.fall_when_stuck (docs/MODEL.md, choice C31): random wall 1's four start holds
+// and two more, 1.4 and 1.7 m to the left of the left hand's and 0.3 m above it, which
+// only the left hand may take (the right hand would cross the arms, a foot would be above
+// the hands) and which it cannot reach. The climber can only let go and grasp again the hold it holds, limb
+// after limb; every other move fails. Stuck falls when the second far hold has failed
+// too, not before; without the rule it never falls (the start's holds stay reachable).
+TEST(ClimbingMdp, AClimberStuckInItsStanceFallsWhenTheRuleIsOn) {
+  const BodyModel& model = testing::human_model();
+  const Wall random_wall = generate_random_wall(1);
+  Wall wall;
+  wall.name = "stance with two far holds";
+  for (const int index : random_wall.start) wall.holds.push_back(random_wall.holds[index]);
+  const Eigen::Vector3d left_hand = random_wall.holds[random_wall.start[1]].position;
+  wall.holds.push_back({1001, left_hand + Eigen::Vector3d(0.0, 1.4, 0.3), 0.04});
+  wall.holds.push_back({1002, left_hand + Eigen::Vector3d(0.0, 1.7, 0.3), 0.04});
+  wall.start = {0, 1, 2, 3};
+  for (const bool rule : {false, true}) {
+    SCOPED_TRACE(rule ? "fall_when_stuck" : "C27 only");
+    ClimbingParameters parameters;
+    parameters.fall_when_stuck = rule;
+    ClimbingMdp mdp(model, wall, parameters);
+    ASSERT_EQ(mdp.candidates().size(), 1u) << "the right hand may only take its own hold again";
+    ASSERT_TRUE(mdp.step(0).reached);
+    ASSERT_EQ(mdp.configuration().free_limb(), Limb::LeftHand);
+    ASSERT_EQ(mdp.candidates().size(), 3u) << "its own hold and the two far ones";
+    const StepOutcome first = mdp.step(4), second = mdp.step(5);
+    EXPECT_FALSE(first.reached);
+    EXPECT_FALSE(first.fell) << "the other far hold is not known yet";
+    EXPECT_FALSE(second.reached);
+    EXPECT_EQ(second.fell, rule);
+    EXPECT_EQ(mdp.configuration().free_limb(), rule ? Limb::RightHand : Limb::LeftHand);
+  }
+}
+
 // After a reached move, the flag marks exactly the candidate that puts the newly freed
 // limb back on the hold it held before the move (taking it would complete the same
 // 4-configuration as that move).
