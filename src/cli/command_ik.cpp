@@ -21,9 +21,9 @@ namespace crux::cli {
 namespace {
 
 // The IK parameters; ik-compare runs both solvers, so it takes no ik.solver.
-const ParameterSet kIkCommandKeys{{"experiment.urdf", "ik"}, {"ik.cache_unreachable"}};
+const ParameterSet kIkCommandKeys{{"experiment.urdf", "ik"}, {"ik.cache_unreachable", "ik.guess"}};
 const ParameterSet kIkCompareKeys{{"experiment.urdf", "experiment.seed", "ik", "compare"},
-                                  {"ik.solver", "ik.cache_unreachable"}};
+                                  {"ik.solver", "ik.cache_unreachable", "ik.guess"}};
 
 struct IkCommand {
   ParameterBinding binding{"ik", kIkCommandKeys};

@@ -26,7 +26,7 @@ namespace {
 
 const ParameterSet kPlanKeys{
     {"experiment.urdf", "experiment.plan_max_solves", "experiment.plan_check_moves", "ik", "physics", "filter", "wall"},
-    {"wall.name", "wall.count"}};
+    {"wall.name", "wall.count", "physics.fall_when_stuck"}};
 
 void require_wall(const ExperimentConfig& config) {
   if (config.wall_file.empty() && !config.wall_seed) {

@@ -26,7 +26,8 @@ namespace crux::cli {
 namespace {
 
 // The IK settings solve a wall file's start; a run is drawn with its own config's.
-const ParameterSet kViewKeys{{"experiment.urdf", "wall.file", "ik", "physics"}, {"ik.cache_unreachable"}};
+const ParameterSet kViewKeys{{"experiment.urdf", "wall.file", "ik", "physics"},
+                             {"ik.cache_unreachable", "ik.guess", "physics.fall_when_stuck"}};
 
 struct ViewCommand {
   ParameterBinding binding{"view", kViewKeys};

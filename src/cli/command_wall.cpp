@@ -26,8 +26,8 @@ namespace {
 
 // The wall keys of each command, and the IK that checks the start as the learning does.
 const ParameterSet kGenerateKeys{{"experiment.urdf", "wall", "ik"},
-                                 {"wall.file", "wall.count", "ik.cache_unreachable"}};
-const ParameterSet kShowKeys{{"experiment.urdf", "wall.file", "grid", "ik"}, {"ik.cache_unreachable"}};
+                                 {"wall.file", "wall.count", "ik.cache_unreachable", "ik.guess"}};
+const ParameterSet kShowKeys{{"experiment.urdf", "wall.file", "grid", "ik"}, {"ik.cache_unreachable", "ik.guess"}};
 
 ExperimentConfig generate_defaults() {
   ExperimentConfig defaults;

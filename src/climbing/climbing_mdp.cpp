@@ -18,7 +18,8 @@ ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const Climbin
       possible_(wall.hold_count()),
       candidates_(wall.hold_count()),
       tile_representative_(parameters.grid.tile_count()),
-      tile_best_distance_(parameters.grid.tile_count()) {
+      tile_best_distance_(parameters.grid.tile_count()),
+      stuck_possible_(wall.hold_count()) {
   limb_bases_ = model.reach_envelope.chain_base;
   start_posture_ = reacher_.require_start(wall_.name);
   reset();
@@ -73,13 +74,35 @@ bool ClimbingMdp::offers(ActionCode hold) const {
 
 StepOutcome ClimbingMdp::step(ActionCode hold) {
   if (!offers(hold)) throw std::invalid_argument("ClimbingMdp::step: the state does not offer this hold");
+  // Without shaping the paper's rewards are returned untouched, to the last bit.
+  if (parameters_.rewards.height == 0.0) return unshaped_step(hold);
+  const double potential_before = height_potential();
+  StepOutcome outcome = unshaped_step(hold);
+  // After the finishing move the climb is over: the terminal state's potential is 0.
+  const double potential_after = outcome.finished ? 0.0 : height_potential();
+  outcome.reward += parameters_.rewards.discount * potential_after - potential_before;
+  return outcome;
+}
+
+double ClimbingMdp::height_potential() const {
+  double height_sum = 0.0;
+  int held = 0;
+  for (const int hold : configuration_.holds) {
+    if (hold == kFree) continue;
+    height_sum += wall_.holds[hold].position.z();
+    ++held;
+  }
+  return parameters_.rewards.height * height_sum / held;
+}
+
+StepOutcome ClimbingMdp::unshaped_step(ActionCode hold) {
   const Limb free = configuration_.free_limb();
   const HoldConfiguration complete = configuration_.with(free, hold);
   StepOutcome outcome;
   const Posture* reached = reacher_.reach(posture_, complete, next_free_limb(free));
   if (reached == nullptr) {
     outcome.reward = parameters_.rewards.unreachable;
-    if (at_dead_end()) {
+    if (at_dead_end() || (parameters_.fall_when_stuck && stuck_in_stance())) {
       outcome.fell = true;
       reset();
     }
@@ -110,6 +133,21 @@ bool ClimbingMdp::at_dead_end() const {
   const Limb next = next_free_limb(free);
   for (const ActionCandidate& candidate : candidates()) {
     if (!reacher_.known_unreachable(configuration_.with(free, candidate.wall), next)) return false;
+  }
+  return true;
+}
+
+bool ClimbingMdp::stuck_in_stance() {
+  const HoldConfiguration stance = configuration_.with(configuration_.free_limb(), left_hold_);
+  for (int index = 0; index < kLimbCount; ++index) {
+    const Limb limb = static_cast<Limb>(index);
+    const HoldConfiguration three = stance.with(limb, kFree);
+    const int count = possible_actions(wall_, three, parameters_.filter, stuck_possible_);
+    for (int i = 0; i < count; ++i) {
+      const int hold = stuck_possible_[static_cast<std::size_t>(i)];
+      if (hold == stance.hold(limb)) continue;
+      if (!reacher_.known_unreachable(three.with(limb, hold), next_free_limb(limb))) return false;
+    }
   }
   return true;
 }

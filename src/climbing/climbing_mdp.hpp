@@ -22,6 +22,12 @@ struct Rewards {
   // Subtracted per unit of a reached stance's effort (the static model's; docs/MODEL.md,
   // choice C28): 0, the paper's rewards, by default.
   double effort = 0.0;
+  // Potential-based height shaping (Ng, Harada and Russell 1999; docs/MODEL.md, choice
+  // C29): every step's reward gains discount * phi(s') - phi(s), where phi(s) is `height`
+  // times the mean height, along the wall, of the holds held in the 3-configuration s, and
+  // phi = 0 once the climb is finished. 0 by default: the paper's rewards.
+  double height = 0.0;
+  double discount = 0.9;  // the learner's gamma: with it the shaping keeps the optimal policy
 };
 
 struct ClimbingParameters {
@@ -30,6 +36,10 @@ struct ClimbingParameters {
   ReachabilityParameters reachability;
   PhysicsParameters physics;  // the kinematic model (the paper's) or the static one
   Rewards rewards;
+  // A failed move also falls when the climber is stuck in its stance: in its last
+  // 4-configuration no limb can move to any other hold, every such move known
+  // unreachable (docs/MODEL.md, choice C31). Off by default: only C27's dead ends fall.
+  bool fall_when_stuck = false;
 };
 
 struct StepOutcome {
@@ -89,6 +99,13 @@ class ClimbingMdp {
   void describe(const BodyData& body);
   // Whether every candidate of the state is known unreachable.
   bool at_dead_end() const;
+  // Whether, in the last 4-configuration, every move of every limb to another hold than
+  // its own is known unreachable: only letting go and grasping the same hold again is left.
+  bool stuck_in_stance();
+  // The paper's step, without the height shaping that step() adds.
+  StepOutcome unshaped_step(ActionCode hold);
+  // phi of the height shaping (Rewards::height) at the current 3-configuration.
+  double height_potential() const;
 
   const Wall& wall_;
   ClimbingParameters parameters_;
@@ -104,6 +121,7 @@ class ClimbingMdp {
   std::size_t candidate_count_ = 0;
   std::vector<int> tile_representative_;  // per tile: candidate index nearest its centre
   std::vector<double> tile_best_distance_;
+  std::vector<int> stuck_possible_;  // stuck_in_stance's buffer of possible actions
 };
 
 }  // namespace crux

@@ -38,7 +38,9 @@ const Posture* ConfigurationReacher::reach(const Posture& from, const HoldConfig
   if (const Posture* cached = cache_.reached(code)) return cached;
   if (cache_.known_unreachable(code)) return nullptr;
   const ReachTarget target = reach_target(model_, wall_, complete, parameters_.root);
-  const IkResult result = solve_ik(model_, data_, from, target, parameters_.ik);
+  const IkResult result = parameters_.guess == IkGuess::Standing
+                              ? solve_ik(model_, data_, standing_posture(target.root), target, parameters_.ik)
+                              : solve_ik(model_, data_, from, target, parameters_.ik);
   ++solves_;
   if (result.reached) {
     const double effort = stance_ ? stance_->effort(result.posture, complete, next_to_move) : 0.0;

@@ -2,6 +2,9 @@
 // C-reachability of a 4-configuration (paper, III-A and III-C): the IK target it
 // defines on a wall, and whether the body reaches it.
 
+#include <optional>
+#include <string_view>
+
 #include "configurations/hold_configuration.hpp"
 #include "ik/ik_solver.hpp"
 #include "ik/root_target.hpp"
@@ -9,12 +12,22 @@
 
 namespace crux {
 
+// Where the IK starts the solve of a 4-configuration (docs/MODEL.md, choice C30): from
+// the posture the climber holds, as the paper does, or from the standing posture at the
+// configuration's own root target H(C4), as the start is solved, so that the verdict
+// depends on the configuration alone and not on the climb that led to it.
+enum class IkGuess { Previous, Standing };
+const char* ik_guess_name(IkGuess guess);
+std::optional<IkGuess> parse_ik_guess(std::string_view name);
+
 // How C-reachability is decided: the IK solver and its settings, the root heuristic,
-// and whether unreachable verdicts are cached (docs/MODEL.md, choice C11).
+// whether unreachable verdicts are cached (docs/MODEL.md, choice C11), and where the
+// IK starts.
 struct ReachabilityParameters {
   IkParameters ik;
   RootTargetParameters root;
   bool cache_unreachable = true;
+  IkGuess guess = IkGuess::Previous;
 };
 
 // The four holds of a complete configuration and the root target H(C4).

@@ -80,6 +80,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
       {"reward.effort",
        "Static model: subtracted from a reached move's reward per unit of its stance's effort (0: the paper's rewards)",
        &m.rewards.effort},
+      {"reward.height",
+       "Potential-based height shaping: weight per metre of the mean height of the held holds (0: the paper's "
+       "rewards)",
+       &m.rewards.height},
       {"ik.solver", "IK solver: fast or paper (Algorithm 1)", &c.solver},
       {"ik.alpha", "Step size of the paper's gradient descent", &ik.paper.step_size},
       {"ik.time_step", "Simulated seconds per IK iteration (both solvers)", &ik.time_step_s},
@@ -108,6 +112,11 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        "The body and the wall: ignore (the paper's kinematic model), reject a solved posture that passes through it, "
        "or avoid (keep the body out while solving)",
        &c.wall_rule},
+      {"ik.guess",
+       "Where the IK starts a configuration's solve: previous (the posture the climber holds, the paper's) or "
+       "standing (the standing posture at the configuration's root target, so that a verdict does not depend on "
+       "the climb)",
+       &c.ik_guess},
       {"physics.model",
        "kinematic (the paper's: IK alone decides) or static (the body kept out of the wall and each stance held "
        "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md)",
@@ -123,6 +132,10 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        "Static model: a hold without a support direction pushes a hand up and this many degrees into the wall "
        "(a jug's incut lip)",
        &m.physics.support_angle_deg},
+      {"physics.fall_when_stuck",
+       "A failed move also falls when no limb can move to another hold of the stance, every such move known "
+       "unreachable (a trap that C27's dead ends miss)",
+       &m.fall_when_stuck},
       {"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &c.compare_queries},
       {"stances.moves", "Random kinematic moves per wall whose stances crux stances checks", &c.stance_moves},
       {"compare.walk_solver", "Solver whose reached postures start the next queries of ik-compare's climbing walk",
@@ -469,6 +482,12 @@ void finalize_config(ExperimentConfig& config) {
                      fmt::format("unknown rule '{}' (expected ignore, reject or avoid)", printable(config.wall_rule)));
   }
   s.learning.climbing.reachability.ik.wall = *wall_rule;
+  const auto ik_guess = parse_ik_guess(config.ik_guess);
+  if (!ik_guess) {
+    throw InputError("ik.guess",
+                     fmt::format("unknown guess '{}' (expected previous or standing)", printable(config.ik_guess)));
+  }
+  s.learning.climbing.reachability.guess = *ik_guess;
   const auto physics_model = parse_physics_model(config.physics_model);
   if (!physics_model) {
     throw InputError("physics.model",
@@ -480,6 +499,10 @@ void finalize_config(ExperimentConfig& config) {
           "must be a finite number, 0 or more");
   require(effort_penalty == 0.0 || *physics_model == PhysicsModel::Static, "reward.effort",
           "needs physics.model = static: the kinematic model has no effort");
+  const double height_shaping = s.learning.climbing.rewards.height;
+  require(height_shaping >= 0.0 && std::isfinite(height_shaping), "reward.height",
+          "must be a finite number, 0 or more");
+  s.learning.climbing.rewards.discount = s.learning.dyna.rates.gamma;
   require(s.learning.climbing.physics.friction >= 0, "physics.friction", "must be at least 0");
   if (!config.physics_strength.empty()) {
     const auto level = find_climbing_level(config.physics_strength);

@@ -41,6 +41,7 @@ struct ExperimentConfig {
   int beginning = 0;
   std::string solver = "fast";
   std::string wall_rule = wall_rule_name(WallRule::Ignore);
+  std::string ik_guess = ik_guess_name(IkGuess::Previous);
   std::string physics_model = physics_model_name(PhysicsModel::Kinematic);
   // physics.strength: a climbing level whose grip finalize_config sets, unless physics.grip
   // is given; empty (unset, and then not written to config.toml): physics.grip alone.

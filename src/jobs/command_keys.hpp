@@ -25,6 +25,6 @@ inline const ParameterSet kPaperKeys{
 
 // The IK's own keys (crux.solve_ik, crux.root_target); crux ik adds experiment.urdf,
 // the body that Python takes as a model object instead.
-inline const ParameterSet kIkKeys{{"ik"}, {"ik.cache_unreachable"}};
+inline const ParameterSet kIkKeys{{"ik"}, {"ik.cache_unreachable", "ik.guess"}};
 
 }  // namespace crux

@@ -78,6 +78,8 @@ TEST(Cli, BadPhysicsParametersAreOneLineNamingTheFlag) {
       {"--physics-support-angle 91", "crux: --physics-support-angle: must be from -90 to 90 degrees"},
       {"--reward-effort 1", "crux: --reward-effort: needs physics.model = static: the kinematic model has no effort"},
       {"--physics-model static --reward-effort -1", "crux: --reward-effort: must be a finite number, 0 or more"},
+      {"--reward-height -1", "crux: --reward-height: must be a finite number, 0 or more"},
+      {"--ik-guess last", "crux: --ik-guess: unknown guess 'last' (expected previous or standing)"},
       {"--plan-check-moves true",
        "crux: --plan-check-moves: needs physics.model = static: the kinematic model checks no stance"},
   };

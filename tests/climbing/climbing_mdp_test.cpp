@@ -304,6 +304,123 @@ TEST(ClimbingMdp, TheEffortPenaltyIsProportionalToTheStancesEffort) {
   EXPECT_EQ(reached, 10);
 }
 
+// The height shaping's potential by hand: reward.height times the mean height of the
+// holds a 3-configuration holds.
+double mean_held_height(const Wall& wall, const HoldConfiguration& configuration) {
+  double sum = 0.0;
+  int held = 0;
+  for (const int hold : configuration.holds) {
+    if (hold == kFree) continue;
+    sum += wall.holds[hold].position.z();
+    ++held;
+  }
+  return sum / held;
+}
+
+// reward.height (docs/MODEL.md, choice C29): along a random walk under the static model
+// (with falls), every reward is the unshaped twin's plus gamma phi(s') - phi(s), phi
+// being 10 times the mean height of the held holds: an unreachable move that stays
+// pays (gamma - 1) phi(s), a fall lands at the start's potential.
+TEST(ClimbingMdp, TheHeightShapingAddsGammaPhiOfTheNextStateMinusPhiOfTheState) {
+  Fixture f;
+  f.parameters.physics.model = PhysicsModel::Static;
+  ClimbingMdp unshaped(f.model, f.wall, f.parameters);
+  f.parameters.rewards.height = 10.0;
+  f.parameters.rewards.discount = 0.8;
+  ClimbingMdp shaped(f.model, f.wall, f.parameters);
+  Random pick(20261126);
+  int stayed = 0, moved = 0;
+  for (int step = 0; step < 300; ++step) {
+    const auto candidates = shaped.candidates();
+    const ActionCode hold = candidates[pick.below(candidates.size())].wall;
+    const double phi = 10.0 * mean_held_height(f.wall, shaped.configuration());
+    const StepOutcome a = unshaped.step(hold), b = shaped.step(hold);
+    ASSERT_EQ(a.reached, b.reached) << "step " << step;
+    ASSERT_FALSE(b.finished) << "the walk stays below the top";
+    const double phi_next = 10.0 * mean_held_height(f.wall, shaped.configuration());
+    EXPECT_NEAR(b.reward, a.reward + 0.8 * phi_next - phi, 1e-9) << "step " << step;
+    (b.reached ? moved : stayed) += 1;
+  }
+  EXPECT_GT(moved, 30);
+  EXPECT_GT(stayed, 30);
+}
+
+// The finishing move ends the climb: the terminal state's potential is 0, so the move
+// earns reward.finish - phi(s), whatever the start's potential is.
+TEST(ClimbingMdp, TheHeightShapingOfTheFinishingMoveLeavesNoPotential) {
+  Fixture f;
+  f.wall.finish_height = -10.0;  // any reachable move finishes
+  f.parameters.rewards.height = 100.0;
+  ClimbingMdp mdp(f.model, f.wall, f.parameters);
+  const double phi_start = 100.0 * mean_held_height(f.wall, mdp.configuration());
+  ASSERT_GT(phi_start, 10.0);
+  for (const ActionCandidate& c : mdp.candidates()) {
+    const StepOutcome o = mdp.step(c.wall);
+    if (!o.reached) continue;
+    ASSERT_TRUE(o.finished);
+    EXPECT_DOUBLE_EQ(o.reward, 200000.0 - phi_start);
+    return;
+  }
+  FAIL() << "no reachable move from the start";
+}
+
+// Potential-based: with gamma = 1 the shaping terms of a walk add up to phi(last state) -
+// phi(first), so no cycle of states can earn a shaping bonus (Ng, Harada and Russell 1999).
+TEST(ClimbingMdp, WithoutDiscountTheHeightShapingOfAWalkTelescopes) {
+  Fixture f;
+  ClimbingMdp unshaped(f.model, f.wall, f.parameters);
+  f.parameters.rewards.height = 50.0;
+  f.parameters.rewards.discount = 1.0;
+  ClimbingMdp shaped(f.model, f.wall, f.parameters);
+  const double phi_first = 50.0 * mean_held_height(f.wall, shaped.configuration());
+  Random pick(7);
+  double shaping_sum = 0.0;
+  for (int step = 0; step < 200; ++step) {
+    const auto candidates = shaped.candidates();
+    const ActionCode hold = candidates[pick.below(candidates.size())].wall;
+    const StepOutcome a = unshaped.step(hold), b = shaped.step(hold);
+    ASSERT_FALSE(b.finished);
+    shaping_sum += b.reward - a.reward;
+  }
+  const double phi_last = 50.0 * mean_held_height(f.wall, shaped.configuration());
+  EXPECT_NE(phi_last, phi_first) << "the walk went somewhere";
+  EXPECT_NEAR(shaping_sum, phi_last - phi_first, 1e-6);
+}
+
+// physics.fall_when_stuck (docs/MODEL.md, choice C31): random wall 1's four start holds
+// and two more, 1.4 and 1.7 m to the left of the left hand's and 0.3 m above it, which
+// only the left hand may take (the right hand would cross the arms, a foot would be above
+// the hands) and which it cannot reach. The climber can only let go and grasp again the hold it holds, limb
+// after limb; every other move fails. Stuck falls when the second far hold has failed
+// too, not before; without the rule it never falls (the start's holds stay reachable).
+TEST(ClimbingMdp, AClimberStuckInItsStanceFallsWhenTheRuleIsOn) {
+  const BodyModel& model = testing::human_model();
+  const Wall random_wall = generate_random_wall(1);
+  Wall wall;
+  wall.name = "stance with two far holds";
+  for (const int index : random_wall.start) wall.holds.push_back(random_wall.holds[index]);
+  const Eigen::Vector3d left_hand = random_wall.holds[random_wall.start[1]].position;
+  wall.holds.push_back({1001, left_hand + Eigen::Vector3d(0.0, 1.4, 0.3), 0.04});
+  wall.holds.push_back({1002, left_hand + Eigen::Vector3d(0.0, 1.7, 0.3), 0.04});
+  wall.start = {0, 1, 2, 3};
+  for (const bool rule : {false, true}) {
+    SCOPED_TRACE(rule ? "fall_when_stuck" : "C27 only");
+    ClimbingParameters parameters;
+    parameters.fall_when_stuck = rule;
+    ClimbingMdp mdp(model, wall, parameters);
+    ASSERT_EQ(mdp.candidates().size(), 1u) << "the right hand may only take its own hold again";
+    ASSERT_TRUE(mdp.step(0).reached);
+    ASSERT_EQ(mdp.configuration().free_limb(), Limb::LeftHand);
+    ASSERT_EQ(mdp.candidates().size(), 3u) << "its own hold and the two far ones";
+    const StepOutcome first = mdp.step(4), second = mdp.step(5);
+    EXPECT_FALSE(first.reached);
+    EXPECT_FALSE(first.fell) << "the other far hold is not known yet";
+    EXPECT_FALSE(second.reached);
+    EXPECT_EQ(second.fell, rule);
+    EXPECT_EQ(mdp.configuration().free_limb(), rule ? Limb::RightHand : Limb::LeftHand);
+  }
+}
+
 // After a reached move, the flag marks exactly the candidate that puts the newly freed
 // limb back on the hold it held before the move (taking it would complete the same
 // 4-configuration as that move).

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "common/input_error.hpp"
 #include "common/random.hpp"
+#include "configurations/geometric_filter.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
@@ -127,6 +130,60 @@ TEST(ConfigurationReacher, StaticVerdictsAreKeptPerLimbThatLetsGoNext) {
   const Posture* held = stance.reach(from, complete, Limb::RightHand);
   ASSERT_EQ(avoided != nullptr, held != nullptr || !avoiding.known_unreachable(complete, Limb::RightHand));
   if (held != nullptr) EXPECT_EQ(*held, *avoided) << "the static model solves the IK as ik.wall = avoid does";
+}
+
+// ik.guess = standing (docs/MODEL.md, choice C30): on random wall 1 under the static
+// model, every move of one limb of the start to another hold gets the same verdict, and
+// when reached the same posture, whichever posture the climber held before (the start's,
+// or a first reached move's); with the paper's guess some postures differ.
+TEST(ConfigurationReacher, WithTheStandingGuessAVerdictDoesNotDependOnThePostureBefore) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = generate_random_wall(1);
+  const PhysicsParameters physics{PhysicsModel::Static};
+  const HoldConfiguration start = start_configuration(wall);
+  const auto moves = [&](ConfigurationReacher& probe, const Posture& start_posture) {
+    std::vector<HoldConfiguration> found;
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      for (int hold = 0; hold < wall.hold_count(); ++hold) {
+        const HoldConfiguration complete = start.with(static_cast<Limb>(limb), hold);
+        if (std::find(start.holds.begin(), start.holds.end(), hold) != start.holds.end() ||
+            !passes_filter(wall, complete, FilterParameters{}))
+          continue;
+        if (probe.reach(start_posture, complete, Limb::RightHand) != nullptr) found.push_back(complete);
+      }
+    }
+    return found;
+  };
+  for (const IkGuess guess : {IkGuess::Standing, IkGuess::Previous}) {
+    SCOPED_TRACE(ik_guess_name(guess));
+    ReachabilityParameters parameters;
+    parameters.guess = guess;
+    ConfigurationReacher finder(model, wall, parameters, physics);
+    const Posture start_posture = finder.require_start(wall.name);
+    const std::vector<HoldConfiguration> reached = moves(finder, start_posture);
+    ASSERT_GT(reached.size(), 3u);
+    const Posture other = *finder.reach(start_posture, reached.front(), Limb::RightHand);
+    ConfigurationReacher from_start(model, wall, parameters, physics), from_other(model, wall, parameters, physics);
+    int compared = 0, differing = 0;
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      for (int hold = 0; hold < wall.hold_count(); ++hold) {
+        const HoldConfiguration complete = start.with(static_cast<Limb>(limb), hold);
+        if (std::find(start.holds.begin(), start.holds.end(), hold) != start.holds.end() ||
+            !passes_filter(wall, complete, FilterParameters{}))
+          continue;
+        const Posture* a = from_start.reach(start_posture, complete, Limb::RightHand);
+        const Posture* b = from_other.reach(other, complete, Limb::RightHand);
+        ++compared;
+        if (guess == IkGuess::Standing) {
+          ASSERT_EQ(a != nullptr, b != nullptr) << "limb " << limb << ", hold " << hold;
+          if (a != nullptr) EXPECT_EQ(*a, *b) << "limb " << limb << ", hold " << hold;
+        }
+        differing += (a == nullptr) != (b == nullptr) || (a != nullptr && *a != *b);
+      }
+    }
+    EXPECT_GT(compared, 10);
+    if (guess == IkGuess::Previous) EXPECT_GT(differing, 0) << "the paper's guess depends on the posture before";
+  }
 }
 
 }  // namespace

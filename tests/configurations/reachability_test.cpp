@@ -20,6 +20,15 @@ Wall five_holds() {
   return wall;
 }
 
+TEST(Reachability, IkGuessesAreNamedAndParsedBack) {
+  for (const IkGuess guess : {IkGuess::Previous, IkGuess::Standing}) {
+    EXPECT_EQ(parse_ik_guess(ik_guess_name(guess)), guess);
+  }
+  EXPECT_STREQ(ik_guess_name(IkGuess::Previous), "previous");
+  EXPECT_STREQ(ik_guess_name(IkGuess::Standing), "standing");
+  EXPECT_FALSE(parse_ik_guess("last"));
+}
+
 TEST(Reachability, TargetTakesTheConfigurationsHoldsInLimbOrder) {
   const BodyModel& model = testing::human_model();
   const Wall wall = five_holds();
