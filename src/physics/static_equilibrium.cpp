@@ -91,7 +91,6 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
                                                         std::span<const PointContact> contacts,
                                                         const Eigen::Vector3d& gravity) {
   const GeneralisedForce tau_g = gravity_forces(model_, data, g, gravity);
-  operational_jacobians(model_, data);
   const Eigen::Vector3d& com = centre_of_mass(model_, data);
   const Eigen::Vector3d& root = data.points[0];
 
@@ -130,6 +129,7 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
       return unbalanced_result();
     }
   }
+  operational_jacobians(model_, data);
   // tau_j = -(tau_g_j + r_j) with r_j = sum of J_c(:, j) . f_c; sign * tau_j <= t * limit
   // reads sign * r_j + limit * t >= -sign * tau_g_j.
   for (int r = 0; r < static_cast<int>(joint_rows_.size()); ++r) {
