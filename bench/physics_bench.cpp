@@ -1,6 +1,7 @@
 // One static-equilibrium solve of the human on four holds, on the postures crux's fast IK
 // reaches (kept out of the wall) for the climbing-like queries of ik_bench.cpp. The reused,
-// warm-started program and a fresh program per stance; median and 99th percentile of the
+// warm-started program and a fresh program per stance, and the same stances on three holds
+// with and without the balance precheck; median and 99th percentile of the
 // single solves are counters (Google Benchmark reports means only).
 
 #include <benchmark/benchmark.h>
@@ -81,10 +82,42 @@ void run_equilibrium(benchmark::State& state) {
   report_percentiles(state, seconds, balanced, solves);
 }
 
+// The same stances on three holds (each limb in turn lets go): here some do not balance,
+// and the balance precheck refuses most of those without the program. Against the
+// program alone.
+template <EquilibriumPrecheck kPrecheck>
+void run_three_holds(benchmark::State& state) {
+  const EquilibriumFixture& f = equilibrium_fixture();
+  BodyData data(f.model);
+  StaticEquilibrium equilibrium(f.model, f.strength, kPrecheck);
+  std::vector<double> seconds;
+  long balanced = 0, solves = 0;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const std::size_t case_index = next++ % (f.stances.size() * kLimbCount);
+    const int free_limb = static_cast<int>(case_index % kLimbCount);
+    std::vector<PointContact> held;
+    for (const PointContact& contact : f.contacts) {
+      if (static_cast<int>(contact.limb) != free_limb) held.push_back(contact);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    balanced += equilibrium.solve(data, f.stances[case_index / kLimbCount], held).balanced;
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    ++solves;
+  }
+  report_percentiles(state, seconds, balanced, solves);
+}
+
 void BM_StaticEquilibrium(benchmark::State& state) { run_equilibrium<true>(state); }
 void BM_StaticEquilibriumCold(benchmark::State& state) { run_equilibrium<false>(state); }
 BENCHMARK(BM_StaticEquilibrium)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StaticEquilibriumCold)->Unit(benchmark::kMicrosecond);
+void BM_StaticEquilibriumThreeHolds(benchmark::State& state) { run_three_holds<EquilibriumPrecheck::On>(state); }
+void BM_StaticEquilibriumThreeHoldsProgramAlone(benchmark::State& state) {
+  run_three_holds<EquilibriumPrecheck::Off>(state);
+}
+BENCHMARK(BM_StaticEquilibriumThreeHolds)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StaticEquilibriumThreeHoldsProgramAlone)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace crux

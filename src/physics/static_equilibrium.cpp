@@ -5,11 +5,13 @@
 #include <limits>
 #include <stdexcept>
 
+#include <malloc.h>
 #include <ClpSimplex.hpp>
 #include <Eigen/Geometry>
 
 #include "body/kinematics.hpp"
 #include "common/checkpoint_stream.hpp"
+#include "physics/balance_precheck.hpp"
 
 namespace crux {
 namespace {
@@ -29,9 +31,21 @@ bool moves_limb(const BodyModel& model, int limb, int joint) {
   return std::find(chain.begin(), chain.end(), joint) != chain.end();
 }
 
+// CLP allocates and frees work areas of 164 and 328 kB in every solve, which glibc serves
+// by default with mmap and munmap: a tenth of a static run's time went to the kernel
+// (docs/PERFORMANCE.md, "Static equilibrium"). From the heap, and kept there, they cost
+// nothing. Process-wide, and only a matter of speed.
+void keep_clp_work_areas_on_the_heap() {
+  [[maybe_unused]] static const bool kept =
+      mallopt(M_MMAP_THRESHOLD, 4 << 20) == 1 && mallopt(M_TRIM_THRESHOLD, 16 << 20) == 1;
+}
+
 }  // namespace
 
-StaticEquilibrium::StaticEquilibrium(const BodyModel& model, const StrengthProfile& strength) : model_(model) {
+StaticEquilibrium::StaticEquilibrium(const BodyModel& model, const StrengthProfile& strength,
+                                     EquilibriumPrecheck precheck)
+    : model_(model), precheck_(precheck) {
+  keep_clp_work_areas_on_the_heap();
   for (int j = kRootDof; j < static_cast<int>(model.joints.size()); ++j) {
     const JointStrength& limits = strength.joints[j];
     if (!(limits.positive > 0.0) || !(limits.negative > 0.0)) {
@@ -63,6 +77,12 @@ StaticEquilibrium::StaticEquilibrium(const BodyModel& model, const StrengthProfi
   row_lower_.assign(row_count, -kUnboundedRow);
   row_upper_.assign(row_count, kUnboundedRow);
   basis_.assign(row_count + kEquilibriumColumns, 0);
+  pristine_solver_ = std::make_unique<ClpSimplex>();
+  pristine_solver_->setLogLevel(0);
+  // Unscaled: reloaded into one object, CLP's scaled programs gave different optima warm and
+  // cold (by up to 0.26 in effort on random postures); unscaled they agree
+  // (StaticEquilibrium.WarmStartsGiveTheColdSolvesEffort).
+  pristine_solver_->scaling(0);
 }
 
 StaticEquilibrium::~StaticEquilibrium() = default;
@@ -71,7 +91,6 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
                                                         std::span<const PointContact> contacts,
                                                         const Eigen::Vector3d& gravity) {
   const GeneralisedForce tau_g = gravity_forces(model_, data, g, gravity);
-  operational_jacobians(model_, data);
   const Eigen::Vector3d& com = centre_of_mass(model_, data);
   const Eigen::Vector3d& root = data.points[0];
 
@@ -95,6 +114,22 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
                                              ? held[limb]->normal_force_limit
                                              : kUnboundedRow;
   }
+  // Most stances that cannot balance are refused here, without the program (40 % of all
+  // stances on random vertical walls, 86 % of those unbalanced): see docs/PHYSICS.md,
+  // "Proven unbalanced without a program". The basis stays the last program's.
+  if (precheck_ == EquilibriumPrecheck::On) {
+    std::array<HeldContact, kLimbCount> held_contacts;
+    std::size_t held_count = 0;
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      if (held[limb] == nullptr) continue;
+      held_contacts[held_count++] = {data.points[operational_point(limb)] - root, friction_cone_generators(*held[limb]),
+                                     held[limb]->normal_force_limit};
+    }
+    if (proven_unbalanced(std::span<const HeldContact>(held_contacts.data(), held_count), -weight, -weight_moment)) {
+      return unbalanced_result();
+    }
+  }
+  operational_jacobians(model_, data);
   // tau_j = -(tau_g_j + r_j) with r_j = sum of J_c(:, j) . f_c; sign * tau_j <= t * limit
   // reads sign * r_j + limit * t >= -sign * tau_g_j.
   for (int r = 0; r < static_cast<int>(joint_rows_.size()); ++r) {
@@ -131,16 +166,12 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
     values_[e] = joint_rows_[rows_[e] - kFirstJointRow].limit;
   }
 
-  // A fresh solver object each time, given the program and the last basis: CLP adjusts
-  // its own parameters during a solve (its infeasibility cost, perturbation), so a reused
-  // object's result would depend on every earlier solve, and a run resumed from a
-  // checkpoint, which restores the basis alone, would drift in the efforts' last bits.
-  ClpSimplex solver;
-  solver.setLogLevel(0);
-  // Unscaled: reloaded into one object, CLP's scaled programs gave different optima warm and
-  // cold (by up to 0.26 in effort on random postures); unscaled they agree
-  // (StaticEquilibrium.WarmStartsGiveTheColdSolvesEffort).
-  solver.scaling(0);
+  // A fresh solver object each time (a copy of one never solved), given the program and the
+  // last basis: CLP adjusts its own parameters during a solve (its infeasibility cost,
+  // perturbation), so a reused object's result would depend on every earlier solve, and a
+  // run resumed from a checkpoint, which restores the basis alone, would drift in the
+  // efforts' last bits.
+  ClpSimplex solver(*pristine_solver_);
   const int row_count = static_cast<int>(row_lower_.size());
   // The last basis has the same rows and columns, so the primal simplex starts from it
   // (docs/PERFORMANCE.md, "Static equilibrium").
@@ -158,17 +189,12 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
   std::copy_n(solver.statusArray(), basis_.size(), basis_.begin());
   has_basis_ = true;
 
+  if (solver.isProvenPrimalInfeasible()) return unbalanced_result();
   StaticEquilibriumResult& result = result_;
   result.contact_forces.fill(Eigen::Vector3d::Zero());
   result.joint_torques.setZero();
   result.at_force_limit.fill(false);
   result.binding_joint = -1;
-  if (solver.isProvenPrimalInfeasible()) {
-    result.feasible = result.balanced = false;
-    result.effort = std::numeric_limits<double>::infinity();
-    result.binding = EquilibriumBinding::Contacts;
-    return result;
-  }
   const double* weights = solver.primalColumnSolution();
   GeneralisedForce contact_forces = GeneralisedForce::Zero();
   for (int limb = 0; limb < kLimbCount; ++limb) {
@@ -200,6 +226,18 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
   }
   result.balanced = true;
   result.feasible = result.effort <= 1.0;
+  return result;
+}
+
+const StaticEquilibriumResult& StaticEquilibrium::unbalanced_result() {
+  StaticEquilibriumResult& result = result_;
+  result.contact_forces.fill(Eigen::Vector3d::Zero());
+  result.joint_torques.setZero();
+  result.at_force_limit.fill(false);
+  result.binding_joint = -1;
+  result.feasible = result.balanced = false;
+  result.effort = std::numeric_limits<double>::infinity();
+  result.binding = EquilibriumBinding::Contacts;
   return result;
 }
 

@@ -3,6 +3,7 @@
 // "Static equilibrium"): a linear program over the contact forces, solved with COIN-OR CLP.
 
 #include <array>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -13,6 +14,8 @@
 #include "body/gravity_forces.hpp"
 #include "physics/contact_model.hpp"
 #include "physics/strength_profile.hpp"
+
+class ClpSimplex;
 
 namespace crux {
 
@@ -39,11 +42,17 @@ struct StaticEquilibriumResult {
   std::array<bool, kLimbCount> at_force_limit{};  // normal force at its limit, within 1e-6
 };
 
+// Whether a stance goes through proven_unbalanced (physics/balance_precheck) before the
+// program: Off lets the program decide every stance, the reference the check is tested
+// against.
+enum class EquilibriumPrecheck { On, Off };
+
 // One linear program, built once for a model and strength profile and refilled for every
 // stance, each solve warm started from the last one's basis: one per thread, like BodyData.
 class StaticEquilibrium {
  public:
-  StaticEquilibrium(const BodyModel& model, const StrengthProfile& strength);
+  StaticEquilibrium(const BodyModel& model, const StrengthProfile& strength,
+                    EquilibriumPrecheck precheck = EquilibriumPrecheck::On);
   ~StaticEquilibrium();
   StaticEquilibrium(const StaticEquilibrium&) = delete;
   StaticEquilibrium& operator=(const StaticEquilibrium&) = delete;
@@ -67,12 +76,18 @@ class StaticEquilibrium {
     double sign;   // +1 bounds the torque from above by t * limit, -1 from below
     double limit;  // newton-metres
   };
+  const StaticEquilibriumResult& unbalanced_result();
+
   const BodyModel& model_;
+  EquilibriumPrecheck precheck_;
   std::vector<JointRow> joint_rows_;
   std::vector<int> starts_, rows_;
   std::vector<double> values_, column_lower_, column_upper_, objective_, row_lower_, row_upper_;
   std::vector<unsigned char> basis_;
   bool has_basis_ = false;
+  // Never solved: each solve copies it, cheaper than a new object, which builds CLP's
+  // message tables anew.
+  std::unique_ptr<ClpSimplex> pristine_solver_;
   StaticEquilibriumResult result_;
 };
 

@@ -105,6 +105,36 @@ TEST(StanceCheck, ChecksTheFourHoldsAndTheThreeLeftWithTheDescribedContacts) {
   EXPECT_GT(three_failed, 0);
 }
 
+// The balance precheck refuses only stances the program refuses: every stance of the walk,
+// on four holds and on three, at 0, 20 and 40 degrees, gets the verdict and effort of the
+// program alone (physics/balance_precheck; its own tests build the refusals by hand).
+TEST(StanceCheck, TheBalancePrecheckRefusesOnlyWhatTheProgramRefuses) {
+  const BodyModel& model = testing::human_model();
+  const StrengthProfile strength = published_strength_profile(model, model.total_mass, model.stature);
+  for (const double incline : {0.0, 20.0, 40.0}) {
+    Wall wall = generate_random_wall(4);
+    wall.incline_deg = incline;
+    const std::vector<ReachedStance> stances = reached_stances(wall, 200);
+    ASSERT_GT(stances.size(), 40u);
+    const PhysicsParameters physics{PhysicsModel::Static};
+    const Eigen::Vector3d gravity = wall_to_world(incline).transpose() * kStandardGravity;
+    StaticEquilibrium checked(model, strength, EquilibriumPrecheck::On);
+    StaticEquilibrium program_alone(model, strength, EquilibriumPrecheck::Off);
+    BodyData data(model);
+    int unbalanced = 0;
+    for (int i = 0; i < static_cast<int>(stances.size()); ++i) {
+      const ReachedStance& s = stances[i];
+      for (const HoldConfiguration& held : {s.complete, s.complete.with(s.next, kFree)}) {
+        const std::vector<PointContact> contacts = expected_contacts(wall, held, physics);
+        const StaticEquilibriumResult expected = program_alone.solve(data, s.posture, contacts, gravity);
+        expect_same(checked.solve(data, s.posture, contacts, gravity), expected, i);
+        unbalanced += !expected.balanced;
+      }
+    }
+    EXPECT_GT(unbalanced, 0) << "incline " << incline;
+  }
+}
+
 // One program decides a stance: the four-hold program relaxes the three-hold one (the
 // fourth limb's forces may be zero), so its effort is never larger, and the stance's
 // effort is the three-hold effort. Checked on every stance of the walk against both
