@@ -25,14 +25,23 @@ Regime iteration_regime(std::string_view name, const std::string& file, std::siz
 std::vector<RunStep> read_iterations_file(const std::filesystem::path& path, int recorded_iterations) {
   const std::string file = path.string();
   const std::string text = read_input_file(file, "iterations file");
-  const std::vector<std::string_view> rows = csv_rows(text, file, kIterationsHeader);
+  // A static run's file adds `fell`; any other first line is refused against the paper's header.
+  const bool with_falls = std::string_view(text).substr(0, text.find('\n')) == kIterationsHeaderWithFalls;
+  const std::vector<std::string_view> rows =
+      csv_rows(text, file, with_falls ? kIterationsHeaderWithFalls : kIterationsHeader);
   std::vector<RunStep> steps;
   steps.reserve(rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const std::size_t line = csv_line_number(i);
-    const std::vector<std::string_view> cells = csv_cells(rows[i], i, 7, file);
+    const std::vector<std::string_view> cells = csv_cells(rows[i], i, with_falls ? 8 : 7, file);
     if (cells[4] != "0" && cells[4] != "1") {
       throw InputError(file, fmt::format("line {}: success must be 0 or 1", line));
+    }
+    if (with_falls && cells[7] != "0" && cells[7] != "1") {
+      throw InputError(file, fmt::format("line {}: fell must be 0 or 1", line));
+    }
+    if (with_falls && cells[7] == "1" && cells[4] == "1") {
+      throw InputError(file, fmt::format("line {}: a reached move cannot fall", line));
     }
     const RunStep step{csv_integer(cells[0], file, line),
                        csv_integer(cells[1], file, line),
@@ -40,7 +49,8 @@ std::vector<RunStep> read_iterations_file(const std::filesystem::path& path, int
                        csv_integer(cells[3], file, line),
                        cells[4] == "1",
                        csv_number(cells[5], file, line),
-                       csv_number(cells[6], file, line)};
+                       csv_number(cells[6], file, line),
+                       with_falls && cells[7] == "1"};
     if (step.iteration != static_cast<int>(i) + 1) {
       throw InputError(file, fmt::format("line {}: iteration {} where {} was due", line, step.iteration, i + 1));
     }

@@ -11,6 +11,9 @@
 namespace crux {
 
 inline constexpr const char* kIterationsHeader = "iteration,episode,regime,hold,success,root_rise_cm,reward";
+// A run of the static model, where a climber can fall back to the start (docs/MODEL.md, C27).
+inline constexpr const char* kIterationsHeaderWithFalls =
+    "iteration,episode,regime,hold,success,root_rise_cm,reward,fell";
 
 // A row of iterations.csv.
 struct RunStep {
@@ -21,9 +24,11 @@ struct RunStep {
   bool success = false;
   double root_rise_cm = 0.0;
   double reward = 0.0;
+  bool fell = false;  // always false in a file without the `fell` column
 };
 
-// Every row, each checked: the header, 7 fields, iterations numbered 1, 2, ... in
+// Every row, each checked: either header, 7 or 8 fields as it says, `fell` 0 or 1 and only
+// after a failure, iterations numbered 1, 2, ... in
 // order, episodes from 0 rising by 0 or 1, a known regime, success 0 or 1, integers and
 // finite numbers, a newline after the last row, and `recorded_iterations` rows (the
 // run's summary.json `iterations`), so that a file cut short is never read as a shorter

@@ -34,7 +34,7 @@ void greedy_climb(ClimbingMdp& mdp, const QTable& q_wall, int cap, RunResult& re
   }
 }
 
-constexpr std::uint64_t kStateVersion = 1;
+constexpr std::uint64_t kStateVersion = 2;  // 2: each record says whether the climber fell
 
 void save_postures(CheckpointWriter& out, const std::vector<Posture>& postures) {
   out.value<std::uint64_t>(postures.size());
@@ -61,6 +61,7 @@ void save_records(CheckpointWriter& out, const std::vector<IterationRecord>& rec
     out.value(static_cast<std::int32_t>(r.regime));
     out.value(r.hold_id);
     out.value<std::uint8_t>(r.success ? 1 : 0);
+    out.value<std::uint8_t>(r.fell ? 1 : 0);
     out.value(r.root_rise_m);
     out.value(r.reward);
     out.value(r.grid_state);
@@ -82,6 +83,7 @@ void load_records(CheckpointReader& in, std::vector<IterationRecord>& records) {
     r.regime = static_cast<Regime>(regime);
     r.hold_id = in.value<int>();
     r.success = in.flag();
+    r.fell = in.flag();
     r.root_rise_m = in.value<double>();
     r.reward = in.value<double>();
     r.grid_state = in.value<std::uint32_t>();
@@ -137,6 +139,7 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
   DynaQAgent agent(mdp.wall_action_count(), mdp.grid_action_count(), parameters.dyna, seed);
   if (initial_q_grid != nullptr) agent.set_q_grid(*initial_q_grid);
   RunResult result;
+  result.can_fall = parameters.climbing.physics.model == PhysicsModel::Static;
   result.iterations.reserve(parameters.iterations);
   std::vector<Posture> climb{mdp.posture()};
   LoopState loop;
@@ -166,6 +169,7 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
     agent.observe(mdp.state(), mdp.candidates());
     agent.learn({state.wall, state.grid, action.wall, action.grid, outcome.reward, mdp.state().wall, mdp.state().grid});
     record.success = outcome.reached;
+    record.fell = outcome.fell;
     record.root_rise_m = outcome.root_rise_m;
     record.reward = outcome.reward;
     result.iterations.push_back(record);

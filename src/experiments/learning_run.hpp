@@ -34,6 +34,7 @@ struct IterationRecord {
   ActionCode tile = kNoAction;
   float tile_offset_y = 0.0f, tile_offset_z = 0.0f;
   bool back_to_left_hold = false;
+  bool fell = false;  // the failed move left the climber stuck: back to the start (docs/MODEL.md, C27)
 };
 
 // A reached move of a recorded climb: the hold taken and the reward.
@@ -44,6 +45,9 @@ struct ClimbMove {
 
 struct RunResult {
   std::vector<IterationRecord> iterations;
+  // Under the static model a climber can fall, and iterations.csv says where (its `fell`
+  // column); the kinematic model's files keep the paper's columns.
+  bool can_fall = false;
   std::vector<int> episode_lengths;  // completed episodes, in iterations (failed ones included)
   QTable q_grid{1};
   // Postures of the last completed climb: the start, then one per reached move, the

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "common/atomic_file.hpp"
+#include "experiments/iterations_file.hpp"
 #include "learning/q_table_file.hpp"
 #include "reports/posture_csv.hpp"
 
@@ -11,11 +12,13 @@ namespace crux {
 void write_run_files(const std::filesystem::path& directory, const RunResult& run, const BodyModel& model,
                      const GridParameters& grid) {
   make_output_directory(directory);
-  std::string iterations = "iteration,episode,regime,hold,success,root_rise_cm,reward\n";
+  std::string iterations = run.can_fall ? kIterationsHeaderWithFalls : kIterationsHeader;
+  iterations += '\n';
   for (std::size_t i = 0; i < run.iterations.size(); ++i) {
     const IterationRecord& r = run.iterations[i];
-    iterations += fmt::format("{},{},{},{},{},{},{}\n", i + 1, r.episode, regime_name(r.regime), r.hold_id,
+    iterations += fmt::format("{},{},{},{},{},{},{}", i + 1, r.episode, regime_name(r.regime), r.hold_id,
                               r.success ? 1 : 0, 100.0 * r.root_rise_m, r.reward);
+    iterations += run.can_fall ? (r.fell ? ",1\n" : ",0\n") : "\n";
   }
   write_file_atomically(directory / "iterations.csv", iterations);
   std::string episodes = "episode,length\n";

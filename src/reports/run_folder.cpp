@@ -195,6 +195,10 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
     if (step.episode != last.episode) continue;
     last.steps.push_back(step);
     reached += step.success ? 1 : 0;
+    if (step.fell) {  // climb.csv holds the episode's last attempt, from the start it fell back to
+      last.steps.clear();
+      reached = 0;
+    }
   }
 
   const fs::path climb_file = folder.directory / "climb.csv";

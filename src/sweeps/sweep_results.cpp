@@ -34,6 +34,7 @@ RunResult read_run(const fs::path& directory, int recorded_iterations) {
     record.regime = step.regime;
     record.hold_id = step.hold_id;
     record.success = step.success;
+    record.fell = step.fell;
     record.root_rise_m = step.root_rise_cm / 100.0;
     record.reward = step.reward;
     run.iterations.push_back(record);

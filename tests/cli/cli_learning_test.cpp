@@ -260,6 +260,45 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   EXPECT_NE(nested.err.find("(did you mean 'wall generate'?)"), std::string::npos) << nested.err;
 }
 
+// Under the static model a climber can fall back to the start in the middle of an episode
+// (docs/MODEL.md, C27 and C31); climb.csv then holds the episode's last attempt, and the
+// report replays it. Wall 5 with learning seed 3 falls six times in its last episode.
+TEST(CliLearning, AStaticRunWhoseLastClimbFellIsReportedFromItsLastAttempt) {
+  const fs::path run = learning_scratch("static_falls");
+  fs::remove_all(run);
+  const auto trained = run_crux(
+      "train --wall-seed 5 --seed 3 --iterations 3000 --physics-model static --transfer seeded --reward-height 100 "
+      "--physics-fall-when-stuck true -o " +
+      run.string());
+  ASSERT_EQ(trained.exit_code, 0) << trained.err;
+  std::ifstream episodes_in(run / "episodes.csv");
+  int completed = -1;  // the header
+  for (std::string line; std::getline(episodes_in, line);) ++completed;
+  ASSERT_GE(completed, 1);
+  std::ifstream iterations_in(run / "iterations.csv");
+  std::string line;
+  std::getline(iterations_in, line);
+  ASSERT_EQ(line, "iteration,episode,regime,hold,success,root_rise_cm,reward,fell");
+  int falls = 0, moves_since_fall = 0;
+  while (std::getline(iterations_in, line)) {
+    std::vector<std::string> cells;
+    for (std::size_t start = 0, end = 0; end != std::string::npos; start = end + 1) {
+      end = line.find(',', start);
+      cells.push_back(line.substr(start, end - start));
+    }
+    if (std::stoi(cells[1]) != completed - 1) continue;
+    ++moves_since_fall;
+    if (cells[7] == "1") ++falls, moves_since_fall = 0;
+  }
+  ASSERT_GT(falls, 0) << "the last completed episode must fall for this test to check anything";
+  const auto report =
+      run_crux("report " + run.string() + " -o " + learning_scratch("static_falls_report").string() + " --json");
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const auto json = nlohmann::json::parse(report.out);
+  EXPECT_EQ(json.at("replay_climb"), "last");
+  EXPECT_EQ(json.at("climb_moves"), moves_since_fall);
+}
+
 TEST(CliLearning, TrainingWallsOutsideTheirRangeAreOneLine) {
   for (const char* count : {"0", "1001"}) {
     const auto outcome = run_crux(std::string("paper --training-walls ") + count);

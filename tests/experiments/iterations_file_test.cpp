@@ -44,6 +44,33 @@ TEST(IterationsFile, ReadsEveryRow) {
   EXPECT_TRUE(read_iterations_file(testing::write_temporary("iterations_none.csv", kIterationsCsvHeader), 0).empty());
 }
 
+// A run of the static model adds `fell`: the failed moves after which the climber fell
+// back to the start (docs/MODEL.md, C27).
+TEST(IterationsFile, ReadsTheFallsOfAStaticRun) {
+  const std::string header = "iteration,episode,regime,hold,success,root_rise_cm,reward,fell\n";
+  const auto file = testing::write_temporary(
+      "iterations_falls.csv",
+      header + "1,0,w_greedy,12,1,4.5,-1,0\n2,0,random,7,0,0,-1000,1\n3,0,random,8,0,0,-1000,0\n");
+  const std::vector<RunStep> steps = read_iterations_file(file, 3);
+  ASSERT_EQ(steps.size(), 3u);
+  EXPECT_FALSE(steps[0].fell);
+  EXPECT_TRUE(steps[1].fell);
+  EXPECT_FALSE(steps[2].fell);
+  EXPECT_DOUBLE_EQ(steps[1].reward, -1000);
+  EXPECT_EQ(iterations_problem("iterations_fell_value.csv", header + "1,0,random,7,0,0,-1000,2\n", 1),
+            "line 2: fell must be 0 or 1");
+  EXPECT_EQ(iterations_problem("iterations_fell_reached.csv", header + "1,0,random,7,1,3,-1,1\n", 1),
+            "line 2: a reached move cannot fall");
+  EXPECT_EQ(iterations_problem("iterations_fell_fields.csv", header + "1,0,random,7,0,0,-1000\n", 1),
+            "line 2: 7 fields, not 8");
+  // Without the column nothing falls.
+  EXPECT_FALSE(
+      read_iterations_file(
+          testing::write_temporary("iterations_no_falls.csv", kIterationsCsvHeader + "1,0,random,7,0,0,-1000\n"), 1)
+          .front()
+          .fell);
+}
+
 TEST(IterationsFile, RefusesAMissingFileAndAnotherHeader) {
   EXPECT_THROW(read_iterations_file(testing::temporary_path("iterations_missing.csv"), 0), InputError);
   EXPECT_EQ(iterations_problem("iterations_empty.csv", ""),

@@ -59,6 +59,21 @@ TEST(RunFiles, IterationsCsvByHand) {
             "4,1,random,3,1,-12.5,-1\n");
 }
 
+// Under the static model the file says where the climber fell (docs/MODEL.md, C27).
+TEST(RunFiles, AStaticRunsIterationsSayWhereTheClimberFell) {
+  const auto dir = testing::temporary_path("run_files_falls");
+  RunResult run = hand_made_run();
+  run.can_fall = true;
+  run.iterations[1].fell = true;
+  write_run_files(dir, run, testing::human_model(), GridParameters{});
+  EXPECT_EQ(read_text(dir / "iterations.csv"),
+            "iteration,episode,regime,hold,success,root_rise_cm,reward,fell\n"
+            "1,0,w_greedy,5,1,25,-1,0\n"
+            "2,0,random,9,0,0,-1000,1\n"
+            "3,0,g_greedy,12,1,50,200000,0\n"
+            "4,1,random,3,1,-12.5,-1,0\n");
+}
+
 TEST(RunFiles, RisesAndRewardsReadBackExactly) {
   RunResult run;
   run.iterations = {{0, Regime::Random, 1, true, 0.07, -0.1}};
