@@ -97,19 +97,20 @@ def test_run_learning_equals_crux_train_and_transfer(run_cli, tmp_path):
     assert np.array_equal(from_table.episode_lengths, from_file.episode_lengths)
 
 
-def test_a_transfer_mode_is_a_config_key_as_on_the_command_line(run_cli, tmp_path):
+@pytest.mark.parametrize("mode", ["prior", "ordered"])
+def test_a_transfer_mode_is_a_config_key_as_on_the_command_line(run_cli, tmp_path, mode):
     code, out, err = run_cli("train", "--wall-seed", 3, "--seed", 5, "--iterations", 1500, "-o", tmp_path / "train")
     assert code == 0, err
     code, out, err = run_cli("transfer", "--wall-seed", 4, "--seed", 6, "--iterations", 1500, "--q-grid",
-                             tmp_path / "train" / "q_grid.bin", "--transfer", "prior", "-o", tmp_path / "transfer",
+                             tmp_path / "train" / "q_grid.bin", "--transfer", mode, "-o", tmp_path / "transfer",
                              "--json")
     assert code == 0, err
-    config = {"wall.seed": 4, "experiment.iterations": 1500, "experiment.transfer": "prior"}
-    prior = crux.run_learning(config=config, seed=6, q_grid=tmp_path / "train" / "q_grid.bin")
-    assert without_caller(prior.summary) == without_caller(json.loads(out))
+    config = {"wall.seed": 4, "experiment.iterations": 1500, "experiment.transfer": mode}
+    moded = crux.run_learning(config=config, seed=6, q_grid=tmp_path / "train" / "q_grid.bin")
+    assert without_caller(moded.summary) == without_caller(json.loads(out))
     paper = crux.run_learning(config={**config, "experiment.transfer": "paper"}, seed=6,
                               q_grid=tmp_path / "train" / "q_grid.bin")
-    assert not np.array_equal(prior.iterations["hold_id"], paper.iterations["hold_id"])
+    assert not np.array_equal(moded.iterations["hold_id"], paper.iterations["hold_id"])
     with pytest.raises(ValueError, match="^experiment.transfer: unknown transfer mode 'best'"):
         crux.run_learning(config={**config, "experiment.transfer": "best"}, seed=6)
 

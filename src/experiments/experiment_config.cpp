@@ -61,7 +61,8 @@ std::vector<ConfigField> config_fields(ExperimentConfig& c) {
        &c.checkpoint_every},
       {"experiment.q_grid", "Q_grid file (q_grid.bin of a training run) that transfer starts from", &c.q_grid},
       {"experiment.transfer",
-       "How transfer uses its Q_grid (docs/TRANSFER.md): paper (Algorithm 3), informed, prior, seeded or shaping; "
+       "How transfer uses its Q_grid (docs/TRANSFER.md): paper (Algorithm 3), informed, prior, seeded, shaping or "
+       "ordered; "
        "control "
        "follows the same rule from an empty Q_grid",
        &c.transfer},

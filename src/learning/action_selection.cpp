@@ -54,10 +54,23 @@ ActionChoice select_action(const QTable& q_wall, const QTable& q_grid, const Sta
                            std::span<const ActionCandidate> candidates, double epsilon, const SelectionStreams& streams,
                            std::uint64_t iteration, const SelectionRule& rule) {
   if (candidates.empty()) throw std::invalid_argument("select_action: a state without possible actions");
-  const long w = best_candidate(
+  long w = best_candidate(
       candidates, [&](const ActionCandidate& c) { return q_wall.value(state.wall, c.wall); },
       [](const ActionCandidate& c) { return c.wall; }, [](const ActionCandidate&) { return true; }, streams.tie_break,
       iteration, kWallTable);
+  if (rule.wall_tie_order != nullptr) {
+    const QTable& order = *rule.wall_tie_order;
+    const double best_wall_value = q_wall.value(state.wall, candidates[w].wall);
+    const long ordered = best_candidate(
+        candidates, [&](const ActionCandidate& c) { return order.value(state.grid, c.grid); },
+        [](const ActionCandidate& c) { return c.wall; },
+        [&](const ActionCandidate& c) {
+          return q_wall.value(state.wall, c.wall) == best_wall_value && c.represents_grid_action &&
+                 order.taken(state.grid, c.grid);
+        },
+        streams.tie_break, iteration, kWallTable);
+    if (ordered >= 0) w = ordered;
+  }
   if (streams.epsilon.uniform(iteration, 0) > epsilon &&
       (!rule.wall_requires_taken || q_wall.taken(state.wall, candidates[w].wall))) {
     return {static_cast<std::size_t>(w), Regime::WGreedy};

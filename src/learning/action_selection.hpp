@@ -62,6 +62,10 @@ struct SelectionRule {
   // g-greedy's best among the agent-space actions already taken, instead of its best
   // action being required to have been taken.
   bool grid_taken_only = false;
+  // When set, w-greedy's ties (typically a state's untried actions, all at 0) go first to
+  // the representatives of the agent-space actions taken in this table, the largest value
+  // first; the rest of the ties, or all of them if none is taken, to the random tie-break.
+  const QTable* wall_tie_order = nullptr;
 };
 
 // Throws std::invalid_argument when there is no candidate.

@@ -21,10 +21,12 @@ DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaP
       planning_stream_(seed, "planning"),
       q_wall_(wall_action_count),
       q_grid_(grid_action_count),
+      tie_order_(grid_action_count),
       model_(settings.planner == Planner::Prioritized) {}
 
 void DynaQAgent::set_q_grid(QTable q_grid) {
   if (settings_.transfer == TransferMode::Seeded) seeds_ = q_grid;
+  if (settings_.transfer == TransferMode::Ordered) tie_order_ = q_grid;
   if (settings_.transfer == TransferMode::Shaping) potential_ = GridPotential(q_grid);
   q_grid_ = std::move(q_grid);
 }
@@ -62,9 +64,10 @@ ActionChoice DynaQAgent::choose(const StateCouple& state, std::span<const Action
     }
     rule.grid_excluded = grid_excluded_;
     rule.grid_taken_only = settings_.transfer == TransferMode::Prior;
-  } else if (settings_.transfer == TransferMode::Seeded) {
+  } else if (settings_.transfer == TransferMode::Seeded || settings_.transfer == TransferMode::Ordered) {
     rule.wall_requires_taken = false;
     rule.grid_greedy = false;
+    if (settings_.transfer == TransferMode::Ordered) rule.wall_tie_order = &tie_order_;
   }
   return select_action(q_wall_, q_grid_, state, candidates, settings_.epsilon, selection_streams_, steps_, rule);
 }

@@ -44,8 +44,8 @@ class DynaQAgent {
   DynaQAgent(int wall_action_count, int grid_action_count, const DynaParameters& settings, std::uint64_t seed);
 
   // Starts from a Q_grid learnt elsewhere (transfer); its visit counts say what has
-  // "already been taken" in agent space. The seeded and shaping modes also keep it
-  // unchanged, as the source of seeds or of the potential.
+  // "already been taken" in agent space. The seeded, shaping and ordered modes also keep
+  // it unchanged, as the source of seeds, of the potential or of the tie order.
   void set_q_grid(QTable q_grid);
 
   // Remembers which actions a state offers, for the max of the updates that lead to it:
@@ -89,6 +89,7 @@ class DynaQAgent {
   RandomStream planning_stream_;
   std::uint64_t steps_ = 0, planning_updates_ = 0;
   QTable q_wall_, q_grid_;
+  QTable tie_order_;          // ordered mode: the transferred Q_grid (empty without one)
   DeterministicModel model_;  // tracks predecessors for prioritized sweeping only
   PriorityQueue queue_;
   absl::flat_hash_map<StateCode, std::vector<ActionCode>> wall_actions_, grid_actions_;

@@ -18,13 +18,17 @@
 //             phi(s) = the best taken value of the transferred Q_grid in grid(s) (potential-based
 //             shaping, Ng, Harada and Russell 1999; learnt in agent space as Konidaris
 //             and Barto's autonomous shaping, 2006).
+//   ordered:  epsilon-greedy on Q_wall as seeded without seeds (an untried pair's 0 is
+//             optimistic), with the ties of Q_wall's best value broken by the transferred
+//             Q_grid's best taken value: it orders which untried move comes first and never
+//             raises a value (learned action priors, Rosman and Ramamoorthy 2012).
 
 #include <optional>
 #include <string_view>
 
 namespace crux {
 
-enum class TransferMode { Paper, Informed, Prior, Seeded, Shaping };
+enum class TransferMode { Paper, Informed, Prior, Seeded, Shaping, Ordered };
 
 const char* transfer_mode_name(TransferMode mode);
 std::optional<TransferMode> parse_transfer_mode(std::string_view name);

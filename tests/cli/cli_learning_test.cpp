@@ -843,5 +843,23 @@ TEST(CliLearning, ShapingWithoutATransferredTableIsThePaperRule) {
       << "the transferred potential changes transfer's runs";
 }
 
+// Without a transferred table the ordered rule is epsilon-greedy on Q_wall, the seeded
+// rule without seeds: training and control are seeded's, iteration by iteration, while
+// transfer differs.
+TEST(CliLearning, OrderedWithoutATransferredTableIsTheSeededRuleWithoutSeeds) {
+  const fs::path seeded = learning_scratch("mode_seeded"), ordered = learning_scratch("mode_ordered");
+  const std::string common = "paper --walls 1 --seeds-per-wall 2 --iterations 2000 --plan false --seed 3 ";
+  ASSERT_EQ(run_crux(common + "--transfer seeded -o " + seeded.string()).exit_code, 0);
+  ASSERT_EQ(run_crux(common + "--transfer ordered -o " + ordered.string()).exit_code, 0);
+  for (const char* run : {"training_0", "training_1", "control_0", "control_1"}) {
+    EXPECT_EQ(read_text(seeded / "runs" / run / "iterations.csv"), read_text(ordered / "runs" / run / "iterations.csv"))
+        << run;
+  }
+  EXPECT_TRUE(
+      read_text(seeded / "runs/transfer_0/iterations.csv") + read_text(seeded / "runs/transfer_1/iterations.csv") !=
+      read_text(ordered / "runs/transfer_0/iterations.csv") + read_text(ordered / "runs/transfer_1/iterations.csv"))
+      << "the transferred order changes transfer's runs";
+}
+
 }  // namespace
 }  // namespace crux

@@ -164,5 +164,24 @@ TEST(LearningRun, TheStaticLearnerWithHeightShapingClimbsTheSameWayEveryRunAndRe
   }
 }
 
+// The ordered mode keeps the transferred Q_grid aside as its tie order; a resumed transfer
+// run is given it again and ends as the unbroken run.
+TEST(LearningRun, AnOrderedTransferRunResumedFromACheckpointEndsAsTheUnbrokenRun) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = generate_random_wall(3);
+  LearningParameters parameters;
+  parameters.iterations = 2400;
+  parameters.dyna.transfer = TransferMode::Ordered;
+  const RunResult trained = run_learning(model, generate_random_wall(4), parameters, 9);
+  std::vector<std::pair<int, std::string>> states;
+  RunCheckpoints checkpoints{
+      700, [&](std::string state, int done) { states.emplace_back(done, std::move(state)); }, {}, {}};
+  const RunResult unbroken = run_learning(model, wall, parameters, 5, &trained.q_grid, {}, &checkpoints);
+  ASSERT_EQ(states.size(), 3u);
+  const RunCheckpoints resume{0, {}, states.front().second, "test"};
+  expect_same_run(unbroken, run_learning(model, wall, parameters, 5, &trained.q_grid, {}, &resume),
+                  "ordered, resumed at 700");
+}
+
 }  // namespace
 }  // namespace crux

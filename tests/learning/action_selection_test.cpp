@@ -186,5 +186,96 @@ TEST(ActionSelection, GridTakenOnlyPicksTheBestTakenTileOverABetterUntakenOne) {
   EXPECT_EQ(c.candidate, 2u) << "tile 11, the only one taken";
 }
 
+// The ordered mode's rule: epsilon-greedy on Q_wall, w-greedy's ties broken by a table.
+SelectionRule ordered_by(const QTable& order) {
+  SelectionRule rule{false, false, {}};
+  rule.wall_tie_order = &order;
+  return rule;
+}
+
+// Every Q_wall value is 0 (all four untried): the tie goes to hold 2, whose tile 11 has
+// the largest taken value of the order (-1 against tile 10's -5), at every iteration.
+TEST(ActionSelection, TheTieOrderPicksTheTiedRepresentativeWithTheBestTakenValue) {
+  QTable wall(4), grid(40), order(40);
+  order.set_value(50, 10, -5.0);
+  order.add_visit(50, 10);
+  order.set_value(50, 11, -1.0);
+  order.add_visit(50, 11);
+  const SelectionStreams streams(1);
+  std::set<std::size_t> unordered;
+  for (int i = 0; i < 100; ++i) {
+    const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, streams, i, ordered_by(order));
+    EXPECT_EQ(c.regime, Regime::WGreedy);
+    EXPECT_EQ(c.candidate, 2u) << "iteration " << i;
+    unordered.insert(select_action(wall, grid, kState, kCandidates, 0.0, streams, i, {false, false, {}}).candidate);
+  }
+  EXPECT_EQ(unordered.size(), 4u) << "without the order the tie is random";
+}
+
+// Tiles 10 and 11 tie in the order too: the random tie-break chooses between their
+// representatives, holds 1 and 2, and never a hold the order does not rank.
+TEST(ActionSelection, TiesOfTheTieOrderGoToTheRandomTieBreak) {
+  QTable wall(4), grid(40), order(40);
+  for (const ActionCode tile : {10, 11}) {
+    order.set_value(50, tile, -1.0);
+    order.add_visit(50, tile);
+  }
+  const SelectionStreams streams(1);
+  std::set<std::size_t> seen;
+  for (int i = 0; i < 100; ++i) {
+    seen.insert(select_action(wall, grid, kState, kCandidates, 0.0, streams, i, ordered_by(order)).candidate);
+  }
+  EXPECT_EQ(seen, (std::set<std::size_t>{1, 2}));
+}
+
+// Hold 2 was tried (Q_wall -2) and hold 1 was not (0): hold 1 stays Q_wall's best, whatever
+// the order says of tile 11 (+9), and a tried move of higher value wins over untried ones.
+TEST(ActionSelection, TheTieOrderNeverOverturnsQWall) {
+  QTable wall(4), grid(40), order(40);
+  wall.set_value(5, 2, -2.0);
+  wall.add_visit(5, 2);
+  wall.set_value(5, 0, -3.0);
+  wall.add_visit(5, 0);
+  wall.set_value(5, 3, -4.0);
+  wall.add_visit(5, 3);
+  order.set_value(50, 11, 9.0);
+  order.add_visit(50, 11);
+  order.set_value(50, 10, -5.0);
+  order.add_visit(50, 10);
+  const SelectionStreams streams(1);
+  EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 0.0, streams, 0, ordered_by(order)).candidate, 1u);
+  wall.set_value(5, 3, 0.5);  // a tried move above the untried 0
+  EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 0.0, streams, 0, ordered_by(order)).candidate, 3u);
+}
+
+// Tile 10's 7 was never taken, so it does not count: tile 11's taken -3 orders the tie.
+TEST(ActionSelection, AnUntakenValueOfTheTieOrderDoesNotCount) {
+  QTable wall(4), grid(40), order(40);
+  order.set_value(50, 10, 7.0);
+  order.set_value(50, 11, -3.0);
+  order.add_visit(50, 11);
+  const SelectionStreams streams(1);
+  for (int i = 0; i < 50; ++i) {
+    EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 0.0, streams, i, ordered_by(order)).candidate, 2u);
+  }
+}
+
+// An empty order (ordered's control) chooses as epsilon-greedy on Q_wall (seeded's
+// control) on the same streams, action and regime, even with a Q_grid that has learnt.
+TEST(ActionSelection, AnEmptyTieOrderChoosesAsEpsilonGreedyOnQWall) {
+  QTable wall(4), grid(40), order(40);
+  wall.set_value(5, 2, -2.0);
+  wall.add_visit(5, 2);
+  grid.set_value(50, 10, 7.0);
+  grid.add_visit(50, 10);
+  const SelectionStreams streams(6);
+  for (int i = 0; i < 2000; ++i) {
+    const ActionChoice ordered = select_action(wall, grid, kState, kCandidates, 0.25, streams, i, ordered_by(order));
+    const ActionChoice plain = select_action(wall, grid, kState, kCandidates, 0.25, streams, i, {false, false, {}});
+    ASSERT_EQ(ordered.candidate, plain.candidate) << "iteration " << i;
+    ASSERT_EQ(ordered.regime, plain.regime) << "iteration " << i;
+  }
+}
+
 }  // namespace
 }  // namespace crux

@@ -5,6 +5,7 @@
 #include "common/checkpoint_stream.hpp"
 
 #include <algorithm>
+#include <set>
 #include <vector>
 
 namespace crux {
@@ -79,8 +80,8 @@ QTable transferred_table() {
 // An agent restored from a checkpoint continues as the saved one does: the same choices
 // and the same tables after more steps, with either planner.
 TEST(DynaQ, ARestoredAgentContinuesAsTheSavedOne) {
-  for (const TransferMode mode :
-       {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior, TransferMode::Seeded, TransferMode::Shaping})
+  for (const TransferMode mode : {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior,
+                                  TransferMode::Seeded, TransferMode::Shaping, TransferMode::Ordered})
     for (const Planner planner : {Planner::Uniform, Planner::Prioritized}) {
       SCOPED_TRACE(transfer_mode_name(mode));
       DynaParameters settings;
@@ -142,6 +143,42 @@ TEST(DynaQ, SeededModeStartsANewStatesUntriedPairsAtTheTransferredValues) {
   double q = 30.0;
   for (int i = 0; i < 51; ++i) q += 0.1 * (-1000.0 + 0.9 * std::max(q, 0.0) - q);
   EXPECT_NEAR(agent.q_wall().value(A, 1), q, 1e-9);
+}
+
+// The ordered mode seeds nothing: in A the untried tie goes to action 1, taken at 30 in
+// the transferred table, whatever the seed; once action 1 has failed, the untried action
+// 0 comes first; in B, which the table has never seen, the tie stays random.
+TEST(DynaQ, OrderedModeBreaksQWallTiesByTheTransferredTable) {
+  DynaParameters settings;
+  settings.transfer = TransferMode::Ordered;
+  settings.epsilon = 0.0;
+  DynaQAgent agent(2, 2, settings, 3);
+  agent.set_q_grid(transferred_table());
+  const ActionCandidate both[2] = {{0, 0, true}, {1, 1, true}};
+  agent.observe({A, A}, both);
+  EXPECT_EQ(agent.q_wall().value(A, 1), 0.0) << "no seed";
+  for (std::uint64_t i = 0; i < 20; ++i) {
+    DynaQAgent fresh(2, 2, settings, i);
+    fresh.set_q_grid(transferred_table());
+    fresh.observe({A, A}, both);
+    const ActionChoice c = fresh.choose({A, A}, both);
+    EXPECT_EQ(c.candidate, 1u) << "seed " << i;
+    EXPECT_EQ(c.regime, Regime::WGreedy);
+  }
+  agent.learn({A, A, 1, 1, -1000.0, A, A});
+  agent.observe({A, A}, both);
+  EXPECT_LT(agent.q_grid().value(A, 1), 0.0);
+  EXPECT_EQ(agent.choose({A, A}, both).candidate, 0u) << "the untried 0 beats the failed move";
+  // In B, both moves untried and Q_grid's B row empty: the transferred table does not rank them.
+  agent.observe({B, B}, both);
+  std::set<std::size_t> seen;
+  for (int i = 0; i < 40; ++i) {
+    DynaQAgent fresh(2, 2, settings, static_cast<std::uint64_t>(i));
+    fresh.set_q_grid(transferred_table());
+    fresh.observe({B, B}, both);
+    seen.insert(fresh.choose({B, B}, both).candidate);
+  }
+  EXPECT_EQ(seen.size(), 2u) << "random among the unranked ties";
 }
 
 TEST(DynaQ, ShapingModeAddsGammaPhiNextMinusPhiToQWallRewardsOnly) {

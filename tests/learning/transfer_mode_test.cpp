@@ -7,7 +7,7 @@ namespace {
 
 TEST(TransferMode, EveryModeParsesBackFromItsName) {
   for (const TransferMode mode : {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior,
-                                  TransferMode::Seeded, TransferMode::Shaping}) {
+                                  TransferMode::Seeded, TransferMode::Shaping, TransferMode::Ordered}) {
     EXPECT_EQ(parse_transfer_mode(transfer_mode_name(mode)), mode);
     EXPECT_NE(std::string(transfer_mode_names()).find(transfer_mode_name(mode)), std::string::npos);
   }
