@@ -15,7 +15,8 @@ import sys
 
 def cell_name(parameters):
     short = {"experiment.training_walls": "K", "experiment.transfer": "", "learning.planner": "",
-             "grid.agent_space": "", "training_wall.sigma": "sigma", "training_wall.tile_width": "tile width"}
+             "grid.agent_space": "", "training_wall.sigma": "sigma", "training_wall.tile_width": "tile width",
+             "training_wall.incline": "training incline"}
     parts = []
     for key, value in parameters.items():
         label = short.get(key, key)
