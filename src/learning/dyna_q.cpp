@@ -21,22 +21,20 @@ DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaP
       planning_stream_(seed, "planning"),
       q_wall_(wall_action_count),
       q_grid_(grid_action_count),
-      tie_order_(grid_action_count),
       model_(settings.planner == Planner::Prioritized) {}
 
 void DynaQAgent::set_q_grid(QTable q_grid) {
-  if (settings_.transfer == TransferMode::Seeded) seeds_ = q_grid;
-  if (settings_.transfer == TransferMode::Ordered) tie_order_ = q_grid;
+  if (settings_.transfer == TransferMode::Seeded || settings_.transfer == TransferMode::Ordered) transferred_ = q_grid;
   if (settings_.transfer == TransferMode::Shaping) potential_ = GridPotential(q_grid);
   q_grid_ = std::move(q_grid);
 }
 
 void DynaQAgent::observe(const StateCouple& state, std::span<const ActionCandidate> candidates) {
   const auto [known, first_seen] = wall_actions_.try_emplace(state.wall);
-  if (first_seen && seeds_) {
+  if (first_seen && transferred_ && settings_.transfer == TransferMode::Seeded) {
     for (const ActionCandidate& c : candidates) {
-      if (c.grid != kNoAction && seeds_->taken(state.grid, c.grid)) {
-        q_wall_.set_value(state.wall, c.wall, seeds_->value(state.grid, c.grid));
+      if (c.grid != kNoAction && transferred_->taken(state.grid, c.grid)) {
+        q_wall_.set_value(state.wall, c.wall, transferred_->value(state.grid, c.grid));
       }
     }
   }
@@ -67,7 +65,8 @@ ActionChoice DynaQAgent::choose(const StateCouple& state, std::span<const Action
   } else if (settings_.transfer == TransferMode::Seeded || settings_.transfer == TransferMode::Ordered) {
     rule.wall_requires_taken = false;
     rule.grid_greedy = false;
-    if (settings_.transfer == TransferMode::Ordered) rule.wall_tie_order = &tie_order_;
+    // Without a transferred table there is nothing to order ties by: the seeded rule.
+    if (settings_.transfer == TransferMode::Ordered && transferred_) rule.wall_tie_order = &*transferred_;
   }
   return select_action(q_wall_, q_grid_, state, candidates, settings_.epsilon, selection_streams_, steps_, rule);
 }

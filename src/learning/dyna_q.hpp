@@ -89,11 +89,11 @@ class DynaQAgent {
   RandomStream planning_stream_;
   std::uint64_t steps_ = 0, planning_updates_ = 0;
   QTable q_wall_, q_grid_;
-  QTable tie_order_;          // ordered mode: the transferred Q_grid (empty without one)
   DeterministicModel model_;  // tracks predecessors for prioritized sweeping only
   PriorityQueue queue_;
   absl::flat_hash_map<StateCode, std::vector<ActionCode>> wall_actions_, grid_actions_;
-  std::optional<QTable> seeds_;      // seeded mode: the transferred Q_grid
+  // The transferred Q_grid, unchanged: the seeds of the seeded mode, the tie order of the ordered one.
+  std::optional<QTable> transferred_;
   GridPotential potential_;          // shaping mode: of the transferred Q_grid (0 without one)
   std::vector<char> grid_excluded_;  // informed mode: choose()'s per-candidate buffer
 };
