@@ -100,6 +100,11 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
     if (held[limb] != nullptr) throw std::invalid_argument("two contacts for one limb");
     held[limb] = &contact;
   }
+  // Each held limb's cone edges, once: the precheck, the program and its forces read them.
+  std::array<FrictionConeGenerators, kLimbCount> cones{};
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    if (held[limb] != nullptr) cones[limb] = friction_cone_generators(*held[limb]);
+  }
 
   // Force balance: sum of f_c = -(the weight) = -tau_g's root part. Moment balance about
   // the root: sum of (p_c - root) x f_c = -M (com - root) x gravity.
@@ -122,7 +127,7 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
     std::size_t held_count = 0;
     for (int limb = 0; limb < kLimbCount; ++limb) {
       if (held[limb] == nullptr) continue;
-      held_contacts[held_count++] = {data.points[operational_point(limb)] - root, friction_cone_generators(*held[limb]),
+      held_contacts[held_count++] = {data.points[operational_point(limb)] - root, cones[limb],
                                      held[limb]->normal_force_limit};
     }
     if (proven_unbalanced(std::span<const HeldContact>(held_contacts.data(), held_count), -weight, -weight_moment)) {
@@ -138,8 +143,7 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
 
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const bool is_held = held[limb] != nullptr;
-    const FrictionConeGenerators generators =
-        is_held ? friction_cone_generators(*held[limb]) : FrictionConeGenerators{};
+    const FrictionConeGenerators& generators = cones[limb];
     const Eigen::Vector3d lever = data.points[operational_point(limb)] - root;
     const OperationalJacobian& jacobian = data.jacobians[operational_point(limb)];
     for (int face = 0; face < kFrictionConeFaces; ++face) {
@@ -199,7 +203,7 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
   GeneralisedForce contact_forces = GeneralisedForce::Zero();
   for (int limb = 0; limb < kLimbCount; ++limb) {
     if (held[limb] == nullptr) continue;
-    const FrictionConeGenerators generators = friction_cone_generators(*held[limb]);
+    const FrictionConeGenerators& generators = cones[limb];
     Eigen::Vector3d force = Eigen::Vector3d::Zero();
     double normal = 0.0;
     for (int face = 0; face < kFrictionConeFaces; ++face) {
