@@ -27,24 +27,9 @@ void task_error(const BodyData& data, const ReachTarget& target, const ReachTole
   }
 }
 
-// The task with the wall's rows below the five points' (at most kTaskSize + kMaxWallRows
-// rows, so that nothing is allocated): J (frozen columns zero) and the error.
-constexpr int kMaxWallTaskRows = kTaskSize + kMaxWallRows;
-using WallTaskJacobian =
-    Eigen::Matrix<double, Eigen::Dynamic, kConfigurationDof, Eigen::RowMajor, kMaxWallTaskRows, kConfigurationDof>;
-using WallTaskVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxWallTaskRows, 1>;
-using WallTaskMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxWallTaskRows, kMaxWallTaskRows>;
-
-void stack_wall_task(const BodyData& data, const WallClearance& clearance, const TaskVector& error,
-                     CoordinateSet frozen, WallTaskJacobian& jacobian, WallTaskVector& stacked) {
-  const int rows = kTaskSize + clearance.rows;
-  jacobian.resize(rows, kConfigurationDof);
-  stacked.resize(rows);
-  for (int k = 0; k < kOperationalPointCount; ++k) jacobian.middleRows<3>(3 * k) = data.jacobians[k];
-  for (int r = 0; r < clearance.rows; ++r) jacobian.row(kTaskSize + r) = clearance.gradient[r].transpose();
-  for (int i = 0; i < kConfigurationDof; ++i) {
-    if ((frozen >> i) & 1) jacobian.col(i).setZero();
-  }
+// The task error with the wall's excesses below the five points' errors.
+void stack_wall_error(const WallClearance& clearance, const TaskVector& error, StackedTaskVector& stacked) {
+  stacked.resize(kTaskSize + clearance.rows);
   stacked.head<kTaskSize>() = error;
   for (int r = 0; r < clearance.rows; ++r) stacked[kTaskSize + r] = clearance.excess[r];
 }
@@ -63,10 +48,9 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
   // and the step solves the stacked task of ik/wall_clearance.hpp.
   const bool wall = settings.keep_out_of_wall;
   WallClearance clearance, trial_clearance;
-  WallTaskJacobian wall_jacobian;
-  WallTaskVector wall_error;
-  WallTaskMatrix wall_normal;
-  Eigen::LLT<WallTaskMatrix> wall_factor;
+  StackedTaskVector wall_error;
+  StackedTaskMatrix wall_normal;
+  Eigen::LLT<StackedTaskMatrix> wall_factor;
   const auto place = [&](const Posture& posture, WallClearance& out) {
     if (!wall) return operational_forward_kinematics(model, data, posture);
     forward_kinematics(model, data, posture);
@@ -95,8 +79,8 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
       }
     }
     if (wall) {
-      stack_wall_task(data, clearance, error, frozen, wall_jacobian, wall_error);
-      wall_normal.noalias() = wall_jacobian * wall_jacobian.transpose();
+      stack_wall_error(clearance, error, wall_error);
+      stacked_normal_matrix(data, chains, clearance.gradients(), frozen, wall_normal);
     } else {
       task_normal_matrix(data, chains, frozen, normal);
     }
@@ -105,10 +89,10 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
     TaskVector trial_error;
     while (damping <= settings.max_damping) {
       if (wall) {
-        WallTaskMatrix damped = wall_normal;
+        StackedTaskMatrix damped = wall_normal;
         damped.diagonal().array() += damping;
         wall_factor.compute(damped);
-        step.noalias() = wall_jacobian.transpose() * wall_factor.solve(wall_error);
+        stacked_transpose_product(data, chains, clearance.gradients(), frozen, wall_factor.solve(wall_error), step);
       } else {
         TaskMatrix damped = normal;
         damped.diagonal().array() += damping;

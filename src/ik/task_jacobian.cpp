@@ -6,22 +6,42 @@ namespace crux {
 
 namespace {
 
-// The shape of Eigen 3.4's SSE2 kernels for a 15 x 35 by 35 x 15 product: GEBP takes the
-// rows in blocks of 4, then one packet of 2 rows, then single rows, and the columns in
-// blocks of 4; it unrolls the depth by 8. On the 2-row packet against a 4-column block,
-// it sums even and odd depth steps of the unrolled part in two accumulators, adds them,
-// then adds the rest in order. Every other entry is one sum in depth order. The
-// row-major GEMV behind J^T v sums each 2-wide packet of a row in two lanes, adds the
-// lanes, then adds the last (odd) entry.
+// The shape of Eigen 3.4's SSE2 kernels. GEBP, for an R x 35 by 35 x R product (R <= 47,
+// too small to be split in blocks): rows in blocks of 4, then one packet of 2 rows if two
+// are left, then single rows, and columns in blocks of 4, then single columns; it unrolls
+// the depth by 8. On the 2-row packet against a 4-column block, it sums even and odd depth
+// steps of the unrolled part in two accumulators, adds them, then adds the rest in order.
+// Every other entry is one sum in depth order. The row-major GEMV behind the task's J^T v
+// sums each 2-wide packet of a row in two lanes, adds the lanes, then adds the last (odd)
+// entry; the column-major GEMV behind the stacked J^T v sums each entry in row order.
 constexpr int kRowBlock = 4, kColumnBlock = 4, kPacket = 2, kDepthUnroll = 8;
-constexpr int kPacketRowsBegin = kTaskSize / kRowBlock * kRowBlock;
-constexpr int kPacketRowsEnd = kPacketRowsBegin + kPacket;
-constexpr int kColumnBlocksEnd = kTaskSize / kColumnBlock * kColumnBlock;
 constexpr int kPeeledDepth = kConfigurationDof / kDepthUnroll * kDepthUnroll;
 constexpr int kLaneRowsEnd = kTaskSize / kPacket * kPacket;
 static_assert(kTaskSize - kLaneRowsEnd == 1, "J^T v ends each sum with a single last row");
+constexpr CoordinateSet kAllCoordinates = (CoordinateSet{1} << kConfigurationDof) - 1;
 
-// Block (k, l) of J J^T summed over `shared` in ascending coordinate order.
+// The rows of J: the points', then the extra rows, each with the coordinates it may move.
+class StackedRows {
+ public:
+  StackedRows(const BodyData& data, const ChainCoordinates& chains, std::span<const Posture> extra_rows,
+              CoordinateSet frozen)
+      : data_(data), chains_(chains), extra_rows_(extra_rows), frozen_(frozen) {}
+
+  int count() const { return kTaskSize + static_cast<int>(extra_rows_.size()); }
+  double at(int row, int i) const {
+    return row < kTaskSize ? data_.jacobians[row / 3](row % 3, i) : extra_rows_[row - kTaskSize][i];
+  }
+  CoordinateSet support(int row) const { return (row < kTaskSize ? chains_[row / 3] : kAllCoordinates) & ~frozen_; }
+  const BodyData& data() const { return data_; }
+
+ private:
+  const BodyData& data_;
+  const ChainCoordinates& chains_;
+  std::span<const Posture> extra_rows_;
+  CoordinateSet frozen_;
+};
+
+// Block (k, l) of J J^T for points k and l, summed over `shared` in ascending coordinate order.
 Eigen::Matrix3d sequential_block(const BodyData& data, int k, int l, CoordinateSet shared) {
   const OperationalJacobian& jk = data.jacobians[k];
   const OperationalJacobian& jl = data.jacobians[l];
@@ -35,22 +55,58 @@ Eigen::Matrix3d sequential_block(const BodyData& data, int k, int l, CoordinateS
   return block;
 }
 
-// Entry (row a of point k, row b of point l) of J J^T with GEBP's two accumulators.
-double two_accumulator_entry(const BodyData& data, int k, int a, int l, int b, CoordinateSet shared) {
+// Entry (row, column) of J J^T summed in ascending coordinate order.
+double sequential_entry(const StackedRows& rows, int row, int column) {
+  double sum = 0.0;
+  for (CoordinateSet shared = rows.support(row) & rows.support(column); shared != 0; shared &= shared - 1) {
+    const int i = std::countr_zero(shared);
+    sum += rows.at(row, i) * rows.at(column, i);
+  }
+  return sum;
+}
+
+// Entry (row, column) of J J^T with GEBP's two accumulators.
+double two_accumulator_entry(const StackedRows& rows, int row, int column) {
   constexpr CoordinateSet kPeeled = (CoordinateSet{1} << kPeeledDepth) - 1;
-  const OperationalJacobian& jk = data.jacobians[k];
-  const OperationalJacobian& jl = data.jacobians[l];
+  const CoordinateSet shared = rows.support(row) & rows.support(column);
   double even = 0.0, odd = 0.0;
   for (CoordinateSet peeled = shared & kPeeled; peeled != 0; peeled &= peeled - 1) {
     const int i = std::countr_zero(peeled);
-    (i % 2 == 0 ? even : odd) += jk(a, i) * jl(b, i);
+    (i % 2 == 0 ? even : odd) += rows.at(row, i) * rows.at(column, i);
   }
   double sum = even + odd;
   for (CoordinateSet rest = shared & ~kPeeled; rest != 0; rest &= rest - 1) {
     const int i = std::countr_zero(rest);
-    sum += jk(a, i) * jl(b, i);
+    sum += rows.at(row, i) * rows.at(column, i);
   }
   return sum;
+}
+
+// J J^T in GEBP's order into `normal`, already rows.count() square.
+template <typename Matrix>
+void fill_normal_matrix(const StackedRows& rows, const ChainCoordinates& chains, CoordinateSet frozen, Matrix& normal) {
+  for (int k = 0; k < kOperationalPointCount; ++k) {
+    for (int l = 0; l <= k; ++l) {
+      // A product commutes exactly, so a block summed in order equals its mirror's transpose.
+      const Eigen::Matrix3d block = sequential_block(rows.data(), k, l, chains[k] & chains[l] & ~frozen);
+      normal.template block<3, 3>(3 * k, 3 * l) = block;
+      normal.template block<3, 3>(3 * l, 3 * k) = block.transpose();
+    }
+  }
+  const int count = rows.count();
+  for (int row = kTaskSize; row < count; ++row) {
+    for (int column = 0; column <= row; ++column) {
+      normal(row, column) = normal(column, row) = sequential_entry(rows, row, column);
+    }
+  }
+  const int packet_rows_begin = count / kRowBlock * kRowBlock;
+  const int packet_rows_end = count - packet_rows_begin >= kPacket ? packet_rows_begin + kPacket : packet_rows_begin;
+  const int column_blocks_end = count / kColumnBlock * kColumnBlock;
+  for (int row = packet_rows_begin; row < packet_rows_end; ++row) {
+    for (int column = 0; column < column_blocks_end; ++column) {
+      normal(row, column) = two_accumulator_entry(rows, row, column);
+    }
+  }
 }
 
 }  // namespace
@@ -65,20 +121,14 @@ ChainCoordinates chain_coordinates(const BodyModel& model) {
 
 void task_normal_matrix(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
                         TaskMatrix& normal) {
-  for (int k = 0; k < kOperationalPointCount; ++k) {
-    for (int l = 0; l <= k; ++l) {
-      // A product commutes exactly, so a block summed in order equals its mirror's transpose.
-      const Eigen::Matrix3d block = sequential_block(data, k, l, chains[k] & chains[l] & ~frozen);
-      normal.block<3, 3>(3 * k, 3 * l) = block;
-      normal.block<3, 3>(3 * l, 3 * k) = block.transpose();
-    }
-  }
-  for (int row = kPacketRowsBegin; row < kPacketRowsEnd; ++row) {
-    for (int column = 0; column < kColumnBlocksEnd; ++column) {
-      const int k = row / 3, l = column / 3;
-      normal(row, column) = two_accumulator_entry(data, k, row % 3, l, column % 3, chains[k] & chains[l] & ~frozen);
-    }
-  }
+  fill_normal_matrix(StackedRows(data, chains, {}, frozen), chains, frozen, normal);
+}
+
+void stacked_normal_matrix(const BodyData& data, const ChainCoordinates& chains, std::span<const Posture> extra_rows,
+                           CoordinateSet frozen, StackedTaskMatrix& normal) {
+  const StackedRows rows(data, chains, extra_rows, frozen);
+  normal.resize(rows.count(), rows.count());
+  fill_normal_matrix(rows, chains, frozen, normal);
 }
 
 void task_transpose_product(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
@@ -100,6 +150,19 @@ void task_transpose_product(const BodyData& data, const ChainCoordinates& chains
   }
   for (int i = 0; i < kConfigurationDof; ++i) {
     out[i] = (even[i] + odd[i]) + last[i];
+  }
+}
+
+void stacked_transpose_product(const BodyData& data, const ChainCoordinates& chains,
+                               std::span<const Posture> extra_rows, CoordinateSet frozen, const StackedTaskVector& v,
+                               Posture& out) {
+  const StackedRows rows(data, chains, extra_rows, frozen);
+  out.setZero();
+  for (int row = 0; row < rows.count(); ++row) {
+    for (CoordinateSet moving = rows.support(row); moving != 0; moving &= moving - 1) {
+      const int i = std::countr_zero(moving);
+      out[i] += rows.at(row, i) * v[row];
+    }
   }
 }
 

@@ -2,18 +2,22 @@
 // The stacked Jacobian J of the five operational points (the root, then the grasp points)
 // and the two products the fast solver needs, J J^T and J^T v, computed over J's block
 // sparsity: point k moves only with the coordinates of its chain (model.chains[k]), so a
-// block of J J^T sums over the few coordinates two chains share, not all 35.
+// block of J J^T sums over the few coordinates two chains share, not all 35. When the
+// solver keeps the body out of the wall, J has more rows below the points' (one per
+// primitive past the margin, ik/wall_clearance.hpp), and the stacked products take them.
 //
-// Every entry is summed in the order Eigen 3.4's dense kernels use for these fixed sizes
-// (GEBP for J J^T, the row-major GEMV for J^T v); terms that are exactly zero are skipped,
-// which leaves a sum that starts at +0 unchanged when every factor is finite. So the
-// solver's postures, and every result built on them, are bit for bit those of the dense
-// products. The test
-// TaskJacobian.ProductsEqualEigensBitForBit fails if a compiler or Eigen version sums in
-// another order.
+// Every entry is summed in the order Eigen 3.4's dense kernels use for these sizes (GEBP
+// for J J^T; for J^T v the row-major GEMV of the fixed-size task, the column-major one of
+// the stacked task, whose J the solver kept row-major); terms that are exactly zero are
+// skipped, which leaves a sum that starts at +0 unchanged when every factor is finite. So
+// the solver's postures, and every result built on them, are bit for bit those of the
+// dense products. The tests TaskJacobian.ProductsEqualEigensBitForBit and
+// TaskJacobian.StackedProductsEqualEigensBitForBit (every row count) fail if a compiler or
+// Eigen version sums in another order.
 
 #include <array>
 #include <cstdint>
+#include <span>
 
 #include <Eigen/Core>
 
@@ -24,6 +28,14 @@ namespace crux {
 inline constexpr int kTaskSize = 3 * kOperationalPointCount;
 using TaskVector = Eigen::Matrix<double, kTaskSize, 1>;
 using TaskMatrix = Eigen::Matrix<double, kTaskSize, kTaskSize>;
+
+// At most this many rows below the points' in a stacked task (the human has 12 primitives
+// that the wall counts).
+inline constexpr int kMaxExtraTaskRows = 32;
+inline constexpr int kMaxStackedTaskRows = kTaskSize + kMaxExtraTaskRows;
+using StackedTaskVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxStackedTaskRows, 1>;
+using StackedTaskMatrix =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxStackedTaskRows, kMaxStackedTaskRows>;
 
 // A set of coordinates, bit i for coordinate i.
 using CoordinateSet = std::uint64_t;
@@ -39,5 +51,15 @@ void task_normal_matrix(const BodyData& data, const ChainCoordinates& chains, Co
 // J^T v, with the `frozen` coordinates' columns taken as 0.
 void task_transpose_product(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
                             const TaskVector& v, Posture& out);
+
+// J J^T of the points' rows stacked over `extra_rows` (each a row of J over all
+// coordinates), with the `frozen` coordinates' columns taken as 0; 15 + extra rows square.
+void stacked_normal_matrix(const BodyData& data, const ChainCoordinates& chains, std::span<const Posture> extra_rows,
+                           CoordinateSet frozen, StackedTaskMatrix& normal);
+
+// J^T v of the same stacked J; v has 15 + extra rows entries.
+void stacked_transpose_product(const BodyData& data, const ChainCoordinates& chains,
+                               std::span<const Posture> extra_rows, CoordinateSet frozen, const StackedTaskVector& v,
+                               Posture& out);
 
 }  // namespace crux

@@ -10,12 +10,13 @@
 
 #include "body/body_data.hpp"
 #include "body/body_model.hpp"
+#include "ik/task_jacobian.hpp"
 
 namespace crux {
 
 // More primitives past the margin than this at once keep only the deepest ones (the
-// human has 12 counted primitives).
-inline constexpr int kMaxWallRows = 32;
+// human has 12 counted primitives): the rows a stacked task holds below the points'.
+inline constexpr int kMaxWallRows = kMaxExtraTaskRows;
 
 struct WallClearance {
   int rows = 0;
@@ -23,6 +24,7 @@ struct WallClearance {
   std::array<Posture, kMaxWallRows> gradient;  // d x / d G of each one's deepest point
 
   bool clear() const { return rows == 0; }
+  std::span<const Posture> gradients() const { return {gradient.data(), static_cast<std::size_t>(rows)}; }
   double cost() const;  // 0.5 x the sum of the squared excesses
 };
 

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "body/kinematics.hpp"
 #include "body/urdf_loader.hpp"
@@ -70,6 +72,69 @@ void expect_eigens_bits(const BodyModel& model, std::uint64_t seed, int postures
   }
 }
 
+// The stacked task as the solver stacked it before the stacked products: J row-major, of
+// 15 + w rows at most 15 + kMaxExtraTaskRows, the frozen columns zeroed.
+using StackedJacobian =
+    Eigen::Matrix<double, Eigen::Dynamic, kConfigurationDof, Eigen::RowMajor, kMaxStackedTaskRows, kConfigurationDof>;
+
+// Both stacked products against Eigen's dense ones for every count of extra rows (so every
+// shape of GEBP's blocks), at `postures` random postures each: random extra rows that, like
+// a primitive's gradient, move only a random chain of coordinates, and random frozen joints.
+void expect_eigens_stacked_bits(const BodyModel& model, std::uint64_t seed, int postures, const std::string& body) {
+  Random random(seed);
+  BodyData data(model);
+  const ChainCoordinates chains = chain_coordinates(model);
+  std::vector<Posture> extra_rows(kMaxExtraTaskRows);
+  for (int extra = 0; extra <= kMaxExtraTaskRows; ++extra) {
+    for (int n = 0; n < postures; ++n) {
+      operational_forward_kinematics(model, data, testing::random_posture(model, random));
+      operational_jacobians(model, data);
+      CoordinateSet frozen = 0;
+      for (int i = kRootDof; i < kConfigurationDof; ++i) {
+        if (random.uniform() < 0.2) frozen |= CoordinateSet{1} << i;
+      }
+      const int rows = kTaskSize + extra;
+      StackedJacobian jacobian(rows, kConfigurationDof);
+      for (int k = 0; k < kOperationalPointCount; ++k) jacobian.middleRows<3>(3 * k) = data.jacobians[k];
+      for (int r = 0; r < extra; ++r) {
+        const double moving = random.uniform();
+        for (int i = 0; i < kConfigurationDof; ++i) {
+          extra_rows[r][i] = random.uniform() < moving ? random.uniform(-1.0, 1.0) : 0.0;
+        }
+        jacobian.row(kTaskSize + r) = extra_rows[r].transpose();
+      }
+      for (int i = 0; i < kConfigurationDof; ++i) {
+        if ((frozen >> i) & 1) jacobian.col(i).setZero();
+      }
+      StackedTaskVector v(rows);
+      for (int r = 0; r < rows; ++r) v[r] = random.uniform(-1.0, 1.0);
+      const std::span<const Posture> extra_span(extra_rows.data(), static_cast<std::size_t>(extra));
+
+      StackedTaskMatrix expected_normal, normal;
+      expected_normal.noalias() = jacobian * jacobian.transpose();
+      stacked_normal_matrix(data, chains, extra_span, frozen, normal);
+      Posture expected_product, product;
+      expected_product.noalias() = jacobian.transpose() * v;
+      stacked_transpose_product(data, chains, extra_span, frozen, v, product);
+
+      const std::string where = body + ", seed " + std::to_string(seed) + ", " + std::to_string(extra) +
+                                " extra rows, posture " + std::to_string(n);
+      ASSERT_EQ(normal.rows(), rows) << where;
+      ASSERT_EQ(normal.cols(), rows) << where;
+      for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < rows; ++c) {
+          expect_same_bits(expected_normal(r, c), normal(r, c),
+                           where + ", J J^T (" + std::to_string(r) + ", " + std::to_string(c) + ")");
+        }
+      }
+      for (int i = 0; i < kConfigurationDof; ++i) {
+        expect_same_bits(expected_product[i], product[i], where + ", J^T v [" + std::to_string(i) + "]");
+      }
+      if (::testing::Test::HasFailure()) return;  // one posture's report is enough
+    }
+  }
+}
+
 TEST(TaskJacobian, ChainCoordinatesAreTheChains) {
   const BodyModel& model = testing::human_model();
   const ChainCoordinates chains = chain_coordinates(model);
@@ -86,6 +151,12 @@ TEST(TaskJacobian, ProductsEqualEigensBitForBit) {
     const auto path = testing::write_temporary("synthetic.urdf", testing::synthetic_tree_urdf(tree));
     expect_eigens_bits(load_body_model(path.string()), kSeed + tree, 200, "synthetic tree " + std::to_string(tree));
   }
+}
+
+TEST(TaskJacobian, StackedProductsEqualEigensBitForBit) {
+  expect_eigens_stacked_bits(testing::human_model(), kSeed, 40, "human");
+  const auto path = testing::write_temporary("synthetic.urdf", testing::synthetic_tree_urdf(2));
+  expect_eigens_stacked_bits(load_body_model(path.string()), kSeed + 2, 10, "synthetic tree 2");
 }
 
 }  // namespace
