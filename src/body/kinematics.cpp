@@ -110,6 +110,19 @@ void operational_forward_kinematics(const BodyModel& model, BodyData& data, cons
   place_operational_points(model, data);
 }
 
+void remaining_forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g) {
+  // Both lists are increasing: walk them together and place the joints the first lacks.
+  auto operational = model.operational_joints.begin();
+  const int n = static_cast<int>(model.joints.size());
+  for (int i = 0; i < n; ++i) {
+    if (operational != model.operational_joints.end() && *operational == i) {
+      ++operational;
+    } else {
+      place_joint(model, data, g, i);
+    }
+  }
+}
+
 void operational_jacobians(const BodyModel& model, BodyData& data) {
   for (int k = 0; k < kOperationalPointCount; ++k) {
     const Eigen::Vector3d& point = data.points[k];

@@ -19,6 +19,10 @@ void forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g
 // as they were. What IK iterates on.
 void operational_forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g);
 
+// After operational_forward_kinematics(g), places the other joints for the same g: the
+// two together place every joint as forward_kinematics(g) does, to the bit.
+void remaining_forward_kinematics(const BodyModel& model, BodyData& data, const Posture& g);
+
 // The five 3 x 35 Jacobians d e_i / d G at the posture of the last forward_kinematics.
 void operational_jacobians(const BodyModel& model, BodyData& data);
 

@@ -102,9 +102,16 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
       }
       trial = g - step;
       trial = trial.cwiseMax(model.lower_limits).cwiseMin(model.upper_limits);
-      place(trial, trial_clearance);
+      operational_forward_kinematics(model, data, trial);
       task_error(data, target, tolerances, settings.aim_fraction, trial_error);
-      trial_cost = 0.5 * trial_error.squaredNorm() + (wall ? trial_clearance.cost() : 0.0);
+      trial_cost = 0.5 * trial_error.squaredNorm();
+      // The wall's term is never negative: a trial whose points alone cost no less than g
+      // is refused without placing the rest of the body.
+      if (wall && trial_cost < cost) {
+        remaining_forward_kinematics(model, data, trial);
+        wall_clearance(model, data, trial_clearance);
+        trial_cost += trial_clearance.cost();
+      }
       if (trial_cost < cost) {
         improved = true;
         damping = std::max(damping / 3.0, settings.min_damping);

@@ -18,20 +18,30 @@ constexpr int kRowBlock = 4, kColumnBlock = 4, kPacket = 2, kDepthUnroll = 8;
 constexpr int kPeeledDepth = kConfigurationDof / kDepthUnroll * kDepthUnroll;
 constexpr int kLaneRowsEnd = kTaskSize / kPacket * kPacket;
 static_assert(kTaskSize - kLaneRowsEnd == 1, "J^T v ends each sum with a single last row");
-constexpr CoordinateSet kAllCoordinates = (CoordinateSet{1} << kConfigurationDof) - 1;
 
-// The rows of J: the points', then the extra rows, each with the coordinates it may move.
+// The rows of J: the points', then the extra rows, each with the coordinates it moves
+// (for an extra row, those of its nonzero entries).
 class StackedRows {
  public:
   StackedRows(const BodyData& data, const ChainCoordinates& chains, std::span<const Posture> extra_rows,
               CoordinateSet frozen)
-      : data_(data), chains_(chains), extra_rows_(extra_rows), frozen_(frozen) {}
+      : data_(data), chains_(chains), extra_rows_(extra_rows), frozen_(frozen) {
+    for (std::size_t r = 0; r < extra_rows.size(); ++r) {
+      CoordinateSet moving = 0;
+      for (int i = 0; i < kConfigurationDof; ++i) {
+        if (extra_rows[r][i] != 0.0) moving |= CoordinateSet{1} << i;
+      }
+      extra_support_[r] = moving & ~frozen;
+    }
+  }
 
   int count() const { return kTaskSize + static_cast<int>(extra_rows_.size()); }
   double at(int row, int i) const {
     return row < kTaskSize ? data_.jacobians[row / 3](row % 3, i) : extra_rows_[row - kTaskSize][i];
   }
-  CoordinateSet support(int row) const { return (row < kTaskSize ? chains_[row / 3] : kAllCoordinates) & ~frozen_; }
+  CoordinateSet support(int row) const {
+    return row < kTaskSize ? chains_[row / 3] & ~frozen_ : extra_support_[row - kTaskSize];
+  }
   const BodyData& data() const { return data_; }
 
  private:
@@ -39,6 +49,7 @@ class StackedRows {
   const ChainCoordinates& chains_;
   std::span<const Posture> extra_rows_;
   CoordinateSet frozen_;
+  std::array<CoordinateSet, kMaxExtraTaskRows> extra_support_;
 };
 
 // Block (k, l) of J J^T for points k and l, summed over `shared` in ascending coordinate order.

@@ -136,6 +136,21 @@ bool same_bits(const BodyData& a, const BodyData& b, const std::vector<int>& joi
   return true;
 }
 
+TEST(Kinematics, OperationalThenRemainingForwardKinematicsIsTheWholeToTheBit) {
+  const BodyModel& model = human_model();
+  std::vector<int> every_joint(model.joints.size());
+  for (std::size_t i = 0; i < every_joint.size(); ++i) every_joint[i] = static_cast<int>(i);
+  BodyData whole(model), in_two(model);
+  Random random(kSeed + 7);
+  for (int sample = 0; sample < 100; ++sample) {
+    const Posture g = random_posture(model, random);
+    forward_kinematics(model, whole, g);
+    operational_forward_kinematics(model, in_two, g);
+    remaining_forward_kinematics(model, in_two, g);
+    EXPECT_TRUE(same_bits(whole, in_two, every_joint)) << "seed " << kSeed + 7 << ", sample " << sample;
+  }
+}
+
 // A workspace that has placed other postures reuses the sines and cosines of the joints
 // whose coordinates kept their bits; it must place each posture exactly as a fresh one.
 void expect_reuse_changes_no_bit(const BodyModel& model, std::uint64_t seed, const std::string& body) {
