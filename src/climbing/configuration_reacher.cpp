@@ -1,6 +1,7 @@
 #include "climbing/configuration_reacher.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <vector>
 
 #include "body/kinematics.hpp"
@@ -10,8 +11,9 @@
 namespace crux {
 
 ConfigurationReacher::ConfigurationReacher(const BodyModel& model, const Wall& wall,
-                                           const ReachabilityParameters& parameters, const PhysicsParameters& physics)
-    : model_(model), wall_(wall), parameters_(parameters), data_(model) {
+                                           const ReachabilityParameters& parameters, const PhysicsParameters& physics,
+                                           StanceQuestion question)
+    : model_(model), wall_(wall), parameters_(parameters), data_(model), question_(question) {
   if (physics.model == PhysicsModel::Static) {
     parameters_.ik.wall = WallRule::Avoid;
     stance_.emplace(model, wall, physics);
@@ -26,6 +28,7 @@ std::uint64_t ConfigurationReacher::cache_key(const HoldConfiguration& complete,
 
 double ConfigurationReacher::effort(const HoldConfiguration& complete, Limb next_to_move) const {
   if (!stance_) return 0.0;
+  if (question_ != StanceQuestion::Effort) throw std::logic_error("this reacher asks stances whether they hold only");
   return efforts_.at(cache_key(complete, next_to_move));
 }
 
@@ -43,9 +46,15 @@ const Posture* ConfigurationReacher::reach(const Posture& from, const HoldConfig
                               : solve_ik(model_, data_, from, target, parameters_.ik);
   ++solves_;
   if (result.reached) {
-    const double effort = stance_ ? stance_->effort(result.posture, complete, next_to_move) : 0.0;
-    if (effort <= 1.0) {
-      if (stance_) efforts_.emplace(code, effort);
+    bool holds = true;
+    if (stance_ && question_ == StanceQuestion::Effort) {
+      const double effort = stance_->effort(result.posture, complete, next_to_move);
+      holds = effort <= 1.0;
+      if (holds) efforts_.emplace(code, effort);
+    } else if (stance_) {
+      holds = stance_->holds_still(result.posture, complete, next_to_move);
+    }
+    if (holds) {
       cache_.store_reached(code, result.posture);
       return cache_.reached(code);
     }
@@ -73,6 +82,7 @@ const BodyData& ConfigurationReacher::place(const Posture& posture) {
 }
 
 void ConfigurationReacher::save_state(CheckpointWriter& out) const {
+  if (question_ != StanceQuestion::Effort) throw std::logic_error("a reacher without efforts is not checkpointed");
   cache_.save_state(out);
   out.value<std::uint64_t>(solves_);
   if (!stance_) return;  // the kinematic model's checkpoints stay as they were

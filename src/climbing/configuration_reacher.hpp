@@ -14,12 +14,17 @@
 
 namespace crux {
 
+// What the static model asks of a posture the IK reached: its effort, which learning keeps
+// (rewards, files and checkpoints read it), or only whether it holds still, all the exact
+// planner needs, from a cheaper program (StanceCheck::holds_still).
+enum class StanceQuestion { Effort, HoldsStill };
+
 class ConfigurationReacher {
  public:
   // Under the static model (physics.model) the IK keeps the body out of the wall
   // whatever ik.wall says, and a reached posture must hold still (climbing/stance_check).
   ConfigurationReacher(const BodyModel& model, const Wall& wall, const ReachabilityParameters& parameters,
-                       const PhysicsParameters& physics = {});
+                       const PhysicsParameters& physics = {}, StanceQuestion question = StanceQuestion::Effort);
 
   // The posture grasping `complete`, solved by IK from `from` unless cached; null when
   // not reachable. `next_to_move` is the limb that lets go next (the static model checks
@@ -30,7 +35,7 @@ class ConfigurationReacher {
 
   // Under the static model, the effort of the stance reach() reached for `complete` and
   // `next_to_move` (StanceCheck::effort); 0 under the kinematic model, which has none.
-  // reach() must have returned a posture for them.
+  // reach() must have returned a posture for them, and the question must be Effort.
   double effort(const HoldConfiguration& complete, Limb next_to_move) const;
 
   // Whether reach() already found `complete` unreachable (with the same next limb under
@@ -49,7 +54,7 @@ class ConfigurationReacher {
   const PostureCache& cache() const { return cache_; }
   std::size_t solves() const { return solves_; }
 
-  // The cache and the solve count, for a run's checkpoint.
+  // The cache and the solve count, for a run's checkpoint (the question must be Effort).
   void save_state(CheckpointWriter& out) const;
   void load_state(CheckpointReader& in);
 
@@ -61,6 +66,7 @@ class ConfigurationReacher {
   ReachabilityParameters parameters_;
   BodyData data_;
   std::optional<StanceCheck> stance_;  // the static model's
+  StanceQuestion question_;
   PostureCache cache_;
   // The static model's efforts of the reached stances, by cache key: kept with the
   // verdicts (and in checkpoints), so that a resumed run reads the same numbers.

@@ -44,25 +44,28 @@ StanceCheck::StanceCheck(const BodyModel& model, const Wall& wall, const Physics
       strength_(published_strength_profile(model, model.total_mass, model.stature)),
       equilibrium_(model, strength_) {}
 
-const StaticEquilibriumResult& StanceCheck::solve(const Posture& posture, const HoldConfiguration& configuration) {
+std::span<const PointContact> StanceCheck::contacts(const HoldConfiguration& configuration) {
   const double angle = physics_.support_angle_deg * std::numbers::pi / 180.0;
   // A hand hooks the incut lip of a jug, which pushes it up and into the wall; a foot
   // stands on the hold's top, which pushes it up.
   const Eigen::Vector3d lip(std::sin(angle), 0.0, std::cos(angle));
   const Eigen::Vector3d top = Eigen::Vector3d::UnitZ();
-  std::array<PointContact, kLimbCount> contacts;
   int count = 0;
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const int hold = configuration.holds[limb];
     if (hold == kFree) continue;
-    PointContact& contact = contacts[count++];
+    PointContact& contact = contacts_[count++];
     contact.limb = static_cast<Limb>(limb);
     const bool hand = limb == static_cast<int>(Limb::RightHand) || limb == static_cast<int>(Limb::LeftHand);
     contact.support_direction = wall_.holds[hold].support.value_or(hand ? lip : top);
     contact.friction = physics_.friction;
     contact.normal_force_limit = hand ? physics_.grip : std::numeric_limits<double>::infinity();
   }
-  return equilibrium_.solve(data_, posture, std::span<const PointContact>(contacts.data(), count), gravity_);
+  return {contacts_.data(), static_cast<std::size_t>(count)};
+}
+
+const StaticEquilibriumResult& StanceCheck::solve(const Posture& posture, const HoldConfiguration& configuration) {
+  return equilibrium_.solve(data_, posture, contacts(configuration), gravity_);
 }
 
 double StanceCheck::effort(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move) {
@@ -71,6 +74,11 @@ double StanceCheck::effort(const Posture& posture, const HoldConfiguration& comp
   // same effort, and the four-hold effort is never larger (docs/PHYSICS.md, "One program
   // per stance").
   return solve(posture, complete.with(next_to_move, kFree)).effort;
+}
+
+bool StanceCheck::holds_still(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move) {
+  // The three-hold program decides, as for effort.
+  return equilibrium_.holds_within_strength(data_, posture, contacts(complete.with(next_to_move, kFree)), gravity_);
 }
 
 StanceLoads StanceCheck::loads(const Posture& posture, const HoldConfiguration& configuration) {

@@ -6,7 +6,9 @@
 // (physics/contact_model) in the wall's gravity (wall/incline); the forces and the joint
 // torques come from one linear program (physics/static_equilibrium) per check.
 
+#include <array>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -57,9 +59,9 @@ class StanceCheck {
   // on the three left once `next_to_move` lets go (+infinity when either cannot
   // balance), which is the three-hold effort. The posture holds still when it is at most 1.
   double effort(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move);
-  bool holds_still(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move) {
-    return effort(posture, complete, next_to_move) <= 1.0;
-  }
+  // Whether that effort is at most 1, from the cheaper program that does not minimise it
+  // (StaticEquilibrium::holds_within_strength, whose note on warm starts applies).
+  bool holds_still(const Posture& posture, const HoldConfiguration& complete, Limb next_to_move);
 
   // The program's warm-start basis, for a run's checkpoint (StaticEquilibrium::save_basis).
   void save_state(CheckpointWriter& out) const { equilibrium_.save_basis(out); }
@@ -79,6 +81,10 @@ class StanceCheck {
   BodyData data_;
   StrengthProfile strength_;
   StaticEquilibrium equilibrium_;
+  std::array<PointContact, kLimbCount> contacts_;
+
+  // The contacts of the holds of `configuration`, in contacts_.
+  std::span<const PointContact> contacts(const HoldConfiguration& configuration);
 };
 
 }  // namespace crux

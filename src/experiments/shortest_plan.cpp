@@ -23,7 +23,8 @@ struct Node {
 
 Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
                    const PlanParameters& settings) {
-  ConfigurationReacher reacher(model, wall, parameters.reachability, parameters.physics);
+  // The planner needs verdicts only: under the static model, the cheaper program.
+  ConfigurationReacher reacher(model, wall, parameters.reachability, parameters.physics, StanceQuestion::HoldsStill);
   const Posture* start = &reacher.require_start(wall.name);
   std::vector<Node> nodes{{start_configuration(wall).with(Limb::RightHand, kFree), start, -1, -1}};
   std::unordered_map<std::uint64_t, bool> seen{{encode(nodes[0].configuration, wall.hold_count()), true}};

@@ -87,36 +87,34 @@ StaticEquilibrium::StaticEquilibrium(const BodyModel& model, const StrengthProfi
 
 StaticEquilibrium::~StaticEquilibrium() = default;
 
-const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Posture& g,
-                                                        std::span<const PointContact> contacts,
-                                                        const Eigen::Vector3d& gravity) {
-  const GeneralisedForce tau_g = gravity_forces(model_, data, g, gravity);
+bool StaticEquilibrium::load_stance(BodyData& data, const Posture& g, std::span<const PointContact> contacts,
+                                    const Eigen::Vector3d& gravity) {
+  tau_g_ = gravity_forces(model_, data, g, gravity);
   const Eigen::Vector3d& com = centre_of_mass(model_, data);
   const Eigen::Vector3d& root = data.points[0];
 
-  std::array<const PointContact*, kLimbCount> held{};
+  held_.fill(nullptr);
   for (const PointContact& contact : contacts) {
     const int limb = static_cast<int>(contact.limb);
-    if (held[limb] != nullptr) throw std::invalid_argument("two contacts for one limb");
-    held[limb] = &contact;
+    if (held_[limb] != nullptr) throw std::invalid_argument("two contacts for one limb");
+    held_[limb] = &contact;
   }
   // Each held limb's cone edges, once: the precheck, the program and its forces read them.
-  std::array<FrictionConeGenerators, kLimbCount> cones{};
   for (int limb = 0; limb < kLimbCount; ++limb) {
-    if (held[limb] != nullptr) cones[limb] = friction_cone_generators(*held[limb]);
+    if (held_[limb] != nullptr) cones_[limb] = friction_cone_generators(*held_[limb]);
   }
 
   // Force balance: sum of f_c = -(the weight) = -tau_g's root part. Moment balance about
   // the root: sum of (p_c - root) x f_c = -M (com - root) x gravity.
-  const Eigen::Vector3d weight = tau_g.head<kRootDof>();
+  const Eigen::Vector3d weight = tau_g_.head<kRootDof>();
   const Eigen::Vector3d weight_moment = model_.total_mass * (com - root).cross(gravity);
   for (int row = 0; row < 3; ++row) {
     row_lower_[row] = row_upper_[row] = -weight[row];
     row_lower_[3 + row] = row_upper_[3 + row] = -weight_moment[row];
   }
   for (int limb = 0; limb < kLimbCount; ++limb) {
-    row_upper_[kFirstNormalRow + limb] = held[limb] != nullptr && std::isfinite(held[limb]->normal_force_limit)
-                                             ? held[limb]->normal_force_limit
+    row_upper_[kFirstNormalRow + limb] = held_[limb] != nullptr && std::isfinite(held_[limb]->normal_force_limit)
+                                             ? held_[limb]->normal_force_limit
                                              : kUnboundedRow;
   }
   // Most stances that cannot balance are refused here, without the program (40 % of all
@@ -126,24 +124,24 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
     std::array<HeldContact, kLimbCount> held_contacts;
     std::size_t held_count = 0;
     for (int limb = 0; limb < kLimbCount; ++limb) {
-      if (held[limb] == nullptr) continue;
-      held_contacts[held_count++] = {data.points[operational_point(limb)] - root, cones[limb],
-                                     held[limb]->normal_force_limit};
+      if (held_[limb] == nullptr) continue;
+      held_contacts[held_count++] = {data.points[operational_point(limb)] - root, cones_[limb],
+                                     held_[limb]->normal_force_limit};
     }
     if (proven_unbalanced(std::span<const HeldContact>(held_contacts.data(), held_count), -weight, -weight_moment)) {
-      return unbalanced_result();
+      return false;
     }
   }
   operational_jacobians(model_, data);
   // tau_j = -(tau_g_j + r_j) with r_j = sum of J_c(:, j) . f_c; sign * tau_j <= t * limit
   // reads sign * r_j + limit * t >= -sign * tau_g_j.
   for (int r = 0; r < static_cast<int>(joint_rows_.size()); ++r) {
-    row_lower_[kFirstJointRow + r] = -joint_rows_[r].sign * tau_g[joint_rows_[r].joint];
+    row_lower_[kFirstJointRow + r] = -joint_rows_[r].sign * tau_g_[joint_rows_[r].joint];
   }
 
   for (int limb = 0; limb < kLimbCount; ++limb) {
-    const bool is_held = held[limb] != nullptr;
-    const FrictionConeGenerators& generators = cones[limb];
+    const bool is_held = held_[limb] != nullptr;
+    const FrictionConeGenerators& generators = cones_[limb];
     const Eigen::Vector3d lever = data.points[operational_point(limb)] - root;
     const OperationalJacobian& jacobian = data.jacobians[operational_point(limb)];
     for (int face = 0; face < kFrictionConeFaces; ++face) {
@@ -169,13 +167,14 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
   for (int e = starts_[kEffortColumn]; e < starts_[kEffortColumn + 1]; ++e) {
     values_[e] = joint_rows_[rows_[e] - kFirstJointRow].limit;
   }
+  return true;
+}
 
-  // A fresh solver object each time (a copy of one never solved), given the program and the
-  // last basis: CLP adjusts its own parameters during a solve (its infeasibility cost,
-  // perturbation), so a reused object's result would depend on every earlier solve, and a
-  // run resumed from a checkpoint, which restores the basis alone, would drift in the
-  // efforts' last bits.
-  ClpSimplex solver(*pristine_solver_);
+bool StaticEquilibrium::run_program(ClpSimplex& solver, ProgramGoal goal) {
+  // The least effort: minimise t. Holding or not: t at most 1 and nothing to minimise, so
+  // the simplex stops at the first equilibrium it finds (no second phase).
+  objective_[kEffortColumn] = goal == ProgramGoal::LeastEffort ? 1.0 : 0.0;
+  column_upper_[kEffortColumn] = goal == ProgramGoal::LeastEffort ? kUnboundedRow : 1.0;
   const int row_count = static_cast<int>(row_lower_.size());
   // The last basis has the same rows and columns, so the primal simplex starts from it
   // (docs/PERFORMANCE.md, "Static equilibrium").
@@ -192,8 +191,27 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
   }
   std::copy_n(solver.statusArray(), basis_.size(), basis_.begin());
   has_basis_ = true;
+  return solver.isProvenOptimal();
+}
 
-  if (solver.isProvenPrimalInfeasible()) return unbalanced_result();
+bool StaticEquilibrium::holds_within_strength(BodyData& data, const Posture& g, std::span<const PointContact> contacts,
+                                              const Eigen::Vector3d& gravity) {
+  if (!load_stance(data, g, contacts, gravity)) return false;
+  ClpSimplex solver(*pristine_solver_);
+  return run_program(solver, ProgramGoal::HoldsWithinStrength);
+}
+
+const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Posture& g,
+                                                        std::span<const PointContact> contacts,
+                                                        const Eigen::Vector3d& gravity) {
+  if (!load_stance(data, g, contacts, gravity)) return unbalanced_result();
+  // A fresh solver object each time (a copy of one never solved), given the program and the
+  // last basis: CLP adjusts its own parameters during a solve (its infeasibility cost,
+  // perturbation), so a reused object's result would depend on every earlier solve, and a
+  // run resumed from a checkpoint, which restores the basis alone, would drift in the
+  // efforts' last bits.
+  ClpSimplex solver(*pristine_solver_);
+  if (!run_program(solver, ProgramGoal::LeastEffort)) return unbalanced_result();
   StaticEquilibriumResult& result = result_;
   result.contact_forces.fill(Eigen::Vector3d::Zero());
   result.joint_torques.setZero();
@@ -202,8 +220,8 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
   const double* weights = solver.primalColumnSolution();
   GeneralisedForce contact_forces = GeneralisedForce::Zero();
   for (int limb = 0; limb < kLimbCount; ++limb) {
-    if (held[limb] == nullptr) continue;
-    const FrictionConeGenerators& generators = cones[limb];
+    if (held_[limb] == nullptr) continue;
+    const FrictionConeGenerators& generators = cones_[limb];
     Eigen::Vector3d force = Eigen::Vector3d::Zero();
     double normal = 0.0;
     for (int face = 0; face < kFrictionConeFaces; ++face) {
@@ -212,10 +230,10 @@ const StaticEquilibriumResult& StaticEquilibrium::solve(BodyData& data, const Po
       normal += weight_k;
     }
     result.contact_forces[limb] = force;
-    result.at_force_limit[limb] = normal >= held[limb]->normal_force_limit - 1e-6;
+    result.at_force_limit[limb] = normal >= held_[limb]->normal_force_limit - 1e-6;
     contact_forces.noalias() += data.jacobians[operational_point(limb)].transpose() * force;
   }
-  result.joint_torques = -(tau_g + contact_forces);
+  result.joint_torques = -(tau_g_ + contact_forces);
   result.joint_torques.head<kRootDof>().setZero();
   // The effort is t, the largest ratio: reported from the torques, with its joint.
   result.effort = 0.0;

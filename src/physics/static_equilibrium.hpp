@@ -64,6 +64,15 @@ class StaticEquilibrium {
   const StaticEquilibriumResult& solve(BodyData& data, const Posture& g, std::span<const PointContact> contacts,
                                        const Eigen::Vector3d& gravity = kStandardGravity);
 
+  // solve(...).feasible, without the least effort: the same program with the effort
+  // bounded by 1 and nothing to minimise, which the simplex answers with its first
+  // equilibrium (one phase instead of two). The two agree but for efforts within CLP's
+  // tolerance of 1 (StaticEquilibrium.HoldingWithinStrengthIsAnEffortOfAtMostOne). Its
+  // bases join the same warm-start chain, so an object whose efforts must repeat bit for
+  // bit (a learning run's) asks only solve.
+  bool holds_within_strength(BodyData& data, const Posture& g, std::span<const PointContact> contacts,
+                             const Eigen::Vector3d& gravity = kStandardGravity);
+
   // The basis the next solve starts from, for a run's checkpoint: a warm start from
   // another basis may end on another optimal vertex, with an effort that differs in its
   // last bits, so a resumed run restores it to continue bit for bit.
@@ -76,6 +85,13 @@ class StaticEquilibrium {
     double sign;   // +1 bounds the torque from above by t * limit, -1 from below
     double limit;  // newton-metres
   };
+  enum class ProgramGoal { LeastEffort, HoldsWithinStrength };
+  // Fills the program for the stance; false when the precheck proves it unbalanced.
+  bool load_stance(BodyData& data, const Posture& g, std::span<const PointContact> contacts,
+                   const Eigen::Vector3d& gravity);
+  // Solves the loaded program from the last basis: true when an equilibrium exists
+  // (`solver`, a copy of the pristine one, then holds it), false when none does.
+  bool run_program(ClpSimplex& solver, ProgramGoal goal);
   const StaticEquilibriumResult& unbalanced_result();
 
   const BodyModel& model_;
@@ -88,6 +104,11 @@ class StaticEquilibrium {
   // Never solved: each solve copies it, cheaper than a new object, which builds CLP's
   // message tables anew.
   std::unique_ptr<ClpSimplex> pristine_solver_;
+  // The stance being solved: gravity's generalised force, each limb's contact (the
+  // caller's, during a call only) and friction cone.
+  GeneralisedForce tau_g_ = GeneralisedForce::Zero();
+  std::array<const PointContact*, kLimbCount> held_{};
+  std::array<FrictionConeGenerators, kLimbCount> cones_{};
   StaticEquilibriumResult result_;
 };
 

@@ -3,10 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
+#include "common/checkpoint_stream.hpp"
 #include "common/input_error.hpp"
 #include "common/random.hpp"
 #include "configurations/geometric_filter.hpp"
+#include "configurations/possible_actions.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
@@ -130,6 +135,48 @@ TEST(ConfigurationReacher, StaticVerdictsAreKeptPerLimbThatLetsGoNext) {
   const Posture* held = stance.reach(from, complete, Limb::RightHand);
   ASSERT_EQ(avoided != nullptr, held != nullptr || !avoiding.known_unreachable(complete, Limb::RightHand));
   if (held != nullptr) EXPECT_EQ(*held, *avoided) << "the static model solves the IK as ik.wall = avoid does";
+}
+
+// The exact planner asks only whether a stance holds (StanceQuestion::HoldsStill): on
+// wall 3 under the static model, every move from the first states of a breadth-first
+// search gets the verdict and posture of a reacher that computes efforts, and the first
+// has no efforts to give or checkpoint.
+TEST(ConfigurationReacher, AskingOnlyWhetherStancesHoldGivesTheSameVerdicts) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = generate_random_wall(3);
+  const PhysicsParameters physics{PhysicsModel::Static};
+  ConfigurationReacher efforts(model, wall, ReachabilityParameters{}, physics);
+  ConfigurationReacher verdicts(model, wall, ReachabilityParameters{}, physics, StanceQuestion::HoldsStill);
+  ASSERT_NE(verdicts.reach_start(), nullptr);
+  std::vector<std::pair<HoldConfiguration, const Posture*>> states{
+      {start_configuration(wall).with(Limb::RightHand, kFree), efforts.reach_start()}};
+  ASSERT_NE(states[0].second, nullptr);
+  std::vector<int> possible(wall.hold_count());
+  int reached = 0, refused = 0;
+  for (std::size_t n = 0; n < states.size() && n < 12; ++n) {
+    const auto [configuration, from] = states[n];
+    const Limb free = configuration.free_limb(), next = next_free_limb(free);
+    const int count = possible_actions(wall, configuration, FilterParameters{}, possible);
+    for (int i = 0; i < count; ++i) {
+      const HoldConfiguration complete = configuration.with(free, possible[i]);
+      const Posture* with_effort = efforts.reach(*from, complete, next);
+      const Posture* verdict = verdicts.reach(*from, complete, next);
+      ASSERT_EQ(with_effort != nullptr, verdict != nullptr) << "state " << n << ", hold " << possible[i];
+      if (with_effort == nullptr) {
+        ++refused;
+        continue;
+      }
+      ++reached;
+      EXPECT_EQ(*with_effort, *verdict) << "state " << n << ", hold " << possible[i];
+      EXPECT_LE(efforts.effort(complete, next), 1.0);
+      EXPECT_THROW(verdicts.effort(complete, next), std::logic_error);
+      states.emplace_back(complete.with(next, kFree), with_effort);
+    }
+  }
+  EXPECT_GT(reached, 20);
+  EXPECT_GT(refused, 20);
+  CheckpointWriter out;
+  EXPECT_THROW(verdicts.save_state(out), std::logic_error);
 }
 
 // ik.guess = standing (docs/MODEL.md, choice C30): on random wall 1 under the static

@@ -169,6 +169,34 @@ TEST(StanceCheck, TheThreeHoldEffortIsTheStancesEffort) {
   }
 }
 
+// holds_still asks the cheaper program (the effort bounded by 1, nothing minimised) and must
+// give the verdict of the least effort: every stance of random walks at 0, 20 and 40
+// degrees, each check with its own warm-start chain as in use (the planner's and a run's).
+// The two may differ only for an effort within CLP's tolerance of 1, which none is here.
+TEST(StanceCheck, HoldsStillIsAnEffortOfAtMostOne) {
+  const BodyModel& model = testing::human_model();
+  for (const double incline : {0.0, 20.0, 40.0}) {
+    Wall wall = generate_random_wall(5);
+    wall.incline_deg = incline;
+    const std::vector<ReachedStance> stances = reached_stances(wall, 200);
+    ASSERT_GT(stances.size(), 40u);
+    const PhysicsParameters physics{PhysicsModel::Static};
+    StanceCheck verdicts(model, wall, physics);
+    StanceCheck efforts(model, wall, physics);
+    int held = 0, too_weak = 0;
+    for (int i = 0; i < static_cast<int>(stances.size()); ++i) {
+      const ReachedStance& s = stances[i];
+      const double effort = efforts.effort(s.posture, s.complete, s.next);
+      EXPECT_EQ(verdicts.holds_still(s.posture, s.complete, s.next), effort <= 1.0)
+          << "incline " << incline << ", stance " << i << ", effort " << effort;
+      held += effort <= 1.0;
+      too_weak += std::isfinite(effort) && effort > 1.0;
+    }
+    EXPECT_GT(held, 0) << "incline " << incline;
+    EXPECT_GT(too_weak + static_cast<int>(stances.size()) - held, 0) << "incline " << incline;
+  }
+}
+
 // A hold's support direction from its wall file replaces the default, and an inclined
 // wall turns gravity: on a 40-degree overhang, (-g sin 40, 0, -g cos 40) in wall coordinates.
 TEST(StanceCheck, AHoldsOwnSupportAndTheWallsInclineAreHonoured) {
