@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include "climbing/configuration_reacher.hpp"
 #include "common/random.hpp"
@@ -136,7 +137,6 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentPa
     ExperimentWall& wall = result.walls[w];
     wall = draw_wall(model, settings, w < walls ? kTrainingWalls : kTransferWalls, w % walls);
     wall.filtered_pairs = filtered_pairs(wall.wall, settings.learning.climbing.filter);
-    if (settings.plan) wall.plan = shortest_plan(model, wall.wall, settings.learning.climbing, settings.plan_search);
   });
 
   for (ConditionResult& c : result.conditions) {
@@ -162,23 +162,39 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentPa
                              initial, interruptible);
     count_done();
   };
-  tbb::parallel_for(0, runs, [&](int i) {
-    if (preceding == 0) return run_one(Condition::Training, i, nullptr);
-    const std::span<const ExperimentWall> pair_walls(
-        result.preceding_training_walls.data() + static_cast<std::size_t>(i / settings.seeds_per_wall) * preceding,
-        preceding);
-    const QTable q_grid = preceding_q_grid(model, pair_walls, settings, i, interruptible);
-    for (int j = 0; j < preceding; ++j) count_done();
-    run_one(Condition::Training, i, &q_grid);
-  });
-  tbb::parallel_for(0, 2 * runs, [&](int k) {
-    const int i = k / 2;
-    if (k % 2 == 0) {
-      run_one(Condition::Transfer, i, &result.conditions[static_cast<int>(Condition::Training)].runs[i].q_grid);
-    } else {
-      run_one(Condition::Control, i, nullptr);
+  // One pool for every task, so that no thread waits at the end of a phase while the other
+  // finishes a long task (the exact plans take seconds under the static model): the plans,
+  // the control runs, and each training run followed by its transfer run. Every task
+  // writes its own slots and draws from its own streams, so the order changes no result.
+  tbb::task_group tasks;
+  if (settings.plan) {
+    for (int w = 0; w < 2 * walls; ++w) {
+      tasks.run([&, w] {
+        interruptible(w);
+        result.walls[w].plan =
+            shortest_plan(model, result.walls[w].wall, settings.learning.climbing, settings.plan_search);
+      });
     }
-  });
+  }
+  for (int i = 0; i < runs; ++i) {
+    tasks.run([&, i] {
+      if (preceding == 0) {
+        run_one(Condition::Training, i, nullptr);
+      } else {
+        const std::span<const ExperimentWall> pair_walls(
+            result.preceding_training_walls.data() + static_cast<std::size_t>(i / settings.seeds_per_wall) * preceding,
+            preceding);
+        const QTable q_grid = preceding_q_grid(model, pair_walls, settings, i, interruptible);
+        for (int j = 0; j < preceding; ++j) count_done();
+        run_one(Condition::Training, i, &q_grid);
+      }
+      tasks.run([&, i] {
+        run_one(Condition::Transfer, i, &result.conditions[static_cast<int>(Condition::Training)].runs[i].q_grid);
+      });
+    });
+    tasks.run([&, i] { run_one(Condition::Control, i, nullptr); });
+  }
+  tasks.wait();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }
