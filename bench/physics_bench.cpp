@@ -84,8 +84,10 @@ void run_equilibrium(benchmark::State& state) {
 
 // The same stances on three holds (each limb in turn lets go): here some do not balance,
 // and the balance precheck refuses most of those without the program. Against the
-// program alone.
-template <EquilibriumPrecheck kPrecheck>
+// program alone, and against the program that asks only whether the stance holds (the
+// exact planner's: StaticEquilibrium::holds_within_strength; its counter counts held).
+enum class Question { Effort, HoldsOnly };
+template <EquilibriumPrecheck kPrecheck, Question kQuestion = Question::Effort>
 void run_three_holds(benchmark::State& state) {
   const EquilibriumFixture& f = equilibrium_fixture();
   BodyData data(f.model);
@@ -101,7 +103,12 @@ void run_three_holds(benchmark::State& state) {
       if (static_cast<int>(contact.limb) != free_limb) held.push_back(contact);
     }
     const auto start = std::chrono::steady_clock::now();
-    balanced += equilibrium.solve(data, f.stances[case_index / kLimbCount], held).balanced;
+    const Posture& g = f.stances[case_index / kLimbCount];
+    if constexpr (kQuestion == Question::Effort) {
+      balanced += equilibrium.solve(data, g, held).balanced;
+    } else {
+      balanced += equilibrium.holds_within_strength(data, g, held);
+    }
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     ++solves;
   }
@@ -116,8 +123,12 @@ void BM_StaticEquilibriumThreeHolds(benchmark::State& state) { run_three_holds<E
 void BM_StaticEquilibriumThreeHoldsProgramAlone(benchmark::State& state) {
   run_three_holds<EquilibriumPrecheck::Off>(state);
 }
+void BM_StaticEquilibriumThreeHoldsHoldsOnly(benchmark::State& state) {
+  run_three_holds<EquilibriumPrecheck::On, Question::HoldsOnly>(state);
+}
 BENCHMARK(BM_StaticEquilibriumThreeHolds)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StaticEquilibriumThreeHoldsProgramAlone)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StaticEquilibriumThreeHoldsHoldsOnly)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace crux

@@ -41,7 +41,6 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
                                        const DampedLeastSquaresParameters& settings, const PathRecorder& recorder) {
   TaskVector error;
   TaskMatrix normal;
-  Eigen::LLT<TaskMatrix> factor;
   Posture g = g_init, trial, gradient, step;
   const ChainCoordinates chains = chain_coordinates(model);
   // With the wall, every joint is placed (the head and neck are no operational point's),
@@ -50,7 +49,6 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
   WallClearance clearance, trial_clearance;
   StackedTaskVector wall_error;
   StackedTaskMatrix wall_normal;
-  Eigen::LLT<StackedTaskMatrix> wall_factor;
   const auto place = [&](const Posture& posture, WallClearance& out) {
     if (!wall) return operational_forward_kinematics(model, data, posture);
     forward_kinematics(model, data, posture);
@@ -91,12 +89,13 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
       if (wall) {
         StackedTaskMatrix damped = wall_normal;
         damped.diagonal().array() += damping;
-        wall_factor.compute(damped);
-        stacked_transpose_product(data, chains, clearance.gradients(), frozen, wall_factor.solve(wall_error), step);
+        const Eigen::LLT<Eigen::Ref<StackedTaskMatrix>> factor(damped);  // in place, as below
+        stacked_transpose_product(data, chains, clearance.gradients(), frozen, factor.solve(wall_error), step);
       } else {
         TaskMatrix damped = normal;
         damped.diagonal().array() += damping;
-        factor.compute(damped);
+        // Factorised in place: the same numbers, one copy of the matrix fewer.
+        const Eigen::LLT<Eigen::Ref<TaskMatrix>> factor(damped);
         // data.jacobians are still g's: forward kinematics of a trial moves points only.
         task_transpose_product(data, chains, frozen, factor.solve(error), step);
       }

@@ -19,37 +19,42 @@ constexpr int kPeeledDepth = kConfigurationDof / kDepthUnroll * kDepthUnroll;
 constexpr int kLaneRowsEnd = kTaskSize / kPacket * kPacket;
 static_assert(kTaskSize - kLaneRowsEnd == 1, "J^T v ends each sum with a single last row");
 
+// One row of J: its entries (`stride` apart) and the coordinates it moves.
+struct RowView {
+  const double* first;
+  int stride;
+  CoordinateSet support;
+  double operator[](int i) const { return first[i * stride]; }
+};
+
 // The rows of J: the points', then the extra rows, each with the coordinates it moves
 // (for an extra row, those of its nonzero entries).
 class StackedRows {
  public:
   StackedRows(const BodyData& data, const ChainCoordinates& chains, std::span<const Posture> extra_rows,
               CoordinateSet frozen)
-      : data_(data), chains_(chains), extra_rows_(extra_rows), frozen_(frozen) {
+      : data_(data), count_(kTaskSize + static_cast<int>(extra_rows.size())) {
+    for (int row = 0; row < kTaskSize; ++row) {
+      // A point's Jacobian is column-major, 3 rows.
+      rows_[row] = {data.jacobians[row / 3].data() + row % 3, 3, chains[row / 3] & ~frozen};
+    }
     for (std::size_t r = 0; r < extra_rows.size(); ++r) {
       CoordinateSet moving = 0;
       for (int i = 0; i < kConfigurationDof; ++i) {
         if (extra_rows[r][i] != 0.0) moving |= CoordinateSet{1} << i;
       }
-      extra_support_[r] = moving & ~frozen;
+      rows_[kTaskSize + r] = {extra_rows[r].data(), 1, moving & ~frozen};
     }
   }
 
-  int count() const { return kTaskSize + static_cast<int>(extra_rows_.size()); }
-  double at(int row, int i) const {
-    return row < kTaskSize ? data_.jacobians[row / 3](row % 3, i) : extra_rows_[row - kTaskSize][i];
-  }
-  CoordinateSet support(int row) const {
-    return row < kTaskSize ? chains_[row / 3] & ~frozen_ : extra_support_[row - kTaskSize];
-  }
+  int count() const { return count_; }
+  const RowView& row(int row) const { return rows_[row]; }
   const BodyData& data() const { return data_; }
 
  private:
   const BodyData& data_;
-  const ChainCoordinates& chains_;
-  std::span<const Posture> extra_rows_;
-  CoordinateSet frozen_;
-  std::array<CoordinateSet, kMaxExtraTaskRows> extra_support_;
+  int count_;
+  std::array<RowView, kMaxStackedTaskRows> rows_;
 };
 
 // Block (k, l) of J J^T for points k and l, summed over `shared` in ascending coordinate order.
@@ -66,29 +71,29 @@ Eigen::Matrix3d sequential_block(const BodyData& data, int k, int l, CoordinateS
   return block;
 }
 
-// Entry (row, column) of J J^T summed in ascending coordinate order.
-double sequential_entry(const StackedRows& rows, int row, int column) {
+// An entry of J J^T, rows a and b of J, summed in ascending coordinate order.
+double sequential_entry(const RowView& a, const RowView& b) {
   double sum = 0.0;
-  for (CoordinateSet shared = rows.support(row) & rows.support(column); shared != 0; shared &= shared - 1) {
+  for (CoordinateSet shared = a.support & b.support; shared != 0; shared &= shared - 1) {
     const int i = std::countr_zero(shared);
-    sum += rows.at(row, i) * rows.at(column, i);
+    sum += a[i] * b[i];
   }
   return sum;
 }
 
-// Entry (row, column) of J J^T with GEBP's two accumulators.
-double two_accumulator_entry(const StackedRows& rows, int row, int column) {
+// The same entry with GEBP's two accumulators.
+double two_accumulator_entry(const RowView& a, const RowView& b) {
   constexpr CoordinateSet kPeeled = (CoordinateSet{1} << kPeeledDepth) - 1;
-  const CoordinateSet shared = rows.support(row) & rows.support(column);
+  const CoordinateSet shared = a.support & b.support;
   double even = 0.0, odd = 0.0;
   for (CoordinateSet peeled = shared & kPeeled; peeled != 0; peeled &= peeled - 1) {
     const int i = std::countr_zero(peeled);
-    (i % 2 == 0 ? even : odd) += rows.at(row, i) * rows.at(column, i);
+    (i % 2 == 0 ? even : odd) += a[i] * b[i];
   }
   double sum = even + odd;
   for (CoordinateSet rest = shared & ~kPeeled; rest != 0; rest &= rest - 1) {
     const int i = std::countr_zero(rest);
-    sum += rows.at(row, i) * rows.at(column, i);
+    sum += a[i] * b[i];
   }
   return sum;
 }
@@ -107,7 +112,7 @@ void fill_normal_matrix(const StackedRows& rows, const ChainCoordinates& chains,
   const int count = rows.count();
   for (int row = kTaskSize; row < count; ++row) {
     for (int column = 0; column <= row; ++column) {
-      normal(row, column) = normal(column, row) = sequential_entry(rows, row, column);
+      normal(row, column) = normal(column, row) = sequential_entry(rows.row(row), rows.row(column));
     }
   }
   const int packet_rows_begin = count / kRowBlock * kRowBlock;
@@ -115,7 +120,7 @@ void fill_normal_matrix(const StackedRows& rows, const ChainCoordinates& chains,
   const int column_blocks_end = count / kColumnBlock * kColumnBlock;
   for (int row = packet_rows_begin; row < packet_rows_end; ++row) {
     for (int column = 0; column < column_blocks_end; ++column) {
-      normal(row, column) = two_accumulator_entry(rows, row, column);
+      normal(row, column) = two_accumulator_entry(rows.row(row), rows.row(column));
     }
   }
 }
@@ -169,10 +174,11 @@ void stacked_transpose_product(const BodyData& data, const ChainCoordinates& cha
                                Posture& out) {
   const StackedRows rows(data, chains, extra_rows, frozen);
   out.setZero();
-  for (int row = 0; row < rows.count(); ++row) {
-    for (CoordinateSet moving = rows.support(row); moving != 0; moving &= moving - 1) {
+  for (int r = 0; r < rows.count(); ++r) {
+    const RowView& row = rows.row(r);
+    for (CoordinateSet moving = row.support; moving != 0; moving &= moving - 1) {
       const int i = std::countr_zero(moving);
-      out[i] += rows.at(row, i) * v[row];
+      out[i] += row[i] * v[r];
     }
   }
 }
