@@ -44,6 +44,18 @@ std::vector<ReachedStance> reached_stances(const Wall& wall, int steps) {
   return stances;
 }
 
+// Random wall `seed` leaned `incline` degrees, and the stances of a random walk on it.
+struct InclinedWalk {
+  Wall wall;
+  std::vector<ReachedStance> stances;
+};
+InclinedWalk inclined_walk(std::uint64_t seed, double incline, int steps) {
+  InclinedWalk walk{generate_random_wall(seed), {}};
+  walk.wall.incline_deg = incline;
+  walk.stances = reached_stances(walk.wall, steps);
+  return walk;
+}
+
 // What the check must build, written out: a hand hooks the incut lip of a jug (up and
 // support_angle into the wall, +x), bounded by the grip; a foot stands on the hold's top
 // (+z), unbounded; a hold's own support direction replaces either.
@@ -112,9 +124,7 @@ TEST(StanceCheck, TheBalancePrecheckRefusesOnlyWhatTheProgramRefuses) {
   const BodyModel& model = testing::human_model();
   const StrengthProfile strength = published_strength_profile(model, model.total_mass, model.stature);
   for (const double incline : {0.0, 20.0, 40.0}) {
-    Wall wall = generate_random_wall(4);
-    wall.incline_deg = incline;
-    const std::vector<ReachedStance> stances = reached_stances(wall, 200);
+    const auto [wall, stances] = inclined_walk(4, incline, 200);
     ASSERT_GT(stances.size(), 40u);
     const PhysicsParameters physics{PhysicsModel::Static};
     const Eigen::Vector3d gravity = wall_to_world(incline).transpose() * kStandardGravity;
@@ -142,9 +152,7 @@ TEST(StanceCheck, TheBalancePrecheckRefusesOnlyWhatTheProgramRefuses) {
 TEST(StanceCheck, TheThreeHoldEffortIsTheStancesEffort) {
   const BodyModel& model = testing::human_model();
   for (const double incline : {0.0, 40.0}) {
-    Wall wall = generate_random_wall(3);
-    wall.incline_deg = incline;
-    const std::vector<ReachedStance> stances = reached_stances(wall, 120);
+    const auto [wall, stances] = inclined_walk(3, incline, 120);
     ASSERT_GT(stances.size(), 20u);
     const PhysicsParameters physics{PhysicsModel::Static};
     StanceCheck check(model, wall, physics);
@@ -176,9 +184,7 @@ TEST(StanceCheck, TheThreeHoldEffortIsTheStancesEffort) {
 TEST(StanceCheck, HoldsStillIsAnEffortOfAtMostOne) {
   const BodyModel& model = testing::human_model();
   for (const double incline : {0.0, 20.0, 40.0}) {
-    Wall wall = generate_random_wall(5);
-    wall.incline_deg = incline;
-    const std::vector<ReachedStance> stances = reached_stances(wall, 200);
+    const auto [wall, stances] = inclined_walk(5, incline, 200);
     ASSERT_GT(stances.size(), 40u);
     const PhysicsParameters physics{PhysicsModel::Static};
     StanceCheck verdicts(model, wall, physics);

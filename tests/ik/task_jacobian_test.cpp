@@ -33,8 +33,34 @@ void expect_same_bits(double expected, double actual, const std::string& where) 
       << where << ": Eigen " << expected << ", block-sparse " << actual;
 }
 
+// A random set of frozen joints (never the root's coordinates, as in the solver).
+CoordinateSet random_frozen(Random& random) {
+  CoordinateSet frozen = 0;
+  for (int i = kRootDof; i < kConfigurationDof; ++i) {
+    if (random.uniform() < 0.2) frozen |= CoordinateSet{1} << i;
+  }
+  return frozen;
+}
+
+// Both products, entry by entry, against Eigen's: J J^T (`rows` square) and J^T v.
+template <typename Normal>
+void expect_products_bits(const Normal& expected_normal, const Normal& normal, const Posture& expected_product,
+                          const Posture& product, int rows, const std::string& where) {
+  ASSERT_EQ(normal.rows(), rows) << where;
+  ASSERT_EQ(normal.cols(), rows) << where;
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < rows; ++c) {
+      expect_same_bits(expected_normal(r, c), normal(r, c),
+                       where + ", J J^T (" + std::to_string(r) + ", " + std::to_string(c) + ")");
+    }
+  }
+  for (int i = 0; i < kConfigurationDof; ++i) {
+    expect_same_bits(expected_product[i], product[i], where + ", J^T v [" + std::to_string(i) + "]");
+  }
+}
+
 // Both products against Eigen's dense ones at `postures` random postures, each with a
-// random set of frozen joints (never the root, as in the solver).
+// random set of frozen joints.
 void expect_eigens_bits(const BodyModel& model, std::uint64_t seed, int postures, const std::string& body) {
   Random random(seed);
   BodyData data(model);
@@ -43,10 +69,7 @@ void expect_eigens_bits(const BodyModel& model, std::uint64_t seed, int postures
     const Posture g = n == 0 ? Posture(standing_posture({0.3, 0.6, 1.0})) : testing::random_posture(model, random);
     operational_forward_kinematics(model, data, g);
     operational_jacobians(model, data);
-    CoordinateSet frozen = 0;
-    for (int i = kRootDof; i < kConfigurationDof; ++i) {
-      if (random.uniform() < 0.2) frozen |= CoordinateSet{1} << i;
-    }
+    const CoordinateSet frozen = random_frozen(random);
     TaskVector v;
     for (int r = 0; r < kTaskSize; ++r) v[r] = random.uniform(-1.0, 1.0);
     const TaskJacobian jacobian = dense_jacobian(data, frozen);
@@ -58,16 +81,8 @@ void expect_eigens_bits(const BodyModel& model, std::uint64_t seed, int postures
     expected_product.noalias() = jacobian.transpose() * v;
     task_transpose_product(data, chains, frozen, v, product);
 
-    const std::string where = body + ", seed " + std::to_string(seed) + ", posture " + std::to_string(n);
-    for (int r = 0; r < kTaskSize; ++r) {
-      for (int c = 0; c < kTaskSize; ++c) {
-        expect_same_bits(expected_normal(r, c), normal(r, c),
-                         where + ", J J^T (" + std::to_string(r) + ", " + std::to_string(c) + ")");
-      }
-    }
-    for (int i = 0; i < kConfigurationDof; ++i) {
-      expect_same_bits(expected_product[i], product[i], where + ", J^T v [" + std::to_string(i) + "]");
-    }
+    expect_products_bits(expected_normal, normal, expected_product, product, kTaskSize,
+                         body + ", seed " + std::to_string(seed) + ", posture " + std::to_string(n));
     if (::testing::Test::HasFailure()) return;  // one posture's report is enough
   }
 }
@@ -89,10 +104,7 @@ void expect_eigens_stacked_bits(const BodyModel& model, std::uint64_t seed, int 
     for (int n = 0; n < postures; ++n) {
       operational_forward_kinematics(model, data, testing::random_posture(model, random));
       operational_jacobians(model, data);
-      CoordinateSet frozen = 0;
-      for (int i = kRootDof; i < kConfigurationDof; ++i) {
-        if (random.uniform() < 0.2) frozen |= CoordinateSet{1} << i;
-      }
+      const CoordinateSet frozen = random_frozen(random);
       const int rows = kTaskSize + extra;
       StackedJacobian jacobian(rows, kConfigurationDof);
       for (int k = 0; k < kOperationalPointCount; ++k) jacobian.middleRows<3>(3 * k) = data.jacobians[k];
@@ -117,19 +129,9 @@ void expect_eigens_stacked_bits(const BodyModel& model, std::uint64_t seed, int 
       expected_product.noalias() = jacobian.transpose() * v;
       stacked_transpose_product(data, chains, extra_span, frozen, v, product);
 
-      const std::string where = body + ", seed " + std::to_string(seed) + ", " + std::to_string(extra) +
-                                " extra rows, posture " + std::to_string(n);
-      ASSERT_EQ(normal.rows(), rows) << where;
-      ASSERT_EQ(normal.cols(), rows) << where;
-      for (int r = 0; r < rows; ++r) {
-        for (int c = 0; c < rows; ++c) {
-          expect_same_bits(expected_normal(r, c), normal(r, c),
-                           where + ", J J^T (" + std::to_string(r) + ", " + std::to_string(c) + ")");
-        }
-      }
-      for (int i = 0; i < kConfigurationDof; ++i) {
-        expect_same_bits(expected_product[i], product[i], where + ", J^T v [" + std::to_string(i) + "]");
-      }
+      expect_products_bits(expected_normal, normal, expected_product, product, rows,
+                           body + ", seed " + std::to_string(seed) + ", " + std::to_string(extra) +
+                               " extra rows, posture " + std::to_string(n));
       if (::testing::Test::HasFailure()) return;  // one posture's report is enough
     }
   }
