@@ -242,7 +242,7 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   const auto no_start = run_crux("paper --walls 1 --iterations 10 --wall-sigma 3 -o " + never.string());
   EXPECT_EQ(no_start.exit_code, 2);
   EXPECT_EQ(no_start.err,
-            "crux: --wall-* and --ik-* parameters: no random wall drawn with them has a reachable start (100 tried)\n");
+            "crux: --wall-* and --ik-* parameters: no random wall drawn with them has a reachable start (1000 tried)\n");
   EXPECT_FALSE(fs::exists(never)) << "nothing written when the run fails";
   // Under the static model its parameters can refuse every start too, and are named.
   const auto no_static_start =
