@@ -241,8 +241,9 @@ TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   EXPECT_FALSE(fs::exists(never)) << "nothing written before the input is checked";
   const auto no_start = run_crux("paper --walls 1 --iterations 10 --wall-sigma 3 -o " + never.string());
   EXPECT_EQ(no_start.exit_code, 2);
-  EXPECT_EQ(no_start.err,
-            "crux: --wall-* and --ik-* parameters: no random wall drawn with them has a reachable start (1000 tried)\n");
+  EXPECT_EQ(
+      no_start.err,
+      "crux: --wall-* and --ik-* parameters: no random wall drawn with them has a reachable start (1000 tried)\n");
   EXPECT_FALSE(fs::exists(never)) << "nothing written when the run fails";
   // Under the static model its parameters can refuse every start too, and are named.
   const auto no_static_start =
