@@ -74,9 +74,9 @@ struct RunResult {
 struct RunCheckpoints {
   int every = 0;
   std::function<void(std::string state, int iterations_done)> save;
-  std::string resume;                                // empty: from the start
-  std::string source;                                // names the resumed state in errors
-  std::function<void(int iterations_done)> resumed;  // told where a resumed run goes on from
+  std::string resume;                                  // empty: from the start
+  std::string source;                                  // names the resumed state in errors
+  std::function<void(int iterations_done)> resumed{};  // told where a resumed run goes on from
 };
 
 // Deterministic in `seed`. `initial_q_grid` starts the grid table from transferred

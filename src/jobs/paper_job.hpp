@@ -18,8 +18,8 @@ namespace crux {
 struct PaperJob {
   ExperimentConfig config;
   // The config file `config` was read from, if any (as LearningJob::config_path).
-  std::string config_path;
-  std::optional<std::filesystem::path> output;  // none: no folder written
+  std::string config_path{};
+  std::optional<std::filesystem::path> output{};  // none: no folder written
   bool overwrite = false;
 };
 

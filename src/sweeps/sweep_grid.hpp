@@ -18,7 +18,7 @@ inline constexpr std::size_t kMaxSweepCells = 100000;
 
 struct SweepGrid {
   std::vector<ListedKey> keys;  // in the order of config_fields
-  std::string source;           // the sweep file, named in errors
+  std::string source{};         // the sweep file, named in errors
 
   // The product of the list lengths; 1 without lists. InputError(source) beyond
   // kMaxSweepCells, told before the product could overflow.

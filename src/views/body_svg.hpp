@@ -15,8 +15,8 @@ namespace crux {
 struct BodySvgOptions {
   double pixels_per_metre = 160;
   double grasp_radius = 0.04;  // the grasp spheres drawn at the four grasp points
-  std::string title;
-  std::string subtitle;
+  std::string title{};
+  std::string subtitle{};
   // The static model's loads at this posture: each held limb's contact force, an arrow
   // from its grasp point (kMetresPerNewton), and each bounded joint's torque-to-limit
   // ratio, a dot at the joint coloured from green (0) through yellow to red (1 and over).

@@ -20,7 +20,7 @@ struct Hold {
   double radius = 0.04;
   // The direction in which the hold can push on a hand or foot (unit, wall coordinates);
   // unset: the contact model's default. Wall files of version 2 carry it.
-  std::optional<Eigen::Vector3d> support;
+  std::optional<Eigen::Vector3d> support{};
 };
 
 // A configuration code holds four hold indices in base (holds + 1) within 64 bits, and

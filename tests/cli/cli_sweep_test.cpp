@@ -175,7 +175,10 @@ TEST(CliSweep, ASweepOnAFolderThatAnotherSweepWritesIsOneLineError) {
 // counted first and refused before any is built or the folder is made.
 TEST(CliSweep, TooManyCellsAreRefusedBeforeAnyIsBuilt) {
   std::string million = "[experiment]\nseed = [";
-  for (int s = 1; s <= 1000000; ++s) million += (s > 1 ? "," : "") + std::to_string(s);
+  for (int s = 1; s <= 1000000; ++s) {
+    if (s > 1) million += ',';
+    million += std::to_string(s);
+  }
   million += "]\n";
   std::string wrapping = "[learning]\n";
   for (const char* key : {"alpha", "gamma", "epsilon", "planning_steps"}) {

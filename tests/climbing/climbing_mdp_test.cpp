@@ -140,7 +140,9 @@ TEST(ClimbingMdp, UnderTheStaticModelADeadEndIsAFallBackToTheStart) {
     ASSERT_FALSE(outcome.reached) << "hold " << wall.holds[holds[i]].id;
     EXPECT_EQ(outcome.reward, -1000.0);
     EXPECT_EQ(outcome.fell, i + 1 == holds.size()) << "hold " << wall.holds[holds[i]].id;
-    if (!outcome.fell) EXPECT_EQ(mdp.configuration().holds, dead_end.holds);
+    if (!outcome.fell) {
+      EXPECT_EQ(mdp.configuration().holds, dead_end.holds);
+    }
   }
   EXPECT_EQ(mdp.configuration().holds, start_configuration(wall).with(Limb::RightHand, kFree).holds);
   EXPECT_EQ(mdp.posture(), mdp.start_posture());

@@ -134,7 +134,9 @@ TEST(ConfigurationReacher, StaticVerdictsAreKeptPerLimbThatLetsGoNext) {
   const Posture* avoided = avoiding.reach(from, complete, Limb::RightHand);
   const Posture* held = stance.reach(from, complete, Limb::RightHand);
   ASSERT_EQ(avoided != nullptr, held != nullptr || !avoiding.known_unreachable(complete, Limb::RightHand));
-  if (held != nullptr) EXPECT_EQ(*held, *avoided) << "the static model solves the IK as ik.wall = avoid does";
+  if (held != nullptr) {
+    EXPECT_EQ(*held, *avoided) << "the static model solves the IK as ik.wall = avoid does";
+  }
 }
 
 // The exact planner asks only whether a stance holds (StanceQuestion::HoldsStill): on
@@ -223,13 +225,17 @@ TEST(ConfigurationReacher, WithTheStandingGuessAVerdictDoesNotDependOnThePosture
         ++compared;
         if (guess == IkGuess::Standing) {
           ASSERT_EQ(a != nullptr, b != nullptr) << "limb " << limb << ", hold " << hold;
-          if (a != nullptr) EXPECT_EQ(*a, *b) << "limb " << limb << ", hold " << hold;
+          if (a != nullptr) {
+            EXPECT_EQ(*a, *b) << "limb " << limb << ", hold " << hold;
+          }
         }
         differing += (a == nullptr) != (b == nullptr) || (a != nullptr && *a != *b);
       }
     }
     EXPECT_GT(compared, 10);
-    if (guess == IkGuess::Previous) EXPECT_GT(differing, 0) << "the paper's guess depends on the posture before";
+    if (guess == IkGuess::Previous) {
+      EXPECT_GT(differing, 0) << "the paper's guess depends on the posture before";
+    }
   }
 }
 

@@ -154,7 +154,9 @@ TEST(LearningRun, TheStaticLearnerWithHeightShapingClimbsTheSameWayEveryRunAndRe
     RunCheckpoints checkpoints{
         1500, [&](std::string state, int done) { states.emplace_back(done, std::move(state)); }, {}, {}};
     const RunResult unbroken = run_learning(model, wall, parameters, 1, nullptr, {}, &checkpoints);
-    if (guess == IkGuess::Previous) EXPECT_FALSE(unbroken.episode_lengths.empty()) << "the learner reached the top";
+    if (guess == IkGuess::Previous) {
+      EXPECT_FALSE(unbroken.episode_lengths.empty()) << "the learner reached the top";
+    }
     const std::string label = ik_guess_name(guess);
     expect_same_run(unbroken, run_learning(model, wall, parameters, 1), label + ", run again");
     ASSERT_EQ(states.size(), 2u);

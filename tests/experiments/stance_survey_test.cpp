@@ -35,7 +35,9 @@ TEST(StanceSurvey, EveryStanceIsCountedOnceWithOneReason) {
   StanceTally sums;
   for (const WallStances& wall : survey.walls) {
     const StanceTally& t = wall.tally;
-    if (!wall.start_reached) EXPECT_EQ(t.stances, 0);
+    if (!wall.start_reached) {
+      EXPECT_EQ(t.stances, 0);
+    }
     EXPECT_EQ(t.four_held + sum(t.four_failures), t.stances) << "wall " << wall.seed;
     EXPECT_EQ(t.three_held + sum(t.three_failures), t.four_held) << "wall " << wall.seed;
     EXPECT_LE(t.stances, parameters.moves);
