@@ -23,7 +23,8 @@ class CheckpointWriter {
   requires std::is_trivially_copyable_v<T>
   void values(const T* data, std::size_t count) {
     value<std::uint64_t>(count);
-    bytes_.append(reinterpret_cast<const char*>(data), count * sizeof(T));
+    // An empty vector's data() may be null, which memcpy must never see, even for 0 bytes.
+    if (data != nullptr) bytes_.append(reinterpret_cast<const char*>(data), count * sizeof(T));
   }
   template <typename T>
   void vector(const std::vector<T>& v) {

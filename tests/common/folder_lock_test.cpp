@@ -8,6 +8,7 @@
 
 #include "common/input_error.hpp"
 #include "support/held_folder_lock.hpp"
+#include "support/test_models.hpp"
 
 namespace crux {
 namespace {
@@ -15,8 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path lock_scratch(const std::string& name) {
-  const fs::path folder =
-      fs::temp_directory_path() / "crux-tests" / ("folder-lock-" + std::to_string(::getpid())) / name;
+  const fs::path folder = testing::test_folder() / "folder-lock" / name;
   fs::remove_all(folder);
   return folder;
 }

@@ -1,11 +1,14 @@
 #include "support/test_models.hpp"
 #include "body/urdf_loader.hpp"
 
+#include <stdlib.h>
 #include <unistd.h>
 
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -105,13 +108,29 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(at, from.size(), to);
 }
 
+namespace {
+
+// A fresh folder for one test process, removed when the process ends. Named after the
+// pid, it outlived its process, and a later process given the same pid found an earlier
+// one's outputs (a `crux train -o` into an existing run then failed).
+struct ProcessFolder {
+  std::filesystem::path path;
+  ProcessFolder() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "crux-tests-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a test folder: " + pattern);
+    path = pattern;
+  }
+  ~ProcessFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
+}  // namespace
+
 const std::filesystem::path& test_folder() {
-  static const std::filesystem::path folder = [] {
-    const auto path = std::filesystem::temp_directory_path() / ("crux-tests-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(path);
-    return path;
-  }();
-  return folder;
+  static const ProcessFolder folder;
+  return folder.path;
 }
 
 std::filesystem::path write_temporary(const std::string& name, const std::string& contents) {

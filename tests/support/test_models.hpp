@@ -32,9 +32,10 @@ std::string synthetic_tree_urdf_for_mujoco(std::uint64_t seed);
 // Replaces the first occurrence of `from` (which must exist) by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to);
 
-// This test process's own folder under the temporary directory (TMPDIR),
-// crux-tests-<pid>, created on first use: ctest runs test cases in parallel processes,
-// and no test writes to a path another process or the machine uses.
+// This test process's own folder under the temporary directory (TMPDIR), a fresh
+// crux-tests-XXXXXX made on first use and removed when the process ends: ctest runs test
+// cases in parallel processes, and no test writes to a path another process or the
+// machine uses.
 const std::filesystem::path& test_folder();
 
 // A fresh file in test_folder() holding `contents`.
