@@ -9,14 +9,19 @@ namespace {
 
 constexpr StateCouple kState{5, 50};
 
+// `action` taken in `state`, with value `value`.
+void taken(QTable& table, StateCode state, ActionCode action, double value) {
+  table.set_value(state, action, value);
+  table.add_visit(state, action);
+}
+
 // Candidates: wall actions 0..3 in grid tiles 10, 10, 11, none; hold 1 represents tile
 // 10, hold 2 tile 11.
 const ActionCandidate kCandidates[4] = {{0, 10, false}, {1, 10, true}, {2, 11, true}, {3, kNoAction, false}};
 
 TEST(ActionSelection, WGreedyWhenTheBestWallActionWasTaken) {
   QTable wall(4), grid(40);
-  wall.set_value(5, 2, 3.0);
-  wall.add_visit(5, 2);
+  taken(wall, 5, 2, 3.0);
   const SelectionStreams streams(1);
   const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, streams, 0);
   EXPECT_EQ(c.regime, Regime::WGreedy);
@@ -26,8 +31,7 @@ TEST(ActionSelection, WGreedyWhenTheBestWallActionWasTaken) {
 TEST(ActionSelection, GGreedyWhenTheBestWallActionIsNewButTheBestGridActionWasTaken) {
   QTable wall(4), grid(40);
   wall.set_value(5, 0, 1.0);  // best for Q_wall, never taken
-  grid.set_value(50, 10, 7.0);
-  grid.add_visit(50, 10);
+  taken(grid, 50, 10, 7.0);
   const SelectionStreams streams(1);
   const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, streams, 0);
   EXPECT_EQ(c.regime, Regime::GGreedy);
@@ -50,10 +54,8 @@ TEST(ActionSelection, RandomWhenNeitherBestWasTaken) {
 
 TEST(ActionSelection, EpsilonOneAlwaysExplores) {
   QTable wall(4), grid(40);
-  wall.set_value(5, 2, 3.0);
-  wall.add_visit(5, 2);
-  grid.set_value(50, 10, 7.0);
-  grid.add_visit(50, 10);
+  taken(wall, 5, 2, 3.0);
+  taken(grid, 50, 10, 7.0);
   const SelectionStreams streams(2);
   for (int i = 0; i < 100; ++i) {
     EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 1.0, streams, i).regime, Regime::Random);
@@ -63,10 +65,8 @@ TEST(ActionSelection, EpsilonOneAlwaysExplores) {
 TEST(ActionSelection, EpsilonSharesMatchTheAlgorithm) {
   // With both bests taken: P(w) = 1 - eps, P(g) = eps (1 - eps), P(random) = eps^2.
   QTable wall(4), grid(40);
-  wall.set_value(5, 2, 3.0);
-  wall.add_visit(5, 2);
-  grid.set_value(50, 10, 7.0);
-  grid.add_visit(50, 10);
+  taken(wall, 5, 2, 3.0);
+  taken(grid, 50, 10, 7.0);
   constexpr std::uint64_t seed = 3;
   const SelectionStreams streams(seed);
   int counts[kRegimeCount] = {0, 0, 0};
@@ -82,8 +82,7 @@ TEST(ActionSelection, EpsilonSharesMatchTheAlgorithm) {
 TEST(ActionSelection, TiesAreBrokenUniformly) {
   QTable wall(4), grid(40);
   for (const ActionCode a : {1, 2}) {
-    wall.set_value(5, a, 4.0);
-    wall.add_visit(5, a);
+    taken(wall, 5, a, 4.0);
   }
   constexpr std::uint64_t seed = 4;
   const SelectionStreams streams(seed);
@@ -119,7 +118,7 @@ TEST(ActionSelection, TheRandomActionDependsOnlyOnWhatIsOffered) {
 TEST(ActionSelection, ATieBetweenTheSameActionsGoesTheSameWayWhateverElseIsOffered) {
   // Holds 1 and 2 tie for Q_wall in both runs; run 2 also offers hold 0 at a lower value.
   QTable wall(4), grid(40);
-  for (const ActionCode a : {1, 2}) wall.set_value(5, a, 4.0), wall.add_visit(5, a);
+  for (const ActionCode a : {1, 2}) taken(wall, 5, a, 4.0);
   wall.set_value(5, 0, 1.0);
   const ActionCandidate two[2] = {kCandidates[1], kCandidates[2]};
   const SelectionStreams streams(7);
@@ -133,10 +132,8 @@ TEST(ActionSelection, ATieBetweenTheSameActionsGoesTheSameWayWhateverElseIsOffer
 TEST(ActionSelection, AnExcludedCandidateIsPassedOverByGGreedyOnly) {
   QTable wall(4), grid(40);
   wall.set_value(5, 0, 1.0);  // best for Q_wall, never taken
-  grid.set_value(50, 10, 7.0);
-  grid.add_visit(50, 10);
-  grid.set_value(50, 11, 2.0);
-  grid.add_visit(50, 11);
+  taken(grid, 50, 10, 7.0);
+  taken(grid, 50, 11, 2.0);
   const SelectionStreams streams(1);
   const char excluded[4] = {0, 1, 0, 0};  // tile 10's representative
   const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, streams, 0, {true, true, excluded});
@@ -152,8 +149,7 @@ TEST(ActionSelection, AnExcludedCandidateIsPassedOverByGGreedyOnly) {
 TEST(ActionSelection, WithoutTheTakenTestAndGGreedyItIsEpsilonGreedyOnQWall) {
   QTable wall(4), grid(40);
   wall.set_value(5, 3, 2.0);  // never taken
-  grid.set_value(50, 10, 7.0);
-  grid.add_visit(50, 10);
+  taken(grid, 50, 10, 7.0);
   const SelectionStreams streams(4);
   const SelectionRule rule{false, false, {}};
   int greedy = 0, random = 0;
@@ -174,8 +170,7 @@ TEST(ActionSelection, WithoutTheTakenTestAndGGreedyItIsEpsilonGreedyOnQWall) {
 TEST(ActionSelection, GridTakenOnlyPicksTheBestTakenTileOverABetterUntakenOne) {
   QTable wall(4), grid(40);
   grid.set_value(50, 10, 7.0);  // the best value, but never taken
-  grid.set_value(50, 11, -3.0);
-  grid.add_visit(50, 11);
+  taken(grid, 50, 11, -3.0);
   const SelectionStreams streams(1);
   EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 0.0, streams, 0).regime, Regime::Random)
       << "Algorithm 3: the best tile was never taken";
@@ -197,10 +192,8 @@ SelectionRule ordered_by(const QTable& order) {
 // the largest taken value of the order (-1 against tile 10's -5), at every iteration.
 TEST(ActionSelection, TheTieOrderPicksTheTiedRepresentativeWithTheBestTakenValue) {
   QTable wall(4), grid(40), order(40);
-  order.set_value(50, 10, -5.0);
-  order.add_visit(50, 10);
-  order.set_value(50, 11, -1.0);
-  order.add_visit(50, 11);
+  taken(order, 50, 10, -5.0);
+  taken(order, 50, 11, -1.0);
   const SelectionStreams streams(1);
   std::set<std::size_t> unordered;
   for (int i = 0; i < 100; ++i) {
@@ -217,8 +210,7 @@ TEST(ActionSelection, TheTieOrderPicksTheTiedRepresentativeWithTheBestTakenValue
 TEST(ActionSelection, TiesOfTheTieOrderGoToTheRandomTieBreak) {
   QTable wall(4), grid(40), order(40);
   for (const ActionCode tile : {10, 11}) {
-    order.set_value(50, tile, -1.0);
-    order.add_visit(50, tile);
+    taken(order, 50, tile, -1.0);
   }
   const SelectionStreams streams(1);
   std::set<std::size_t> seen;
@@ -232,16 +224,11 @@ TEST(ActionSelection, TiesOfTheTieOrderGoToTheRandomTieBreak) {
 // the order says of tile 11 (+9), and a tried move of higher value wins over untried ones.
 TEST(ActionSelection, TheTieOrderNeverOverturnsQWall) {
   QTable wall(4), grid(40), order(40);
-  wall.set_value(5, 2, -2.0);
-  wall.add_visit(5, 2);
-  wall.set_value(5, 0, -3.0);
-  wall.add_visit(5, 0);
-  wall.set_value(5, 3, -4.0);
-  wall.add_visit(5, 3);
-  order.set_value(50, 11, 9.0);
-  order.add_visit(50, 11);
-  order.set_value(50, 10, -5.0);
-  order.add_visit(50, 10);
+  taken(wall, 5, 2, -2.0);
+  taken(wall, 5, 0, -3.0);
+  taken(wall, 5, 3, -4.0);
+  taken(order, 50, 11, 9.0);
+  taken(order, 50, 10, -5.0);
   const SelectionStreams streams(1);
   EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 0.0, streams, 0, ordered_by(order)).candidate, 1u);
   wall.set_value(5, 3, 0.5);  // a tried move above the untried 0
@@ -252,8 +239,7 @@ TEST(ActionSelection, TheTieOrderNeverOverturnsQWall) {
 TEST(ActionSelection, AnUntakenValueOfTheTieOrderDoesNotCount) {
   QTable wall(4), grid(40), order(40);
   order.set_value(50, 10, 7.0);
-  order.set_value(50, 11, -3.0);
-  order.add_visit(50, 11);
+  taken(order, 50, 11, -3.0);
   const SelectionStreams streams(1);
   for (int i = 0; i < 50; ++i) {
     EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 0.0, streams, i, ordered_by(order)).candidate, 2u);
@@ -264,10 +250,8 @@ TEST(ActionSelection, AnUntakenValueOfTheTieOrderDoesNotCount) {
 // control) on the same streams, action and regime, even with a Q_grid that has learnt.
 TEST(ActionSelection, AnEmptyTieOrderChoosesAsEpsilonGreedyOnQWall) {
   QTable wall(4), grid(40), order(40);
-  wall.set_value(5, 2, -2.0);
-  wall.add_visit(5, 2);
-  grid.set_value(50, 10, 7.0);
-  grid.add_visit(50, 10);
+  taken(wall, 5, 2, -2.0);
+  taken(grid, 50, 10, 7.0);
   const SelectionStreams streams(6);
   for (int i = 0; i < 2000; ++i) {
     const ActionChoice ordered = select_action(wall, grid, kState, kCandidates, 0.25, streams, i, ordered_by(order));
