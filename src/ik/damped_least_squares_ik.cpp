@@ -1,5 +1,7 @@
 #include "ik/damped_least_squares_ik.hpp"
 
+#include <optional>
+
 #include <Eigen/Cholesky>
 
 #include "body/kinematics.hpp"
@@ -76,9 +78,12 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
         frozen |= CoordinateSet{1} << i;
       }
     }
+    // g's stacked task: its rows stay g's while the trials move data's points only.
+    std::optional<StackedTask> wall_task;
     if (wall) {
       stack_wall_error(clearance, error, wall_error);
-      stacked_normal_matrix(data, chains, clearance.gradients(), frozen, wall_normal);
+      wall_task.emplace(data, chains, clearance.gradients(), frozen);
+      wall_task->normal_matrix(wall_normal);
     } else {
       task_normal_matrix(data, chains, frozen, normal);
     }
@@ -90,7 +95,7 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
         StackedTaskMatrix damped = wall_normal;
         damped.diagonal().array() += damping;
         const Eigen::LLT<Eigen::Ref<StackedTaskMatrix>> factor(damped);  // in place, as below
-        stacked_transpose_product(data, chains, clearance.gradients(), frozen, factor.solve(wall_error), step);
+        wall_task->transpose_product(factor.solve(wall_error), step);
       } else {
         TaskMatrix damped = normal;
         damped.diagonal().array() += damping;

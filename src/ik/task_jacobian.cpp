@@ -19,43 +19,7 @@ constexpr int kPeeledDepth = kConfigurationDof / kDepthUnroll * kDepthUnroll;
 constexpr int kLaneRowsEnd = kTaskSize / kPacket * kPacket;
 static_assert(kTaskSize - kLaneRowsEnd == 1, "J^T v ends each sum with a single last row");
 
-// One row of J: its entries (`stride` apart) and the coordinates it moves.
-struct RowView {
-  const double* first;
-  int stride;
-  CoordinateSet support;
-  double operator[](int i) const { return first[i * stride]; }
-};
-
-// The rows of J: the points', then the extra rows, each with the coordinates it moves
-// (for an extra row, those of its nonzero entries).
-class StackedRows {
- public:
-  StackedRows(const BodyData& data, const ChainCoordinates& chains, std::span<const Posture> extra_rows,
-              CoordinateSet frozen)
-      : data_(data), count_(kTaskSize + static_cast<int>(extra_rows.size())) {
-    for (int row = 0; row < kTaskSize; ++row) {
-      // A point's Jacobian is column-major, 3 rows.
-      rows_[row] = {data.jacobians[row / 3].data() + row % 3, 3, chains[row / 3] & ~frozen};
-    }
-    for (std::size_t r = 0; r < extra_rows.size(); ++r) {
-      CoordinateSet moving = 0;
-      for (int i = 0; i < kConfigurationDof; ++i) {
-        if (extra_rows[r][i] != 0.0) moving |= CoordinateSet{1} << i;
-      }
-      rows_[kTaskSize + r] = {extra_rows[r].data(), 1, moving & ~frozen};
-    }
-  }
-
-  int count() const { return count_; }
-  const RowView& row(int row) const { return rows_[row]; }
-  const BodyData& data() const { return data_; }
-
- private:
-  const BodyData& data_;
-  int count_;
-  std::array<RowView, kMaxStackedTaskRows> rows_;
-};
+using Row = StackedTask::Row;
 
 // Block (k, l) of J J^T for points k and l, summed over `shared` in ascending coordinate order.
 Eigen::Matrix3d sequential_block(const BodyData& data, int k, int l, CoordinateSet shared) {
@@ -72,7 +36,7 @@ Eigen::Matrix3d sequential_block(const BodyData& data, int k, int l, CoordinateS
 }
 
 // An entry of J J^T, rows a and b of J, summed in ascending coordinate order.
-double sequential_entry(const RowView& a, const RowView& b) {
+double sequential_entry(const Row& a, const Row& b) {
   double sum = 0.0;
   for (CoordinateSet shared = a.support & b.support; shared != 0; shared &= shared - 1) {
     const int i = std::countr_zero(shared);
@@ -82,7 +46,7 @@ double sequential_entry(const RowView& a, const RowView& b) {
 }
 
 // The same entry with GEBP's two accumulators.
-double two_accumulator_entry(const RowView& a, const RowView& b) {
+double two_accumulator_entry(const Row& a, const Row& b) {
   constexpr CoordinateSet kPeeled = (CoordinateSet{1} << kPeeledDepth) - 1;
   const CoordinateSet shared = a.support & b.support;
   double even = 0.0, odd = 0.0;
@@ -98,9 +62,11 @@ double two_accumulator_entry(const RowView& a, const RowView& b) {
   return sum;
 }
 
-// J J^T in GEBP's order into `normal`, already rows.count() square.
+// J J^T in GEBP's order into `normal`, already rows.rows() square.
 template <typename Matrix>
-void fill_normal_matrix(const StackedRows& rows, const ChainCoordinates& chains, CoordinateSet frozen, Matrix& normal) {
+void fill_normal_matrix(const StackedTask& rows, Matrix& normal) {
+  const ChainCoordinates& chains = rows.chains();
+  const CoordinateSet frozen = rows.frozen();
   for (int k = 0; k < kOperationalPointCount; ++k) {
     for (int l = 0; l <= k; ++l) {
       // A product commutes exactly, so a block summed in order equals its mirror's transpose.
@@ -109,7 +75,7 @@ void fill_normal_matrix(const StackedRows& rows, const ChainCoordinates& chains,
       normal.template block<3, 3>(3 * l, 3 * k) = block.transpose();
     }
   }
-  const int count = rows.count();
+  const int count = rows.rows();
   for (int row = kTaskSize; row < count; ++row) {
     for (int column = 0; column <= row; ++column) {
       normal(row, column) = normal(column, row) = sequential_entry(rows.row(row), rows.row(column));
@@ -135,16 +101,41 @@ ChainCoordinates chain_coordinates(const BodyModel& model) {
   return chains;
 }
 
-void task_normal_matrix(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
-                        TaskMatrix& normal) {
-  fill_normal_matrix(StackedRows(data, chains, {}, frozen), chains, frozen, normal);
+StackedTask::StackedTask(const BodyData& data, const ChainCoordinates& chains, std::span<const Posture> extra_rows,
+                         CoordinateSet frozen)
+    : data_(data), chains_(chains), frozen_(frozen), rows_(kTaskSize + static_cast<int>(extra_rows.size())) {
+  for (int row = 0; row < kTaskSize; ++row) {
+    // A point's Jacobian is column-major, 3 rows.
+    row_views_[row] = {data.jacobians[row / 3].data() + row % 3, 3, chains[row / 3] & ~frozen};
+  }
+  for (std::size_t r = 0; r < extra_rows.size(); ++r) {
+    CoordinateSet moving = 0;
+    for (int i = 0; i < kConfigurationDof; ++i) {
+      if (extra_rows[r][i] != 0.0) moving |= CoordinateSet{1} << i;
+    }
+    row_views_[kTaskSize + r] = {extra_rows[r].data(), 1, moving & ~frozen};
+  }
 }
 
-void stacked_normal_matrix(const BodyData& data, const ChainCoordinates& chains, std::span<const Posture> extra_rows,
-                           CoordinateSet frozen, StackedTaskMatrix& normal) {
-  const StackedRows rows(data, chains, extra_rows, frozen);
-  normal.resize(rows.count(), rows.count());
-  fill_normal_matrix(rows, chains, frozen, normal);
+void StackedTask::normal_matrix(StackedTaskMatrix& normal) const {
+  normal.resize(rows_, rows_);
+  fill_normal_matrix(*this, normal);
+}
+
+void StackedTask::transpose_product(const StackedTaskVector& v, Posture& out) const {
+  out.setZero();
+  for (int r = 0; r < rows_; ++r) {
+    const Row& row = row_views_[r];
+    for (CoordinateSet moving = row.support; moving != 0; moving &= moving - 1) {
+      const int i = std::countr_zero(moving);
+      out[i] += row[i] * v[r];
+    }
+  }
+}
+
+void task_normal_matrix(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
+                        TaskMatrix& normal) {
+  fill_normal_matrix(StackedTask(data, chains, {}, frozen), normal);
 }
 
 void task_transpose_product(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
@@ -166,20 +157,6 @@ void task_transpose_product(const BodyData& data, const ChainCoordinates& chains
   }
   for (int i = 0; i < kConfigurationDof; ++i) {
     out[i] = (even[i] + odd[i]) + last[i];
-  }
-}
-
-void stacked_transpose_product(const BodyData& data, const ChainCoordinates& chains,
-                               std::span<const Posture> extra_rows, CoordinateSet frozen, const StackedTaskVector& v,
-                               Posture& out) {
-  const StackedRows rows(data, chains, extra_rows, frozen);
-  out.setZero();
-  for (int r = 0; r < rows.count(); ++r) {
-    const RowView& row = rows.row(r);
-    for (CoordinateSet moving = row.support; moving != 0; moving &= moving - 1) {
-      const int i = std::countr_zero(moving);
-      out[i] += row[i] * v[r];
-    }
   }
 }
 

@@ -52,14 +52,37 @@ void task_normal_matrix(const BodyData& data, const ChainCoordinates& chains, Co
 void task_transpose_product(const BodyData& data, const ChainCoordinates& chains, CoordinateSet frozen,
                             const TaskVector& v, Posture& out);
 
-// J J^T of the points' rows stacked over `extra_rows` (each a row of J over all
-// coordinates), with the `frozen` coordinates' columns taken as 0; 15 + extra rows square.
-void stacked_normal_matrix(const BodyData& data, const ChainCoordinates& chains, std::span<const Posture> extra_rows,
-                           CoordinateSet frozen, StackedTaskMatrix& normal);
+// The points' rows of J stacked over `extra_rows` (each a row of J over all coordinates),
+// with the `frozen` coordinates' columns taken as 0: 15 + extra rows. Made once per IK
+// iteration (it records which coordinates each row moves), then asked for J J^T and for
+// the J^T v of every trial step. It refers to `data`, `chains` and `extra_rows`.
+class StackedTask {
+ public:
+  StackedTask(const BodyData& data, const ChainCoordinates& chains, std::span<const Posture> extra_rows,
+              CoordinateSet frozen);
 
-// J^T v of the same stacked J; v has 15 + extra rows entries.
-void stacked_transpose_product(const BodyData& data, const ChainCoordinates& chains,
-                               std::span<const Posture> extra_rows, CoordinateSet frozen, const StackedTaskVector& v,
-                               Posture& out);
+  int rows() const { return rows_; }
+  void normal_matrix(StackedTaskMatrix& normal) const;                     // J J^T, rows() square
+  void transpose_product(const StackedTaskVector& v, Posture& out) const;  // J^T v, v of rows() entries
+
+  // One row of J: its entries (`stride` apart) and the coordinates it moves.
+  struct Row {
+    const double* first;
+    int stride;
+    CoordinateSet support;
+    double operator[](int i) const { return first[i * stride]; }
+  };
+  const Row& row(int row) const { return row_views_[row]; }
+  const BodyData& data() const { return data_; }
+  const ChainCoordinates& chains() const { return chains_; }
+  CoordinateSet frozen() const { return frozen_; }
+
+ private:
+  const BodyData& data_;
+  const ChainCoordinates& chains_;
+  CoordinateSet frozen_;
+  int rows_;
+  std::array<Row, kMaxStackedTaskRows> row_views_;
+};
 
 }  // namespace crux

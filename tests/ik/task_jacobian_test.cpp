@@ -124,10 +124,11 @@ void expect_eigens_stacked_bits(const BodyModel& model, std::uint64_t seed, int 
 
       StackedTaskMatrix expected_normal, normal;
       expected_normal.noalias() = jacobian * jacobian.transpose();
-      stacked_normal_matrix(data, chains, extra_span, frozen, normal);
+      const StackedTask task(data, chains, extra_span, frozen);
+      task.normal_matrix(normal);
       Posture expected_product, product;
       expected_product.noalias() = jacobian.transpose() * v;
-      stacked_transpose_product(data, chains, extra_span, frozen, v, product);
+      task.transpose_product(v, product);
 
       expect_products_bits(expected_normal, normal, expected_product, product, rows,
                            body + ", seed " + std::to_string(seed) + ", " + std::to_string(extra) +
