@@ -91,7 +91,7 @@ void bind_body(py::module_& m) {
   m.attr("CONFIGURATION_DOF") = kConfigurationDof;
   m.attr("ROOT_DOF") = kRootDof;
   py::tuple limbs(kLimbCount);
-  for (int limb = 0; limb < kLimbCount; ++limb) limbs[limb] = limb_name(static_cast<Limb>(limb));
+  for (int limb = 0; limb < kLimbCount; ++limb) limbs[limb] = enum_name(static_cast<Limb>(limb));
   m.attr("LIMB_NAMES") = limbs;
 
   py::class_<BodyModel, std::shared_ptr<BodyModel>>(m, "BodyModel",

@@ -1,6 +1,7 @@
 // The paper's agent and experiment: one learning run (Algorithm 2), and the experiment
 // of section IV, returning what the CLI's summary.json holds.
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -136,6 +137,55 @@ py::object run_experiment_py(const py::handle& config_handle, const py::handle& 
 
 }  // namespace
 
+namespace {
+
+// One declared key as a dict (crux.config_keys).
+py::dict key_dict(const ConstConfigField& field) {
+  py::dict out;
+  out["key"] = field.key;
+  out["flag"] = flag_for_key(field.key);
+  out["type"] = field.type_name();
+  py::object default_value = py::none();
+  std::visit(
+      [&](auto target) {
+        using T = std::remove_cvref_t<std::remove_pointer_t<decltype(target)>>;
+        if constexpr (std::is_same_v<T, ChoiceTarget<true>>) {
+          const std::string text = target.type->text(target.target);
+          if (!text.empty()) default_value = py::str(text);
+        } else if constexpr (std::is_same_v<T, std::string>) {
+          if (!target->empty()) default_value = py::str(*target);
+        } else if constexpr (std::is_same_v<T, std::optional<double>> || std::is_same_v<T, std::optional<int>> ||
+                             std::is_same_v<T, std::optional<std::uint64_t>>) {
+          if (*target) default_value = py::cast(**target);
+        } else {
+          default_value = py::cast(*target);
+        }
+      },
+      field.target);
+  out["default"] = default_value;
+  out["unit"] = field.unit;
+  const auto bound = [](double value) -> py::object {
+    return std::isfinite(value) ? py::object(py::float_(value)) : py::object(py::none());
+  };
+  out["min"] = bound(field.bounds.min);
+  out["max"] = bound(field.bounds.max);
+  out["min_open"] = field.bounds.min_open;
+  out["max_open"] = field.bounds.max_open;
+  const auto* choice = std::get_if<ChoiceTarget<true>>(&field.target);
+  out["choices"] = choice == nullptr ? py::object(py::none()) : py::object(py::str(choice->type->choices()));
+  out["help"] = field.described_help();
+  return out;
+}
+
+py::list config_keys_py() {
+  static const ExperimentConfig defaults;
+  py::list keys;
+  for (const ConstConfigField& field : config_fields(defaults)) keys.append(key_dict(field));
+  return keys;
+}
+
+}  // namespace
+
 void bind_experiment(py::module_& m) {
   py::class_<LearningRun>(m, "LearningRun", "One learning run (Algorithm 2) and its summary")
       .def_readonly("summary", &LearningRun::summary, "what crux train (or transfer) writes to summary.json")
@@ -157,6 +207,10 @@ void bind_experiment(py::module_& m) {
       .def_property_readonly("greedy_climb", [](const LearningRun& r) { return postures_array(r.run.greedy_climb); })
       .def_property_readonly("last_climb", [](const LearningRun& r) { return postures_array(r.run.last_climb); });
 
+  m.def("config_keys", &config_keys_py,
+        "Every config key, as crux declares it once for flags, config files and these dicts: a list of dicts with "
+        "key, flag, type (number, integer, seed, boolean, text, path or choice), default (None when unset), unit, "
+        "min and max (None when unbounded) with min_open and max_open, choices and help");
   m.def("run_learning", &run_learning_py, py::arg("wall") = py::none(), py::arg("config") = py::none(),
         py::arg("seed") = py::none(), py::arg("q_grid") = py::none(), py::arg("model") = py::none(),
         py::arg("output") = py::none(), py::arg("overwrite") = false,

@@ -142,7 +142,7 @@ HoldConfiguration configuration_from(const py::handle& holds, const Wall& wall, 
 Limb limb_from(const py::handle& limb) {
   if (py::isinstance<py::str>(limb)) {
     const std::string name = limb.cast<std::string>();
-    if (const auto parsed = parse_limb(name)) return *parsed;
+    if (const auto parsed = parse_enum<Limb>(name)) return *parsed;
     throw InputError("limb",
                      fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)", printable(name)));
   }

@@ -41,9 +41,12 @@ void assign(const ConfigField& field, const py::handle& value) {
     fail("one value; only crux sweep takes lists");
   }
   std::visit(
-      [&](auto* target) {
+      [&](auto target) {
         using T = std::remove_pointer_t<decltype(target)>;
-        if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) {
+        if constexpr (std::is_same_v<T, ChoiceTarget<false>>) {
+          if (!py::isinstance<py::str>(value)) fail(("one of " + target.type->choices()).c_str());
+          assign_text(field, value.cast<std::string>());
+        } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) {
           // Python's and numpy's numbers, through __float__.
           if (is_bool || is_text) fail("a finite number");
           const double v = PyFloat_AsDouble(value.ptr());

@@ -111,7 +111,7 @@ def test_a_transfer_mode_is_a_config_key_as_on_the_command_line(run_cli, tmp_pat
     paper = crux.run_learning(config={**config, "experiment.transfer": "paper"}, seed=6,
                               q_grid=tmp_path / "train" / "q_grid.bin")
     assert not np.array_equal(moded.iterations["hold_id"], paper.iterations["hold_id"])
-    with pytest.raises(ValueError, match="^experiment.transfer: unknown transfer mode 'best'"):
+    with pytest.raises(ValueError, match="^experiment.transfer: unknown transfer 'best'"):
         crux.run_learning(config={**config, "experiment.transfer": "best"}, seed=6)
 
 
@@ -131,7 +131,7 @@ def test_config_errors_name_the_key():
         crux.run_experiment({"training_wall": {"sigma": -0.1}})
     with pytest.raises(ValueError, match="^config: unknown key learning.epsilonn$"):
         crux.run_experiment({"learning": {"epsilonn": 0.1}})
-    with pytest.raises(ValueError, match=r"^physics.strength: unknown level 'pro' \(expected intermediate \(383.0 N\), "
+    with pytest.raises(ValueError, match=r"^physics.strength: unknown strength 'pro' \(expected intermediate \(383.0 N\), "
                                          r"advanced \(575.7 N\) or elite \(563.1 N\)\)$"):
         crux.run_experiment({"physics": {"strength": "pro"}})
     with pytest.raises(ValueError, match="^config: crux.run_experiment does not take wall.seed$"):

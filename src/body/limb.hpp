@@ -3,8 +3,7 @@
 // left hand, right foot, left foot), and the operational points E = (e0, e1, e2, e3, e4)
 // of section III-A: the root, then the limbs in that order.
 
-#include <optional>
-#include <string_view>
+#include "common/enum_names.hpp"
 
 namespace crux {
 
@@ -12,10 +11,15 @@ inline constexpr int kLimbCount = 4;
 inline constexpr int kOperationalPointCount = 1 + kLimbCount;
 enum class Limb : int { RightHand = 0, LeftHand = 1, RightFoot = 2, LeftFoot = 3 };
 
-// right_hand, left_hand, right_foot, left_foot: the names of files and outputs.
-const char* limb_name(Limb limb);
-// A limb's name, or its short form rh, lh, rf, lf.
-std::optional<Limb> parse_limb(std::string_view name);
+// right_hand, left_hand, right_foot, left_foot: the names of files and outputs; parsing
+// also takes the short forms rh, lh, rf, lf.
+template <>
+struct EnumNames<Limb> {
+  static constexpr std::array<EnumName<Limb>, 4> entries{{{Limb::RightHand, "right_hand", "rh"},
+                                                          {Limb::LeftHand, "left_hand", "lh"},
+                                                          {Limb::RightFoot, "right_foot", "rf"},
+                                                          {Limb::LeftFoot, "left_foot", "lf"}}};
+};
 
 // The index of a limb's grasp point among the operational points (e0 is index 0).
 constexpr int operational_point(Limb limb) { return 1 + static_cast<int>(limb); }

@@ -271,7 +271,7 @@ class ModelBuilder {
       const std::string& wanted = names_.frames[limb];
       const auto found = find_frame(wanted);
       if (!found) {
-        fail(fmt::format("grasp frame '{}' ({}) does not exist", wanted, limb_name(static_cast<Limb>(limb))));
+        fail(fmt::format("grasp frame '{}' ({}) does not exist", wanted, enum_name(static_cast<Limb>(limb))));
       }
       model_.grasp_points[limb] = *found;
       model_.grasp_frame_names[limb] = wanted;

@@ -15,7 +15,7 @@ namespace crux::cli {
 namespace {
 
 // Random walls from wall.seed (wall i from a seed derived from it and i) and the filter.
-const ParameterSet kFilterStatsKeys{{"wall", "filter"},
+const ParameterSet kFilterStatsKeys{{"wall", "filter", "output.progress"},
                                     {"wall.file", "wall.name", "wall.hold_radius", "wall.finish_height"}};
 
 ExperimentConfig filter_stats_defaults() {
@@ -38,7 +38,7 @@ struct FilterStatsCommand {
     for (int i = 0; i < report.wall_count; ++i) {
       walls.push_back(generate_random_wall(derive_seed(report.wall_seed, i), config.settings.walls));
     }
-    ProgressBar progress("filter-stats", report.wall_count);
+    ProgressBar progress("filter-stats", report.wall_count, config.progress);
     report.counts = filter_statistics(walls, report.parameters, [&](int done) { progress.update(done); });
     progress.finish();
     std::cout << (json ? filter_json(report).dump(2) + "\n" : filter_text(report));

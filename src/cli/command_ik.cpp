@@ -22,7 +22,7 @@ namespace {
 
 // The IK parameters; ik-compare runs both solvers, so it takes no ik.solver.
 const ParameterSet kIkCommandKeys{{"experiment.urdf", "ik"}, {"ik.cache_unreachable", "ik.guess"}};
-const ParameterSet kIkCompareKeys{{"experiment.urdf", "experiment.seed", "ik", "compare"},
+const ParameterSet kIkCompareKeys{{"experiment.urdf", "experiment.seed", "ik", "compare", "output.progress"},
                                   {"ik.solver", "ik.cache_unreachable", "ik.guess"}};
 
 struct IkCommand {
@@ -62,14 +62,14 @@ struct IkCompareCommand {
     const IkParameters& settings = config.settings.learning.climbing.reachability.ik;
     const BodyModel model = load_configured_body(config);
     IkParameters walk = settings;
-    walk.solver = config.compare_walk_solver_kind;
+    walk.solver = config.compare_walk_solver;
     // The queries are the same whatever the wall rule, so that rules compare on one set.
     walk.wall = WallRule::Ignore;
     ReachQueryParameters query_settings;
     query_settings.root = config.settings.learning.climbing.reachability.root;
     const auto batch =
         climbing_reach_queries(model, walk, config.compare_queries, config.settings.seed, query_settings);
-    ProgressBar progress("ik-compare", config.compare_queries);
+    ProgressBar progress("ik-compare", config.compare_queries, config.progress);
     const SolverAgreement a = compare_solvers(model, batch, settings, [&](int done) { progress.update(done); });
     progress.finish();
     std::cout << (json ? solver_agreement_json(a, config.settings.seed).dump(2) + "\n"

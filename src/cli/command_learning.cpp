@@ -50,7 +50,7 @@ void require_output(const std::string& output) {
 }
 
 struct PaperCommand {
-  ParameterBinding binding{"paper", kPaperKeys};
+  ParameterBinding binding{"paper", with_progress(kPaperKeys)};
   std::string output = "out/paper";
   bool json = false;
   bool overwrite = false;
@@ -61,7 +61,7 @@ struct PaperCommand {
     const ExperimentParameters settings = job.config.settings;  // the job takes the config
     ProgressBar progress(fmt::format("paper: {} x {} x 3 conditions", counted(settings.wall_pairs, "wall"),
                                      counted(settings.seeds_per_wall, "seed")),
-                         settings.learning_runs());
+                         settings.learning_runs(), job.config.progress);
     const PaperJobOutcome outcome = run_with_flags(binding, [&] {
       return run_paper_job(std::move(job), {"crux paper", [&](int done) { progress.update(done); }, {}, {}});
     });
@@ -92,7 +92,7 @@ struct SingleRunCommand {
     job.output = output;
     job.overwrite = overwrite;
     const int iterations = job.config.settings.learning.iterations;
-    ProgressBar progress(condition_name(condition), iterations);
+    ProgressBar progress(condition_name(condition), iterations, job.config.progress);
     const std::string caller = condition == Condition::Transfer ? "crux transfer" : "crux train";
     const JobHooks hooks{caller,
                          [&](int done) { progress.update(done); },
@@ -149,9 +149,10 @@ void add_learning_commands(CLI::App& app) {
       ->excludes(paper->binding.option("experiment.seeds_per_wall"));
   p->callback([paper] { paper->run(); });
 
-  add_single_run_command(app, "train", "Learn to climb one wall from empty tables", Condition::Training, kTrainKeys);
+  add_single_run_command(app, "train", "Learn to climb one wall from empty tables", Condition::Training,
+                         with_progress(kTrainKeys));
   add_single_run_command(app, "transfer", "Learn to climb one wall starting from a Q_grid learnt elsewhere",
-                         Condition::Transfer, kTransferKeys);
+                         Condition::Transfer, with_progress(kTransferKeys));
 
   auto plan = std::make_shared<PlanCommand>();
   auto* l = app.add_subcommand("plan", "Exact shortest climb of a wall under the learning's rules");

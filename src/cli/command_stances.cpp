@@ -16,7 +16,7 @@ namespace {
 
 // Random walls from wall.seed (wall i from a seed derived from it and i), the body, its
 // IK and the static model's parameters.
-const ParameterSet kStancesKeys{{"experiment.urdf", "wall", "ik", "physics", "filter", "stances"},
+const ParameterSet kStancesKeys{{"experiment.urdf", "wall", "ik", "physics", "filter", "stances", "output.progress"},
                                 {"wall.file", "wall.name", "ik.wall", "physics.model"}};
 
 ExperimentConfig stances_defaults() {
@@ -39,7 +39,7 @@ struct StancesCommand {
     parameters.moves = config.stance_moves;
     parameters.walls = config.settings.walls;
     parameters.climbing = config.settings.learning.climbing;
-    ProgressBar progress("stances", parameters.wall_count);
+    ProgressBar progress("stances", parameters.wall_count, config.progress);
     const StanceSurvey survey = survey_stances(model, parameters, [&](int done) { progress.update(done); });
     progress.finish();
     std::cout << (json ? stance_survey_json(survey, parameters).dump(2) + "\n"

@@ -50,7 +50,8 @@ std::uint64_t job_digest(const std::string& sweep_toml) {
 }
 
 struct SweepCommand {
-  ParameterBinding binding{"sweep", kSweepKeys};
+  ParameterBinding binding{"sweep", with_progress(kSweepKeys)};
+  ProgressDisplay progress_display = ProgressDisplay::Bar;
   std::string output = "out/sweep";
   bool json = false;
   bool overwrite = false;
@@ -99,6 +100,7 @@ struct SweepCommand {
       check_recorded_provenance(first, definition.provenance, binding.config_path());
     }
     BodyModel model = load_configured_body(first);
+    progress_display = first.progress;
     SweepJob job{std::move(definition.plan),
                  output.empty() ? std::filesystem::path() : std::filesystem::absolute(output).lexically_normal(),
                  std::move(definition.sweep_toml),
@@ -117,7 +119,7 @@ struct SweepCommand {
     if (coordinator) {
       progress.emplace(
           fmt::format("sweep: {}, {}", counted(job.plan.cells.size(), "cell"), counted(job.plan.tasks.size(), "task")),
-          static_cast<long>(job.plan.tasks.size()), true);
+          static_cast<long>(job.plan.tasks.size()), progress_display, true);
     }
     bool started = false;
     const SweepOutcome outcome = run_sweep(job, model, cluster, [&](std::size_t done, std::size_t) {

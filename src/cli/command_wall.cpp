@@ -55,7 +55,7 @@ struct GenerateCommand {
     if (!config.wall_name.empty()) wall.name = config.wall_name;
     const IkResult reach = check_start(config, wall);
     save_wall(output, wall);
-    const std::string solver = ik_solver_name(config.settings.learning.climbing.reachability.ik.solver);
+    const std::string solver = enum_name(config.settings.learning.climbing.reachability.ik.solver);
     std::cout << (json ? generated_wall_json(output, wall, *config.wall_seed, reach, solver).dump(2) + "\n"
                        : generated_wall_text(output, wall, reach, solver));
     if (reach.reached) return;
@@ -80,7 +80,7 @@ struct ShowCommand {
     const IkResult reach = check_start(config, wall);
     std::optional<PlacedGrid> grid;
     if (!grid_limb.empty()) {
-      const auto limb = parse_limb(grid_limb);
+      const auto limb = parse_enum<Limb>(grid_limb);
       if (!limb)
         throw InputError("--limb", fmt::format("unknown limb '{}' (right_hand, left_hand, right_foot, left_foot)",
                                                printable(grid_limb)));

@@ -31,20 +31,28 @@ void ParameterBinding::bind(CLI::App* command) {
                       "TOML config file, keys as in the config.toml crux writes (flags override it)");
   for (const ConfigField& field : config_fields(from_flags_)) {
     if (!accepted_.accepts(field.key)) continue;
+    const std::string help = field.described_help();
     std::visit(
-        [&](auto* target) {
+        [&](auto target) {
           using T = std::remove_pointer_t<decltype(target)>;
-          CLI::Option* option = command->add_option(flag_for_key(field.key), *target, field.help);
-          if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, std::optional<std::uint64_t>>) {
-            option->check(kSeedDigits);
-          }
-          if constexpr (std::is_same_v<T, std::optional<std::uint64_t>> || std::is_same_v<T, std::optional<int>> ||
-                        std::is_same_v<T, std::optional<double>>) {
-            if (target->has_value()) option->default_str(fmt::format("{}", **target));
-          } else if constexpr (std::is_same_v<T, std::string>) {
-            if (!target->empty()) option->capture_default_str();
+          CLI::Option* option = nullptr;
+          if constexpr (std::is_same_v<T, ChoiceTarget<false>>) {
+            std::string& text = choice_texts_[field.key];
+            option = command->add_option(flag_for_key(field.key), text, help);
+            option->default_str(target.type->text(target.target));
           } else {
-            option->capture_default_str();
+            option = command->add_option(flag_for_key(field.key), *target, help);
+            if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, std::optional<std::uint64_t>>) {
+              option->check(kSeedDigits);
+            }
+            if constexpr (std::is_same_v<T, std::optional<std::uint64_t>> || std::is_same_v<T, std::optional<int>> ||
+                          std::is_same_v<T, std::optional<double>>) {
+              if (target->has_value()) option->default_str(fmt::format("{}", **target));
+            } else if constexpr (std::is_same_v<T, std::string>) {
+              if (!target->empty()) option->capture_default_str();
+            } else {
+              option->capture_default_str();
+            }
           }
           options_.emplace_back(field.key, option);
         },
@@ -107,8 +115,16 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
     if (given == nullptr || given->count() == 0) continue;
     config.given.insert(fields[i].key);
     std::visit(
-        [&](auto* destination) {
-          *destination = *std::get<std::remove_cvref_t<decltype(destination)>>(flags[i].target);
+        [&](auto destination) {
+          if constexpr (std::is_pointer_v<decltype(destination)>) {
+            *destination = *std::get<decltype(destination)>(flags[i].target);
+          } else {
+            try {
+              assign_text(fields[i], choice_texts_.at(fields[i].key));
+            } catch (const InputError& e) {
+              throw InputError(where(e.source()), e.problem());
+            }
+          }
         },
         fields[i].target);
   }

@@ -4,6 +4,7 @@
 // command's defaults. Every error names what the user typed: the flag, or the file, its
 // line and the key.
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,6 +15,12 @@
 #include "experiments/experiment_config.hpp"
 
 namespace crux::cli {
+
+// `keys` and output.progress: the set of a command that shows its progress.
+inline ParameterSet with_progress(ParameterSet keys) {
+  keys.include.push_back("output.progress");
+  return keys;
+}
 
 class ParameterBinding {
  public:
@@ -42,6 +49,8 @@ class ParameterBinding {
   ExperimentConfig from_flags_;
   std::string config_path_;
   std::vector<std::pair<std::string, CLI::Option*>> options_;  // key, its flag
+  // A choice's flag text by key, parsed by resolve() so that its error names the flag.
+  std::map<std::string, std::string> choice_texts_;
   ConfigLines lines_;
   // The config file, read and parsed at its first use: a sweep resolves every cell from it.
   std::optional<ConfigDocument> document_;

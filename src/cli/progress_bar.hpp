@@ -1,8 +1,10 @@
 #pragma once
-// A progress bar on stderr, drawn only when stderr is a terminal so that logs and
-// pipelines stay quiet. A timed bar (long jobs such as sweeps) adds the rate and the
-// time left, and when stderr is not a terminal (mpirun's pipes, a batch log) writes
-// the same as a plain line every ten seconds.
+// Progress on stderr, as output.progress asks. bar: a bar redrawn in place, only when
+// stderr is a terminal so that logs and pipelines stay quiet; a timed bar (long jobs
+// such as sweeps) adds the rate and the time left, and when stderr is not a terminal
+// (mpirun's pipes, a batch log) writes the same as a plain line every ten seconds.
+// lines: a plain line every 10 % (a timed one every ten seconds), terminal or not.
+// none: nothing.
 
 #include <unistd.h>
 
@@ -12,16 +14,19 @@
 
 #include <fmt/format.h>
 
+#include "common/progress_display.hpp"
+
 namespace crux::cli {
 
 class ProgressBar {
  public:
-  ProgressBar(std::string label, long total, bool timed = false)
+  ProgressBar(std::string label, long total, ProgressDisplay display, bool timed = false)
       : label_(std::move(label)),
         total_(total),
-        terminal_(::isatty(2) == 1),
+        terminal_(display == ProgressDisplay::Bar && ::isatty(2) == 1),
         timed_(timed),
-        enabled_(terminal_ || timed) {}
+        enabled_(display == ProgressDisplay::Lines || (display == ProgressDisplay::Bar && (terminal_ || timed))),
+        step_(display == ProgressDisplay::Lines ? 10 : 1) {}
   ~ProgressBar() { finish(); }
 
   // `first`: where a resumed job starts, left out of the rate.
@@ -29,7 +34,7 @@ class ProgressBar {
 
   void update(long done) {
     if (!enabled_ || total_ <= 0) return;
-    const int percent = static_cast<int>(100 * done / total_);
+    const int percent = static_cast<int>(100 * done / total_) / step_ * step_;
     const auto now = std::chrono::steady_clock::now();
     const double since_shown = std::chrono::duration<double>(now - shown_).count();
     if (timed_ ? since_shown < (terminal_ ? 0.25 : 10.0) && done < total_ : percent == last_percent_) return;
@@ -60,6 +65,7 @@ class ProgressBar {
   std::string label_;
   long total_;
   bool terminal_, timed_, enabled_;
+  int step_;  // percent between two lines
   int last_percent_ = -1;
   long first_ = 0;
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now(), shown_ = started_;

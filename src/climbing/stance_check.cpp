@@ -12,14 +12,6 @@
 
 namespace crux {
 
-const char* physics_model_name(PhysicsModel model) { return model == PhysicsModel::Static ? "static" : "kinematic"; }
-
-std::optional<PhysicsModel> parse_physics_model(std::string_view name) {
-  if (name == "kinematic") return PhysicsModel::Kinematic;
-  if (name == "static") return PhysicsModel::Static;
-  return std::nullopt;
-}
-
 namespace {
 
 // The static model scales the body's strength by its mass and stature (the loader

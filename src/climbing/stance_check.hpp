@@ -14,29 +14,11 @@
 #include <vector>
 
 #include "configurations/hold_configuration.hpp"
+#include "physics/physics_model.hpp"
 #include "physics/static_equilibrium.hpp"
-#include "physics/strength_profile.hpp"
 #include "wall/wall.hpp"
 
 namespace crux {
-
-enum class PhysicsModel { Kinematic, Static };
-const char* physics_model_name(PhysicsModel model);
-std::optional<PhysicsModel> parse_physics_model(std::string_view name);
-
-struct PhysicsParameters {
-  PhysicsModel model = PhysicsModel::Kinematic;  // the paper's, and the default
-  // Coulomb's coefficient of every contact (a choice: the paper and the sources are silent).
-  double friction = 1.0;
-  // The largest normal force of a hand on a hold, newtons: by default the advanced
-  // climbers' (physics/strength_profile), else physics.strength's level or physics.grip.
-  // Feet are bounded by the legs' joint torques and friction only.
-  double grip = kAdvancedClimberGripN;
-  // A hold without a support direction in its wall file: a hand hooks its incut lip,
-  // which pushes up and this many degrees into the wall (a jug); a foot stands on its
-  // top, which pushes straight up the wall.
-  double support_angle_deg = 45.0;
-};
 
 // What holds a posture still on its holds, to draw it (crux view; docs/OUTPUTS.md).
 struct StanceLoads {

@@ -29,27 +29,6 @@ bool crossed(const Wall& wall, int right, int left) {
 
 }  // namespace
 
-const char* reading_name(FeetAboveHandsReading reading) {
-  switch (reading) {
-    case FeetAboveHandsReading::LowestFootAboveHighestHand:
-      return "lowest-foot-above-highest-hand";
-    case FeetAboveHandsReading::LowestFootAboveLowestHand:
-      return "lowest-foot-above-lowest-hand";
-    case FeetAboveHandsReading::HighestFootAboveLowestHand:
-      return "highest-foot-above-lowest-hand";
-    case FeetAboveHandsReading::MeanFeetAboveMeanHands:
-      return "mean-feet-above-mean-hands";
-  }
-  return "?";
-}
-
-std::optional<FeetAboveHandsReading> parse_reading(std::string_view name) {
-  for (const FeetAboveHandsReading reading : kFeetAboveHandsReadings) {
-    if (name == reading_name(reading)) return reading;
-  }
-  return std::nullopt;
-}
-
 bool span_within_reach(const Wall& wall, const HoldConfiguration& c, double max_span_m) {
   const double limit = max_span_m * max_span_m;
   for (int a = 0; a < kLimbCount; ++a) {

@@ -4,9 +4,8 @@
 // a parameter; the free limb of a 3-configuration takes part in no rule.
 
 #include <array>
-#include <optional>
-#include <string_view>
 
+#include "common/enum_names.hpp"
 #include "configurations/hold_configuration.hpp"
 #include "wall/wall.hpp"
 
@@ -24,8 +23,14 @@ enum class FeetAboveHandsReading {
 inline constexpr std::array<FeetAboveHandsReading, 4> kFeetAboveHandsReadings{
     FeetAboveHandsReading::LowestFootAboveHighestHand, FeetAboveHandsReading::LowestFootAboveLowestHand,
     FeetAboveHandsReading::HighestFootAboveLowestHand, FeetAboveHandsReading::MeanFeetAboveMeanHands};
-const char* reading_name(FeetAboveHandsReading reading);
-std::optional<FeetAboveHandsReading> parse_reading(std::string_view name);
+template <>
+struct EnumNames<FeetAboveHandsReading> {
+  static constexpr std::array<EnumName<FeetAboveHandsReading>, 4> entries{
+      {{FeetAboveHandsReading::LowestFootAboveHighestHand, "lowest-foot-above-highest-hand"},
+       {FeetAboveHandsReading::LowestFootAboveLowestHand, "lowest-foot-above-lowest-hand"},
+       {FeetAboveHandsReading::HighestFootAboveLowestHand, "highest-foot-above-lowest-hand"},
+       {FeetAboveHandsReading::MeanFeetAboveMeanHands, "mean-feet-above-mean-hands"}}};
+};
 
 struct FilterParameters {
   double max_span_m = 2.8;  // the climber's maximal extension (upper bound)

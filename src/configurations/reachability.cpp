@@ -2,15 +2,6 @@
 
 namespace crux {
 
-const char* ik_guess_name(IkGuess guess) { return guess == IkGuess::Previous ? "previous" : "standing"; }
-
-std::optional<IkGuess> parse_ik_guess(std::string_view name) {
-  for (const IkGuess guess : {IkGuess::Previous, IkGuess::Standing}) {
-    if (name == ik_guess_name(guess)) return guess;
-  }
-  return std::nullopt;
-}
-
 ReachTarget reach_target(const BodyModel& model, const Wall& wall, const HoldConfiguration& complete,
                          const RootTargetParameters& root) {
   ReachTarget target;

@@ -2,9 +2,6 @@
 // C-reachability of a 4-configuration (paper, III-A and III-C): the IK target it
 // defines on a wall, and whether the body reaches it.
 
-#include <optional>
-#include <string_view>
-
 #include "configurations/hold_configuration.hpp"
 #include "ik/ik_solver.hpp"
 #include "ik/root_target.hpp"
@@ -17,8 +14,11 @@ namespace crux {
 // configuration's own root target H(C4), as the start is solved, so that the verdict
 // depends on the configuration alone and not on the climb that led to it.
 enum class IkGuess { Previous, Standing };
-const char* ik_guess_name(IkGuess guess);
-std::optional<IkGuess> parse_ik_guess(std::string_view name);
+template <>
+struct EnumNames<IkGuess> {
+  static constexpr std::array<EnumName<IkGuess>, 2> entries{
+      {{IkGuess::Previous, "previous"}, {IkGuess::Standing, "standing"}}};
+};
 
 // How C-reachability is decided: the IK solver and its settings, the root heuristic,
 // whether unreachable verdicts are cached (docs/MODEL.md, choice C11), and where the

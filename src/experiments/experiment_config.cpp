@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <toml++/toml.h>
 
 #include "common/input_error.hpp"
@@ -20,175 +21,303 @@
 
 namespace crux {
 
-std::vector<ConfigField> config_fields(ExperimentConfig& c) {
-  ExperimentParameters& s = c.settings;
-  LearningParameters& l = s.learning;
-  ClimbingParameters& m = l.climbing;
-  IkParameters& ik = m.reachability.ik;
-  return {
-      {"experiment.urdf", "URDF file of the body (default: the installed crux_human.urdf)", &c.urdf},
+namespace {
+
+constexpr long long kMaxRunsPerCondition = 1000000;
+// Each training run learns K times its iterations: beyond this a typo, not an experiment.
+constexpr int kMaxTrainingWalls = 1000;
+
+std::string bound_text(double value) { return fmt::format("{}", value); }
+
+}  // namespace
+
+bool Bounds::contains(double value) const {
+  return (min_open ? value > min : value >= min) && (max_open ? value < max : value <= max);
+}
+
+std::string Bounds::summary(bool integer) const {
+  const bool has_min = std::isfinite(min), has_max = std::isfinite(max);
+  if (has_min && has_max) {
+    if (integer && !min_open && !max_open) return fmt::format("{} to {}", bound_text(min), bound_text(max));
+    return fmt::format("{}{}, {}{}", min_open ? '(' : '[', bound_text(min), bound_text(max), max_open ? ')' : ']');
+  }
+  if (has_min) return fmt::format("{} {}", min_open ? ">" : ">=", bound_text(min));
+  if (has_max) return fmt::format("{} {}", max_open ? "<" : "<=", bound_text(max));
+  return {};
+}
+
+std::string Bounds::problem(bool integer) const {
+  const bool has_min = std::isfinite(min), has_max = std::isfinite(max);
+  std::string text;
+  if (has_min && !has_max && min == 0) {
+    text = min_open ? "must be positive" : "must be 0 or positive";
+  } else if (has_min && has_max && integer && !min_open && !max_open) {
+    text = fmt::format("must be from {} to {}", bound_text(min), bound_text(max));
+  } else if (has_min && has_max) {
+    text = "must be in " + summary(integer);
+  } else if (has_min || has_max) {
+    text = "must be " + summary(integer);
+  }
+  return why == nullptr ? text : fmt::format("{} ({})", text, why);
+}
+
+template <bool Const>
+const char* ConfigFieldOf<Const>::type_name() const {
+  static constexpr const char* kNames[] = {"number", "number",  "integer", "integer", "seed",
+                                           "seed",   "boolean", "text",    "choice"};
+  if (is_path) return "path";
+  return kNames[target.index()];
+}
+
+template <bool Const>
+bool ConfigFieldOf<Const>::is_integer() const {
+  return std::holds_alternative<Ref<int>>(target) || std::holds_alternative<Ref<std::optional<int>>>(target);
+}
+
+template <bool Const>
+std::string ConfigFieldOf<Const>::described_help() const {
+  std::vector<std::string> notes;
+  if (!unit.empty()) notes.push_back(unit);
+  if (const std::string range = bounds.summary(is_integer()); !range.empty()) notes.push_back(range);
+  if (const auto* choice = std::get_if<ChoiceTarget<Const>>(&target)) notes.push_back(choice->type->choices());
+  return notes.empty() ? help : fmt::format("{} ({})", help, fmt::join(notes, "; "));
+}
+
+template struct ConfigFieldOf<false>;
+template struct ConfigFieldOf<true>;
+
+namespace {
+
+template <typename Enum>
+ChoiceTarget<false> choice(Enum* target) {
+  return {target, &enum_choice_type<Enum>()};
+}
+template <typename Enum>
+ChoiceTarget<true> choice(const Enum* target) {
+  return {target, &enum_choice_type<Enum>()};
+}
+
+// physics.strength: a climbing level's name, or empty (unset).
+const ChoiceType kClimbingLevelChoice{[](const void* target) { return *static_cast<const std::string*>(target); },
+                                      [](void* target, std::string_view text) {
+                                        if (!find_climbing_level(text)) return false;
+                                        *static_cast<std::string*>(target) = std::string(text);
+                                        return true;
+                                      },
+                                      [] { return climbing_level_descriptions(); }};
+ChoiceTarget<false> level_choice(std::string* target) { return {target, &kClimbingLevelChoice}; }
+ChoiceTarget<true> level_choice(const std::string* target) { return {target, &kClimbingLevelChoice}; }
+
+constexpr Bounds kAboveZeroToOne{.min = 0, .max = 1, .min_open = true};
+constexpr Bounds kZeroToBelowOne{.min = 0, .max = 1, .max_open = true};
+constexpr Bounds kUnitInterval{.min = 0, .max = 1};
+constexpr Bounds kOpenRightAngle{.min = -kMaxInclineDeg, .max = kMaxInclineDeg, .min_open = true, .max_open = true};
+
+// The one declaration of every key, for a config or a const one. Units and bounds go in
+// their columns, not in the help, which says what the key means.
+template <typename Config>
+auto fields_of(Config& c) {
+  using Field = ConfigFieldOf<std::is_const_v<Config>>;
+  auto& s = c.settings;
+  auto& l = s.learning;
+  auto& m = l.climbing;
+  auto& ik = m.reachability.ik;
+  auto& grid = m.grid;
+  auto& tw = c.training_wall;
+  return std::vector<Field>{
+      {"experiment.urdf", "URDF file of the body (default: the installed crux_human.urdf)", &c.urdf, "", {}, true},
       {"experiment.seed", "Seed: the experiment's walls and runs, a run's learning or the queries derive from it",
        &s.seed},
-      {"experiment.runs", "N walls with one seed each: sets walls = N and seeds_per_wall = 1", &c.runs},
-      {"experiment.walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs},
-      {"experiment.seeds_per_wall", "Learning seeds per wall pair", &s.seeds_per_wall},
+      {"experiment.runs", "N walls with one seed each: sets walls = N and seeds_per_wall = 1", &c.runs, "", kPositive},
+      {"experiment.walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs, "",
+       kPositive},
+      {"experiment.seeds_per_wall", "Learning seeds per wall pair", &s.seeds_per_wall, "", kPositive},
       {"experiment.training_walls",
        "Walls each training run learns Q_grid on in sequence before transfer (docs/TRANSFER.md): the last is the "
        "pair's training wall",
-       &s.training_walls},
-      {"experiment.threads", "Worker threads (0: all cores); results do not depend on it", &s.threads},
-      {"experiment.iterations", "Learning iterations (real actions) per run", &l.iterations},
+       &s.training_walls, "", closed_range(1, kMaxTrainingWalls)},
+      {"experiment.threads", "Worker threads (0: all cores); results do not depend on it", &s.threads, "",
+       closed_range(0, kMaxThreads, "0: all cores")},
+      {"experiment.iterations", "Learning iterations (real actions) per run", &l.iterations, "",
+       closed_range(1, kMaxIterations, "a run keeps every iteration's record in memory")},
       {"experiment.beginning",
        "Iterations of Table I's beginning window and of the early and late windows of the metrics (0: 2000, or all "
        "iterations if fewer)",
-       &c.beginning},
+       &c.beginning, "", kNonNegative},
       {"experiment.threshold_length",
        "Episode length (iterations) that counts as climbing well: time to threshold and take-off",
-       &s.analysis.threshold_length},
+       &s.analysis.threshold_length, "", kPositive},
       {"experiment.bootstrap_resamples", "Resamples of the cluster bootstrap over walls",
-       &s.analysis.bootstrap_resamples},
+       &s.analysis.bootstrap_resamples, "", closed_range(100, 10000000)},
       {"experiment.plan", "Compute each wall's exact shortest climb", &s.plan},
       {"experiment.plan_max_solves",
        "IK solves the exact planner may spend on a wall; it stops there without a plan (12-20 us each on average)",
-       &s.plan_search.max_ik_solves},
+       &s.plan_search.max_ik_solves, "", kPositive},
       {"experiment.plan_check_moves",
        "Static model: the exact planner also refuses a move whose IK path (the replay's 16 postures) does not hold "
        "still on the three holds kept",
        &s.plan_search.check_moves},
-      {"experiment.greedy_cap", "Actions allowed to the greedy policy's evaluation climb", &l.greedy_cap},
+      {"experiment.greedy_cap", "Actions allowed to the greedy policy's evaluation climb", &l.greedy_cap, "",
+       kPositive},
       {"experiment.checkpoint_every",
        "Iterations between checkpoints of a run (0: none); the same command started again resumes from the last",
-       &c.checkpoint_every},
-      {"experiment.q_grid", "Q_grid file (q_grid.bin of a training run) that transfer starts from", &c.q_grid},
+       &c.checkpoint_every, "", kNonNegative},
+      {"experiment.q_grid",
+       "Q_grid file (q_grid.bin of a training run) that transfer starts from",
+       &c.q_grid,
+       "",
+       {},
+       true},
       {"experiment.transfer",
-       "How transfer uses its Q_grid (docs/TRANSFER.md): paper (Algorithm 3), informed, prior, seeded, shaping or "
-       "ordered; "
-       "control "
-       "follows the same rule from an empty Q_grid",
-       &c.transfer},
-      {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha},
-      {"learning.gamma", "Discount factor gamma", &l.dyna.rates.gamma},
-      {"learning.epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon},
-      {"learning.planning_steps", "Dyna planning updates per real step", &l.dyna.planning_steps},
+       "How transfer uses its Q_grid (docs/TRANSFER.md): paper is Algorithm 3; control follows the same rule from an "
+       "empty Q_grid",
+       choice(&l.dyna.transfer)},
+      {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha, "", kAboveZeroToOne},
+      {"learning.gamma", "Discount factor gamma", &l.dyna.rates.gamma, "", kZeroToBelowOne},
+      {"learning.epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon, "", kUnitInterval},
+      {"learning.planning_steps", "Dyna planning updates per real step", &l.dyna.planning_steps, "", kNonNegative},
       {"learning.planner",
        "Dyna planning: uniform (Algorithm 2) or prioritized (prioritized sweeping, same number of updates)",
-       &c.planner},
+       choice(&l.dyna.planner)},
       {"learning.priority_threshold", "Prioritized sweeping queues pairs whose |TD error| exceeds this",
-       &l.dyna.priority_threshold},
+       &l.dyna.priority_threshold, "", kNonNegative},
       {"reward.unreachable", "Reward of an unreachable 4-configuration", &m.rewards.unreachable},
       {"reward.step", "Reward of a reachable 4-configuration", &m.rewards.step},
       {"reward.finish", "Reward when the centre of mass passes the finishing height", &m.rewards.finish},
       {"reward.effort",
        "Static model: subtracted from a reached move's reward per unit of its stance's effort (0: the paper's rewards)",
-       &m.rewards.effort},
+       &m.rewards.effort, "", kNonNegative},
       {"reward.height",
        "Potential-based height shaping: weight per metre of the mean height of the held holds (0: the paper's "
        "rewards)",
-       &m.rewards.height},
-      {"ik.solver", "IK solver: fast or paper (Algorithm 1)", &c.solver},
-      {"ik.alpha", "Step size of the paper's gradient descent", &ik.paper.step_size},
-      {"ik.time_step", "Simulated seconds per IK iteration (both solvers)", &ik.time_step_s},
-      {"ik.timeout", "Delta_t: simulated seconds before the paper's solver gives up", &ik.paper.timeout_s},
+       &m.rewards.height, "per m", kNonNegative},
+      {"ik.solver", "IK solver: fast, or paper (Algorithm 1)", choice(&ik.solver)},
+      {"ik.alpha", "Step size of the paper's gradient descent", &ik.paper.step_size, "", kPositive},
+      {"ik.time_step", "Simulated seconds per IK iteration (both solvers)", &ik.time_step_s, "s", kPositive},
+      {"ik.timeout", "Delta_t: simulated seconds before the paper's solver gives up", &ik.paper.timeout_s, "s",
+       kPositive},
       {"ik.paper_stall_iterations",
        "Steps over which the paper's solver looks for a stall (0: it never gives up before Delta_t, as Algorithm 1)",
-       &ik.paper.stall_iterations},
+       &ik.paper.stall_iterations, "", closed_range(0, 64)},
       {"ik.paper_stall_decrease", "It has stalled when f fell by less than this share of f over those steps...",
-       &ik.paper.stall_decrease},
-      {"ik.paper_stall_margin", "...while a point is more than this outside its sphere (m); it then gives up",
-       &ik.paper.stall_margin_m},
+       &ik.paper.stall_decrease, "", kNonNegative},
+      {"ik.paper_stall_margin", "...while a point is more than this outside its sphere; it then gives up",
+       &ik.paper.stall_margin_m, "m", kNonNegative},
       {"ik.rule_out_beyond_reach",
        "Both solvers give up before iterating when a hold lies beyond its limb's reach (the verdict cannot change)",
        &ik.rule_out_beyond_reach},
-      {"ik.fast_max_iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations},
+      {"ik.fast_max_iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations, "", kPositive},
       {"ik.fast_stall_decrease", "The fast solver gives up when f drops by less than this share per step...",
-       &ik.fast.stall_relative_decrease},
-      {"ik.fast_stall_iterations", "...this many steps in a row", &ik.fast.stall_iterations},
-      {"ik.fast_aim", "The fast solver aims at this share of each tolerance radius", &ik.fast.aim_fraction},
-      {"ik.grasp_radius", "Radius of the grasp spheres (m)", &ik.tolerances.grasp_radius},
-      {"ik.root_tolerance", "Radius of the root tolerance sphere (m)", &ik.tolerances.root_radius},
-      {"ik.wall_distance", "Distance of the root target H(C4) from the wall, on the climber's side (m)",
-       &m.reachability.root.distance_from_wall},
+       &ik.fast.stall_relative_decrease, "", kNonNegative},
+      {"ik.fast_stall_iterations", "...this many steps in a row", &ik.fast.stall_iterations, "", kPositive},
+      {"ik.fast_aim", "The fast solver aims at this share of each tolerance radius", &ik.fast.aim_fraction, "",
+       kZeroToBelowOne},
+      {"ik.grasp_radius", "Radius of the grasp spheres", &ik.tolerances.grasp_radius, "m", kPositive},
+      {"ik.root_tolerance", "Radius of the root tolerance sphere", &ik.tolerances.root_radius, "m", kPositive},
+      {"ik.wall_distance", "Distance of the root target H(C4) from the wall, on the climber's side",
+       &m.reachability.root.distance_from_wall, "m"},
       {"ik.cache_unreachable", "Cache unreachable verdicts", &m.reachability.cache_unreachable},
       {"ik.wall",
-       "The body and the wall: ignore (the paper's kinematic model), reject a solved posture that passes through it, "
-       "or avoid (keep the body out while solving)",
-       &c.wall_rule},
+       "The body and the wall: ignore it (the paper's kinematic model), reject a solved posture that passes through "
+       "it, or avoid it (keep the body out while solving; the static model's, and its default)",
+       choice(&ik.wall)},
       {"ik.guess",
        "Where the IK starts a configuration's solve: previous (the posture the climber holds, the paper's) or "
        "standing (the standing posture at the configuration's root target, so that a verdict does not depend on "
        "the climb)",
-       &c.ik_guess},
+       choice(&m.reachability.guess)},
       {"physics.model",
        "kinematic (the paper's: IK alone decides) or static (the body kept out of the wall and each stance held "
        "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md)",
-       &c.physics_model},
-      {"physics.friction", "Static model: Coulomb friction coefficient of every contact", &m.physics.friction},
+       choice(&m.physics.model)},
+      {"physics.friction", "Static model: Coulomb friction coefficient of every contact", &m.physics.friction, "",
+       kNonNegative},
       {"physics.strength",
-       fmt::format("Static model: a climbing level whose published grip sets physics.grip: {} (docs/MODEL.md); an "
-                   "explicit physics.grip overrides it",
-                   climbing_level_descriptions()),
-       &c.physics_strength},
-      {"physics.grip", "Static model: largest normal force of a hand on a hold (N)", &m.physics.grip},
+       "Static model: a climbing level whose published grip sets physics.grip (docs/MODEL.md); an explicit "
+       "physics.grip overrides it",
+       level_choice(&c.physics_strength)},
+      {"physics.grip", "Static model: largest normal force of a hand on a hold", &m.physics.grip, "N", kPositive},
       {"physics.support_angle",
-       "Static model: a hold without a support direction pushes a hand up and this many degrees into the wall "
-       "(a jug's incut lip)",
-       &m.physics.support_angle_deg},
+       "Static model: a hold without a support direction pushes a hand up and this far into the wall (a jug's "
+       "incut lip)",
+       &m.physics.support_angle_deg, "degrees", closed_range(-90, 90)},
       {"physics.fall_when_stuck",
        "A failed move also falls when no limb can move to another hold of the stance, every such move known "
        "unreachable (a trap that C27's dead ends miss)",
        &m.fall_when_stuck},
-      {"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &c.compare_queries},
-      {"stances.moves", "Random kinematic moves per wall whose stances crux stances checks", &c.stance_moves},
+      {"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &c.compare_queries, "",
+       kPositive},
+      {"stances.moves", "Random kinematic moves per wall whose stances crux stances checks", &c.stance_moves, "",
+       closed_range(1, kMaxStanceMoves)},
       {"compare.walk_solver", "Solver whose reached postures start the next queries of ik-compare's climbing walk",
-       &c.compare_walk_solver},
-      {"filter.max_span", "Largest distance between two holds of a configuration (m)", &m.filter.max_span_m},
-      {"filter.reading", "Reading of 'both feet above the hands'", &c.reading},
+       choice(&c.compare_walk_solver)},
+      {"filter.max_span", "Largest distance between two holds of a configuration", &m.filter.max_span_m, "m",
+       kPositive},
+      {"filter.reading", "Reading of 'both feet above the hands' (docs/MODEL.md, choice C13)",
+       choice(&m.filter.feet_above_hands)},
       {"grid.agent_space",
        "Agent space (docs/TRANSFER.md): grid (the paper's moving grid) or reach (direction sectors = columns and "
        "distance rings of tile_height m = rows around the free limb's shoulder or hip)",
-       &c.agent_space},
-      {"grid.columns", "Columns of the moving grid", &m.grid.columns},
-      {"grid.rows", "Rows of the moving grid", &m.grid.rows},
-      {"grid.tile_width", "Tile width of the moving grid (m)", &m.grid.tile_width},
-      {"grid.tile_height", "Tile height of the moving grid (m)", &m.grid.tile_height},
-      {"grid.right_hand_anchor_column", "Right hand's anchor tile P_1: column", &m.grid.anchors[0][0]},
-      {"grid.right_hand_anchor_row", "Right hand's anchor tile P_1: row", &m.grid.anchors[0][1]},
-      {"grid.left_hand_anchor_column", "Left hand's anchor tile P_2: column", &m.grid.anchors[1][0]},
-      {"grid.left_hand_anchor_row", "Left hand's anchor tile P_2: row", &m.grid.anchors[1][1]},
-      {"grid.right_foot_anchor_column", "Right foot's anchor tile P_3: column", &m.grid.anchors[2][0]},
-      {"grid.right_foot_anchor_row", "Right foot's anchor tile P_3: row", &m.grid.anchors[2][1]},
-      {"grid.left_foot_anchor_column", "Left foot's anchor tile P_4: column", &m.grid.anchors[3][0]},
-      {"grid.left_foot_anchor_row", "Left foot's anchor tile P_4: row", &m.grid.anchors[3][1]},
-      {"wall.file", "Wall file (JSON)", &c.wall_file},
+       choice(&grid.space)},
+      {"grid.columns", "Columns of the moving grid", &grid.columns, "", kPositive},
+      {"grid.rows", "Rows of the moving grid", &grid.rows, "", kPositive},
+      {"grid.tile_width", "Tile width of the moving grid", &grid.tile_width, "m", kPositive},
+      {"grid.tile_height", "Tile height of the moving grid", &grid.tile_height, "m", kPositive},
+      {"grid.right_hand_anchor_column", "Right hand's anchor tile P_1: column", &grid.anchors[0][0]},
+      {"grid.right_hand_anchor_row", "Right hand's anchor tile P_1: row", &grid.anchors[0][1]},
+      {"grid.left_hand_anchor_column", "Left hand's anchor tile P_2: column", &grid.anchors[1][0]},
+      {"grid.left_hand_anchor_row", "Left hand's anchor tile P_2: row", &grid.anchors[1][1]},
+      {"grid.right_foot_anchor_column", "Right foot's anchor tile P_3: column", &grid.anchors[2][0]},
+      {"grid.right_foot_anchor_row", "Right foot's anchor tile P_3: row", &grid.anchors[2][1]},
+      {"grid.left_foot_anchor_column", "Left foot's anchor tile P_4: column", &grid.anchors[3][0]},
+      {"grid.left_foot_anchor_row", "Left foot's anchor tile P_4: row", &grid.anchors[3][1]},
+      {"wall.file", "Wall file (JSON)", &c.wall_file, "", {}, true},
       {"wall.seed", "Seed of a random wall", &c.wall_seed},
       {"wall.name", "Name stored in a generated wall file", &c.wall_name},
-      {"wall.count", "Random walls to count over", &c.wall_count},
+      {"wall.count", "Random walls to count over", &c.wall_count, "", kPositive},
       {"wall.columns", "Tiles across a random wall", &s.walls.columns},
       {"wall.rows", "Tiles up a random wall", &s.walls.rows},
-      {"wall.tile_width", "Tile width of a random wall (m)", &s.walls.tile_width},
-      {"wall.tile_height", "Tile height of a random wall (m)", &s.walls.tile_height},
-      {"wall.sigma", "Standard deviation of hold displacement (m)", &s.walls.sigma},
-      {"wall.hold_radius", "Hold radius (m)", &s.walls.hold_radius},
-      {"wall.finish_height", "Finishing height of the centre of mass (m), measured along the wall",
-       &s.walls.finish_height},
-      {"wall.incline", "Incline of a random wall from vertical (degrees; > 0 overhanging, < 0 slab)",
-       &s.walls.incline_deg},
-      {"training_wall.columns", "Tiles across a training wall (unset: wall.columns)", &c.training_wall.columns},
-      {"training_wall.rows", "Tiles up a training wall (unset: wall.rows)", &c.training_wall.rows},
-      {"training_wall.tile_width", "Tile width of a training wall (m; unset: wall.tile_width)",
-       &c.training_wall.tile_width},
-      {"training_wall.tile_height", "Tile height of a training wall (m; unset: wall.tile_height)",
-       &c.training_wall.tile_height},
-      {"training_wall.sigma", "Standard deviation of a training wall's hold displacement (m; unset: wall.sigma)",
-       &c.training_wall.sigma},
-      {"training_wall.hold_radius", "Hold radius of a training wall (m; unset: wall.hold_radius)",
-       &c.training_wall.hold_radius},
+      {"wall.tile_width", "Tile width of a random wall", &s.walls.tile_width, "m", kPositive},
+      {"wall.tile_height", "Tile height of a random wall", &s.walls.tile_height, "m", kPositive},
+      {"wall.sigma", "Standard deviation of hold displacement", &s.walls.sigma, "m", kNonNegative},
+      {"wall.hold_radius", "Hold radius", &s.walls.hold_radius, "m", kPositive},
+      {"wall.finish_height", "Finishing height of the centre of mass, measured along the wall", &s.walls.finish_height,
+       "m"},
+      {"wall.incline", "Incline of a random wall from vertical (> 0 overhanging, < 0 slab)", &s.walls.incline_deg,
+       "degrees", kOpenRightAngle},
+      {"training_wall.columns", "Tiles across a training wall (unset: wall.columns)", &tw.columns},
+      {"training_wall.rows", "Tiles up a training wall (unset: wall.rows)", &tw.rows},
+      {"training_wall.tile_width", "Tile width of a training wall (unset: wall.tile_width)", &tw.tile_width, "m",
+       kPositive},
+      {"training_wall.tile_height", "Tile height of a training wall (unset: wall.tile_height)", &tw.tile_height, "m",
+       kPositive},
+      {"training_wall.sigma", "Standard deviation of a training wall's hold displacement (unset: wall.sigma)",
+       &tw.sigma, "m", kNonNegative},
+      {"training_wall.hold_radius", "Hold radius of a training wall (unset: wall.hold_radius)", &tw.hold_radius, "m",
+       kPositive},
       {"training_wall.finish_height",
-       "Finishing height of the centre of mass on a training wall (m; unset: wall.finish_height)",
-       &c.training_wall.finish_height},
-      {"training_wall.incline", "Incline of a training wall from vertical (degrees; unset: wall.incline)",
-       &c.training_wall.incline},
+       "Finishing height of the centre of mass on a training wall (unset: wall.finish_height)", &tw.finish_height, "m"},
+      {"training_wall.incline", "Incline of a training wall from vertical (unset: wall.incline)", &tw.incline,
+       "degrees", kOpenRightAngle},
+      {"output.progress",
+       "Progress of long work on stderr: bar (on a terminal; otherwise as the command did before), lines (a plain "
+       "line at each step) or none",
+       choice(&c.progress),
+       "",
+       {},
+       false,
+       false},
   };
+}
+
+}  // namespace
+
+std::vector<ConfigField> config_fields(ExperimentConfig& config) { return fields_of(config); }
+std::vector<ConstConfigField> config_fields(const ExperimentConfig& config) { return fields_of(config); }
+
+const ConfigField* find_field(const std::vector<ConfigField>& fields, std::string_view key) {
+  const auto found = std::find_if(fields.begin(), fields.end(), [&](const ConfigField& f) { return f.key == key; });
+  return found == fields.end() ? nullptr : &*found;
 }
 
 std::string flag_for_key(const std::string& key) {
@@ -209,11 +338,6 @@ bool ParameterSet::accepts(const std::string& key) const {
 }
 
 namespace {
-
-// Paths written absolute, so that the config replays from any working directory.
-bool is_file_key(const std::string& key) {
-  return key == "experiment.urdf" || key == "experiment.q_grid" || key == "wall.file";
-}
 
 std::string toml_double(double value) {
   std::string text = fmt::format("{}", value);
@@ -237,12 +361,20 @@ std::optional<std::uint64_t> read_seed(const toml::node& node) {
   return std::nullopt;
 }
 
+// "unknown solver 'x' (expected fast or paper)": the key's last word names what it chooses.
+std::string unknown_choice(const ConfigField& field, const std::string& text) {
+  std::string noun = field.key.substr(field.key.rfind('.') + 1);
+  std::replace(noun.begin(), noun.end(), '_', ' ');
+  return fmt::format("unknown {} '{}' (expected {})", noun, printable(text),
+                     std::get<ChoiceTarget<false>>(field.target).type->choices());
+}
+
 void assign(const std::string& path, const ConfigField& field, const toml::node& node) {
-  const auto fail = [&](const char* expected) {
+  const auto fail = [&](const std::string& expected) {
     throw InputError(path, fmt::format("line {}: {} must be {}", node.source().begin.line, field.key, expected));
   };
   std::visit(
-      [&](auto* target) {
+      [&](auto target) {
         using T = std::remove_pointer_t<decltype(target)>;
         if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) {
           const auto v = node.value<double>();
@@ -263,10 +395,17 @@ void assign(const std::string& path, const ConfigField& field, const toml::node&
           const auto v = node.as_boolean();
           if (!v) fail("true or false");
           *target = v->get();
-        } else {
+        } else if constexpr (std::is_same_v<T, std::string>) {
           const auto v = node.as_string();
           if (!v) fail("a string");
           *target = v->get();
+        } else {
+          const auto v = node.as_string();
+          if (!v) fail("one of " + target.type->choices());
+          if (!target.type->parse(target.target, v->get())) {
+            throw InputError(path, fmt::format("line {}: {}: {}", node.source().begin.line, field.key,
+                                               unknown_choice(field, v->get())));
+          }
         }
       },
       field.target);
@@ -398,15 +537,12 @@ ConfigLines apply_config_document(const ConfigDocument& document, ExperimentConf
 
 namespace {
 
-constexpr long long kMaxRunsPerCondition = 1000000;
-// Each training run learns K times its iterations: beyond this a typo, not an experiment.
-constexpr int kMaxTrainingWalls = 1000;
-
 void require(bool ok, const std::string& key, const std::string& problem) {
   if (!ok) throw InputError(key, problem);
 }
 
-// The checks of a random wall's generator keys, those of `section` ("wall" or "training_wall").
+// What the bounds of a random wall's generator keys cannot say, for `section` ("wall" or
+// "training_wall"): the start holds lie on the wall, and its holds are not too many.
 void require_wall_generator(const RandomWallParameters& walls, const std::string& section) {
   int start_columns = 0, start_rows = 0;
   for (const auto& vertex : walls.start_vertices) {
@@ -418,12 +554,6 @@ void require_wall_generator(const RandomWallParameters& walls, const std::string
   require(walls.rows >= start_rows, key("rows"), "must reach the start holds (at least 3 tiles)");
   require((walls.columns + 1LL) * (walls.rows + 1LL) <= kMaxHoldCount, key("columns"),
           fmt::format("(columns + 1) x (rows + 1) holds must be at most {}", kMaxHoldCount));
-  require(walls.tile_width > 0, key("tile_width"), "must be positive");
-  require(std::abs(walls.incline_deg) < kMaxInclineDeg, key("incline"),
-          "must be between -90 and 90 degrees (exclusive): 0 is vertical, > 0 overhanging");
-  require(walls.tile_height > 0, key("tile_height"), "must be positive");
-  require(walls.sigma >= 0, key("sigma"), "must be 0 or positive");
-  require(walls.hold_radius > 0, key("hold_radius"), "must be positive");
 }
 
 // The transfer walls' parameters with every [training_wall] key set; none when no key is
@@ -453,6 +583,61 @@ bool is_wall_generator_key(const std::string& key) {
          key != "wall.count";
 }
 
+namespace {
+
+// Every number within its declared bounds (flags may spell nan or inf: no parameter
+// means anything then); unset optional numbers are not checked.
+void require_declared_bounds(ExperimentConfig& config) {
+  for (const ConfigField& field : config_fields(config)) {
+    std::optional<double> value;
+    std::visit(
+        [&](auto target) {
+          using T = std::remove_pointer_t<decltype(target)>;
+          if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int>) {
+            value = static_cast<double>(*target);
+          } else if constexpr (std::is_same_v<T, std::optional<double>> || std::is_same_v<T, std::optional<int>>) {
+            if (*target) value = static_cast<double>(**target);
+          }
+        },
+        field.target);
+    if (!value) continue;
+    require(std::isfinite(*value), field.key, "must be a finite number");
+    require(field.bounds.contains(*value), field.key, field.bounds.problem(field.is_integer()));
+  }
+}
+
+// The keys that only mean something together with others.
+void require_consistent_keys(const ExperimentConfig& config) {
+  const ExperimentParameters& s = config.settings;
+  const bool is_static = s.learning.climbing.physics.model == PhysicsModel::Static;
+  require(s.learning.climbing.rewards.effort == 0.0 || is_static, "reward.effort",
+          "needs physics.model = static: the kinematic model has no effort");
+  require(!s.plan_search.check_moves || is_static, "experiment.plan_check_moves",
+          "needs physics.model = static: the kinematic model checks no stance");
+  // The static model's stances are solved with the body kept out of the wall.
+  require(!is_static || s.learning.climbing.reachability.ik.wall == WallRule::Avoid, "ik.wall",
+          "must be avoid under physics.model = static (its default there): a stance that holds still keeps the body "
+          "out of the wall");
+  require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition, "experiment.walls",
+          "walls x seeds_per_wall must be at most 1000000 runs per condition");
+  require(config.beginning <= s.learning.iterations, "experiment.beginning",
+          "must not exceed the run's iterations (the window lies inside the run)");
+  const GridParameters& grid = s.learning.climbing.grid;
+  static const char* const anchor_keys[kLimbCount] = {"grid.right_hand_anchor_column", "grid.left_hand_anchor_column",
+                                                      "grid.right_foot_anchor_column", "grid.left_foot_anchor_column"};
+  // The reach agent space has no anchors.
+  for (int limb = 0; limb < kLimbCount && grid.space == AgentSpaceKind::Grid; ++limb) {
+    const auto& anchor = grid.anchors[limb];
+    require(anchor[0] >= 0 && anchor[0] < grid.columns && anchor[1] >= 0 && anchor[1] < grid.rows, anchor_keys[limb],
+            "every grid anchor must be a tile of the grid");
+  }
+  const double state_codes =
+      4.0 * std::pow(static_cast<double>(grid.columns) * grid.rows + 1.0, 3.0);  // no int overflow
+  require(state_codes < 4294967296.0, "grid.columns", "the grid has too many tiles for 32-bit agent-state codes");
+}
+
+}  // namespace
+
 void finalize_config(ExperimentConfig& config) {
   ExperimentParameters& s = config.settings;
   if (!config.wall_file.empty()) {
@@ -462,161 +647,42 @@ void finalize_config(ExperimentConfig& config) {
       }
     }
   }
-  // Flags may spell nan or inf; no parameter means anything then.
-  for (const ConfigField& field : config_fields(config)) {
-    if (const auto* value = std::get_if<double*>(&field.target); value != nullptr && !std::isfinite(**value)) {
-      throw InputError(field.key, "must be a finite number");
-    }
-    if (const auto* value = std::get_if<std::optional<double>*>(&field.target);
-        value != nullptr && **value && !std::isfinite(***value)) {
-      throw InputError(field.key, "must be a finite number");
-    }
+  require_declared_bounds(config);
+  PhysicsParameters& physics = s.learning.climbing.physics;
+  // Derived values, each recorded in config.toml as what ran.
+  if (physics.model == PhysicsModel::Static && !config.given.contains("ik.wall")) {
+    s.learning.climbing.reachability.ik.wall = WallRule::Avoid;
   }
-  const auto solver = parse_ik_solver(config.solver);
-  if (!solver)
-    throw InputError("ik.solver",
-                     fmt::format("unknown solver '{}' (expected fast or paper)", printable(config.solver)));
-  s.learning.climbing.reachability.ik.solver = *solver;
-  const auto wall_rule = parse_wall_rule(config.wall_rule);
-  if (!wall_rule) {
-    throw InputError("ik.wall",
-                     fmt::format("unknown rule '{}' (expected ignore, reject or avoid)", printable(config.wall_rule)));
+  if (!config.physics_strength.empty() && !config.given.contains("physics.grip")) {
+    physics.grip = find_climbing_level(config.physics_strength)->grip_n;
   }
-  s.learning.climbing.reachability.ik.wall = *wall_rule;
-  const auto ik_guess = parse_ik_guess(config.ik_guess);
-  if (!ik_guess) {
-    throw InputError("ik.guess",
-                     fmt::format("unknown guess '{}' (expected previous or standing)", printable(config.ik_guess)));
-  }
-  s.learning.climbing.reachability.guess = *ik_guess;
-  const auto physics_model = parse_physics_model(config.physics_model);
-  if (!physics_model) {
-    throw InputError("physics.model",
-                     fmt::format("unknown model '{}' (expected kinematic or static)", printable(config.physics_model)));
-  }
-  s.learning.climbing.physics.model = *physics_model;
-  const double effort_penalty = s.learning.climbing.rewards.effort;
-  require(effort_penalty >= 0.0 && std::isfinite(effort_penalty), "reward.effort",
-          "must be a finite number, 0 or more");
-  require(effort_penalty == 0.0 || *physics_model == PhysicsModel::Static, "reward.effort",
-          "needs physics.model = static: the kinematic model has no effort");
-  const double height_shaping = s.learning.climbing.rewards.height;
-  require(height_shaping >= 0.0 && std::isfinite(height_shaping), "reward.height",
-          "must be a finite number, 0 or more");
-  s.learning.climbing.rewards.discount = s.learning.dyna.rates.gamma;
-  require(s.learning.climbing.physics.friction >= 0, "physics.friction", "must be at least 0");
-  if (!config.physics_strength.empty()) {
-    const auto level = find_climbing_level(config.physics_strength);
-    if (!level) {
-      throw InputError("physics.strength",
-                       fmt::format("unknown level '{}' (expected {})", printable(config.physics_strength),
-                                   climbing_level_descriptions()));
-    }
-    if (!config.given.contains("physics.grip")) s.learning.climbing.physics.grip = level->grip_n;
-  }
-  require(s.learning.climbing.physics.grip > 0, "physics.grip", "must be positive");
-  require(std::abs(s.learning.climbing.physics.support_angle_deg) <= 90.0, "physics.support_angle",
-          "must be from -90 to 90 degrees");
-  const auto walk_solver = parse_ik_solver(config.compare_walk_solver);
-  if (!walk_solver) {
-    throw InputError("compare.walk_solver", fmt::format("unknown solver '{}' (expected fast or paper)",
-                                                        printable(config.compare_walk_solver)));
-  }
-  config.compare_walk_solver_kind = *walk_solver;
-  require(config.compare_queries > 0, "compare.queries", "must be positive");
-  require(config.stance_moves > 0 && config.stance_moves <= kMaxStanceMoves, "stances.moves",
-          fmt::format("must be from 1 to {}", kMaxStanceMoves));
-  const auto planner = parse_planner(config.planner);
-  if (!planner) {
-    throw InputError("learning.planner",
-                     fmt::format("unknown planner '{}' (expected uniform or prioritized)", printable(config.planner)));
-  }
-  s.learning.dyna.planner = *planner;
-  const auto transfer = parse_transfer_mode(config.transfer);
-  if (!transfer) {
-    throw InputError("experiment.transfer", fmt::format("unknown transfer mode '{}' (expected {})",
-                                                        printable(config.transfer), transfer_mode_names()));
-  }
-  s.learning.dyna.transfer = *transfer;
-  const auto agent_space = parse_agent_space(config.agent_space);
-  if (!agent_space) {
-    throw InputError("grid.agent_space", fmt::format("unknown agent space '{}' (expected {})",
-                                                     printable(config.agent_space), agent_space_names()));
-  }
-  s.learning.climbing.grid.space = *agent_space;
-  const auto reading = parse_reading(config.reading);
-  if (!reading) throw InputError("filter.reading", fmt::format("unknown reading '{}'", printable(config.reading)));
-  s.learning.climbing.filter.feet_above_hands = *reading;
   if (config.runs) {
-    require(*config.runs > 0, "experiment.runs", "must be positive");
     s.wall_pairs = *config.runs;
     s.seeds_per_wall = 1;
     config.runs.reset();
   }
-  require(s.wall_pairs > 0, "experiment.walls", "must be positive");
-  require(s.seeds_per_wall > 0, "experiment.seeds_per_wall", "must be positive");
-  require(s.training_walls >= 1 && s.training_walls <= kMaxTrainingWalls, "experiment.training_walls",
-          fmt::format("must be from 1 to {}", kMaxTrainingWalls));
-  require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition, "experiment.walls",
-          "walls x seeds_per_wall must be at most 1000000 runs per condition");
-  require(s.threads >= 0 && s.threads <= kMaxThreads, "experiment.threads",
-          fmt::format("must be 0 (all cores) or from 1 to {}", kMaxThreads));
-  require(s.learning.iterations > 0 && s.learning.iterations <= kMaxIterations, "experiment.iterations",
-          fmt::format("must be from 1 to {} (a run keeps every iteration's record in memory)", kMaxIterations));
-  require(config.beginning >= 0, "experiment.beginning", "must be 0 (the default) or positive");
-  require(config.beginning <= s.learning.iterations, "experiment.beginning",
-          "must not exceed the run's iterations (the window lies inside the run)");
+  require_consistent_keys(config);
   s.analysis.beginning =
       config.beginning > 0 ? config.beginning : std::min(AnalysisParameters{}.beginning, s.learning.iterations);
-  require(s.analysis.threshold_length > 0, "experiment.threshold_length", "must be positive");
-  require(s.analysis.bootstrap_resamples >= 100 && s.analysis.bootstrap_resamples <= 10000000,
-          "experiment.bootstrap_resamples", "must be in [100, 10000000]");
-  require(s.plan_search.max_ik_solves > 0, "experiment.plan_max_solves", "must be positive");
-  require(!s.plan_search.check_moves || s.learning.climbing.physics.model == PhysicsModel::Static,
-          "experiment.plan_check_moves", "needs physics.model = static: the kinematic model checks no stance");
-  require(s.learning.greedy_cap > 0, "experiment.greedy_cap", "must be positive");
-  require(config.checkpoint_every >= 0, "experiment.checkpoint_every", "must be 0 (none) or positive");
-  require(config.wall_count > 0, "wall.count", "must be positive");
-  const DynaParameters& dyna = s.learning.dyna;
-  require(dyna.rates.alpha > 0 && dyna.rates.alpha <= 1, "learning.alpha", "must be in (0, 1]");
-  require(dyna.rates.gamma >= 0 && dyna.rates.gamma < 1, "learning.gamma", "must be in [0, 1)");
-  require(dyna.planning_steps >= 0, "learning.planning_steps", "must be 0 or positive");
-  require(dyna.epsilon >= 0 && dyna.epsilon <= 1, "learning.epsilon", "must be in [0, 1]");
-  require(dyna.priority_threshold >= 0, "learning.priority_threshold", "must be 0 or positive");
-  const GridParameters& grid = s.learning.climbing.grid;
-  require(grid.columns > 0, "grid.columns", "must be positive");
-  require(grid.rows > 0, "grid.rows", "must be positive");
-  static const char* const anchor_keys[kLimbCount] = {"grid.right_hand_anchor_column", "grid.left_hand_anchor_column",
-                                                      "grid.right_foot_anchor_column", "grid.left_foot_anchor_column"};
-  // The reach agent space has no anchors.
-  for (int limb = 0; limb < kLimbCount && grid.space == AgentSpaceKind::Grid; ++limb) {
-    const auto& anchor = grid.anchors[limb];
-    require(anchor[0] >= 0 && anchor[0] < grid.columns && anchor[1] >= 0 && anchor[1] < grid.rows, anchor_keys[limb],
-            "every grid anchor must be a tile of the grid");
-  }
-  require(grid.tile_width > 0, "grid.tile_width", "must be positive");
-  require(grid.tile_height > 0, "grid.tile_height", "must be positive");
-  const double state_codes =
-      4.0 * std::pow(static_cast<double>(grid.columns) * grid.rows + 1.0, 3.0);  // no int overflow
-  require(state_codes < 4294967296.0, "grid.columns", "the grid has too many tiles for 32-bit agent-state codes");
   require_wall_generator(s.walls, "wall");
   s.training_wall = training_wall_parameters(config.training_wall, s.walls);
   if (s.training_wall) require_wall_generator(*s.training_wall, "training_wall");
-  const IkParameters& ik = s.learning.climbing.reachability.ik;
-  require(ik.paper.step_size > 0, "ik.alpha", "must be positive");
-  require(ik.time_step_s > 0, "ik.time_step", "must be positive");
-  require(ik.paper.timeout_s > 0, "ik.timeout", "must be positive");
-  require(ik.paper.stall_iterations >= 0 && ik.paper.stall_iterations <= 64, "ik.paper_stall_iterations",
-          "must be in [0, 64]");
-  require(ik.paper.stall_decrease >= 0, "ik.paper_stall_decrease", "must be 0 or positive");
-  require(ik.paper.stall_margin_m >= 0, "ik.paper_stall_margin", "must be 0 or positive");
-  require(ik.fast.max_iterations > 0, "ik.fast_max_iterations", "must be positive");
-  require(ik.fast.stall_relative_decrease >= 0, "ik.fast_stall_decrease", "must be 0 or positive");
-  require(ik.fast.stall_iterations > 0, "ik.fast_stall_iterations", "must be positive");
-  require(ik.fast.aim_fraction >= 0 && ik.fast.aim_fraction < 1, "ik.fast_aim", "must be in [0, 1)");
-  require(ik.tolerances.grasp_radius > 0, "ik.grasp_radius", "must be positive");
-  require(ik.tolerances.root_radius > 0, "ik.root_tolerance", "must be positive");
-  require(s.learning.climbing.filter.max_span_m > 0, "filter.max_span", "must be positive");
+}
+
+void assign_text(const ConfigField& field, const std::string& text) {
+  const auto fail = [&](const char* expected) { throw InputError(field.key, fmt::format("must be {}", expected)); };
+  std::visit(
+      [&](auto target) {
+        using T = std::remove_pointer_t<decltype(target)>;
+        if constexpr (std::is_same_v<T, std::string>) {
+          *target = text;
+        } else if constexpr (std::is_same_v<T, ChoiceTarget<false>>) {
+          if (!target.type->parse(target.target, text)) throw InputError(field.key, unknown_choice(field, text));
+        } else {
+          fail("given by a flag or a config file");
+        }
+      },
+      field.target);
 }
 
 std::string toml_quoted(const std::string& value) {
@@ -636,11 +702,11 @@ std::string toml_quoted(const std::string& value) {
 
 namespace {
 
-std::string value_text(const ConfigField& field, bool toml) {
+std::string value_text(const ConstConfigField& field, bool toml) {
   std::string value;
   std::visit(
-      [&](auto* target) {
-        using T = std::remove_pointer_t<decltype(target)>;
+      [&](auto target) {
+        using T = std::remove_cvref_t<std::remove_pointer_t<decltype(target)>>;
         const auto seed_text = [&](std::uint64_t seed) {
           return toml && seed > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())
                      ? fmt::format("\"{}\"", seed)
@@ -653,8 +719,11 @@ std::string value_text(const ConfigField& field, bool toml) {
         } else if constexpr (std::is_same_v<T, std::string>) {
           if (target->empty()) return;
           const std::string text =
-              is_file_key(field.key) ? std::filesystem::absolute(*target).lexically_normal().string() : *target;
+              field.is_path ? std::filesystem::absolute(*target).lexically_normal().string() : *target;
           value = toml ? toml_quoted(text) : text;
+        } else if constexpr (std::is_same_v<T, ChoiceTarget<true>>) {
+          const std::string text = target.type->text(target.target);
+          if (!text.empty()) value = toml ? toml_quoted(text) : text;
         } else if constexpr (std::is_same_v<T, std::uint64_t>) {
           value = seed_text(*target);
         } else if constexpr (std::is_same_v<T, std::optional<std::uint64_t>>) {
@@ -673,20 +742,20 @@ std::string value_text(const ConfigField& field, bool toml) {
 
 }  // namespace
 
-std::string config_value_text(ExperimentConfig& config, const std::string& key, bool toml) {
-  for (const ConfigField& field : config_fields(config)) {
+std::string config_value_text(const ExperimentConfig& config, const std::string& key, bool toml) {
+  for (const ConstConfigField& field : config_fields(config)) {
     if (field.key == key) return value_text(field, toml);
   }
   return {};
 }
 
-std::string config_to_toml(ExperimentConfig& config, const ParameterSet& accepted,
+std::string config_to_toml(const ExperimentConfig& config, const ParameterSet& accepted,
                            const std::map<std::string, std::string>& lists) {
   std::ostringstream out;
   out << "# crux effective configuration: every parameter of this run (docs/OUTPUTS.md)\n";
   std::string section;
-  for (const ConfigField& field : config_fields(config)) {
-    if (!accepted.accepts(field.key)) continue;
+  for (const ConstConfigField& field : config_fields(config)) {
+    if (!accepted.accepts(field.key) || !field.recorded) continue;
     // A wall file's run used no generator key: config.toml records what ran.
     if (!config.wall_file.empty() && is_wall_generator_key(field.key)) continue;
     const auto listed = lists.find(field.key);
@@ -697,7 +766,7 @@ std::string config_to_toml(ExperimentConfig& config, const ParameterSet& accepte
       out << (section.empty() ? "" : "\n") << '[' << field_section << "]\n";
       section = field_section;
     }
-    out << field.key.substr(field.key.find('.') + 1) << " = " << value << "  # " << field.help << '\n';
+    out << field.key.substr(field.key.find('.') + 1) << " = " << value << "  # " << field.described_help() << '\n';
   }
   return out.str();
 }

@@ -1,19 +1,28 @@
 #pragma once
-// Every parameter of a crux command, settable by command-line flag or by TOML config
-// file (flags win), and written back as the effective config.toml. One table of fields
-// serves the flags, the reader and the writer: the key "section.name" is the flag
-// "--section-name" ("--name" for the section experiment), underscores becoming dashes.
-// A command takes a subset of the keys (ParameterSet); any other is refused.
+// Every parameter of a crux command, settable by command-line flag, TOML config file
+// (flags win) or Python dict, and written back as the effective config.toml. Each key is
+// declared once (config_fields): its type (an enum is parsed into the parameter struct's
+// own enum where the flag, file or dict gives it), its unit, its bounds and its help. The
+// flags with their --help, the TOML reader and writer with config.toml's comments,
+// Python's dicts and crux.config_keys() all come from that declaration. The key
+// "section.name" is the flag "--section-name" ("--name" for the section experiment),
+// underscores becoming dashes. A command takes a subset of the keys (ParameterSet); any
+// other is refused.
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
+#include "common/enum_names.hpp"
+#include "common/progress_display.hpp"
 #include "experiments/paper_experiment.hpp"
 
 namespace crux {
@@ -39,24 +48,17 @@ struct ExperimentConfig {
   // Table I's beginning window; 0: the paper's 2000 iterations, or all of them when a
   // run is shorter (kept as 0, so that a replay with fewer iterations still works).
   int beginning = 0;
-  std::string solver = "fast";
-  std::string wall_rule = wall_rule_name(WallRule::Ignore);
-  std::string ik_guess = ik_guess_name(IkGuess::Previous);
-  std::string physics_model = physics_model_name(PhysicsModel::Kinematic);
   // physics.strength: a climbing level whose grip finalize_config sets, unless physics.grip
   // is given; empty (unset, and then not written to config.toml): physics.grip alone.
   std::string physics_strength;
-  std::string planner = planner_name(Planner::Uniform);
-  std::string transfer = transfer_mode_name(TransferMode::Paper);
-  std::string agent_space = agent_space_name(AgentSpaceKind::Grid);
-  std::string reading = reading_name(FilterParameters{}.feet_above_hands);
   // ik-compare: its climbing-like queries, and the solver whose reached postures start
-  // the walk's next queries (parsed into compare_walk_solver_kind).
+  // the walk's next queries.
   int compare_queries = 2000;
+  IkSolverKind compare_walk_solver = IkSolverKind::Paper;
   // crux stances: random kinematic moves per wall whose stances it checks.
   int stance_moves = 300;
-  std::string compare_walk_solver = "paper";
-  IkSolverKind compare_walk_solver_kind = IkSolverKind::Paper;
+  // output.progress: how long commands show their progress on stderr (no result depends on it).
+  ProgressDisplay progress = ProgressDisplay::Bar;
   // The [provenance] table of a config file read back (key -> value), to be checked
   // against the inputs of the replay.
   std::map<std::string, std::string> recorded_provenance;
@@ -69,17 +71,90 @@ struct ExperimentConfig {
 // gives its holds and finishing height itself, so none applies to it.
 bool is_wall_generator_key(const std::string& key);
 
-using ConfigTarget = std::variant<double*, std::optional<double>*, int*, std::optional<int>*, std::uint64_t*,
-                                  std::optional<std::uint64_t>*, bool*, std::string*>;
+// The values a number key takes. An integer key's bounds are integers.
+struct Bounds {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_open = false;  // min itself excluded
+  bool max_open = false;
+  const char* why = nullptr;  // appended to the refusal, in parentheses
 
-struct ConfigField {
-  std::string key;  // TOML "section.name"
-  std::string help;
-  ConfigTarget target;
+  bool contains(double value) const;
+  // "> 0", ">= 0", "0 to 1", "[0, 1)": for --help and config.toml's comments.
+  std::string summary(bool integer) const;
+  // "must be positive", "must be from 1 to 64", "must be in [0, 1)".
+  std::string problem(bool integer) const;
+};
+inline constexpr Bounds kAnyNumber{};
+inline constexpr Bounds kPositive{.min = 0, .min_open = true};
+inline constexpr Bounds kNonNegative{.min = 0};
+constexpr Bounds closed_range(double min, double max, const char* why = nullptr) {
+  return {.min = min, .max = max, .why = why};
+}
+
+// How a choice key's text and its enum meet: the enum's EnumNames, or a list of its own
+// (physics.strength's climbing levels, whose empty text means unset).
+struct ChoiceType {
+  std::string (*text)(const void* target);             // "" when unset
+  bool (*parse)(void* target, std::string_view text);  // false: not a choice
+  std::string (*choices)();                            // "a, b or c"
+};
+template <typename Enum>
+const ChoiceType& enum_choice_type() {
+  static constexpr ChoiceType type{
+      [](const void* target) { return std::string(enum_name(*static_cast<const Enum*>(target))); },
+      [](void* target, std::string_view text) {
+        const auto value = parse_enum<Enum>(text);
+        if (value) *static_cast<Enum*>(target) = *value;
+        return value.has_value();
+      },
+      [] { return enum_choices<Enum>(); }};
+  return type;
+}
+template <bool Const>
+struct ChoiceTarget {
+  std::conditional_t<Const, const void*, void*> target;
+  const ChoiceType* type;
 };
 
-// The fields of `config`, in a fixed order (the same for every config object).
+template <bool Const>
+struct ConfigFieldOf {
+  template <typename T>
+  using Ref = std::conditional_t<Const, const T*, T*>;
+  using Target =
+      std::variant<Ref<double>, Ref<std::optional<double>>, Ref<int>, Ref<std::optional<int>>, Ref<std::uint64_t>,
+                   Ref<std::optional<std::uint64_t>>, Ref<bool>, Ref<std::string>, ChoiceTarget<Const>>;
+  std::string key;  // TOML "section.name"
+  std::string help;
+  Target target;
+  std::string unit = {};  // "m", "N", "degrees", "s"; empty for a count or a ratio
+  Bounds bounds = {};     // numbers only
+  bool is_path = false;   // a file, written absolute so that the config replays from anywhere
+  // Written to config.toml: false for presentation only (output.*), which changes no
+  // result, so that an output folder's bytes do not depend on how its run was shown.
+  bool recorded = true;
+
+  // "number", "integer", "seed", "boolean", "text", "path" or "choice".
+  const char* type_name() const;
+  bool is_integer() const;
+  // The help with the unit, bounds or choices: what --help and config.toml show.
+  std::string described_help() const;
+};
+using ConfigField = ConfigFieldOf<false>;
+using ConstConfigField = ConfigFieldOf<true>;
+
+// The fields of `config`, in a fixed order (the same for every config object): the one
+// declaration of every key.
 std::vector<ConfigField> config_fields(ExperimentConfig& config);
+std::vector<ConstConfigField> config_fields(const ExperimentConfig& config);
+
+// `key`'s field, or null.
+const ConfigField* find_field(const std::vector<ConfigField>& fields, std::string_view key);
+
+// Sets `field` from text as a flag or a Python string gives it (a number, a choice's
+// name, true/false). Throws InputError(key, problem) for a value of the wrong type, a
+// choice that is not one, or a number out of the field's bounds.
+void assign_text(const ConfigField& field, const std::string& text);
 
 // "--section-name" for "section.name", "--name" for "experiment.name".
 std::string flag_for_key(const std::string& key);
@@ -149,19 +224,21 @@ std::vector<ListedKey> listed_keys(const ConfigDocument& document, const Paramet
 inline constexpr int kMaxThreads = 1024;
 inline constexpr int kMaxIterations = 10000000;
 
-// Parses the textual choices into the settings and checks ranges. Throws
+// Checks every number against its declared bounds and the keys against each other, and
+// derives what follows from them (runs, the beginning window, physics.strength's grip,
+// the static model's ik.wall when not given, the training walls). Throws
 // InputError(key, problem), `key` being the config key at fault ("experiment.runs").
 void finalize_config(ExperimentConfig& config);
 
 // The accepted keys of `config` as TOML, sections in table order; unset optional values
 // and empty file names are left out. A key of `lists` is written with that value text
 // (a sweep's list) instead of config's.
-std::string config_to_toml(ExperimentConfig& config, const ParameterSet& accepted,
+std::string config_to_toml(const ExperimentConfig& config, const ParameterSet& accepted,
                            const std::map<std::string, std::string>& lists = {});
 
 // `key`'s value in `config` as config_to_toml writes it ("" when unset), or, with
 // `toml` false, as plain text (a string without quotes).
-std::string config_value_text(ExperimentConfig& config, const std::string& key, bool toml = true);
+std::string config_value_text(const ExperimentConfig& config, const std::string& key, bool toml = true);
 
 // `value` as a TOML basic string (quotes, backslashes and control characters escaped).
 std::string toml_quoted(const std::string& value);

@@ -109,7 +109,7 @@ void read_paper_summary(const std::filesystem::path& folder, PaperFigureData& da
       c.runs.push_back(std::move(run));
     }
     for (int l = 0; l < kLimbCount; ++l) {
-      const JsonField map = summary["qgrid_maps"][name][limb_name(static_cast<Limb>(l))];
+      const JsonField map = summary["qgrid_maps"][name][enum_name(static_cast<Limb>(l))];
       map.expect_size(static_cast<std::size_t>(data.grid.tile_count()));
       for (std::size_t t = 0; t < map.size(); ++t) c.q_grid_maps[l].push_back(map[t].number());
     }

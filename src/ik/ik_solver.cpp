@@ -5,33 +5,6 @@
 
 namespace crux {
 
-const char* ik_solver_name(IkSolverKind kind) { return kind == IkSolverKind::Paper ? "paper" : "fast"; }
-
-std::optional<IkSolverKind> parse_ik_solver(std::string_view name) {
-  if (name == "paper") return IkSolverKind::Paper;
-  if (name == "fast") return IkSolverKind::Fast;
-  return std::nullopt;
-}
-
-const char* wall_rule_name(WallRule rule) {
-  switch (rule) {
-    case WallRule::Ignore:
-      return "ignore";
-    case WallRule::Reject:
-      return "reject";
-    case WallRule::Avoid:
-      return "avoid";
-  }
-  return "ignore";
-}
-
-std::optional<WallRule> parse_wall_rule(std::string_view name) {
-  for (const WallRule rule : {WallRule::Ignore, WallRule::Reject, WallRule::Avoid}) {
-    if (name == wall_rule_name(rule)) return rule;
-  }
-  return std::nullopt;
-}
-
 IkResult solve_ik(const BodyModel& model, BodyData& data, const Posture& g_init, const ReachTarget& target,
                   const IkParameters& settings, const PathRecorder& recorder) {
   if (settings.rule_out_beyond_reach && beyond_reach(model.reach_envelope, target, settings.tolerances)) {

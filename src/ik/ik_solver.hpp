@@ -2,26 +2,28 @@
 // Run-time choice between the paper's gradient descent and crux's fast solver; both
 // share inputs, outputs and the termination test.
 
-#include <optional>
-#include <string_view>
-
+#include "common/enum_names.hpp"
 #include "ik/damped_least_squares_ik.hpp"
 #include "ik/gradient_descent_ik.hpp"
 
 namespace crux {
 
 enum class IkSolverKind { Paper, Fast };
-
-const char* ik_solver_name(IkSolverKind kind);
-std::optional<IkSolverKind> parse_ik_solver(std::string_view name);
+template <>
+struct EnumNames<IkSolverKind> {
+  static constexpr std::array<EnumName<IkSolverKind>, 2> entries{
+      {{IkSolverKind::Fast, "fast"}, {IkSolverKind::Paper, "paper"}}};
+};
 
 // What the IK does about the wall (docs/MODEL.md, choice C24): ignore it, as the paper's
 // model does (the default); reject a solved posture that passes through it
 // (body/wall_penetration); or keep the body out of it while solving (ik/wall_clearance).
 enum class WallRule { Ignore, Reject, Avoid };
-
-const char* wall_rule_name(WallRule rule);
-std::optional<WallRule> parse_wall_rule(std::string_view name);
+template <>
+struct EnumNames<WallRule> {
+  static constexpr std::array<EnumName<WallRule>, 3> entries{
+      {{WallRule::Ignore, "ignore"}, {WallRule::Reject, "reject"}, {WallRule::Avoid, "avoid"}}};
+};
 
 struct IkParameters {
   IkSolverKind solver = IkSolverKind::Fast;

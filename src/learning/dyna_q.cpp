@@ -7,14 +7,6 @@
 
 namespace crux {
 
-const char* planner_name(Planner planner) { return planner == Planner::Uniform ? "uniform" : "prioritized"; }
-
-std::optional<Planner> parse_planner(std::string_view name) {
-  if (name == "uniform") return Planner::Uniform;
-  if (name == "prioritized") return Planner::Prioritized;
-  return std::nullopt;
-}
-
 DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaParameters& settings, std::uint64_t seed)
     : settings_(settings),
       selection_streams_(seed),

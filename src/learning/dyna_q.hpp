@@ -24,8 +24,11 @@
 namespace crux {
 
 enum class Planner { Uniform, Prioritized };
-const char* planner_name(Planner planner);
-std::optional<Planner> parse_planner(std::string_view name);
+template <>
+struct EnumNames<Planner> {
+  static constexpr std::array<EnumName<Planner>, 2> entries{
+      {{Planner::Uniform, "uniform"}, {Planner::Prioritized, "prioritized"}}};
+};
 
 struct DynaParameters {
   QLearningRates rates;

@@ -23,16 +23,19 @@
 //             Q_grid's best taken value: it orders which untried move comes first and never
 //             raises a value (learned action priors, Rosman and Ramamoorthy 2012).
 
-#include <optional>
-#include <string_view>
+#include "common/enum_names.hpp"
 
 namespace crux {
 
 enum class TransferMode { Paper, Informed, Prior, Seeded, Shaping, Ordered };
-
-const char* transfer_mode_name(TransferMode mode);
-std::optional<TransferMode> parse_transfer_mode(std::string_view name);
-// The names, comma-separated, for messages and --help.
-const char* transfer_mode_names();
+template <>
+struct EnumNames<TransferMode> {
+  static constexpr std::array<EnumName<TransferMode>, 6> entries{{{TransferMode::Paper, "paper"},
+                                                                  {TransferMode::Informed, "informed"},
+                                                                  {TransferMode::Prior, "prior"},
+                                                                  {TransferMode::Seeded, "seeded"},
+                                                                  {TransferMode::Shaping, "shaping"},
+                                                                  {TransferMode::Ordered, "ordered"}}};
+};
 
 }  // namespace crux

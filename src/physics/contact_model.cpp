@@ -34,15 +34,15 @@ void check_contact(const PointContact& contact, const std::string& source) {
   const double length = contact.support_direction.norm();
   if (!std::isfinite(length) || std::abs(length - 1.0) > 1e-9) {
     throw InputError(source, fmt::format("the support direction of the {} must be a unit vector, not of length {}",
-                                         limb_name(contact.limb), length));
+                                         enum_name(contact.limb), length));
   }
   if (!std::isfinite(contact.friction) || contact.friction < 0.0) {
     throw InputError(source, fmt::format("the friction coefficient of the {} must be finite and >= 0, not {}",
-                                         limb_name(contact.limb), contact.friction));
+                                         enum_name(contact.limb), contact.friction));
   }
   if (std::isnan(contact.normal_force_limit) || contact.normal_force_limit < 0.0) {
     throw InputError(source, fmt::format("the normal force limit of the {} must be >= 0 N, not {}",
-                                         limb_name(contact.limb), contact.normal_force_limit));
+                                         enum_name(contact.limb), contact.normal_force_limit));
   }
 }
 

@@ -35,7 +35,7 @@ std::string fig2b_csv(const ExperimentResult& result, const GridParameters& grid
     const auto maps = mean_q_grid_maps(c, grid);
     for (int l = 0; l < kLimbCount; ++l) {
       for (int t = 0; t < grid.tile_count(); ++t) {
-        csv += fmt::format("{},{},{},{},{},{}\n", condition_name(condition), limb_name(static_cast<Limb>(l)), t,
+        csv += fmt::format("{},{},{},{},{},{}\n", condition_name(condition), enum_name(static_cast<Limb>(l)), t,
                            t % grid.columns, t / grid.columns, maps[t][l]);
       }
     }

@@ -23,7 +23,7 @@ nlohmann::ordered_json filter_json(const FilterReport& report) {
   nlohmann::ordered_json out;
   out["wall_count"] = report.wall_count;
   out["wall_seed"] = report.wall_seed;
-  out["reading"] = reading_name(report.parameters.feet_above_hands);
+  out["reading"] = enum_name(report.parameters.feet_above_hands);
   out["max_span_m"] = report.parameters.max_span_m;
   out["pass3"] = c.share3();
   out["pass4"] = c.share4();
@@ -35,7 +35,7 @@ nlohmann::ordered_json filter_json(const FilterReport& report) {
   out["paper_pass4"] = kPaperFilterPass4;
   out["readings"] = nlohmann::json::array();
   for (std::size_t r = 0; r < report.counts.size(); ++r) {
-    out["readings"].push_back({{"reading", reading_name(kFeetAboveHandsReadings[r])},
+    out["readings"].push_back({{"reading", enum_name(kFeetAboveHandsReadings[r])},
                                {"pass3", report.counts[r].share3()},
                                {"pass4", report.counts[r].share4()}});
   }
@@ -50,7 +50,7 @@ std::string filter_text(const FilterReport& report) {
                   counted(report.wall_count, "random wall"), report.wall_seed, report.parameters.max_span_m) +
       fmt::format("{:<34} {:>14} {:>14}\n", "reading of 'both feet above the hands'", "3-configs", "4-configs");
   for (std::size_t r = 0; r < report.counts.size(); ++r) {
-    out += fmt::format("{:<34} {:>13.2f}% {:>13.2f}%{}\n", reading_name(kFeetAboveHandsReadings[r]),
+    out += fmt::format("{:<34} {:>13.2f}% {:>13.2f}%{}\n", enum_name(kFeetAboveHandsReadings[r]),
                        100 * report.counts[r].share3(), 100 * report.counts[r].share4(),
                        r == chosen ? "  <- selected" : "");
   }

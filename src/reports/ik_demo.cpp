@@ -52,7 +52,7 @@ nlohmann::ordered_json ik_demo_json(const std::vector<IkDemoSolve>& solves) {
   nlohmann::ordered_json out = nlohmann::json::array();
   for (const IkDemoSolve& s : solves) {
     out.push_back({{"query", s.query},
-                   {"solver", ik_solver_name(s.solver)},
+                   {"solver", enum_name(s.solver)},
                    {"reached", s.result.reached},
                    {"iterations", s.result.iterations},
                    {"simulated_time_s", s.result.simulated_time_s},
@@ -69,7 +69,7 @@ std::string ik_demo_text(const BodyModel& model, const std::vector<IkDemoSolve>&
     const IkDemoSolve& s = solves[i];
     if (i == 0 || solves[i - 1].query != s.query) out += fmt::format("\n{}:\n", s.query);
     out += fmt::format("  {:<5} {:<11} {:5d} {}, {:5.2f} s simulated, residual {:.3f} m, {:8.1f} us\n",
-                       ik_solver_name(s.solver), s.result.reached ? "reached" : "NOT reached", s.result.iterations,
+                       enum_name(s.solver), s.result.reached ? "reached" : "NOT reached", s.result.iterations,
                        counted_noun(s.result.iterations, "iteration"), s.result.simulated_time_s, s.result.residual_m,
                        s.wall_clock_us);
   }

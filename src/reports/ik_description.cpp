@@ -18,7 +18,7 @@ nlohmann::ordered_json ik_result_json(const BodyModel& model, IkSolverKind solve
   BodyData data(model);
   forward_kinematics(model, data, result.posture);
   nlohmann::ordered_json out;
-  out["solver"] = ik_solver_name(solver);
+  out["solver"] = enum_name(solver);
   out["reached"] = result.reached;
   out["iterations"] = result.iterations;
   out["simulated_time_s"] = result.simulated_time_s;
@@ -39,7 +39,7 @@ std::string ik_result_text(const BodyModel& model, IkSolverKind solver, const Re
   BodyData data(model);
   forward_kinematics(model, data, result.posture);
   std::string out =
-      fmt::format("solver {}: {} after {} ({:.2f} s simulated), residual {:.4f} m\n", ik_solver_name(solver),
+      fmt::format("solver {}: {} after {} ({:.2f} s simulated), residual {:.4f} m\n", enum_name(solver),
                   result.reached ? "reached" : "NOT reached", counted(result.iterations, "iteration"),
                   result.simulated_time_s, result.residual_m) +
       fmt::format("root target H(C4) = ({:.3f}, {:.3f}, {:.3f}); root at ({:.3f}, {:.3f}, {:.3f})\n", target.root.x(),

@@ -15,7 +15,7 @@ nlohmann::ordered_json plan_json(const Wall& wall, const Plan& plan) {
   out["length"] = plan.found ? plan.length : -1;
   out["holds"] = plan.hold_ids;
   std::vector<std::string> limbs;
-  for (const Limb l : plan.limbs) limbs.push_back(limb_name(l));
+  for (const Limb l : plan.limbs) limbs.push_back(enum_name(l));
   out["limbs"] = limbs;
   out["expanded_states"] = plan.expanded_states;
   out["ik_solves"] = plan.ik_solves;
@@ -38,7 +38,7 @@ std::string plan_text(const Wall& wall, const Plan& plan) {
                                 counted(plan.length, "action"), counted(plan.expanded_states, "state"),
                                 counted(plan.ik_solves, "IK solve"));
   for (int i = 0; i < plan.length; ++i) {
-    out += fmt::format("  {:2d}. {:<10} -> hold {}\n", i + 1, limb_name(plan.limbs[i]), plan.hold_ids[i]);
+    out += fmt::format("  {:2d}. {:<10} -> hold {}\n", i + 1, enum_name(plan.limbs[i]), plan.hold_ids[i]);
   }
   return out;
 }

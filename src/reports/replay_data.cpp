@@ -29,7 +29,7 @@ nlohmann::ordered_json configuration_json(const Wall& wall, const HoldConfigurat
   nlohmann::ordered_json out;
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const int hold = configuration.holds[limb];
-    out[limb_name(static_cast<Limb>(limb))] = hold == kFree ? 0 : wall.holds[hold].id;
+    out[enum_name(static_cast<Limb>(limb))] = hold == kFree ? 0 : wall.holds[hold].id;
   }
   return out;
 }
@@ -172,7 +172,7 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
     }
     moves.push_back({{"iteration", step.iteration > 0 ? nlohmann::ordered_json(step.iteration) : nullptr},
                      {"regime", regime_name(step.regime)},
-                     {"limb", limb_name(free)},
+                     {"limb", enum_name(free)},
                      {"hold", step.hold_id},
                      {"success", step.success},
                      {"reward", step.reward},

@@ -211,7 +211,7 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
   out["iterations"] = settings.learning.iterations;
   out["beginning_iterations"] = beginning;
   out["threshold_length"] = settings.analysis.threshold_length;
-  out["solver"] = ik_solver_name(settings.learning.climbing.reachability.ik.solver);
+  out["solver"] = enum_name(settings.learning.climbing.reachability.ik.solver);
   out["table1"] = table_one_json(result, beginning);
   if (analysis != nullptr) {
     out["table1_over_runs"] = table_one_over_runs_json(result, beginning);
@@ -255,7 +255,7 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
     for (int l = 0; l < kLimbCount; ++l) {
       std::vector<double> tiles;
       for (const auto& tile : mean_map) tiles.push_back(tile[l]);
-      maps[name][limb_name(static_cast<Limb>(l))] = tiles;
+      maps[name][enum_name(static_cast<Limb>(l))] = tiles;
     }
   }
   out["episode_lengths"] = lengths;

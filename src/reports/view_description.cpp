@@ -71,7 +71,7 @@ nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture,
   nlohmann::ordered_json grasp;
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const Eigen::Vector3d& p = data.points[operational_point(static_cast<Limb>(limb))];
-    grasp[limb_name(static_cast<Limb>(limb))] = {p.x(), p.y(), p.z()};
+    grasp[enum_name(static_cast<Limb>(limb))] = {p.x(), p.y(), p.z()};
   }
   out["grasp_points"] = grasp;
   out["wall_penetration"] = {
@@ -84,7 +84,7 @@ nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture,
   for (int limb = 0; limb < kLimbCount; ++limb) {
     if (!loads->held[limb] || !loads->balanced) continue;
     const Eigen::Vector3d& f = loads->forces[limb];
-    forces[limb_name(static_cast<Limb>(limb))] = {f.x(), f.y(), f.z()};
+    forces[enum_name(static_cast<Limb>(limb))] = {f.x(), f.y(), f.z()};
   }
   nlohmann::ordered_json ratios = nlohmann::ordered_json::object();
   for (const auto& [joint, ratio] : loads->joint_ratios) ratios[model.joints[joint].name] = ratio;

@@ -9,7 +9,7 @@ namespace crux {
 
 nlohmann::ordered_json start_holds_json(const Wall& wall) {
   nlohmann::ordered_json ids;
-  for (int l = 0; l < kLimbCount; ++l) ids[limb_name(static_cast<Limb>(l))] = wall.holds[wall.start[l]].id;
+  for (int l = 0; l < kLimbCount; ++l) ids[enum_name(static_cast<Limb>(l))] = wall.holds[wall.start[l]].id;
   return ids;
 }
 
@@ -67,7 +67,7 @@ nlohmann::ordered_json wall_summary_json(const std::string& file, const Wall& wa
   out["start_iterations"] = start.iterations;
   if (grid) {
     nlohmann::ordered_json g;
-    g["limb"] = limb_name(grid->limb);
+    g["limb"] = enum_name(grid->limb);
     g["origin"] = {grid->placement.origin.x(), grid->placement.origin.y()};
     g["hold_tiles"] = nlohmann::json::array();
     for (const Hold& h : wall.holds) {

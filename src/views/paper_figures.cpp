@@ -109,7 +109,7 @@ std::string band_phrase(const PaperFigureData& data) {
 }
 
 std::string limb_title(Limb limb) {
-  std::string name = limb_name(limb);
+  std::string name = enum_name(limb);
   std::replace(name.begin(), name.end(), '_', ' ');
   return name + " free";
 }

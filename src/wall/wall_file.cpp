@@ -311,7 +311,7 @@ class WallReader {
   std::array<int, kLimbCount> start(const Json& value, const Wall& wall) const {
     JsonField(source_, value, "start").expect_object();
     std::array<std::string_view, kLimbCount> limbs;
-    for (int limb = 0; limb < kLimbCount; ++limb) limbs[limb] = limb_name(static_cast<Limb>(limb));
+    for (int limb = 0; limb < kLimbCount; ++limb) limbs[limb] = enum_name(static_cast<Limb>(limb));
     reject_unknown_keys(value, "start", limbs);
     std::array<int, kLimbCount> indices{};
     for (int limb = 0; limb < kLimbCount; ++limb) {
@@ -354,7 +354,7 @@ std::string start_line(const Wall& wall) {
   std::vector<std::string> members;
   for (int limb = 0; limb < kLimbCount; ++limb) {
     members.push_back(
-        fmt::format("{}: {}", json_quoted(limb_name(static_cast<Limb>(limb))), wall.holds.at(wall.start[limb]).id));
+        fmt::format("{}: {}", json_quoted(enum_name(static_cast<Limb>(limb))), wall.holds.at(wall.start[limb]).id));
   }
   return fmt::format("  \"start\": {{{}}},\n", fmt::join(members, ", "));
 }

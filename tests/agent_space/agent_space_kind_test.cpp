@@ -7,12 +7,12 @@ namespace {
 
 TEST(AgentSpaceKind, NamesRoundTripAndUnknownNamesAreNone) {
   for (const AgentSpaceKind kind : {AgentSpaceKind::Grid, AgentSpaceKind::Reach}) {
-    EXPECT_EQ(parse_agent_space(agent_space_name(kind)), kind);
+    EXPECT_EQ(parse_enum<AgentSpaceKind>(enum_name(kind)), kind);
   }
-  EXPECT_STREQ(agent_space_name(AgentSpaceKind::Grid), "grid");
-  EXPECT_STREQ(agent_space_name(AgentSpaceKind::Reach), "reach");
-  EXPECT_EQ(parse_agent_space("Grid"), std::nullopt);
-  EXPECT_EQ(parse_agent_space(""), std::nullopt);
+  EXPECT_STREQ(enum_name(AgentSpaceKind::Grid), "grid");
+  EXPECT_STREQ(enum_name(AgentSpaceKind::Reach), "reach");
+  EXPECT_EQ(parse_enum<AgentSpaceKind>("Grid"), std::nullopt);
+  EXPECT_EQ(parse_enum<AgentSpaceKind>(""), std::nullopt);
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ TEST(MovingGrid, EachLimbsAnchorTileIsCentredOnTheLimb) {
   for (int l = 0; l < kLimbCount; ++l) {
     const GridPlacement placement = place_grid(kGrid, static_cast<Limb>(l), limb);
     const int anchor = kGrid.anchors[l][1] * kGrid.columns + kGrid.anchors[l][0];
-    EXPECT_EQ(placement.tile_of(limb), anchor) << limb_name(static_cast<Limb>(l));
+    EXPECT_EQ(placement.tile_of(limb), anchor) << enum_name(static_cast<Limb>(l));
     EXPECT_LT((placement.tile_centre(anchor) - limb).norm(), 1e-12);
   }
   // The right hand's anchor P_1 is at column 1, row 4 (docs/MODEL.md, choice C15): the grid spans

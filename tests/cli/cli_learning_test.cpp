@@ -412,7 +412,7 @@ TEST(CliLearning, ReportToAnEmptyOutputNamesTheFlag) {
 // (paper and sweep take --threads) refuses a value above the bound before it creates its
 // output folder.
 TEST(CliLearning, ThreadsAndIterationsAboveTheirBoundsAreRefusedBeforeAnyOutput) {
-  const std::string threads = "crux: --threads: must be 0 (all cores) or from 1 to 1024\n";
+  const std::string threads = "crux: --threads: must be from 0 to 1024 (0: all cores)\n";
   const std::string iterations =
       "crux: --iterations: must be from 1 to 10000000 (a run keeps every iteration's record in memory)\n";
   const fs::path config = testing::write_temporary("bounds.toml", "[experiment]\nthreads = 1025\n");
@@ -420,8 +420,8 @@ TEST(CliLearning, ThreadsAndIterationsAboveTheirBoundsAreRefusedBeforeAnyOutput)
       {"paper --threads 1025", threads},
       {"sweep --threads 100000", threads},
       {"sweep --config " + config.string(), "crux: " + config.string() +
-                                                ": line 2: experiment.threads: must be 0 "
-                                                "(all cores) or from 1 to 1024\n"},
+                                                ": line 2: experiment.threads: must be from 0 "
+                                                "to 1024 (0: all cores)\n"},
       {"paper --iterations 10000001", iterations},
       {"sweep --iterations 2147483647", iterations},
       {"train --wall-seed 3 --iterations 2147483647", iterations},
@@ -821,7 +821,7 @@ TEST(CliLearning, TheTransferModeIsOneFlagWrittenToTheConfigAndAnUnknownOneIsRef
                                 " --wall-seed 4 --transfer best -o " + learning_scratch("mode_unknown").string());
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_NE(unknown.err.find("--transfer"), std::string::npos) << unknown.err;
-  EXPECT_NE(unknown.err.find("unknown transfer mode 'best'"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("unknown transfer 'best'"), std::string::npos) << unknown.err;
   EXPECT_EQ(testing::count_lines(unknown.err), 1) << unknown.err;
   EXPECT_FALSE(fs::exists(learning_scratch("mode_unknown")));
 }

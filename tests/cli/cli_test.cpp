@@ -70,15 +70,15 @@ TEST(Cli, BadPhysicsParametersAreOneLineNamingTheFlag) {
     std::string flags, message;
   } cases[] = {
       {"--physics-model dynamic", "crux: --physics-model: unknown model 'dynamic' (expected kinematic or static)"},
-      {"--physics-friction -0.5", "crux: --physics-friction: must be at least 0"},
+      {"--physics-friction -0.5", "crux: --physics-friction: must be 0 or positive"},
       {"--physics-grip 0", "crux: --physics-grip: must be positive"},
       {"--physics-strength pro",
-       "crux: --physics-strength: unknown level 'pro' (expected intermediate (383.0 N), advanced (575.7 N) or elite "
+       "crux: --physics-strength: unknown strength 'pro' (expected intermediate (383.0 N), advanced (575.7 N) or elite "
        "(563.1 N))"},
-      {"--physics-support-angle 91", "crux: --physics-support-angle: must be from -90 to 90 degrees"},
+      {"--physics-support-angle 91", "crux: --physics-support-angle: must be in [-90, 90]"},
       {"--reward-effort 1", "crux: --reward-effort: needs physics.model = static: the kinematic model has no effort"},
-      {"--physics-model static --reward-effort -1", "crux: --reward-effort: must be a finite number, 0 or more"},
-      {"--reward-height -1", "crux: --reward-height: must be a finite number, 0 or more"},
+      {"--physics-model static --reward-effort -1", "crux: --reward-effort: must be 0 or positive"},
+      {"--reward-height -1", "crux: --reward-height: must be 0 or positive"},
       {"--ik-guess last", "crux: --ik-guess: unknown guess 'last' (expected previous or standing)"},
       {"--plan-check-moves true",
        "crux: --plan-check-moves: needs physics.model = static: the kinematic model checks no stance"},

@@ -226,7 +226,7 @@ TEST(ClimbingMdp, EveryGridActionHasExactlyOneRepresentative) {
 TEST(ClimbingMdp, ARestoredMdpContinuesAsTheSavedOne) {
   Fixture f;
   for (const PhysicsModel physics : {PhysicsModel::Kinematic, PhysicsModel::Static}) {
-    SCOPED_TRACE(physics_model_name(physics));
+    SCOPED_TRACE(enum_name(physics));
     f.parameters.physics.model = physics;
     f.parameters.rewards.effort = physics == PhysicsModel::Static ? 2.0 : 0.0;
     ClimbingMdp mdp(f.model, f.wall, f.parameters);

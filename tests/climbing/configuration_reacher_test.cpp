@@ -204,7 +204,7 @@ TEST(ConfigurationReacher, WithTheStandingGuessAVerdictDoesNotDependOnThePosture
     return found;
   };
   for (const IkGuess guess : {IkGuess::Standing, IkGuess::Previous}) {
-    SCOPED_TRACE(ik_guess_name(guess));
+    SCOPED_TRACE(enum_name(guess));
     ReachabilityParameters parameters;
     parameters.guess = guess;
     ConfigurationReacher finder(model, wall, parameters, physics);

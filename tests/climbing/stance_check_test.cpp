@@ -253,9 +253,9 @@ TEST(StanceCheck, ABodyWithoutStatureIsRefusedNamingItsFile) {
 
 TEST(StanceCheck, PhysicsModelNamesRoundTrip) {
   for (const PhysicsModel model : {PhysicsModel::Kinematic, PhysicsModel::Static}) {
-    EXPECT_EQ(parse_physics_model(physics_model_name(model)), model);
+    EXPECT_EQ(parse_enum<PhysicsModel>(enum_name(model)), model);
   }
-  EXPECT_FALSE(parse_physics_model("dynamic").has_value());
+  EXPECT_FALSE(parse_enum<PhysicsModel>("dynamic").has_value());
 }
 
 }  // namespace

@@ -68,10 +68,10 @@ void expect_brute_force(const std::vector<Wall>& walls, const FilterParameters& 
   for (const R reading : kFeetAboveHandsReadings) {
     const FilterCounts expected = brute_force(walls, parameters, reading);
     const FilterCounts& got = counts[index_of(reading)];
-    EXPECT_EQ(got.configurations3, expected.configurations3) << reading_name(reading);
-    EXPECT_EQ(got.configurations4, expected.configurations4) << reading_name(reading);
-    EXPECT_EQ(got.pass3, expected.pass3) << reading_name(reading);
-    EXPECT_EQ(got.pass4, expected.pass4) << reading_name(reading);
+    EXPECT_EQ(got.configurations3, expected.configurations3) << enum_name(reading);
+    EXPECT_EQ(got.configurations4, expected.configurations4) << enum_name(reading);
+    EXPECT_EQ(got.pass3, expected.pass3) << enum_name(reading);
+    EXPECT_EQ(got.pass4, expected.pass4) << enum_name(reading);
   }
 }
 

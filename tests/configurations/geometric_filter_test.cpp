@@ -54,8 +54,9 @@ TEST(GeometricFilter, EachReadingOfFeetAboveHands) {
 }
 
 TEST(GeometricFilter, ReadingsParseByName) {
-  for (const auto reading : kFeetAboveHandsReadings) EXPECT_EQ(parse_reading(reading_name(reading)), reading);
-  EXPECT_FALSE(parse_reading("feet-anywhere").has_value());
+  for (const auto reading : kFeetAboveHandsReadings)
+    EXPECT_EQ(parse_enum<FeetAboveHandsReading>(enum_name(reading)), reading);
+  EXPECT_FALSE(parse_enum<FeetAboveHandsReading>("feet-anywhere").has_value());
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ TEST(PossibleActions, AreExactlyTheFreeHoldsWhoseConfigurationPasses) {
         if (!taken && passes_filter(wall, s.with(free, hold), parameters)) expected.push_back(hold);
       }
       EXPECT_EQ(std::vector<int>(buffer.begin(), buffer.begin() + count), expected)
-          << wall.name << " " << limb_name(free);
+          << wall.name << " " << enum_name(free);
       EXPECT_GT(count, 0);
     }
   }

@@ -22,11 +22,11 @@ Wall five_holds() {
 
 TEST(Reachability, IkGuessesAreNamedAndParsedBack) {
   for (const IkGuess guess : {IkGuess::Previous, IkGuess::Standing}) {
-    EXPECT_EQ(parse_ik_guess(ik_guess_name(guess)), guess);
+    EXPECT_EQ(parse_enum<IkGuess>(enum_name(guess)), guess);
   }
-  EXPECT_STREQ(ik_guess_name(IkGuess::Previous), "previous");
-  EXPECT_STREQ(ik_guess_name(IkGuess::Standing), "standing");
-  EXPECT_FALSE(parse_ik_guess("last"));
+  EXPECT_STREQ(enum_name(IkGuess::Previous), "previous");
+  EXPECT_STREQ(enum_name(IkGuess::Standing), "standing");
+  EXPECT_FALSE(parse_enum<IkGuess>("last"));
 }
 
 TEST(Reachability, TargetTakesTheConfigurationsHoldsInLimbOrder) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 #include <vector>
 
@@ -257,15 +259,18 @@ TEST(ExperimentConfig, AStrengthLevelSetsTheGripUnlessTheGripIsGiven) {
   EXPECT_DOUBLE_EQ(both.settings.learning.climbing.physics.grip, 300.0) << "an explicit grip overrides the level";
 
   ExperimentConfig unknown;
-  apply_config_text("[physics]\nstrength = \"pro\"\n", "unknown.toml", unknown, keys, "test");
   try {
-    finalize_config(unknown);
-    FAIL() << "an unknown level is refused";
+    apply_config_text("[physics]\nstrength = \"pro\"\n", "unknown.toml", unknown, keys, "test");
+    FAIL() << "an unknown level is refused where the file gives it";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.source(), "physics.strength");
+    EXPECT_EQ(e.source(), "unknown.toml");
     EXPECT_EQ(e.problem(),
-              "unknown level 'pro' (expected intermediate (383.0 N), advanced (575.7 N) or elite (563.1 N))");
+              "line 2: physics.strength: unknown strength 'pro' (expected intermediate (383.0 N), advanced (575.7 N) "
+              "or elite (563.1 N))");
   }
+  ExperimentConfig empty;
+  EXPECT_THROW(apply_config_text("[physics]\nstrength = \"\"\n", "empty.toml", empty, keys, "test"), InputError)
+      << "an empty level is no level";
 }
 
 TEST(ExperimentConfig, TrainingWallKeysFollowTheWallKeysUnlessSet) {
@@ -328,8 +333,8 @@ TEST(ExperimentConfig, ThreadsAndIterationsAboveTheirBoundsAreRefused) {
     return std::string("accepted");
   };
   EXPECT_EQ(problem(kMaxThreads, kMaxIterations), "accepted");
-  EXPECT_EQ(problem(kMaxThreads + 1, 8000), "experiment.threads: must be 0 (all cores) or from 1 to 1024");
-  EXPECT_EQ(problem(100000, 8000), "experiment.threads: must be 0 (all cores) or from 1 to 1024");
+  EXPECT_EQ(problem(kMaxThreads + 1, 8000), "experiment.threads: must be from 0 to 1024 (0: all cores)");
+  EXPECT_EQ(problem(100000, 8000), "experiment.threads: must be from 0 to 1024 (0: all cores)");
   EXPECT_EQ(problem(0, 2147483647),
             "experiment.iterations: must be from 1 to 10000000 (a run keeps every iteration's record in memory)");
   EXPECT_EQ(problem(0, kMaxIterations + 1),
@@ -366,7 +371,7 @@ TEST(ExperimentConfig, AListTakesTheChosenValueAndOnlyWhenChosen) {
                     {{"learning.epsilon", 2}, {"learning.planner", 1}});
   finalize_config(config);
   EXPECT_DOUBLE_EQ(config.settings.learning.dyna.epsilon, 0.4);
-  EXPECT_EQ(config.planner, "prioritized");
+  EXPECT_EQ(config.settings.learning.dyna.planner, Planner::Prioritized);
   EXPECT_EQ(config_value_text(config, "learning.planner"), "\"prioritized\"");
   EXPECT_EQ(config_value_text(config, "learning.planner", false), "prioritized");
   EXPECT_EQ(config_value_text(config, "learning.epsilon"), "0.4");
@@ -405,6 +410,169 @@ TEST(ExperimentConfig, ConfigToTomlWritesAListInPlaceOfItsValue) {
   const std::string text = config_to_toml(config, kEverything, {{"learning.epsilon", "[0.1, 0.2]"}});
   EXPECT_NE(text.find("epsilon = [0.1, 0.2]  #"), std::string::npos) << text;
   EXPECT_EQ(text.find("epsilon = 0.1"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace crux
+
+namespace crux {
+namespace {
+
+const ParameterSet kEveryKeyAndOutput{{"experiment", "learning", "reward", "ik", "physics", "compare", "stances",
+                                       "filter", "grid", "wall", "training_wall", "output"},
+                                      {}};
+
+// A number's field set to `value`, whatever its type.
+void set_number(const ConfigField& field, double value) {
+  std::visit(
+      [&](auto target) {
+        using T = std::remove_pointer_t<decltype(target)>;
+        if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) {
+          *target = value;
+        } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::optional<int>>) {
+          *target = static_cast<int>(value);
+        }
+      },
+      field.target);
+}
+
+// finalize_config's refusal of `key`, or "" when it accepts the config or refuses another key.
+std::string refusal_of(ExperimentConfig& config, const std::string& key) {
+  try {
+    finalize_config(config);
+  } catch (const InputError& e) {
+    return e.source() == key ? e.problem() : std::string();
+  }
+  return {};
+}
+
+TEST(ExperimentConfig, EveryKeyIsDeclaredOnceWithItsHelpTypeAndChoices) {
+  const ExperimentConfig defaults;
+  std::set<std::string> keys;
+  for (const ConstConfigField& field : config_fields(defaults)) {
+    EXPECT_TRUE(keys.insert(field.key).second) << field.key << " is declared twice";
+    EXPECT_FALSE(field.help.empty()) << field.key;
+    EXPECT_TRUE(kEveryKeyAndOutput.accepts(field.key)) << field.key << " is in no known section";
+    EXPECT_EQ(field.help.find(" (m)"), std::string::npos) << field.key << ": the unit goes in its own column";
+    if (std::holds_alternative<ChoiceTarget<true>>(field.target)) {
+      EXPECT_STREQ(field.type_name(), "choice") << field.key;
+      EXPECT_NE(field.described_help().find(std::get<ChoiceTarget<true>>(field.target).type->choices()),
+                std::string::npos)
+          << field.key;
+    }
+  }
+  ExperimentConfig config;
+  const auto fields = config_fields(config);
+  const ConfigField* radius = find_field(fields, "ik.grasp_radius");
+  ASSERT_NE(radius, nullptr);
+  EXPECT_EQ(radius->described_help(), "Radius of the grasp spheres (m; > 0)");
+  EXPECT_EQ(find_field(fields, "ik.grasp"), nullptr);
+  EXPECT_EQ(find_field(fields, "learning.gamma")->described_help(), "Discount factor gamma ([0, 1))");
+  EXPECT_EQ(find_field(fields, "experiment.training_walls")->bounds.summary(true), "1 to 1000");
+  EXPECT_STREQ(find_field(fields, "wall.file")->type_name(), "path");
+  EXPECT_STREQ(find_field(fields, "wall.seed")->type_name(), "seed");
+}
+
+// Each bounded number, set just outside its bounds, is refused naming its key with the
+// declared problem; set on an included edge, the bounds let it pass.
+TEST(ExperimentConfig, EveryDeclaredBoundIsEnforcedAtBothEdges) {
+  int checked = 0;
+  for (const ConstConfigField& declared : config_fields(ExperimentConfig{})) {
+    const bool integer = declared.is_integer();
+    const Bounds& b = declared.bounds;
+    const double step = integer ? 1.0 : 1e-9 * std::max(1.0, std::abs(b.min));
+    for (const bool low : {true, false}) {
+      const double edge = low ? b.min : b.max;
+      if (!std::isfinite(edge)) continue;
+      const bool open = low ? b.min_open : b.max_open;
+      const double outside = open ? edge : (low ? edge - step : edge + (integer ? 1.0 : 1e-9 * std::max(1.0, edge)));
+      ExperimentConfig config;
+      const auto fields = config_fields(config);
+      set_number(*find_field(fields, declared.key), outside);
+      EXPECT_EQ(refusal_of(config, declared.key), b.problem(integer)) << declared.key << " = " << outside;
+      if (!open) {
+        ExperimentConfig inside;
+        const auto inside_fields = config_fields(inside);
+        set_number(*find_field(inside_fields, declared.key), edge);
+        EXPECT_NE(refusal_of(inside, declared.key), b.problem(integer)) << declared.key << " = " << edge;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 50) << "every bounded key's edges";
+}
+
+TEST(ExperimentConfig, BoundsSayWhatTheyTakeInWordsAndSymbols) {
+  EXPECT_EQ(kPositive.problem(false), "must be positive");
+  EXPECT_EQ(kNonNegative.problem(true), "must be 0 or positive");
+  EXPECT_EQ(kNonNegative.summary(false), ">= 0");
+  EXPECT_EQ(closed_range(1, 64).problem(true), "must be from 1 to 64");
+  EXPECT_EQ(closed_range(1, 64).summary(false), "[1, 64]");
+  const Bounds half_open{.min = 0, .max = 1, .max_open = true};
+  EXPECT_EQ(half_open.problem(false), "must be in [0, 1)");
+  EXPECT_FALSE(half_open.contains(1.0));
+  EXPECT_TRUE(half_open.contains(0.0));
+  EXPECT_EQ(closed_range(0, 8, "0: all").problem(true), "must be from 0 to 8 (0: all)");
+  EXPECT_EQ(kAnyNumber.summary(false), "");
+  EXPECT_EQ((Bounds{.min = -2, .min_open = true}).problem(false), "must be > -2");
+}
+
+TEST(ExperimentConfig, AChoiceIsParsedWhereItIsGivenAndWrittenByName) {
+  ExperimentConfig config;
+  apply_config_text("[ik]\nwall = \"reject\"\n[grid]\nagent_space = \"reach\"\n", "choices.toml", config,
+                    kEveryKeyAndOutput, "test");
+  EXPECT_EQ(config.settings.learning.climbing.reachability.ik.wall, WallRule::Reject);
+  EXPECT_EQ(config.settings.learning.climbing.grid.space, AgentSpaceKind::Reach);
+  EXPECT_EQ(config_value_text(config, "ik.wall"), "\"reject\"");
+  try {
+    apply_config_text("[ik]\nguess = 3\n", "typed.toml", config, kEveryKeyAndOutput, "test");
+    FAIL() << "a choice is text";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.problem(), "line 2: ik.guess must be one of previous or standing");
+  }
+  const auto fields = config_fields(config);
+  try {
+    assign_text(*find_field(fields, "learning.planner"), "greedy");
+    FAIL() << "an unknown planner is refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "learning.planner");
+    EXPECT_EQ(e.problem(), "unknown planner 'greedy' (expected uniform or prioritized)");
+  }
+}
+
+TEST(ExperimentConfig, TheStaticModelKeepsTheBodyOutOfTheWallAndRecordsIt) {
+  const ParameterSet keys{{"ik", "physics"}, {}};
+  ExperimentConfig implied;
+  apply_config_text("[physics]\nmodel = \"static\"\n", "static.toml", implied, keys, "test");
+  finalize_config(implied);
+  EXPECT_EQ(implied.settings.learning.climbing.reachability.ik.wall, WallRule::Avoid);
+  EXPECT_NE(config_to_toml(implied, keys).find("wall = \"avoid\"  #"), std::string::npos)
+      << "config.toml records what ran";
+
+  ExperimentConfig contradicted;
+  apply_config_text("[physics]\nmodel = \"static\"\n[ik]\nwall = \"ignore\"\n", "both.toml", contradicted, keys,
+                    "test");
+  EXPECT_EQ(refusal_of(contradicted, "ik.wall"),
+            "must be avoid under physics.model = static (its default there): a stance that holds still keeps the "
+            "body out of the wall");
+
+  ExperimentConfig kinematic;
+  finalize_config(kinematic);
+  EXPECT_EQ(kinematic.settings.learning.climbing.reachability.ik.wall, WallRule::Ignore) << "the paper's default";
+}
+
+TEST(ExperimentConfig, OutputProgressIsTakenButNeverRecorded) {
+  ExperimentConfig config;
+  apply_config_text("[output]\nprogress = \"lines\"\n", "progress.toml", config, kEveryKeyAndOutput, "test");
+  finalize_config(config);
+  EXPECT_EQ(config.progress, ProgressDisplay::Lines);
+  const std::string written = config_to_toml(config, kEveryKeyAndOutput);
+  EXPECT_EQ(written.find("progress"), std::string::npos) << "an output folder's bytes do not depend on its display";
+  EXPECT_EQ(written.find("[output]"), std::string::npos);
+  ExperimentConfig refused;
+  EXPECT_THROW(
+      apply_config_text("[output]\nprogress = \"quiet\"\n", "progress.toml", refused, kEveryKeyAndOutput, "test"),
+      InputError);
 }
 
 }  // namespace

@@ -126,7 +126,7 @@ TEST(LearningRun, ARunResumedFromAnyCheckpointEndsAsTheUnbrokenRun) {
         const RunCheckpoints resume{0, {}, state, "test"};
         const RunResult resumed = run_learning(model, wall, parameters, 5, initial, {}, &resume);
         expect_same_run(unbroken, resumed,
-                        fmt::format("{} planner, {}, resumed at {}", planner_name(planner),
+                        fmt::format("{} planner, {}, resumed at {}", enum_name(planner),
                                     initial != nullptr ? "transfer" : "training", done));
       }
     }
@@ -157,7 +157,7 @@ TEST(LearningRun, TheStaticLearnerWithHeightShapingClimbsTheSameWayEveryRunAndRe
     if (guess == IkGuess::Previous) {
       EXPECT_FALSE(unbroken.episode_lengths.empty()) << "the learner reached the top";
     }
-    const std::string label = ik_guess_name(guess);
+    const std::string label = enum_name(guess);
     expect_same_run(unbroken, run_learning(model, wall, parameters, 1), label + ", run again");
     ASSERT_EQ(states.size(), 2u);
     const RunCheckpoints resume{0, {}, states.back().second, "test"};

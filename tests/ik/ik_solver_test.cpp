@@ -148,7 +148,7 @@ TEST_P(EachSolver, RecordsThePathEveryKIterations) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, EachSolver, ::testing::ValuesIn(kSolvers),
-                         [](const auto& info) { return std::string(ik_solver_name(info.param)); });
+                         [](const auto& info) { return std::string(enum_name(info.param)); });
 
 // The paper's solver with its stall exit and the reach envelope against Algorithm 1 as
 // written (every query iterates to Delta_t or success) on 2000 climbing-like queries of
@@ -184,9 +184,9 @@ TEST(PaperSolver, TheStallExitKeepsTheVerdictsAndPostures) {
 }
 
 TEST(IkSolver, ParsesSolverNames) {
-  EXPECT_EQ(parse_ik_solver("paper"), IkSolverKind::Paper);
-  EXPECT_EQ(parse_ik_solver("fast"), IkSolverKind::Fast);
-  EXPECT_FALSE(parse_ik_solver("kdl").has_value());
+  EXPECT_EQ(parse_enum<IkSolverKind>("paper"), IkSolverKind::Paper);
+  EXPECT_EQ(parse_enum<IkSolverKind>("fast"), IkSolverKind::Fast);
+  EXPECT_FALSE(parse_enum<IkSolverKind>("kdl").has_value());
 }
 
 }  // namespace

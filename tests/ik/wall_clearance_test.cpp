@@ -55,17 +55,17 @@ TEST(WallClearance, RejectRefusesWhatPassesThroughAndAvoidReachesOnlyPosturesCle
       const bool through = wall_penetration(model, data).passes_through();
       const IkResult refused = solve_ik(model, data, query.start, query.target, reject);
       ASSERT_EQ(refused.reached, free.reached && !through)
-          << "seed " << kSeed << " query " << q << " solver " << ik_solver_name(solver);
+          << "seed " << kSeed << " query " << q << " solver " << enum_name(solver);
       const IkResult kept_out = solve_ik(model, data, query.start, query.target, avoid);
       if (!kept_out.reached) continue;
       ++avoided;
       EXPECT_FALSE(wall_penetration(model, data).passes_through())
-          << "seed " << kSeed << " query " << q << " solver " << ik_solver_name(solver);
+          << "seed " << kSeed << " query " << q << " solver " << enum_name(solver);
       EXPECT_TRUE(target_reached(data.points, query.target, avoid.tolerances));
       if (free.reached && through) ++rescued;
     }
-    EXPECT_GT(avoided, 0) << ik_solver_name(solver);
-    EXPECT_GT(rescued, 0) << ik_solver_name(solver) << ": no query that ignore reaches through the wall";
+    EXPECT_GT(avoided, 0) << enum_name(solver);
+    EXPECT_GT(rescued, 0) << enum_name(solver) << ": no query that ignore reaches through the wall";
   }
 }
 

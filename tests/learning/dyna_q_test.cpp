@@ -83,7 +83,7 @@ TEST(DynaQ, ARestoredAgentContinuesAsTheSavedOne) {
   for (const TransferMode mode : {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior,
                                   TransferMode::Seeded, TransferMode::Shaping, TransferMode::Ordered})
     for (const Planner planner : {Planner::Uniform, Planner::Prioritized}) {
-      SCOPED_TRACE(transfer_mode_name(mode));
+      SCOPED_TRACE(enum_name(mode));
       DynaParameters settings;
       settings.planner = planner;
       settings.epsilon = 0.3;

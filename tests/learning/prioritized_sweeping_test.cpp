@@ -109,8 +109,8 @@ TEST(PrioritizedSweeping, ModelKnowsEachStatesPredecessorsAfterAChangedTransitio
 }
 
 TEST(PrioritizedSweeping, PlannerNamesRoundTrip) {
-  for (const Planner p : {Planner::Uniform, Planner::Prioritized}) EXPECT_EQ(parse_planner(planner_name(p)), p);
-  EXPECT_FALSE(parse_planner("sweeping"));
+  for (const Planner p : {Planner::Uniform, Planner::Prioritized}) EXPECT_EQ(parse_enum<Planner>(enum_name(p)), p);
+  EXPECT_FALSE(parse_enum<Planner>("sweeping"));
 }
 
 TEST(PrioritizedSweeping, ACheckpointedQueuePopsInTheSameOrder) {

@@ -8,11 +8,11 @@ namespace {
 TEST(TransferMode, EveryModeParsesBackFromItsName) {
   for (const TransferMode mode : {TransferMode::Paper, TransferMode::Informed, TransferMode::Prior,
                                   TransferMode::Seeded, TransferMode::Shaping, TransferMode::Ordered}) {
-    EXPECT_EQ(parse_transfer_mode(transfer_mode_name(mode)), mode);
-    EXPECT_NE(std::string(transfer_mode_names()).find(transfer_mode_name(mode)), std::string::npos);
+    EXPECT_EQ(parse_enum<TransferMode>(enum_name(mode)), mode);
+    EXPECT_NE(std::string(enum_choices<TransferMode>()).find(enum_name(mode)), std::string::npos);
   }
-  EXPECT_EQ(parse_transfer_mode("Paper"), std::nullopt);
-  EXPECT_EQ(parse_transfer_mode(""), std::nullopt);
+  EXPECT_EQ(parse_enum<TransferMode>("Paper"), std::nullopt);
+  EXPECT_EQ(parse_enum<TransferMode>(""), std::nullopt);
 }
 
 }  // namespace

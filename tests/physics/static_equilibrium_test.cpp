@@ -119,7 +119,7 @@ void expect_checked(const BodyModel& model, const StrengthProfile& strength, con
     force += f;
     moment += data.points[point].cross(f);
     torques -= data.jacobians[point].transpose() * f;
-    EXPECT_TRUE(inside_friction_cone(contact, f, 1e-6)) << limb_name(contact.limb) << " " << f.transpose();
+    EXPECT_TRUE(inside_friction_cone(contact, f, 1e-6)) << enum_name(contact.limb) << " " << f.transpose();
     EXPECT_LE(f.dot(contact.support_direction), contact.normal_force_limit + 1e-6);
   }
   EXPECT_LT(force.norm(), 1e-6 * scale) << force.transpose();

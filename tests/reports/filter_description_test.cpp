@@ -20,7 +20,7 @@ TEST(FilterDescription, TheSelectedReadingIsTheHeadlineBesideThePapers) {
     report.counts[r].pass4 = 40 + r;
   }
   const auto json = filter_json(report);
-  EXPECT_EQ(json["reading"], reading_name(kFeetAboveHandsReadings[1]));
+  EXPECT_EQ(json["reading"], enum_name(kFeetAboveHandsReadings[1]));
   EXPECT_EQ(json["passing3"], 101);
   EXPECT_DOUBLE_EQ(json["pass4"].get<double>(), 41.0 / 2000.0);
   EXPECT_DOUBLE_EQ(json["paper_pass3"].get<double>(), kPaperFilterPass3);
@@ -29,8 +29,8 @@ TEST(FilterDescription, TheSelectedReadingIsTheHeadlineBesideThePapers) {
   const std::size_t marked = text.find("  <- selected");
   ASSERT_NE(marked, std::string::npos);
   const std::size_t line = text.rfind('\n', marked) + 1;
-  EXPECT_EQ(text.compare(line, std::string(reading_name(kFeetAboveHandsReadings[1])).size(),
-                         reading_name(kFeetAboveHandsReadings[1])),
+  EXPECT_EQ(text.compare(line, std::string(enum_name(kFeetAboveHandsReadings[1])).size(),
+                         enum_name(kFeetAboveHandsReadings[1])),
             0)
       << text;
   EXPECT_NE(text.find("selected: 101 of 1000 3-configurations and 41 of 2000 4-configurations pass\n"),

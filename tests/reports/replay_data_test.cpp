@@ -91,7 +91,7 @@ TEST(ReplayData, EachReachedPostureGraspsTheConfigurationShown) {
       if (!move["success"]) continue;
       HoldConfiguration configuration;
       for (int limb = 0; limb < kLimbCount; ++limb) {
-        configuration.holds[limb] = folder.wall.index_of(move["configuration"][limb_name(static_cast<Limb>(limb))]);
+        configuration.holds[limb] = folder.wall.index_of(move["configuration"][enum_name(static_cast<Limb>(limb))]);
       }
       forward_kinematics(model, data, climb->postures[++posture]);
       EXPECT_TRUE(
