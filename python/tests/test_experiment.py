@@ -281,3 +281,22 @@ def test_wall_generator_keys_beside_a_wall_file_are_refused(tmp_path):
     crux.Wall.random(5).save(tmp_path / "wall.json")
     with pytest.raises(ValueError, match="^wall.sigma: shapes a random wall, and the wall file gives the wall itself"):
         crux.run_learning(config={"wall.file": str(tmp_path / "wall.json"), "wall.sigma": 0.2})
+
+
+def test_config_keys_are_the_declarations_flags_and_files_use():
+    keys = {k["key"]: k for k in crux.config_keys()}
+    assert len(keys) == len(crux.config_keys()), "each key is declared once"
+    radius = keys["ik.grasp_radius"]
+    assert radius["flag"] == "--ik-grasp-radius"
+    assert radius["type"] == "number" and radius["unit"] == "m"
+    assert radius["min"] == 0.0 and radius["min_open"] and radius["max"] is None
+    assert radius["default"] == 0.04
+    assert keys["ik.solver"]["type"] == "choice"
+    assert keys["ik.solver"]["choices"] == "fast or paper"
+    assert keys["ik.solver"]["default"] == "fast"
+    assert keys["experiment.threads"]["min"] == 0.0 and keys["experiment.threads"]["max"] == 1024.0
+    assert keys["wall.seed"]["default"] is None
+    assert keys["output.progress"]["choices"] == "bar, lines or none"
+    # A bound declared there is the one a dict meets.
+    with pytest.raises(ValueError, match=r"^ik.grasp_radius: must be positive$"):
+        crux.run_learning(config={"wall.seed": 3, "experiment.iterations": 5, "ik.grasp_radius": 0.0})

@@ -15,7 +15,11 @@ ConfigurationReacher::ConfigurationReacher(const BodyModel& model, const Wall& w
                                            StanceQuestion question)
     : model_(model), wall_(wall), parameters_(parameters), data_(model), question_(question) {
   if (physics.model == PhysicsModel::Static) {
-    parameters_.ik.wall = WallRule::Avoid;
+    // A stance that holds still keeps the body out of the wall: the caller says so
+    // (finalize_config sets it), rather than this class changing what it was given.
+    if (parameters.ik.wall != WallRule::Avoid) {
+      throw std::invalid_argument("the static model needs ik.wall = avoid (the body kept out of the wall)");
+    }
     stance_.emplace(model, wall, physics);
   }
 }

@@ -21,8 +21,9 @@ enum class StanceQuestion { Effort, HoldsStill };
 
 class ConfigurationReacher {
  public:
-  // Under the static model (physics.model) the IK keeps the body out of the wall
-  // whatever ik.wall says, and a reached posture must hold still (climbing/stance_check).
+  // Under the static model (physics.model) a reached posture must hold still
+  // (climbing/stance_check), and the IK must keep the body out of the wall: std::invalid_argument
+  // unless parameters.ik.wall is avoid.
   ConfigurationReacher(const BodyModel& model, const Wall& wall, const ReachabilityParameters& parameters,
                        const PhysicsParameters& physics = {}, StanceQuestion question = StanceQuestion::Effort);
 

@@ -23,6 +23,9 @@ ExperimentConfig read_run_config(const std::filesystem::path& path) {
   // Folders written before config.toml left a wall file's unused random-wall keys out
   // recorded them all; what crux wrote it reads back.
   std::erase_if(config.given, is_wall_generator_key);
+  // Folders written before config.toml recorded the static model's ik.wall as what ran
+  // recorded the ignore they were given; they ran with avoid, as finalize_config now sets.
+  if (config.settings.learning.climbing.physics.model == PhysicsModel::Static) config.given.erase("ik.wall");
   try {
     finalize_config(config);
   } catch (const InputError& e) {

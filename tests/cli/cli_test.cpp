@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -308,6 +310,33 @@ TEST(Cli, TheDocsQuoteErrorLinesAsCruxPrintsThem) {
     EXPECT_EQ(run.err, q.line + "\n") << q.command;
     EXPECT_FALSE(std::filesystem::exists(folder / "out")) << q.command << ": nothing written";
   }
+}
+
+}  // namespace
+}  // namespace crux
+
+namespace crux {
+namespace {
+
+// output.progress: the display changes stderr only. Under ctest stderr is a pipe, so
+// bar shows nothing there (as before the key), lines a line per 10 %, none nothing.
+TEST(Cli, OutputProgressChangesStderrOnly) {
+  const std::string command = "filter-stats --wall-count 10 --wall-seed 2";
+  const testing::Outcome bar = testing::run_crux(command);
+  const testing::Outcome lines = testing::run_crux(command + " --output-progress lines");
+  const testing::Outcome none = testing::run_crux(command + " --output-progress none");
+  ASSERT_EQ(bar.exit_code, 0) << bar.err;
+  EXPECT_EQ(bar.err, "");
+  EXPECT_EQ(none.err, "");
+  EXPECT_NE(lines.err.find("filter-stats ["), std::string::npos) << lines.err;
+  EXPECT_NE(lines.err.find("100% (10/10)\n"), std::string::npos) << lines.err;
+  EXPECT_LE(std::count(lines.err.begin(), lines.err.end(), '\n'), 11) << "a line per 10 %";
+  EXPECT_EQ(lines.out, bar.out);
+  EXPECT_EQ(none.out, bar.out);
+  const testing::Outcome refused = testing::run_crux(command + " --output-progress quiet");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(refused.err, "crux: --output-progress: unknown progress 'quiet' (expected bar, lines or none)\n");
+  EXPECT_NE(testing::run_crux("filter-stats --help").out.find("--output-progress"), std::string::npos);
 }
 
 }  // namespace

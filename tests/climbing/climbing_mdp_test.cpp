@@ -127,6 +127,7 @@ TEST(ClimbingMdp, UnderTheStaticModelADeadEndIsAFallBackToTheStart) {
   const Wall wall = generate_random_wall(7);
   ClimbingParameters parameters;
   parameters.physics.model = PhysicsModel::Static;
+  parameters.reachability.ik.wall = WallRule::Avoid;
   ClimbingMdp mdp(model, wall, parameters);
   ASSERT_TRUE(mdp.step(wall.index_of(14)).reached);
   ASSERT_TRUE(mdp.step(wall.index_of(20)).reached);
@@ -228,6 +229,7 @@ TEST(ClimbingMdp, ARestoredMdpContinuesAsTheSavedOne) {
   for (const PhysicsModel physics : {PhysicsModel::Kinematic, PhysicsModel::Static}) {
     SCOPED_TRACE(enum_name(physics));
     f.parameters.physics.model = physics;
+    f.parameters.reachability.ik.wall = physics == PhysicsModel::Static ? WallRule::Avoid : WallRule::Ignore;
     f.parameters.rewards.effort = physics == PhysicsModel::Static ? 2.0 : 0.0;
     ClimbingMdp mdp(f.model, f.wall, f.parameters);
     const auto first_reachable = [](ClimbingMdp& m) {
@@ -279,6 +281,7 @@ TEST(ClimbingMdp, ARestoredMdpContinuesAsTheSavedOne) {
 TEST(ClimbingMdp, TheEffortPenaltyIsProportionalToTheStancesEffort) {
   Fixture f;
   f.parameters.physics.model = PhysicsModel::Static;
+  f.parameters.reachability.ik.wall = WallRule::Avoid;
   f.parameters.rewards.effort = 3.0;
   ClimbingMdp mdp(f.model, f.wall, f.parameters);
   StanceCheck check(f.model, f.wall, f.parameters.physics);
@@ -326,6 +329,7 @@ double mean_held_height(const Wall& wall, const HoldConfiguration& configuration
 TEST(ClimbingMdp, TheHeightShapingAddsGammaPhiOfTheNextStateMinusPhiOfTheState) {
   Fixture f;
   f.parameters.physics.model = PhysicsModel::Static;
+  f.parameters.reachability.ik.wall = WallRule::Avoid;
   ClimbingMdp unshaped(f.model, f.wall, f.parameters);
   f.parameters.rewards.height = 10.0;
   f.parameters.rewards.discount = 0.8;

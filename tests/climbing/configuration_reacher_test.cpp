@@ -20,6 +20,26 @@ namespace {
 
 constexpr std::uint64_t kSeed = 20261124;
 
+// The static model's reachability: the body kept out of the wall, as finalize_config sets it.
+ReachabilityParameters kept_out_of_the_wall() {
+  ReachabilityParameters parameters;
+  parameters.ik.wall = WallRule::Avoid;
+  return parameters;
+}
+
+TEST(ConfigurationReacher, TheStaticModelRefusesAWallRuleOtherThanAvoidInsteadOfChangingIt) {
+  const Wall wall = generate_random_wall(3);
+  for (const WallRule rule : {WallRule::Ignore, WallRule::Reject}) {
+    ReachabilityParameters parameters;
+    parameters.ik.wall = rule;
+    EXPECT_THROW(
+        ConfigurationReacher(testing::human_model(), wall, parameters, PhysicsParameters{PhysicsModel::Static}),
+        std::invalid_argument)
+        << enum_name(rule);
+    EXPECT_NO_THROW(ConfigurationReacher(testing::human_model(), wall, parameters)) << "the kinematic model takes any";
+  }
+}
+
 // crux wall's start check (solve_start) and the learning's (reach_start) are one test:
 // the same verdict and the same posture, for any settings.
 TEST(ConfigurationReacher, StartIsSolveStartAnsweredThroughTheCache) {
@@ -102,7 +122,7 @@ TEST(ConfigurationReacher, ReachEnvelopeChangesNoVerdict) {
 
 // Under the static model a verdict depends on the limb that lets go next (the stance
 // must hold on the three holds left), so the cache keeps one per limb; the body is kept
-// out of the wall whatever ik.wall says. The kinematic model keeps one verdict per
+// out of the wall (ik.wall = avoid). The kinematic model keeps one verdict per
 // configuration. Random wall 7, after the right hand takes hold 14 and the left hand
 // hold 20: the right foot on hold 2 holds on four holds but not on three once the left
 // foot lets go (ClimbingMdp.UnderTheStaticModelADeadEndIsAFallBackToTheStart).
@@ -113,9 +133,8 @@ TEST(ConfigurationReacher, StaticVerdictsAreKeptPerLimbThatLetsGoNext) {
                                          .with(Limb::RightHand, wall.index_of(14))
                                          .with(Limb::LeftHand, wall.index_of(20))
                                          .with(Limb::RightFoot, wall.index_of(2));
-  ReachabilityParameters ignore_the_wall;  // ik.wall = ignore, which the static model overrides
-  ConfigurationReacher kinematic(model, wall, ignore_the_wall);
-  ConfigurationReacher stance(model, wall, ignore_the_wall, PhysicsParameters{PhysicsModel::Static});
+  ConfigurationReacher kinematic(model, wall, ReachabilityParameters{});  // ik.wall = ignore, the paper's
+  ConfigurationReacher stance(model, wall, kept_out_of_the_wall(), PhysicsParameters{PhysicsModel::Static});
   const Posture& from = kinematic.require_start(wall.name);
   ASSERT_NE(kinematic.reach(from, complete, Limb::LeftFoot), nullptr);
   EXPECT_EQ(stance.reach(from, complete, Limb::LeftFoot), nullptr);
@@ -128,9 +147,7 @@ TEST(ConfigurationReacher, StaticVerdictsAreKeptPerLimbThatLetsGoNext) {
   EXPECT_EQ(stance.solves(), solves + 1) << "the cached verdict";
   EXPECT_FALSE(kinematic.known_unreachable(complete, Limb::RightHand));
 
-  ReachabilityParameters avoid = ignore_the_wall;
-  avoid.ik.wall = WallRule::Avoid;
-  ConfigurationReacher avoiding(model, wall, avoid);
+  ConfigurationReacher avoiding(model, wall, kept_out_of_the_wall());
   const Posture* avoided = avoiding.reach(from, complete, Limb::RightHand);
   const Posture* held = stance.reach(from, complete, Limb::RightHand);
   ASSERT_EQ(avoided != nullptr, held != nullptr || !avoiding.known_unreachable(complete, Limb::RightHand));
@@ -147,8 +164,8 @@ TEST(ConfigurationReacher, AskingOnlyWhetherStancesHoldGivesTheSameVerdicts) {
   const BodyModel& model = testing::human_model();
   const Wall wall = generate_random_wall(3);
   const PhysicsParameters physics{PhysicsModel::Static};
-  ConfigurationReacher efforts(model, wall, ReachabilityParameters{}, physics);
-  ConfigurationReacher verdicts(model, wall, ReachabilityParameters{}, physics, StanceQuestion::HoldsStill);
+  ConfigurationReacher efforts(model, wall, kept_out_of_the_wall(), physics);
+  ConfigurationReacher verdicts(model, wall, kept_out_of_the_wall(), physics, StanceQuestion::HoldsStill);
   ASSERT_NE(verdicts.reach_start(), nullptr);
   std::vector<std::pair<HoldConfiguration, const Posture*>> states{
       {start_configuration(wall).with(Limb::RightHand, kFree), efforts.reach_start()}};
@@ -205,7 +222,7 @@ TEST(ConfigurationReacher, WithTheStandingGuessAVerdictDoesNotDependOnThePosture
   };
   for (const IkGuess guess : {IkGuess::Standing, IkGuess::Previous}) {
     SCOPED_TRACE(enum_name(guess));
-    ReachabilityParameters parameters;
+    ReachabilityParameters parameters = kept_out_of_the_wall();
     parameters.guess = guess;
     ConfigurationReacher finder(model, wall, parameters, physics);
     const Posture start_posture = finder.require_start(wall.name);

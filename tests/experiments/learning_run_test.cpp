@@ -146,6 +146,7 @@ TEST(LearningRun, TheStaticLearnerWithHeightShapingClimbsTheSameWayEveryRunAndRe
     LearningParameters parameters;
     parameters.iterations = 4000;
     parameters.climbing.physics.model = PhysicsModel::Static;
+    parameters.climbing.reachability.ik.wall = WallRule::Avoid;
     parameters.climbing.reachability.guess = guess;
     parameters.climbing.fall_when_stuck = guess == IkGuess::Standing;
     parameters.dyna.transfer = TransferMode::Seeded;

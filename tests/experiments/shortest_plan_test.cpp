@@ -75,6 +75,7 @@ TEST(ShortestPlan, CheckingTheMovesOnTheWayRefusesSomeAndLengthensTheClimb) {
   wall.finish_height = 1.7;
   ClimbingParameters parameters;
   parameters.physics.model = PhysicsModel::Static;
+  parameters.reachability.ik.wall = WallRule::Avoid;
   const Plan stances_only = shortest_plan(model, wall, parameters);
   PlanParameters checked;
   checked.check_moves = true;

@@ -13,6 +13,7 @@ StanceSurveyParameters small_survey() {
   parameters.wall_count = 4;
   parameters.moves = 80;
   parameters.climbing.physics.model = PhysicsModel::Static;
+  parameters.climbing.reachability.ik.wall = WallRule::Avoid;
   return parameters;
 }
 
