@@ -1,4 +1,4 @@
-"""Tabular Q-learning against crux.ClimbEnv: the problem-space state, the hold as the
+"""Tabular Q-learning against crux.ClimbMdp: the problem-space state, the hold as the
 action, epsilon-greedy over the action mask. Prints the episode lengths it climbs in.
 
     PYTHONPATH=build/release/python /usr/bin/python3 examples/python/q_learning.py [--steps N]
@@ -16,7 +16,7 @@ parser.add_argument("--steps", type=int, default=8000, help="real actions to lea
 parser.add_argument("--seed", type=int, default=1)
 args = parser.parse_args()
 
-env = crux.ClimbEnv(crux.Wall.random(7), max_steps=2000)
+env = crux.ClimbMdp(crux.Wall.random(7), max_steps=2000)
 rng = np.random.default_rng(args.seed)
 q = defaultdict(lambda: np.zeros(env.action_count))
 alpha, gamma, epsilon = 0.5, 0.9, 0.1

@@ -1,7 +1,8 @@
 """crux: a virtual human that learns to climb walls of holds, and carries what it
 learnt to walls it has never seen (Libeau, Micaelli, Sigaud), as a Python module.
 
-The body, IK, walls, the climbing MDP as a Gymnasium-style environment (ClimbEnv), the
+The body, IK, walls, the climbing MDP with Gymnasium's step conventions (ClimbMdp; the
+Gymnasium environment itself is crux.gym.ClimbEnv), the
 paper's agent (run_learning) and experiment (run_experiment), and Q-tables as numpy
 arrays. Bad input raises ValueError with the CLI's error line; docs/PYTHON.md has the
 tour.
@@ -12,7 +13,7 @@ from ._crux import (
     LIMB_NAMES,
     ROOT_DOF,
     BodyModel,
-    ClimbEnv,
+    ClimbMdp,
     GridPlacement,
     IkResult,
     LearningRun,
@@ -39,7 +40,7 @@ __all__ = [
     "LIMB_NAMES",
     "ROOT_DOF",
     "BodyModel",
-    "ClimbEnv",
+    "ClimbMdp",
     "GridPlacement",
     "IkResult",
     "LearningRun",
@@ -60,3 +61,15 @@ __all__ = [
     "solve_ik",
     "wall_state",
 ]
+
+
+def __getattr__(name):
+    # crux.ClimbEnv was the raw MDP's name until crux.gym.ClimbEnv, the Gymnasium
+    # environment, took it over: kept one release, deprecated.
+    if name == "ClimbEnv":
+        import warnings
+
+        warnings.warn("crux.ClimbEnv is now crux.ClimbMdp (crux.gym.ClimbEnv is the Gymnasium environment); "
+                      "the old name goes in the next release", DeprecationWarning, stacklevel=2)
+        return ClimbMdp
+    raise AttributeError(f"module 'crux' has no attribute {name!r}")

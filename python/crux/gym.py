@@ -22,7 +22,7 @@ from gymnasium.vector.utils import batch_space
 from . import _crux
 
 ENV_ID = "crux/Climb-v0"
-# What TimeLimit allows an episode, the old crux.ClimbEnv's default max_steps.
+# What TimeLimit allows an episode, the old crux.ClimbMdp's default max_steps.
 MAX_EPISODE_STEPS = 1000
 OBSERVATION_FORMS = ("numeric", "paper")
 WALL_ORDERS = ("cycle", "sample")
@@ -207,7 +207,7 @@ class ClimbEnv(gymnasium.Env):
             self._walls = _RandomWalls(wall_config)
         else:
             self._walls = _FixedWalls(_wall_list(wall, wall_config, "wall"), wall_order)
-        self._envs = {}  # per wall of a list: its crux.ClimbEnv, built once
+        self._envs = {}  # per wall of a list: its crux.ClimbMdp, built once
 
         counts = self._walls.hold_counts()
         if observation == "paper" and len(counts) > 1:
@@ -275,7 +275,7 @@ class ClimbEnv(gymnasium.Env):
             self._env = self._envs[index]
 
     def _climb_env(self, wall):
-        return _crux.ClimbEnv(wall, config=self._config, max_steps=None, model=self._model_argument)
+        return _crux.ClimbMdp(wall, config=self._config, max_steps=None, model=self._model_argument)
 
     @property
     def wall(self):

@@ -1,4 +1,4 @@
-// ClimbEnv: the climbing MDP (sections III-C, III-D) with Gymnasium's conventions,
+// ClimbMdp: the climbing MDP (sections III-C, III-D) with Gymnasium's conventions,
 // reset() -> (obs, info) and step(action) -> (obs, reward, terminated, truncated, info),
 // without needing the gymnasium package (crux.gym wraps it as a gymnasium.Env). An action
 // is a hold index; action_mask() says which the state offers (the geometric filter's
@@ -20,14 +20,14 @@ namespace crux::python {
 
 namespace {
 
-class ClimbEnv {
+class ClimbMdp {
  public:
-  ClimbEnv(Wall wall, const py::handle& config, const py::handle& max_steps, const py::handle& model) {
+  ClimbMdp(Wall wall, const py::handle& config, const py::handle& max_steps, const py::handle& model) {
     // None leaves truncation to the caller (crux.gym: Gymnasium's TimeLimit).
     if (!max_steps.is_none()) {
       max_steps_ = static_cast<int>(integer_from(max_steps, 1, std::numeric_limits<int>::max(), "max_steps"));
     }
-    const ExperimentConfig c = config_from_python(config, kClimbEnvKeys, "ClimbEnv");
+    const ExperimentConfig c = config_from_python(config, kClimbMdpKeys, "ClimbMdp");
     BodyModelPtr body = body_from(model, c.urdf);
     py::gil_scoped_release release;
     episode_ = std::make_unique<ClimbEpisode>(std::move(body), std::move(wall), c.settings.learning.climbing);
@@ -143,32 +143,32 @@ class ClimbEnv {
 }  // namespace
 
 void bind_climb_env(py::module_& m) {
-  py::class_<ClimbEnv>(m, "ClimbEnv",
+  py::class_<ClimbMdp>(m, "ClimbMdp",
                        "The climbing MDP as a Gymnasium-style environment: an action is a hold index for the free "
                        "limb; see action_mask()")
       .def(py::init<Wall, const py::handle&, const py::handle&, const py::handle&>(), py::arg("wall"),
            py::arg("config") = py::none(), py::arg("max_steps") = 1000, py::arg("model") = py::none(),
            "config takes the keys of config.toml's [reward], [ik], [filter] and [grid] tables and experiment.urdf; "
            "an episode is truncated after max_steps actions, never when max_steps is None")
-      .def("reset", &ClimbEnv::reset, py::arg("seed") = py::none(), py::arg("options") = py::none(),
+      .def("reset", &ClimbMdp::reset, py::arg("seed") = py::none(), py::arg("options") = py::none(),
            "Back to the start configuration with the right hand free: (obs, info). The environment draws no random "
            "number, so the seed (None or an integer from 0 to 2^64 - 1) changes nothing.")
-      .def("step", &ClimbEnv::step, py::arg("action"), "(obs, reward, terminated, truncated, info)")
-      .def("action_mask", &ClimbEnv::action_mask, "bool array over hold indices: the possible actions of the state")
-      .def("observation", &ClimbEnv::observation)
-      .def("numeric_observation", &ClimbEnv::numeric_observation, py::arg("max_candidates"),
+      .def("step", &ClimbMdp::step, py::arg("action"), "(obs, reward, terminated, truncated, info)")
+      .def("action_mask", &ClimbMdp::action_mask, "bool array over hold indices: the possible actions of the state")
+      .def("observation", &ClimbMdp::observation)
+      .def("numeric_observation", &ClimbMdp::numeric_observation, py::arg("max_candidates"),
            "crux.gym's numeric observation of the state, its candidates in max_candidates slots: a dict of float32 "
            "arrays (docs/PYTHON.md)")
-      .def("replay_actions", &ClimbEnv::replay_actions, py::arg("actions"),
+      .def("replay_actions", &ClimbMdp::replay_actions, py::arg("actions"),
            "Steps through possible actions in C++, returning the summed reward and nothing else (the baseline of "
            "bench/python_step_overhead.py); leaves steps and the episode's end as they were")
-      .def_property_readonly("action_count", &ClimbEnv::action_count, "the number of actions: the wall's holds")
-      .def_property_readonly("grid_action_count", &ClimbEnv::grid_action_count)
-      .def_property_readonly("wall", &ClimbEnv::wall)
-      .def_property_readonly("max_span", &ClimbEnv::max_span, "filter.max_span, in metres")
-      .def_property_readonly("model", &ClimbEnv::model)
-      .def_property_readonly("max_steps", &ClimbEnv::max_steps)
-      .def_property_readonly("steps", &ClimbEnv::steps, "actions since the last reset");
+      .def_property_readonly("action_count", &ClimbMdp::action_count, "the number of actions: the wall's holds")
+      .def_property_readonly("grid_action_count", &ClimbMdp::grid_action_count)
+      .def_property_readonly("wall", &ClimbMdp::wall)
+      .def_property_readonly("max_span", &ClimbMdp::max_span, "filter.max_span, in metres")
+      .def_property_readonly("model", &ClimbMdp::model)
+      .def_property_readonly("max_steps", &ClimbMdp::max_steps)
+      .def_property_readonly("steps", &ClimbMdp::steps, "actions since the last reset");
 }
 
 }  // namespace crux::python

@@ -2,7 +2,7 @@
 // released, on TBB's threads (as crux paper runs its runs). Each environment owns its
 // episodes (a ClimbEpisode: its MDP, posture cache and kinematics workspace) and shares
 // only the immutable body and walls, so that threads share nothing they write, and each
-// environment's numbers are those of a single ClimbEnv whatever thread steps it.
+// environment's numbers are those of a single ClimbMdp whatever thread steps it.
 // crux.gym.VectorClimbEnv wraps it as a gymnasium.vector.VectorEnv: it draws the walls
 // (from each environment's np_random, as the single environment does) and names them
 // here before the step that resets (next-step autoreset), and assembles the infos.
@@ -98,7 +98,7 @@ class VectorClimbEnv {
       max_steps_ =
           static_cast<int>(integer_from(max_episode_steps, 1, std::numeric_limits<int>::max(), "max_episode_steps"));
     }
-    const ExperimentConfig c = config_from_python(config, kClimbEnvKeys, "VectorClimbEnv");
+    const ExperimentConfig c = config_from_python(config, kClimbMdpKeys, "VectorClimbEnv");
     parameters_ = c.settings.learning.climbing;
     model_ = body_from(model, c.urdf);
     slots_.resize(static_cast<std::size_t>(envs));

@@ -16,9 +16,9 @@ namespace crux::python {
 inline const ParameterSet kGridKeys{{"grid"}, {}};
 inline const ParameterSet kFilterKeys{{"filter"}, {}};
 // What the climbing environments take, single or vector.
-inline const ParameterSet kClimbEnvKeys{{"experiment.urdf", "reward", "ik", "physics", "filter", "grid"}, {}};
+inline const ParameterSet kClimbMdpKeys{{"experiment.urdf", "reward", "ik", "physics", "filter", "grid"}, {}};
 
-// `caller` names the Python function in errors: "ClimbEnv" gives "crux.ClimbEnv does
+// `caller` names the Python function in errors: "ClimbMdp" gives "crux.ClimbMdp does
 // not take wall.seed".
 ExperimentConfig config_from_python(const pybind11::handle& config, const ParameterSet& accepted,
                                     const std::string& caller);

@@ -1,4 +1,4 @@
-"""ClimbEnv's invariants: Gymnasium's conventions over the climbing MDP."""
+"""crux.ClimbMdp's invariants: Gymnasium's conventions over the climbing MDP."""
 
 import numpy as np
 import pytest
@@ -27,7 +27,7 @@ def same_observation(a, b):
 
 
 def test_reset_takes_none_or_an_integer_seed(wall7):
-    env = crux.ClimbEnv(wall7)
+    env = crux.ClimbMdp(wall7)
     for seed in (None, 0, np.int64(7), 2**64 - 1):
         env.reset(seed=seed)
     for seed in ("x", 1.5, True, -1, 2**64):
@@ -36,7 +36,7 @@ def test_reset_takes_none_or_an_integer_seed(wall7):
 
 
 def test_reset_is_the_start_with_the_right_hand_free(wall7):
-    env = crux.ClimbEnv(wall7)
+    env = crux.ClimbMdp(wall7)
     obs, info = env.reset(seed=5)
     expected = wall7.start.copy()
     expected[0] = -1
@@ -51,7 +51,7 @@ def test_reset_is_the_start_with_the_right_hand_free(wall7):
 
 
 def test_the_mask_is_the_possible_actions_of_every_state(wall7):
-    env = crux.ClimbEnv(wall7)
+    env = crux.ClimbMdp(wall7)
     obs, _ = env.reset()
     rng = np.random.default_rng(1)
     for _ in range(300):
@@ -63,7 +63,7 @@ def test_the_mask_is_the_possible_actions_of_every_state(wall7):
 
 
 def test_rewards_and_what_each_kind_of_step_does(wall7):
-    env = crux.ClimbEnv(wall7, max_steps=10**6)
+    env = crux.ClimbMdp(wall7, max_steps=10**6)
     kinds = set()
     before, _ = env.reset()
     rng = np.random.default_rng(2)
@@ -105,7 +105,7 @@ def test_rewards_and_what_each_kind_of_step_does(wall7):
 
 
 def test_truncation_after_max_steps_and_no_step_after_the_end(wall7):
-    env = crux.ClimbEnv(wall7, max_steps=3)
+    env = crux.ClimbMdp(wall7, max_steps=3)
     env.reset()
     ends = []
     for _ in range(3):
@@ -119,7 +119,7 @@ def test_truncation_after_max_steps_and_no_step_after_the_end(wall7):
 
 
 def test_no_truncation_without_max_steps(wall7):
-    env = crux.ClimbEnv(wall7, max_steps=None)
+    env = crux.ClimbMdp(wall7, max_steps=None)
     assert env.max_steps is None
     env.reset()
     for _ in range(1500):
@@ -130,14 +130,14 @@ def test_no_truncation_without_max_steps(wall7):
 
 
 def test_same_actions_same_observations(wall7):
-    first = random_policy_steps(crux.ClimbEnv(wall7), 9, 400)
-    second = random_policy_steps(crux.ClimbEnv(crux.Wall.random(7)), 9, 400)
+    first = random_policy_steps(crux.ClimbMdp(wall7), 9, 400)
+    second = random_policy_steps(crux.ClimbMdp(crux.Wall.random(7)), 9, 400)
     for (a1, r1), (a2, r2) in zip(first, second):
         assert a1 == a2 and same_observation(r1[0], r2[0]) and r1[1:4] == r2[1:4]
 
 
 def test_replay_in_cpp_gives_the_rewards_of_step(wall7):
-    env = crux.ClimbEnv(wall7, max_steps=10**6)
+    env = crux.ClimbMdp(wall7, max_steps=10**6)
     steps = random_policy_steps(env, 4, 500)
     total = sum(result[1] for _, result in steps)
     env.reset()
@@ -145,7 +145,7 @@ def test_replay_in_cpp_gives_the_rewards_of_step(wall7):
 
 
 def test_bad_actions_are_value_errors(wall7):
-    env = crux.ClimbEnv(wall7)
+    env = crux.ClimbMdp(wall7)
     env.reset()
     impossible = int(np.flatnonzero(~env.action_mask())[0])
     with pytest.raises(ValueError, match=f"^action: hold {impossible} is not a possible action"):
@@ -155,25 +155,25 @@ def test_bad_actions_are_value_errors(wall7):
             env.step(not_a_hold)
     possible = np.flatnonzero(env.action_mask())
     assert env.step(possible[0])[4]["reached"] in (True, False)  # numpy integers are actions
-    with pytest.raises(ValueError, match="^config: crux.ClimbEnv does not take wall.seed$"):
-        crux.ClimbEnv(wall7, config={"wall.seed": 3})
+    with pytest.raises(ValueError, match="^config: crux.ClimbMdp does not take wall.seed$"):
+        crux.ClimbMdp(wall7, config={"wall.seed": 3})
     with pytest.raises(ValueError, match="^config: reward.step must be a finite number$"):
-        crux.ClimbEnv(wall7, config={"reward": {"step": "minus one"}})
+        crux.ClimbMdp(wall7, config={"reward": {"step": "minus one"}})
     with pytest.raises(ValueError, match="^max_steps: must be an integer from 1 to"):
-        crux.ClimbEnv(wall7, max_steps=0)
+        crux.ClimbMdp(wall7, max_steps=0)
     with pytest.raises(ValueError, match="^model: must be a crux.BodyModel or None$"):
-        crux.ClimbEnv(wall7, model="body.urdf")
+        crux.ClimbMdp(wall7, model="body.urdf")
 
 
 def test_config_changes_the_rewards(wall7):
-    env = crux.ClimbEnv(wall7, config={"reward": {"step": -2.0}})
+    env = crux.ClimbMdp(wall7, config={"reward": {"step": -2.0}})
     env.reset()
     rewards = {result[1] for _, result in random_policy_steps(env, 3, 200) if result[4]["reached"]}
     assert -2.0 in rewards and -1.0 not in rewards
 
 
 def test_numeric_observation_is_relative_to_the_free_limbs_grasp_point(wall7):
-    env = crux.ClimbEnv(wall7)
+    env = crux.ClimbMdp(wall7)
     raw, info = env.reset()
     obs = env.numeric_observation(32)
     shapes = {"free_limb": (4,), "held": (4, 3), "candidates": (32, 3), "candidate_mask": (32,),
@@ -188,3 +188,12 @@ def test_numeric_observation_is_relative_to_the_free_limbs_grasp_point(wall7):
     assert env.max_span == 2.8
     with pytest.raises(ValueError, match=f"^max_candidates: the wall '{wall7.name}' offers {len(holds)} candidates"):
         env.numeric_observation(len(holds) - 1)
+
+
+def test_the_old_name_of_the_raw_mdp_still_works_and_says_it_is_deprecated(wall7):
+    with pytest.warns(DeprecationWarning, match=r"crux.ClimbEnv is now crux.ClimbMdp"):
+        old = crux.ClimbEnv
+    assert old is crux.ClimbMdp
+    assert "ClimbEnv" not in crux.__all__
+    with pytest.raises(AttributeError):
+        crux.ClimbEnvironment  # noqa: B018

@@ -53,7 +53,7 @@ def test_gymnasiums_checker_passes(form, wall):
 
 
 def test_import_crux_needs_no_gymnasium():
-    code = "import sys, crux; crux.ClimbEnv(crux.Wall.random(7)); assert 'gymnasium' not in sys.modules"
+    code = "import sys, crux; crux.ClimbMdp(crux.Wall.random(7)); assert 'gymnasium' not in sys.modules"
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
 
@@ -138,10 +138,10 @@ def test_numeric_slots_name_the_candidate_holds():
     env = crux.gym.ClimbEnv(wall, "numeric")
     obs, info = env.reset(seed=0)
     holds = info["candidate_holds"][info["candidate_holds"] >= 0]
-    assert np.array_equal(holds, np.flatnonzero(crux.ClimbEnv(wall).action_mask()))
+    assert np.array_equal(holds, np.flatnonzero(crux.ClimbMdp(wall).action_mask()))
     assert np.array_equal(np.flatnonzero(info["action_mask"]), np.arange(len(holds)))
     assert np.array_equal(obs["candidate_mask"], info["action_mask"])
-    grasp = crux.forward_kinematics(None, crux.ClimbEnv(wall).observation()["posture"])["points"][1]
+    grasp = crux.forward_kinematics(None, crux.ClimbMdp(wall).observation()["posture"])["points"][1]
     assert np.allclose(obs["candidates"][: len(holds)], wall.positions[holds] - grasp, atol=1e-6)
     assert not obs["candidates"][len(holds):].any()
     slot = len(holds) - 1

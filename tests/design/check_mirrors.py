@@ -47,6 +47,13 @@ def layer_problems(root: pathlib.Path, design: str) -> list[str]:
             if used in rank and area in rank and rank[used] > rank[area]:
                 problems.append(f"src/{area}/{source.name} includes {used}/, which comes after {area}/ "
                                 f"in docs/DESIGN.md's folder table")
+    # python/ and src/cli/ both sit on top of the library: each calls the library, neither
+    # the other.
+    for source in sorted((root / "python" / "src").glob("*.[ch]pp")) if (root / "python" / "src").is_dir() else []:
+        for used in sorted(set(include.findall(source.read_text()))):
+            if used == "cli":
+                problems.append(f"python/src/{source.name} includes cli/: the Python module calls the library, "
+                                f"as the command line does, not the command line")
     return problems
 
 
@@ -78,7 +85,7 @@ def main(root: pathlib.Path) -> int:
 
 def self_test() -> int:
     """The layer check on a two-folder tree: an include that points down the table passes, one
-    that points up fails, naming the file."""
+    that points up fails, naming the file, as does the Python module's include of cli/."""
     import tempfile
     with tempfile.TemporaryDirectory() as scratch:
         root = pathlib.Path(scratch)
@@ -95,6 +102,12 @@ def self_test() -> int:
                                             "docs/DESIGN.md's folder table"]:
             print("self-test: an include of a folder below was not refused")
             return 1
+        (root / "python" / "src").mkdir(parents=True)
+        (root / "python" / "src" / "bind_x.cpp").write_text('#include "low/base.hpp"\n#include "cli/flags.hpp"\n')
+        if not any("python/src/bind_x.cpp includes cli/" in p for p in layer_problems(root, design)):
+            print("self-test: the Python module's include of cli/ was not refused")
+            return 1
+        (root / "python" / "src" / "bind_x.cpp").write_text('#include "low/base.hpp"\n')
         (root / "src" / "unlisted").mkdir()
         if not any("no row for src/unlisted/" in p for p in layer_problems(root, design)):
             print("self-test: a folder without a row was not named")
