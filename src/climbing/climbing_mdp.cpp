@@ -11,9 +11,11 @@
 
 namespace crux {
 
-ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters)
+ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
+                         double discount)
     : wall_(wall),
       parameters_(parameters),
+      discount_(discount),
       reacher_(model, wall, parameters.reachability, parameters.physics),
       possible_(wall.hold_count()),
       candidates_(wall.hold_count()),
@@ -80,7 +82,7 @@ StepOutcome ClimbingMdp::step(ActionCode hold) {
   StepOutcome outcome = unshaped_step(hold);
   // After the finishing move the climb is over: the terminal state's potential is 0.
   const double potential_after = outcome.finished ? 0.0 : height_potential();
-  outcome.reward += parameters_.rewards.discount * potential_after - potential_before;
+  outcome.reward += discount_ * potential_after - potential_before;
   return outcome;
 }
 

@@ -12,6 +12,7 @@
 #include "configurations/possible_actions.hpp"
 #include "configurations/reachability.hpp"
 #include "learning/action_selection.hpp"
+#include "learning/q_learning.hpp"
 
 namespace crux {
 
@@ -23,11 +24,10 @@ struct Rewards {
   // choice C28): 0, the paper's rewards, by default.
   double effort = 0.0;
   // Potential-based height shaping (Ng, Harada and Russell 1999; docs/MODEL.md, choice
-  // C29): every step's reward gains discount * phi(s') - phi(s), where phi(s) is `height`
+  // C29): every step's reward gains gamma * phi(s') - phi(s), where phi(s) is `height`
   // times the mean height, along the wall, of the holds held in the 3-configuration s, and
   // phi = 0 once the climb is finished. 0 by default: the paper's rewards.
   double height = 0.0;
-  double discount = 0.9;  // the learner's gamma: with it the shaping keeps the optimal policy
 };
 
 struct ClimbingParameters {
@@ -63,7 +63,11 @@ class ClimbingMdp {
  public:
   // Solves the start configuration from standing; throws InputError naming the wall if
   // it is not reachable (such a wall is reported, never silently used).
-  ClimbingMdp(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters);
+  // `discount` is the learner's gamma, which the height shaping (Rewards::height) must use to
+  // keep the optimal policy: the learning run passes its learning.gamma; by default the
+  // paper's 0.9 (the Python environments, which take no learning keys).
+  ClimbingMdp(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
+              double discount = QLearningRates{}.gamma);
 
   // Back to the start configuration with the right hand free (Algorithm 2, lines 1-3).
   void reset();
@@ -109,6 +113,7 @@ class ClimbingMdp {
 
   const Wall& wall_;
   ClimbingParameters parameters_;
+  double discount_;
   ConfigurationReacher reacher_;
   Posture start_posture_, posture_;
   HoldConfiguration configuration_;  // a 3-configuration

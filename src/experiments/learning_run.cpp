@@ -135,7 +135,7 @@ LoopState load_state(const RunCheckpoints& checkpoints, int iterations, RunResul
 RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningParameters& parameters,
                        std::uint64_t seed, const QTable* initial_q_grid, const std::function<void(int)>& progress,
                        const RunCheckpoints* checkpoints) {
-  ClimbingMdp mdp(model, wall, parameters.climbing);
+  ClimbingMdp mdp(model, wall, parameters.climbing, parameters.dyna.rates.gamma);
   DynaQAgent agent(mdp.wall_action_count(), mdp.grid_action_count(), parameters.dyna, seed);
   if (initial_q_grid != nullptr) agent.set_q_grid(*initial_q_grid);
   RunResult result;

@@ -332,8 +332,7 @@ TEST(ClimbingMdp, TheHeightShapingAddsGammaPhiOfTheNextStateMinusPhiOfTheState) 
   f.parameters.reachability.ik.wall = WallRule::Avoid;
   ClimbingMdp unshaped(f.model, f.wall, f.parameters);
   f.parameters.rewards.height = 10.0;
-  f.parameters.rewards.discount = 0.8;
-  ClimbingMdp shaped(f.model, f.wall, f.parameters);
+  ClimbingMdp shaped(f.model, f.wall, f.parameters, 0.8);
   Random pick(20261126);
   int stayed = 0, moved = 0;
   for (int step = 0; step < 300; ++step) {
@@ -376,8 +375,7 @@ TEST(ClimbingMdp, WithoutDiscountTheHeightShapingOfAWalkTelescopes) {
   Fixture f;
   ClimbingMdp unshaped(f.model, f.wall, f.parameters);
   f.parameters.rewards.height = 50.0;
-  f.parameters.rewards.discount = 1.0;
-  ClimbingMdp shaped(f.model, f.wall, f.parameters);
+  ClimbingMdp shaped(f.model, f.wall, f.parameters, 1.0);
   const double phi_first = 50.0 * mean_held_height(f.wall, shaped.configuration());
   Random pick(7);
   double shaping_sum = 0.0;

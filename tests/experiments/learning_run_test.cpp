@@ -188,3 +188,29 @@ TEST(LearningRun, AnOrderedTransferRunResumedFromACheckpointEndsAsTheUnbrokenRun
 
 }  // namespace
 }  // namespace crux
+
+namespace crux {
+namespace {
+
+// The height shaping uses the learner's own gamma (learning.gamma), given to the MDP by the
+// run, not a copy that a config step must remember to make: the first iteration's action
+// is the same whatever gamma (empty tables, same seed), and its shaped reward,
+// r + gamma * phi(s') - phi(s), is linear in gamma.
+TEST(LearningRun, TheHeightShapingDiscountsWithTheLearnersGamma) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = generate_random_wall(3);
+  const auto first_reward = [&](double gamma) {
+    LearningParameters parameters;
+    parameters.iterations = 1;
+    parameters.climbing.rewards.height = 10.0;
+    parameters.dyna.rates.gamma = gamma;
+    const RunResult run = run_learning(model, wall, parameters, 7);
+    return run.iterations.at(0).reward;
+  };
+  const double at_zero = first_reward(0.0), at_half = first_reward(0.5), at_paper = first_reward(0.9);
+  ASSERT_NE(at_half, at_zero) << "phi(s') is not 0 on a wall whose holds lie above the floor";
+  EXPECT_NEAR(at_paper - at_zero, 1.8 * (at_half - at_zero), 1e-9);
+}
+
+}  // namespace
+}  // namespace crux
