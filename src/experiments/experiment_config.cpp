@@ -115,199 +115,294 @@ constexpr Bounds kOpenRightAngle{.min = -kMaxInclineDeg, .max = kMaxInclineDeg, 
 
 // The one declaration of every key, for a config or a const one. Units and bounds go in
 // their columns, not in the help, which says what the key means.
+// The one declaration of every key, for a config or a const one, section by section in
+// config.toml's order. Units and bounds go in their columns, not in the help, which says
+// what the key means.
 template <typename Config>
-auto fields_of(Config& c) {
-  using Field = ConfigFieldOf<std::is_const_v<Config>>;
+using FieldOf = ConfigFieldOf<std::is_const_v<Config>>;
+
+// The [experiment] keys: the experiment's design, its inputs and its analysis.
+template <typename Config>
+void experiment_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
   auto& s = c.settings;
-  auto& l = s.learning;
-  auto& m = l.climbing;
-  auto& ik = m.reachability.ik;
-  auto& grid = m.grid;
+  auto& l = c.settings.learning;
+  keys.insert(
+      keys.end(),
+      {
+          {"experiment.urdf", "URDF file of the body (default: the installed crux_human.urdf)", &c.urdf, "", {}, true},
+          {"experiment.seed", "Seed: the experiment's walls and runs, a run's learning or the queries derive from it",
+           &s.seed},
+          {"experiment.runs", "N walls with one seed each: sets walls = N and seeds_per_wall = 1", &c.runs, "",
+           kPositive},
+          {"experiment.walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs, "",
+           kPositive},
+          {"experiment.seeds_per_wall", "Learning seeds per wall pair", &s.seeds_per_wall, "", kPositive},
+          {"experiment.training_walls",
+           "Walls each training run learns Q_grid on in sequence before transfer (docs/TRANSFER.md): the last is the "
+           "pair's training wall",
+           &s.training_walls, "", closed_range(1, kMaxTrainingWalls)},
+          {"experiment.threads", "Worker threads (0: all cores); results do not depend on it", &s.threads, "",
+           closed_range(0, kMaxThreads, "0: all cores")},
+          {"experiment.iterations", "Learning iterations (real actions) per run", &l.iterations, "",
+           closed_range(1, kMaxIterations, "a run keeps every iteration's record in memory")},
+          {"experiment.beginning",
+           "Iterations of Table I's beginning window and of the early and late windows of the metrics (0: 2000, or all "
+           "iterations if fewer)",
+           &c.beginning, "", kNonNegative},
+          {"experiment.threshold_length",
+           "Episode length (iterations) that counts as climbing well: time to threshold and take-off",
+           &s.analysis.threshold_length, "", kPositive},
+          {"experiment.bootstrap_resamples", "Resamples of the cluster bootstrap over walls",
+           &s.analysis.bootstrap_resamples, "", closed_range(100, 10000000)},
+          {"experiment.plan", "Compute each wall's exact shortest climb", &s.plan},
+          {"experiment.plan_max_solves",
+           "IK solves the exact planner may spend on a wall; it stops there without a plan (12-20 us each on average)",
+           &s.plan_search.max_ik_solves, "", kPositive},
+          {"experiment.plan_check_moves",
+           "Static model: the exact planner also refuses a move whose IK path (the replay's 16 postures) does not hold "
+           "still on the three holds kept",
+           &s.plan_search.check_moves},
+          {"experiment.greedy_cap", "Actions allowed to the greedy policy's evaluation climb", &l.greedy_cap, "",
+           kPositive},
+          {"experiment.checkpoint_every",
+           "Iterations between checkpoints of a run (0: none); the same command started again resumes from the last",
+           &c.checkpoint_every, "", kNonNegative},
+          {"experiment.q_grid",
+           "Q_grid file (q_grid.bin of a training run) that transfer starts from",
+           &c.q_grid,
+           "",
+           {},
+           true},
+          {"experiment.transfer",
+           "How transfer uses its Q_grid (docs/TRANSFER.md): paper is Algorithm 3; control follows the same rule from "
+           "an "
+           "empty Q_grid",
+           choice(&l.dyna.transfer)},
+      });
+}
+
+// The [learning] and [reward] keys: Dyna-Q and the MDP's rewards.
+template <typename Config>
+void learning_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
+  auto& l = c.settings.learning;
+  auto& m = c.settings.learning.climbing;
+  keys.insert(
+      keys.end(),
+      {
+          {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha, "", kAboveZeroToOne},
+          {"learning.gamma", "Discount factor gamma", &l.dyna.rates.gamma, "", kZeroToBelowOne},
+          {"learning.epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon, "", kUnitInterval},
+          {"learning.planning_steps", "Dyna planning updates per real step", &l.dyna.planning_steps, "", kNonNegative},
+          {"learning.planner",
+           "Dyna planning: uniform (Algorithm 2) or prioritized (prioritized sweeping, same number of updates)",
+           choice(&l.dyna.planner)},
+          {"learning.priority_threshold", "Prioritized sweeping queues pairs whose |TD error| exceeds this",
+           &l.dyna.priority_threshold, "", kNonNegative},
+          {"reward.unreachable", "Reward of an unreachable 4-configuration", &m.rewards.unreachable},
+          {"reward.step", "Reward of a reachable 4-configuration", &m.rewards.step},
+          {"reward.finish", "Reward when the centre of mass passes the finishing height", &m.rewards.finish},
+          {"reward.effort",
+           "Static model: subtracted from a reached move's reward per unit of its stance's effort (0: the paper's "
+           "rewards)",
+           &m.rewards.effort, "", kNonNegative},
+          {"reward.height",
+           "Potential-based height shaping: weight per metre of the mean height of the held holds (0: the paper's "
+           "rewards)",
+           &m.rewards.height, "per m", kNonNegative},
+      });
+}
+
+// The [ik] keys: the solvers, their tolerances, the root target and the wall rule.
+template <typename Config>
+void ik_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
+  auto& m = c.settings.learning.climbing;
+  auto& ik = c.settings.learning.climbing.reachability.ik;
+  keys.insert(
+      keys.end(),
+      {
+          {"ik.solver", "IK solver: fast, or paper (Algorithm 1)", choice(&ik.solver)},
+          {"ik.alpha", "Step size of the paper's gradient descent", &ik.paper.step_size, "", kPositive},
+          {"ik.time_step", "Simulated seconds per IK iteration (both solvers)", &ik.time_step_s, "s", kPositive},
+          {"ik.timeout", "Delta_t: simulated seconds before the paper's solver gives up", &ik.paper.timeout_s, "s",
+           kPositive},
+          {"ik.paper_stall_iterations",
+           "Steps over which the paper's solver looks for a stall (0: it never gives up before Delta_t, as Algorithm "
+           "1)",
+           &ik.paper.stall_iterations, "", closed_range(0, 64)},
+          {"ik.paper_stall_decrease", "It has stalled when f fell by less than this share of f over those steps...",
+           &ik.paper.stall_decrease, "", kNonNegative},
+          {"ik.paper_stall_margin", "...while a point is more than this outside its sphere; it then gives up",
+           &ik.paper.stall_margin_m, "m", kNonNegative},
+          {"ik.rule_out_beyond_reach",
+           "Both solvers give up before iterating when a hold lies beyond its limb's reach (the verdict cannot change)",
+           &ik.rule_out_beyond_reach},
+          {"ik.fast_max_iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations, "", kPositive},
+          {"ik.fast_stall_decrease", "The fast solver gives up when f drops by less than this share per step...",
+           &ik.fast.stall_relative_decrease, "", kNonNegative},
+          {"ik.fast_stall_iterations", "...this many steps in a row", &ik.fast.stall_iterations, "", kPositive},
+          {"ik.fast_aim", "The fast solver aims at this share of each tolerance radius", &ik.fast.aim_fraction, "",
+           kZeroToBelowOne},
+          {"ik.grasp_radius", "Radius of the grasp spheres", &ik.tolerances.grasp_radius, "m", kPositive},
+          {"ik.root_tolerance", "Radius of the root tolerance sphere", &ik.tolerances.root_radius, "m", kPositive},
+          {"ik.wall_distance", "Distance of the root target H(C4) from the wall, on the climber's side",
+           &m.reachability.root.distance_from_wall, "m"},
+          {"ik.cache_unreachable", "Cache unreachable verdicts", &m.reachability.cache_unreachable},
+          {"ik.wall",
+           "The body and the wall: ignore it (the paper's kinematic model), reject a solved posture that passes "
+           "through "
+           "it, or avoid it (keep the body out while solving; the static model's, and its default)",
+           choice(&ik.wall)},
+          {"ik.guess",
+           "Where the IK starts a configuration's solve: previous (the posture the climber holds, the paper's) or "
+           "standing (the standing posture at the configuration's root target, so that a verdict does not depend on "
+           "the climb)",
+           choice(&m.reachability.guess)},
+      });
+}
+
+// The [physics] keys: the physics model and the static model's contacts and strength.
+template <typename Config>
+void physics_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
+  auto& m = c.settings.learning.climbing;
+  keys.insert(
+      keys.end(),
+      {
+          {"physics.model",
+           "kinematic (the paper's: IK alone decides) or static (the body kept out of the wall and each stance held "
+           "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md)",
+           choice(&m.physics.model)},
+          {"physics.friction", "Static model: Coulomb friction coefficient of every contact", &m.physics.friction, "",
+           kNonNegative},
+          {"physics.strength",
+           "Static model: a climbing level whose published grip sets physics.grip (docs/MODEL.md); an explicit "
+           "physics.grip overrides it",
+           level_choice(&c.physics_strength)},
+          {"physics.grip", "Static model: largest normal force of a hand on a hold", &m.physics.grip, "N", kPositive},
+          {"physics.support_angle",
+           "Static model: a hold without a support direction pushes a hand up and this far into the wall (a jug's "
+           "incut lip)",
+           &m.physics.support_angle_deg, "degrees", closed_range(-90, 90)},
+          {"physics.fall_when_stuck",
+           "A failed move also falls when no limb can move to another hold of the stance, every such move known "
+           "unreachable (a trap that C27's dead ends miss)",
+           &m.fall_when_stuck},
+      });
+}
+
+// The keys of one command each: ik-compare's [compare] and crux stances' [stances].
+template <typename Config>
+void single_command_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
+  keys.insert(keys.end(), {
+                              {"compare.queries", "Climbing-like queries that ik-compare gives both solvers",
+                               &c.compare_queries, "", kPositive},
+                              {"stances.moves", "Random kinematic moves per wall whose stances crux stances checks",
+                               &c.stance_moves, "", closed_range(1, kMaxStanceMoves)},
+                              {"compare.walk_solver",
+                               "Solver whose reached postures start the next queries of ik-compare's climbing walk",
+                               choice(&c.compare_walk_solver)},
+                          });
+}
+
+// The [filter] and [grid] keys: the geometric filter and the agent space.
+template <typename Config>
+void configuration_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
+  auto& m = c.settings.learning.climbing;
+  auto& grid = c.settings.learning.climbing.grid;
+  keys.insert(
+      keys.end(),
+      {
+          {"filter.max_span", "Largest distance between two holds of a configuration", &m.filter.max_span_m, "m",
+           kPositive},
+          {"filter.reading", "Reading of 'both feet above the hands' (docs/MODEL.md, choice C13)",
+           choice(&m.filter.feet_above_hands)},
+          {"grid.agent_space",
+           "Agent space (docs/TRANSFER.md): grid (the paper's moving grid) or reach (direction sectors = columns and "
+           "distance rings of tile_height m = rows around the free limb's shoulder or hip)",
+           choice(&grid.space)},
+          {"grid.columns", "Columns of the moving grid", &grid.columns, "", kPositive},
+          {"grid.rows", "Rows of the moving grid", &grid.rows, "", kPositive},
+          {"grid.tile_width", "Tile width of the moving grid", &grid.tile_width, "m", kPositive},
+          {"grid.tile_height", "Tile height of the moving grid", &grid.tile_height, "m", kPositive},
+          {"grid.right_hand_anchor_column", "Right hand's anchor tile P_1: column", &grid.anchors[0][0]},
+          {"grid.right_hand_anchor_row", "Right hand's anchor tile P_1: row", &grid.anchors[0][1]},
+          {"grid.left_hand_anchor_column", "Left hand's anchor tile P_2: column", &grid.anchors[1][0]},
+          {"grid.left_hand_anchor_row", "Left hand's anchor tile P_2: row", &grid.anchors[1][1]},
+          {"grid.right_foot_anchor_column", "Right foot's anchor tile P_3: column", &grid.anchors[2][0]},
+          {"grid.right_foot_anchor_row", "Right foot's anchor tile P_3: row", &grid.anchors[2][1]},
+          {"grid.left_foot_anchor_column", "Left foot's anchor tile P_4: column", &grid.anchors[3][0]},
+          {"grid.left_foot_anchor_row", "Left foot's anchor tile P_4: row", &grid.anchors[3][1]},
+      });
+}
+
+// The [wall] and [training_wall] keys: the wall and the random walls' generator.
+template <typename Config>
+void wall_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
+  auto& s = c.settings;
   auto& tw = c.training_wall;
-  return std::vector<Field>{
-      {"experiment.urdf", "URDF file of the body (default: the installed crux_human.urdf)", &c.urdf, "", {}, true},
-      {"experiment.seed", "Seed: the experiment's walls and runs, a run's learning or the queries derive from it",
-       &s.seed},
-      {"experiment.runs", "N walls with one seed each: sets walls = N and seeds_per_wall = 1", &c.runs, "", kPositive},
-      {"experiment.walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs, "",
-       kPositive},
-      {"experiment.seeds_per_wall", "Learning seeds per wall pair", &s.seeds_per_wall, "", kPositive},
-      {"experiment.training_walls",
-       "Walls each training run learns Q_grid on in sequence before transfer (docs/TRANSFER.md): the last is the "
-       "pair's training wall",
-       &s.training_walls, "", closed_range(1, kMaxTrainingWalls)},
-      {"experiment.threads", "Worker threads (0: all cores); results do not depend on it", &s.threads, "",
-       closed_range(0, kMaxThreads, "0: all cores")},
-      {"experiment.iterations", "Learning iterations (real actions) per run", &l.iterations, "",
-       closed_range(1, kMaxIterations, "a run keeps every iteration's record in memory")},
-      {"experiment.beginning",
-       "Iterations of Table I's beginning window and of the early and late windows of the metrics (0: 2000, or all "
-       "iterations if fewer)",
-       &c.beginning, "", kNonNegative},
-      {"experiment.threshold_length",
-       "Episode length (iterations) that counts as climbing well: time to threshold and take-off",
-       &s.analysis.threshold_length, "", kPositive},
-      {"experiment.bootstrap_resamples", "Resamples of the cluster bootstrap over walls",
-       &s.analysis.bootstrap_resamples, "", closed_range(100, 10000000)},
-      {"experiment.plan", "Compute each wall's exact shortest climb", &s.plan},
-      {"experiment.plan_max_solves",
-       "IK solves the exact planner may spend on a wall; it stops there without a plan (12-20 us each on average)",
-       &s.plan_search.max_ik_solves, "", kPositive},
-      {"experiment.plan_check_moves",
-       "Static model: the exact planner also refuses a move whose IK path (the replay's 16 postures) does not hold "
-       "still on the three holds kept",
-       &s.plan_search.check_moves},
-      {"experiment.greedy_cap", "Actions allowed to the greedy policy's evaluation climb", &l.greedy_cap, "",
-       kPositive},
-      {"experiment.checkpoint_every",
-       "Iterations between checkpoints of a run (0: none); the same command started again resumes from the last",
-       &c.checkpoint_every, "", kNonNegative},
-      {"experiment.q_grid",
-       "Q_grid file (q_grid.bin of a training run) that transfer starts from",
-       &c.q_grid,
-       "",
-       {},
-       true},
-      {"experiment.transfer",
-       "How transfer uses its Q_grid (docs/TRANSFER.md): paper is Algorithm 3; control follows the same rule from an "
-       "empty Q_grid",
-       choice(&l.dyna.transfer)},
-      {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha, "", kAboveZeroToOne},
-      {"learning.gamma", "Discount factor gamma", &l.dyna.rates.gamma, "", kZeroToBelowOne},
-      {"learning.epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon, "", kUnitInterval},
-      {"learning.planning_steps", "Dyna planning updates per real step", &l.dyna.planning_steps, "", kNonNegative},
-      {"learning.planner",
-       "Dyna planning: uniform (Algorithm 2) or prioritized (prioritized sweeping, same number of updates)",
-       choice(&l.dyna.planner)},
-      {"learning.priority_threshold", "Prioritized sweeping queues pairs whose |TD error| exceeds this",
-       &l.dyna.priority_threshold, "", kNonNegative},
-      {"reward.unreachable", "Reward of an unreachable 4-configuration", &m.rewards.unreachable},
-      {"reward.step", "Reward of a reachable 4-configuration", &m.rewards.step},
-      {"reward.finish", "Reward when the centre of mass passes the finishing height", &m.rewards.finish},
-      {"reward.effort",
-       "Static model: subtracted from a reached move's reward per unit of its stance's effort (0: the paper's rewards)",
-       &m.rewards.effort, "", kNonNegative},
-      {"reward.height",
-       "Potential-based height shaping: weight per metre of the mean height of the held holds (0: the paper's "
-       "rewards)",
-       &m.rewards.height, "per m", kNonNegative},
-      {"ik.solver", "IK solver: fast, or paper (Algorithm 1)", choice(&ik.solver)},
-      {"ik.alpha", "Step size of the paper's gradient descent", &ik.paper.step_size, "", kPositive},
-      {"ik.time_step", "Simulated seconds per IK iteration (both solvers)", &ik.time_step_s, "s", kPositive},
-      {"ik.timeout", "Delta_t: simulated seconds before the paper's solver gives up", &ik.paper.timeout_s, "s",
-       kPositive},
-      {"ik.paper_stall_iterations",
-       "Steps over which the paper's solver looks for a stall (0: it never gives up before Delta_t, as Algorithm 1)",
-       &ik.paper.stall_iterations, "", closed_range(0, 64)},
-      {"ik.paper_stall_decrease", "It has stalled when f fell by less than this share of f over those steps...",
-       &ik.paper.stall_decrease, "", kNonNegative},
-      {"ik.paper_stall_margin", "...while a point is more than this outside its sphere; it then gives up",
-       &ik.paper.stall_margin_m, "m", kNonNegative},
-      {"ik.rule_out_beyond_reach",
-       "Both solvers give up before iterating when a hold lies beyond its limb's reach (the verdict cannot change)",
-       &ik.rule_out_beyond_reach},
-      {"ik.fast_max_iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations, "", kPositive},
-      {"ik.fast_stall_decrease", "The fast solver gives up when f drops by less than this share per step...",
-       &ik.fast.stall_relative_decrease, "", kNonNegative},
-      {"ik.fast_stall_iterations", "...this many steps in a row", &ik.fast.stall_iterations, "", kPositive},
-      {"ik.fast_aim", "The fast solver aims at this share of each tolerance radius", &ik.fast.aim_fraction, "",
-       kZeroToBelowOne},
-      {"ik.grasp_radius", "Radius of the grasp spheres", &ik.tolerances.grasp_radius, "m", kPositive},
-      {"ik.root_tolerance", "Radius of the root tolerance sphere", &ik.tolerances.root_radius, "m", kPositive},
-      {"ik.wall_distance", "Distance of the root target H(C4) from the wall, on the climber's side",
-       &m.reachability.root.distance_from_wall, "m"},
-      {"ik.cache_unreachable", "Cache unreachable verdicts", &m.reachability.cache_unreachable},
-      {"ik.wall",
-       "The body and the wall: ignore it (the paper's kinematic model), reject a solved posture that passes through "
-       "it, or avoid it (keep the body out while solving; the static model's, and its default)",
-       choice(&ik.wall)},
-      {"ik.guess",
-       "Where the IK starts a configuration's solve: previous (the posture the climber holds, the paper's) or "
-       "standing (the standing posture at the configuration's root target, so that a verdict does not depend on "
-       "the climb)",
-       choice(&m.reachability.guess)},
-      {"physics.model",
-       "kinematic (the paper's: IK alone decides) or static (the body kept out of the wall and each stance held "
-       "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md)",
-       choice(&m.physics.model)},
-      {"physics.friction", "Static model: Coulomb friction coefficient of every contact", &m.physics.friction, "",
-       kNonNegative},
-      {"physics.strength",
-       "Static model: a climbing level whose published grip sets physics.grip (docs/MODEL.md); an explicit "
-       "physics.grip overrides it",
-       level_choice(&c.physics_strength)},
-      {"physics.grip", "Static model: largest normal force of a hand on a hold", &m.physics.grip, "N", kPositive},
-      {"physics.support_angle",
-       "Static model: a hold without a support direction pushes a hand up and this far into the wall (a jug's "
-       "incut lip)",
-       &m.physics.support_angle_deg, "degrees", closed_range(-90, 90)},
-      {"physics.fall_when_stuck",
-       "A failed move also falls when no limb can move to another hold of the stance, every such move known "
-       "unreachable (a trap that C27's dead ends miss)",
-       &m.fall_when_stuck},
-      {"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &c.compare_queries, "",
-       kPositive},
-      {"stances.moves", "Random kinematic moves per wall whose stances crux stances checks", &c.stance_moves, "",
-       closed_range(1, kMaxStanceMoves)},
-      {"compare.walk_solver", "Solver whose reached postures start the next queries of ik-compare's climbing walk",
-       choice(&c.compare_walk_solver)},
-      {"filter.max_span", "Largest distance between two holds of a configuration", &m.filter.max_span_m, "m",
-       kPositive},
-      {"filter.reading", "Reading of 'both feet above the hands' (docs/MODEL.md, choice C13)",
-       choice(&m.filter.feet_above_hands)},
-      {"grid.agent_space",
-       "Agent space (docs/TRANSFER.md): grid (the paper's moving grid) or reach (direction sectors = columns and "
-       "distance rings of tile_height m = rows around the free limb's shoulder or hip)",
-       choice(&grid.space)},
-      {"grid.columns", "Columns of the moving grid", &grid.columns, "", kPositive},
-      {"grid.rows", "Rows of the moving grid", &grid.rows, "", kPositive},
-      {"grid.tile_width", "Tile width of the moving grid", &grid.tile_width, "m", kPositive},
-      {"grid.tile_height", "Tile height of the moving grid", &grid.tile_height, "m", kPositive},
-      {"grid.right_hand_anchor_column", "Right hand's anchor tile P_1: column", &grid.anchors[0][0]},
-      {"grid.right_hand_anchor_row", "Right hand's anchor tile P_1: row", &grid.anchors[0][1]},
-      {"grid.left_hand_anchor_column", "Left hand's anchor tile P_2: column", &grid.anchors[1][0]},
-      {"grid.left_hand_anchor_row", "Left hand's anchor tile P_2: row", &grid.anchors[1][1]},
-      {"grid.right_foot_anchor_column", "Right foot's anchor tile P_3: column", &grid.anchors[2][0]},
-      {"grid.right_foot_anchor_row", "Right foot's anchor tile P_3: row", &grid.anchors[2][1]},
-      {"grid.left_foot_anchor_column", "Left foot's anchor tile P_4: column", &grid.anchors[3][0]},
-      {"grid.left_foot_anchor_row", "Left foot's anchor tile P_4: row", &grid.anchors[3][1]},
-      {"wall.file", "Wall file (JSON)", &c.wall_file, "", {}, true},
-      {"wall.seed", "Seed of a random wall", &c.wall_seed},
-      {"wall.name", "Name stored in a generated wall file", &c.wall_name},
-      {"wall.count", "Random walls to count over", &c.wall_count, "", kPositive},
-      {"wall.columns", "Tiles across a random wall", &s.walls.columns},
-      {"wall.rows", "Tiles up a random wall", &s.walls.rows},
-      {"wall.tile_width", "Tile width of a random wall", &s.walls.tile_width, "m", kPositive},
-      {"wall.tile_height", "Tile height of a random wall", &s.walls.tile_height, "m", kPositive},
-      {"wall.sigma", "Standard deviation of hold displacement", &s.walls.sigma, "m", kNonNegative},
-      {"wall.hold_radius", "Hold radius", &s.walls.hold_radius, "m", kPositive},
-      {"wall.finish_height", "Finishing height of the centre of mass, measured along the wall", &s.walls.finish_height,
-       "m"},
-      {"wall.incline", "Incline of a random wall from vertical (> 0 overhanging, < 0 slab)", &s.walls.incline_deg,
-       "degrees", kOpenRightAngle},
-      {"training_wall.columns", "Tiles across a training wall (unset: wall.columns)", &tw.columns},
-      {"training_wall.rows", "Tiles up a training wall (unset: wall.rows)", &tw.rows},
-      {"training_wall.tile_width", "Tile width of a training wall (unset: wall.tile_width)", &tw.tile_width, "m",
-       kPositive},
-      {"training_wall.tile_height", "Tile height of a training wall (unset: wall.tile_height)", &tw.tile_height, "m",
-       kPositive},
-      {"training_wall.sigma", "Standard deviation of a training wall's hold displacement (unset: wall.sigma)",
-       &tw.sigma, "m", kNonNegative},
-      {"training_wall.hold_radius", "Hold radius of a training wall (unset: wall.hold_radius)", &tw.hold_radius, "m",
-       kPositive},
-      {"training_wall.finish_height",
-       "Finishing height of the centre of mass on a training wall (unset: wall.finish_height)", &tw.finish_height, "m"},
-      {"training_wall.incline", "Incline of a training wall from vertical (unset: wall.incline)", &tw.incline,
-       "degrees", kOpenRightAngle},
-      {"output.progress",
-       "Progress of long work on stderr: bar (on a terminal; otherwise as the command did before), lines (a plain "
-       "line at each step) or none",
-       choice(&c.progress),
-       "",
-       {},
-       false,
-       false},
-  };
+  keys.insert(
+      keys.end(),
+      {
+          {"wall.file", "Wall file (JSON)", &c.wall_file, "", {}, true},
+          {"wall.seed", "Seed of a random wall", &c.wall_seed},
+          {"wall.name", "Name stored in a generated wall file", &c.wall_name},
+          {"wall.count", "Random walls to count over", &c.wall_count, "", kPositive},
+          {"wall.columns", "Tiles across a random wall", &s.walls.columns},
+          {"wall.rows", "Tiles up a random wall", &s.walls.rows},
+          {"wall.tile_width", "Tile width of a random wall", &s.walls.tile_width, "m", kPositive},
+          {"wall.tile_height", "Tile height of a random wall", &s.walls.tile_height, "m", kPositive},
+          {"wall.sigma", "Standard deviation of hold displacement", &s.walls.sigma, "m", kNonNegative},
+          {"wall.hold_radius", "Hold radius", &s.walls.hold_radius, "m", kPositive},
+          {"wall.finish_height", "Finishing height of the centre of mass, measured along the wall",
+           &s.walls.finish_height, "m"},
+          {"wall.incline", "Incline of a random wall from vertical (> 0 overhanging, < 0 slab)", &s.walls.incline_deg,
+           "degrees", kOpenRightAngle},
+          {"training_wall.columns", "Tiles across a training wall (unset: wall.columns)", &tw.columns},
+          {"training_wall.rows", "Tiles up a training wall (unset: wall.rows)", &tw.rows},
+          {"training_wall.tile_width", "Tile width of a training wall (unset: wall.tile_width)", &tw.tile_width, "m",
+           kPositive},
+          {"training_wall.tile_height", "Tile height of a training wall (unset: wall.tile_height)", &tw.tile_height,
+           "m", kPositive},
+          {"training_wall.sigma", "Standard deviation of a training wall's hold displacement (unset: wall.sigma)",
+           &tw.sigma, "m", kNonNegative},
+          {"training_wall.hold_radius", "Hold radius of a training wall (unset: wall.hold_radius)", &tw.hold_radius,
+           "m", kPositive},
+          {"training_wall.finish_height",
+           "Finishing height of the centre of mass on a training wall (unset: wall.finish_height)", &tw.finish_height,
+           "m"},
+          {"training_wall.incline", "Incline of a training wall from vertical (unset: wall.incline)", &tw.incline,
+           "degrees", kOpenRightAngle},
+      });
+}
+
+// The [output] keys: presentation only, never recorded.
+template <typename Config>
+void output_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
+  keys.insert(
+      keys.end(),
+      {
+          {"output.progress",
+           "Progress of long work on stderr: bar (on a terminal; otherwise as the command did before), lines (a plain "
+           "line every 10 %) or none",
+           choice(&c.progress),
+           "",
+           {},
+           false,
+           false},
+      });
+}
+
+template <typename Config>
+std::vector<FieldOf<Config>> fields_of(Config& c) {
+  std::vector<FieldOf<Config>> keys;
+  experiment_keys(keys, c);
+  learning_keys(keys, c);
+  ik_keys(keys, c);
+  physics_keys(keys, c);
+  single_command_keys(keys, c);
+  configuration_keys(keys, c);
+  wall_keys(keys, c);
+  output_keys(keys, c);
+  return keys;
 }
 
 }  // namespace
