@@ -7,7 +7,9 @@ every exception is named in docs/DESIGN.md.
 
 It also checks DESIGN's folder table, whose order is the direction of dependencies:
 every `#include "<area>/..."` of a file in src/<other>/ names its own folder or one
-above it in the table, and every folder of src/ has its row."""
+above it in the table, and every folder of src/ has its row; that python/src/ includes
+no cli/; and that DESIGN's "layers at a glance" lists the table's folders in its order,
+the order src/CMakeLists.txt builds the layer libraries in."""
 
 import pathlib
 import re
@@ -57,6 +59,26 @@ def layer_problems(root: pathlib.Path, design: str) -> list[str]:
     return problems
 
 
+def glance_problems(root: pathlib.Path, design: str) -> list[str]:
+    """DESIGN's "layers at a glance" names the table's src/ folders in the table's order,
+    and the library layers in the order of src/CMakeLists.txt's crux_layers."""
+    table = re.findall(r"^\| `src/([a-z_]+)/` \|", design, flags=re.MULTILINE)
+    glance = re.search(r"## The layers at a glance.*?```\n(.*?)```", design, flags=re.DOTALL)
+    if glance is None:
+        return ["docs/DESIGN.md has no list of the layers at a glance"]
+    listed = re.findall(r"^src/([a-z_]+)/", glance.group(1), flags=re.MULTILINE)
+    problems = []
+    if listed != table:
+        problems.append(f"docs/DESIGN.md's layers at a glance ({', '.join(listed)}) differ from its folder "
+                        f"table ({', '.join(table)})")
+    cmake = re.search(r"set\(crux_layers ([a-z_\s]+)\)", (root / "src" / "CMakeLists.txt").read_text())
+    built = cmake.group(1).split() if cmake else []
+    if built != [folder for folder in listed if folder != "cli"]:
+        problems.append(f"src/CMakeLists.txt builds the layers {', '.join(built)}, not docs/DESIGN.md's "
+                        f"{', '.join(listed)} (cli/ apart)")
+    return problems
+
+
 def main(root: pathlib.Path) -> int:
     design = (root / "docs" / "DESIGN.md").read_text()
     problems = []
@@ -78,6 +100,7 @@ def main(root: pathlib.Path) -> int:
         if not stem.startswith("bind_") or not (root / "python" / "tests" / f"test_{area}.py").exists():
             problems.append(f"python/src/{source.name} has no python/tests/test_{area}.py")
     problems += layer_problems(root, design)
+    problems += glance_problems(root, design)
     for problem in problems:
         print(problem)
     return 1 if problems else 0
