@@ -151,9 +151,9 @@ std::vector<ConstConfigField> config_fields(const ExperimentConfig& config);
 // `key`'s field, or null.
 const ConfigField* find_field(const std::vector<ConfigField>& fields, std::string_view key);
 
-// Sets `field` from text as a flag or a Python string gives it (a number, a choice's
-// name, true/false). Throws InputError(key, problem) for a value of the wrong type, a
-// choice that is not one, or a number out of the field's bounds.
+// Sets a choice or text field from text as a flag or a Python string gives it (numbers
+// reach their fields typed, through CLI11 or Python). Throws InputError(key, problem) for
+// a name that is not one of the choices, or for a field of another type.
 void assign_text(const ConfigField& field, const std::string& text);
 
 // "--section-name" for "section.name", "--name" for "experiment.name".
