@@ -6,7 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/parameter_binding.hpp"
 #include "experiments/run_inputs.hpp"
-#include "reports/ik_demo.hpp"
+#include "reports/ik_description.hpp"
 
 namespace crux::cli {
 

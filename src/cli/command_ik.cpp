@@ -12,9 +12,9 @@
 #include "common/input_error.hpp"
 #include "experiments/run_inputs.hpp"
 #include "ik/reach_queries.hpp"
+#include "outputs/output_folder.hpp"
+#include "outputs/posture_csv.hpp"
 #include "reports/ik_description.hpp"
-#include "reports/output_folder.hpp"
-#include "reports/posture_csv.hpp"
 
 namespace crux::cli {
 

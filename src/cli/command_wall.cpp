@@ -14,7 +14,7 @@
 #include "common/printable.hpp"
 #include "configurations/reachability.hpp"
 #include "experiments/run_inputs.hpp"
-#include "reports/output_folder.hpp"
+#include "outputs/output_folder.hpp"
 #include "reports/wall_description.hpp"
 #include "views/wall_svg.hpp"
 #include "wall/random_wall.hpp"

@@ -20,6 +20,12 @@ using OrderedJson = nlohmann::ordered_json;
 // What a value is, as a message names it: numbers and booleans by value, the rest by type.
 std::string json_value_description(const OrderedJson& value);
 
+// A 3-vector (Eigen's, or any with x(), y() and z()) as the JSON array [x, y, z].
+template <typename Vector3>
+OrderedJson vector_json(const Vector3& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
 // `key` under `parent`: "holds[3]" and "radius" give "holds[3].radius", "" and "name" "name".
 std::string json_child_path(const std::string& parent, std::string_view key);
 

@@ -4,8 +4,8 @@
 #include "experiments/run_checkpoint.hpp"
 #include "experiments/run_inputs.hpp"
 #include "jobs/command_keys.hpp"
-#include "reports/output_folder.hpp"
-#include "reports/summary.hpp"
+#include "outputs/output_folder.hpp"
+#include "outputs/summary.hpp"
 
 namespace crux {
 

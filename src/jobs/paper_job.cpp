@@ -2,8 +2,9 @@
 
 #include "experiments/run_inputs.hpp"
 #include "jobs/command_keys.hpp"
-#include "reports/output_folder.hpp"
-#include "reports/summary.hpp"
+#include "outputs/output_folder.hpp"
+#include "outputs/summary.hpp"
+#include "reports/report_figures.hpp"
 
 namespace crux {
 
@@ -24,7 +25,8 @@ PaperJobOutcome run_paper_job(PaperJob job, const JobHooks& hooks) {
   outcome.analysis = analyse_experiment(outcome.result, config.settings);
   outcome.summary = summary_json(outcome.result, &outcome.analysis, config.settings, provenance);
   if (writes_folder) {
-    write_experiment_folder(*job.output, outcome.result, config.settings, model, config_toml, outcome.summary);
+    write_experiment_folder(*job.output, outcome.result, config.settings, model, config_toml, outcome.summary,
+                            [](const std::filesystem::path& folder) { write_paper_figure_files(folder); });
   }
   return outcome;
 }

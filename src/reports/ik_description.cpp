@@ -4,14 +4,9 @@
 
 #include "body/kinematics.hpp"
 #include "common/counted.hpp"
+#include "common/json_field.hpp"
 
 namespace crux {
-
-namespace {
-
-nlohmann::ordered_json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
-}  // namespace
 
 nlohmann::ordered_json ik_result_json(const BodyModel& model, IkSolverKind solver, const ReachTarget& target,
                                       const IkResult& result) {
@@ -76,6 +71,34 @@ std::string solver_agreement_text(const SolverAgreement& a, std::uint64_t seed) 
          fmt::format("mean per query: paper {:.1f} iterations, {:.1f} us; fast {:.1f} iterations, {:.1f} us\n",
                      static_cast<double>(a.paper_iterations) / a.queries, 1e6 * a.paper_seconds / a.queries,
                      static_cast<double>(a.fast_iterations) / a.queries, 1e6 * a.fast_seconds / a.queries);
+}
+
+nlohmann::ordered_json ik_demo_json(const std::vector<IkDemoSolve>& solves) {
+  nlohmann::ordered_json out = nlohmann::json::array();
+  for (const IkDemoSolve& s : solves) {
+    out.push_back({{"query", s.query},
+                   {"solver", enum_name(s.solver)},
+                   {"reached", s.result.reached},
+                   {"iterations", s.result.iterations},
+                   {"simulated_time_s", s.result.simulated_time_s},
+                   {"residual_m", s.result.residual_m},
+                   {"wall_clock_us", s.wall_clock_us}});
+  }
+  return out;
+}
+
+std::string ik_demo_text(const BodyModel& model, const std::vector<IkDemoSolve>& solves) {
+  std::string out = fmt::format("body '{}': {} root + {} revolute degrees of freedom, {:.2f} m, {:.1f} kg\n",
+                                model.name, kRootDof, kRevoluteDof, model.stature, model.total_mass);
+  for (std::size_t i = 0; i < solves.size(); ++i) {
+    const IkDemoSolve& s = solves[i];
+    if (i == 0 || solves[i - 1].query != s.query) out += fmt::format("\n{}:\n", s.query);
+    out += fmt::format("  {:<5} {:<11} {:5d} {}, {:5.2f} s simulated, residual {:.3f} m, {:8.1f} us\n",
+                       enum_name(s.solver), s.result.reached ? "reached" : "NOT reached", s.result.iterations,
+                       counted_noun(s.result.iterations, "iteration"), s.result.simulated_time_s, s.result.residual_m,
+                       s.wall_clock_us);
+  }
+  return out;
 }
 
 }  // namespace crux

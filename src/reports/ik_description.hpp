@@ -1,12 +1,13 @@
 #pragma once
-// crux ik's and crux ik-compare's outputs: one solved query, and how often the two
-// solvers agree, as JSON or text.
+// crux ik's, crux ik-compare's and crux demo's outputs: one solved query, how often the
+// two solvers agree, and the demo's queries, as JSON or text.
 
 #include <cstdint>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "ik/ik_demo.hpp"
 #include "ik/ik_solver.hpp"
 #include "ik/solver_agreement.hpp"
 
@@ -21,5 +22,8 @@ std::string ik_result_text(const BodyModel& model, IkSolverKind solver, const Re
 
 nlohmann::ordered_json solver_agreement_json(const SolverAgreement& agreement, std::uint64_t seed);
 std::string solver_agreement_text(const SolverAgreement& agreement, std::uint64_t seed);
+
+nlohmann::ordered_json ik_demo_json(const std::vector<IkDemoSolve>& solves);
+std::string ik_demo_text(const BodyModel& model, const std::vector<IkDemoSolve>& solves);
 
 }  // namespace crux

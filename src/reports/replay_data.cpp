@@ -12,13 +12,12 @@
 #include "body/body_data.hpp"
 #include "body/kinematics.hpp"
 #include "common/input_error.hpp"
+#include "common/json_field.hpp"
 #include "configurations/hold_configuration.hpp"
 #include "ik/ik_path.hpp"
 
 namespace crux {
 namespace {
-
-nlohmann::ordered_json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 nlohmann::ordered_json quaternion_json(const Eigen::Matrix3d& rotation) {
   const Eigen::Quaterniond q(rotation);

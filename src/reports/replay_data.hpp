@@ -11,7 +11,7 @@
 
 #include "climbing/stance_check.hpp"
 #include "configurations/reachability.hpp"
-#include "reports/run_folder.hpp"
+#include "outputs/run_folder.hpp"
 
 namespace crux {
 

@@ -7,8 +7,8 @@
 #include "body/body_data.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
-#include "experiments/summary_file.hpp"
-#include "reports/run_folder.hpp"
+#include "outputs/run_folder.hpp"
+#include "outputs/summary_file.hpp"
 #include "views/body_svg.hpp"
 #include "views/paper_figures.hpp"
 

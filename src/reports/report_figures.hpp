@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "configurations/reachability.hpp"
+#include "outputs/run_folder.hpp"
 #include "reports/html_report.hpp"
-#include "reports/run_folder.hpp"
 
 namespace crux {
 

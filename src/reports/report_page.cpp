@@ -7,7 +7,7 @@
 #include "body/kinematics.hpp"
 #include "body/wall_penetration.hpp"
 #include "common/counted.hpp"
-#include "reports/episode_replay.hpp"
+#include "experiments/episode_replay.hpp"
 #include "reports/replay_data.hpp"
 #include "reports/report_figures.hpp"
 #include "reports/view_description.hpp"

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "experiments/experiment_config.hpp"
+#include "outputs/run_folder.hpp"
 #include "reports/html_report.hpp"
 #include "reports/replay_data.hpp"
-#include "reports/run_folder.hpp"
 #include "views/effort_plot.hpp"
 
 namespace crux {

@@ -9,7 +9,7 @@
 #include "body/body_model.hpp"
 #include "body/wall_penetration.hpp"
 #include "climbing/stance_check.hpp"
-#include "reports/run_folder.hpp"
+#include "outputs/run_folder.hpp"
 
 namespace crux {
 

@@ -6,7 +6,7 @@
 #include <functional>
 #include <string>
 
-#include "reports/provenance.hpp"
+#include "outputs/provenance.hpp"
 #include "sweeps/sweep_grid.hpp"
 #include "sweeps/sweep_plan.hpp"
 

@@ -5,7 +5,7 @@
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
-#include "reports/output_folder.hpp"
+#include "outputs/output_folder.hpp"
 #include "sweeps/sweep_task.hpp"
 
 namespace crux {

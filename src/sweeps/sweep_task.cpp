@@ -9,7 +9,7 @@
 #include "common/input_error.hpp"
 #include "jobs/learning_job.hpp"
 #include "learning/q_table_file.hpp"
-#include "reports/output_folder.hpp"
+#include "outputs/output_folder.hpp"
 #include "reports/plan_description.hpp"
 #include "wall/wall_file.hpp"
 

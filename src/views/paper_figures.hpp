@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "experiments/paper_figure_data.hpp"
+#include "outputs/paper_figure_data.hpp"
 
 namespace crux {
 

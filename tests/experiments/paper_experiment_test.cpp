@@ -11,8 +11,9 @@
 #include "experiments/experiment_config.hpp"
 #include "experiments/table_one.hpp"
 #include "learning/q_table_file.hpp"
-#include "reports/output_folder.hpp"
-#include "reports/summary.hpp"
+#include "outputs/output_folder.hpp"
+#include "outputs/summary.hpp"
+#include "reports/report_figures.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
@@ -54,7 +55,7 @@ TEST(PaperExperiment, SameSeedGivesIdenticalFilesWithOneOrTwoThreads) {
       // The figures read the grid's shape back from config.toml.
       const std::string config_toml = config_to_toml(config, ParameterSet{{"grid"}, {}});
       write_experiment_folder(folder, result, settings, model, config_toml,
-                              summary_json(result, &analysis, settings, {}));
+                              summary_json(result, &analysis, settings, {}), write_paper_figure_files);
     };
     write(directory, run_paper_experiment(model, settings));
     settings.learning.dyna.planner = Planner::Prioritized;

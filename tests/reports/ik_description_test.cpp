@@ -71,5 +71,17 @@ TEST(IkDescription, AgreementIsCountedPerQuery) {
   EXPECT_NE(one.find("verdicts agree on 1 query: "), std::string::npos) << one;
 }
 
+// The demo's ten solves (tests/ik/ik_demo_test.cpp checks the verdicts) as JSON and text.
+TEST(IkDemoDescription, PrintsEverySolveAsJsonAndText) {
+  const BodyModel& model = testing::human_model();
+  const auto solves = run_ik_demo(model);
+  const auto json = ik_demo_json(solves);
+  ASSERT_EQ(json.size(), 10u);
+  EXPECT_EQ(json[1]["solver"], "fast");
+  const std::string text = ik_demo_text(model, solves);
+  EXPECT_EQ(text.rfind("body '" + model.name + "'", 0), 0u);
+  EXPECT_NE(text.find("\nleft hand 3 m up (no body can):\n  paper NOT reached"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace crux

@@ -13,7 +13,7 @@
 #include "common/input_error.hpp"
 #include "configurations/hold_configuration.hpp"
 #include "configurations/reachability.hpp"
-#include "reports/run_folder.hpp"
+#include "outputs/run_folder.hpp"
 #include "support/test_models.hpp"
 #include "support/trained_run.hpp"
 

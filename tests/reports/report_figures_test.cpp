@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "common/input_error.hpp"
-#include "experiments/run_config_file.hpp"
+#include "outputs/run_config_file.hpp"
 #include "support/test_models.hpp"
 #include "support/trained_run.hpp"
 

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "experiments/run_config_file.hpp"
+#include "outputs/run_config_file.hpp"
 #include "support/run_crux.hpp"
 #include "support/test_models.hpp"
 #include "support/trained_run.hpp"

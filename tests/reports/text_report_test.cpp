@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "experiments/experiment_analysis.hpp"
-#include "reports/summary.hpp"
+#include "outputs/summary.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {

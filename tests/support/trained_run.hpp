@@ -8,7 +8,7 @@
 #include <functional>
 #include <string>
 
-#include "reports/run_folder.hpp"
+#include "outputs/run_folder.hpp"
 
 namespace crux::testing {
 

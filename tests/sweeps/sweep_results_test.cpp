@@ -10,10 +10,10 @@
 
 #include "agent_space/moving_grid.hpp"
 #include "experiments/experiment_analysis.hpp"
-#include "experiments/iterations_file.hpp"
 #include "experiments/statistics.hpp"
 #include "learning/q_table_file.hpp"
-#include "reports/summary.hpp"
+#include "outputs/iterations_file.hpp"
+#include "outputs/summary.hpp"
 #include "support/sweep_cells.hpp"
 #include "support/test_models.hpp"
 #include "sweeps/sweep_run.hpp"

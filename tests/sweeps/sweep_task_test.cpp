@@ -4,11 +4,11 @@
 
 #include <fstream>
 
-#include "experiments/iterations_file.hpp"
-#include "experiments/run_config_file.hpp"
 #include "jobs/command_keys.hpp"
+#include "outputs/iterations_file.hpp"
+#include "outputs/run_config_file.hpp"
+#include "outputs/run_folder.hpp"
 #include "reports/plan_description.hpp"
-#include "reports/run_folder.hpp"
 #include "support/sweep_cells.hpp"
 #include "support/test_models.hpp"
 #include "wall/wall_file.hpp"
