@@ -13,4 +13,7 @@ struct EnumNames<AgentSpaceKind> {
       {{AgentSpaceKind::Grid, "grid"}, {AgentSpaceKind::Reach, "reach"}}};
 };
 
+// The tile (or cell) of a point that lies in none, in either agent space.
+inline constexpr int kOutsideGrid = -1;
+
 }  // namespace crux

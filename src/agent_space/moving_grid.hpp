@@ -18,8 +18,6 @@
 
 namespace crux {
 
-inline constexpr int kOutsideGrid = -1;
-
 struct GridParameters {
   int columns = 5;  // across (y), counted from the climber's right
   int rows = 7;     // up (z), counted from the bottom

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "agent_space/moving_grid.hpp"
+#include "agent_space/agent_space_kind.hpp"
 
 namespace crux {
 

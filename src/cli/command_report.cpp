@@ -11,11 +11,12 @@
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "experiments/run_inputs.hpp"
+#include "jobs/report_job.hpp"
 #include "outputs/output_folder.hpp"
 #include "outputs/run_config_file.hpp"
 #include "reports/report_figures.hpp"
-#include "reports/report_page.hpp"
 #include "reports/web_assets.hpp"
+#include "reports/written_report.hpp"
 
 namespace crux::cli {
 

@@ -96,9 +96,8 @@ struct ViewCommand {
     BodySvgOptions options;
     options.grasp_radius = reach.ik.tolerances.grasp_radius;
     std::optional<StanceLoads> loads;
-    if (physics.model == PhysicsModel::Static) {
-      StanceCheck check(model, wall, physics);
-      loads = check.loads(posture, configuration);
+    if (std::optional<StanceCheck> check = stance_check_for(model, wall, physics)) {
+      loads = check->loads(posture, configuration);
       options.loads = &*loads;
       caption = with_stance_note(caption, model, *loads);
     }

@@ -13,14 +13,16 @@ namespace crux {
 ConfigurationReacher::ConfigurationReacher(const BodyModel& model, const Wall& wall,
                                            const ReachabilityParameters& parameters, const PhysicsParameters& physics,
                                            StanceQuestion question)
-    : model_(model), wall_(wall), parameters_(parameters), data_(model), question_(question) {
-  if (physics.model == PhysicsModel::Static) {
-    // A stance that holds still keeps the body out of the wall: the caller says so
-    // (finalize_config sets it), rather than this class changing what it was given.
-    if (parameters.ik.wall != WallRule::Avoid) {
-      throw std::invalid_argument("the static model needs ik.wall = avoid (the body kept out of the wall)");
-    }
-    stance_.emplace(model, wall, physics);
+    : model_(model),
+      wall_(wall),
+      parameters_(parameters),
+      data_(model),
+      stance_(stance_check_for(model, wall, physics)),
+      question_(question) {
+  // A stance that holds still keeps the body out of the wall: the caller says so
+  // (finalize_config sets it), rather than this class changing what it was given.
+  if (stance_ && parameters.ik.wall != WallRule::Avoid) {
+    throw std::invalid_argument("the static model needs ik.wall = avoid (the body kept out of the wall)");
   }
 }
 

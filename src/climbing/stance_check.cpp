@@ -91,4 +91,10 @@ StanceLoads StanceCheck::loads(const Posture& posture, const HoldConfiguration& 
   return loads;
 }
 
+std::optional<StanceCheck> stance_check_for(const BodyModel& model, const Wall& wall,
+                                            const PhysicsParameters& physics) {
+  if (physics.model == PhysicsModel::Kinematic) return std::nullopt;
+  return std::optional<StanceCheck>(std::in_place, model, wall, physics);
+}
+
 }  // namespace crux

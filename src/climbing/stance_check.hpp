@@ -69,4 +69,9 @@ class StanceCheck {
   std::span<const PointContact> contacts(const HoldConfiguration& configuration);
 };
 
+// The stance check of `physics`: the static model's, none under the kinematic model,
+// where a reached posture counts as it is. Where crux reads the physics model to check
+// stances: the reacher, the replay and the views all ask this.
+std::optional<StanceCheck> stance_check_for(const BodyModel& model, const Wall& wall, const PhysicsParameters& physics);
+
 }  // namespace crux

@@ -53,4 +53,11 @@ struct PaperFigureData {
 // whose number of rows is not summary.json's iterations.
 PaperFigureData read_paper_figure_data(const std::filesystem::path& folder);
 
+// A paper experiment's folder/summary.json into `data`: iterations, seeds_per_wall, the
+// conditions present with their runs' facts and episode lengths and their Q_grid maps
+// (one value per tile of data.grid, which must be set), and transfer_vs_control in the
+// file's order. Leaves the runs' regimes (iterations.csv's) empty. InputError(file,
+// problem) naming the key for a missing key or a value of the wrong type or range.
+void read_paper_summary(const std::filesystem::path& folder, PaperFigureData& data);
+
 }  // namespace crux

@@ -7,7 +7,6 @@
 #include <string>
 
 #include "common/json_field.hpp"
-#include "outputs/paper_figure_data.hpp"
 
 namespace crux {
 
@@ -28,12 +27,5 @@ std::string summary_kind(const OrderedJson& summary, const std::string& file);
 
 // The body model recorded in provenance.urdf; "" when the summary records none.
 std::string summary_urdf(const OrderedJson& summary);
-
-// A paper experiment's folder/summary.json into `data`: iterations, seeds_per_wall, the
-// conditions present with their runs' facts and episode lengths and their Q_grid maps
-// (one value per tile of data.grid, which must be set), and transfer_vs_control in the
-// file's order. Leaves the runs' regimes (iterations.csv's) empty. InputError(file,
-// problem) naming the key for a missing key or a value of the wrong type or range.
-void read_paper_summary(const std::filesystem::path& folder, PaperFigureData& data);
 
 }  // namespace crux

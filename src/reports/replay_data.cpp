@@ -1,20 +1,13 @@
 #include "reports/replay_data.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <optional>
-#include <span>
 #include <vector>
 
 #include <fmt/format.h>
 #include <Eigen/Geometry>
 
-#include "body/body_data.hpp"
-#include "body/kinematics.hpp"
-#include "common/input_error.hpp"
 #include "common/json_field.hpp"
 #include "configurations/hold_configuration.hpp"
-#include "ik/ik_path.hpp"
 
 namespace crux {
 namespace {
@@ -32,27 +25,6 @@ nlohmann::ordered_json configuration_json(const Wall& wall, const HoldConfigurat
   }
   return out;
 }
-
-class FrameWriter {
- public:
-  FrameWriter(const ReplayOptions& settings) : settings_(settings) {}
-
-  void add(const Posture& posture) {
-    for (int i = 0; i < kConfigurationDof; ++i)
-      values_.push_back(std::round(posture[i] * settings_.decimals) / settings_.decimals);
-    ++count_;
-  }
-  int count() const { return count_; }
-  Posture frame(int index) const {
-    return Eigen::Map<const Posture>(values_.data() + static_cast<std::size_t>(index) * kConfigurationDof);
-  }
-  const std::vector<double>& values() const { return values_; }
-
- private:
-  const ReplayOptions& settings_;
-  std::vector<double> values_;
-  int count_ = 0;
-};
 
 // What holds a stance, as the replay draws it: the effort (null when no forces balance
 // it), each limb's contact force (null when free), and the bounded joints' torque ratios
@@ -111,16 +83,15 @@ nlohmann::ordered_json body_model_json(const BodyModel& model) {
   return body;
 }
 
-nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, const RecordedClimb& climb,
-                                   const ReachabilityParameters& reach, const std::string& title,
-                                   const std::string& source, const ReplayOptions& settings) {
+nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, const ClimbReplay& replay,
+                                   const ClimbStances* stances, const std::string& title) {
   nlohmann::ordered_json out;
   out["format"] = "crux-replay";
   out["version"] = 1;
   out["title"] = title;
-  out["climb"] = climb.kind;
+  out["climb"] = replay.climb_kind;
   out["model"] = body_model_json(model);
-  out["grasp_radius"] = reach.ik.tolerances.grasp_radius;
+  out["grasp_radius"] = replay.grasp_radius;
   nlohmann::ordered_json holds = nlohmann::ordered_json::array();
   for (const Hold& hold : wall.holds) {
     holds.push_back({{"id", hold.id}, {"position", vector_json(hold.position)}, {"radius", hold.radius}});
@@ -131,69 +102,29 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
                  {"start", configuration_json(wall, start_configuration(wall))}};
   // Only an inclined wall says so, so that a vertical wall's replay keeps its bytes.
   if (wall.incline_deg != 0.0) out["wall"]["incline"] = wall.incline_deg;
-
-  IkParameters ik = reach.ik;
-  ik.solver = IkSolverKind::Paper;
-  BodyData data(model);
-  FrameWriter frames(settings);
+  if (stances && !stances->loads.empty()) out["start_stance"] = stance_json(stances->loads.front());
   nlohmann::ordered_json moves = nlohmann::ordered_json::array();
-  if (!climb.postures.empty()) frames.add(climb.postures.front());
-  HoldConfiguration configuration = start_configuration(wall).with(Limb::RightHand, kFree);
-  std::size_t posture = 0;  // index into the climb of the body's current posture
-  std::vector<Posture> path, samples;
-  std::optional<StanceCheck> stances;
-  if (settings.physics.model == PhysicsModel::Static) {
-    stances.emplace(model, wall, settings.physics);
-    if (!climb.postures.empty()) {
-      out["start_stance"] = stance_json(stances->loads(climb.postures.front(), start_configuration(wall)));
-    }
-  }
-  const std::size_t shown = std::min(climb.steps.size(), static_cast<std::size_t>(std::max(settings.max_moves, 0)));
-  for (const RunStep& step : std::span(climb.steps).first(shown)) {
-    const Limb free = configuration.free_limb();
-    const int hold = wall.index_of(step.hold_id);
-    if (hold < 0) {
-      throw InputError(source, fmt::format("a move tries hold {}, which the wall does not have", step.hold_id));
-    }
-    const HoldConfiguration complete = configuration.with(free, hold);
-    const int first = frames.count();
-    if (step.success) {
-      if (posture + 1 >= climb.postures.size()) throw InputError(source, "more reached moves than postures");
-      const Posture& from = climb.postures[posture];
-      const Posture& to = climb.postures[posture + 1];
-      const ReachTarget target = reach_target(model, wall, complete, reach.root);
-      ik_path_samples(model, data, from, to, target, ik, settings.frames_per_move, path, samples);
-      for (const Posture& sample : samples) frames.add(sample);
-      ++posture;
-      configuration = complete.with(next_free_limb(free), kFree);
-    } else {
-      for (int f = 0; f < settings.frames_per_failure; ++f) frames.add(climb.postures[posture]);
-    }
+  for (const ReplayMove& move : replay.moves) {
+    const RunStep& step = move.step;
     moves.push_back({{"iteration", step.iteration > 0 ? nlohmann::ordered_json(step.iteration) : nullptr},
                      {"regime", regime_name(step.regime)},
-                     {"limb", enum_name(free)},
+                     {"limb", enum_name(move.limb)},
                      {"hold", step.hold_id},
                      {"success", step.success},
                      {"reward", step.reward},
                      {"root_rise_cm", step.root_rise_cm},
-                     {"configuration", configuration_json(wall, step.success ? complete : configuration)},
-                     {"first_frame", first},
-                     {"last_frame", frames.count() - 1}});
-    if (step.success && stances)
-      moves.back()["stance"] = stance_json(stances->loads(climb.postures[posture], complete));
+                     {"configuration", configuration_json(wall, move.configuration)},
+                     {"first_frame", move.first_frame},
+                     {"last_frame", move.last_frame}});
+    if (move.posture >= 0 && stances) moves.back()["stance"] = stance_json(stances->loads[move.posture]);
   }
-  out["climb_moves"] = climb.steps.size();
-  out["frames"] = {{"count", frames.count()}, {"postures", frames.values()}};
+  out["climb_moves"] = replay.climb_moves;
+  out["frames"] = {{"count", replay.frame_count}, {"postures", replay.frames}};
   out["moves"] = std::move(moves);
-  if (frames.count() > 0) {
-    // What the page's forward kinematics must reproduce, on the rounded posture it reads.
-    const int check = frames.count() / 2;
-    forward_kinematics(model, data, frames.frame(check));
+  if (replay.check_frame >= 0) {
     nlohmann::ordered_json points = nlohmann::ordered_json::array();
-    for (int limb = 0; limb < kLimbCount; ++limb) {
-      points.push_back(vector_json(data.points[operational_point(static_cast<Limb>(limb))]));
-    }
-    out["check"] = {{"frame", check}, {"grasp_points", points}};
+    for (const Eigen::Vector3d& point : replay.check_grasp_points) points.push_back(vector_json(point));
+    out["check"] = {{"frame", replay.check_frame}, {"grasp_points", points}};
   }
   return out;
 }

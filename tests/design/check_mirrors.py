@@ -8,8 +8,10 @@ every exception is named in docs/DESIGN.md.
 It also checks DESIGN's folder table, whose order is the direction of dependencies:
 every `#include "<area>/..."` of a file in src/<other>/ names its own folder or one
 above it in the table, and every folder of src/ has its row; that python/src/ includes
-no cli/; and that DESIGN's "layers at a glance" lists the table's folders in its order,
-the order src/CMakeLists.txt builds the layer libraries in."""
+no cli/; that DESIGN's "layers at a glance" lists the table's folders in its order,
+the order src/CMakeLists.txt builds the layer libraries in; and that no unit (a header
+and its source, src/<area>/<name>.{hpp,cpp}) reaches itself through the units it
+includes: no include loop, inside a folder or across folders."""
 
 import pathlib
 import re
@@ -24,6 +26,8 @@ EXCEPTIONS = {
     "ik/reach_queries",
     # generated at build time; tested through provenance and crux --version
     "common/build_info",
+    # tested with the page it summarises, by tests/jobs/report_job_test.cpp
+    "reports/written_report",
     # plain types, used by every test that reads inputs or solves IK
     "body/body_data", "ik/ik_result", "common/input_error", "jobs/job_hooks",
 }
@@ -56,6 +60,36 @@ def layer_problems(root: pathlib.Path, design: str) -> list[str]:
             if used == "cli":
                 problems.append(f"python/src/{source.name} includes cli/: the Python module calls the library, "
                                 f"as the command line does, not the command line")
+    return problems
+
+
+def include_loop_problems(root: pathlib.Path) -> list[str]:
+    """Units of src/ (area/name, a header and its source together) that include each other
+    in a loop, one line per loop found, naming its units in order."""
+    include = re.compile(r'^\s*#\s*include\s+"([a-z_]+/[a-z_0-9]+)\.hpp"', flags=re.MULTILINE)
+    uses: dict[str, set[str]] = {}
+    for source in sorted((root / "src").rglob("*.[ch]pp")):
+        unit = source.relative_to(root / "src").with_suffix("").as_posix()
+        uses.setdefault(unit, set()).update(used for used in include.findall(source.read_text()) if used != unit)
+    problems, done, path = [], set(), []
+    on_path: dict[str, int] = {}
+
+    def visit(unit: str) -> None:
+        on_path[unit] = len(path)
+        path.append(unit)
+        for used in sorted(uses.get(unit, ())):
+            if used in on_path:
+                loop = path[on_path[used]:] + [used]
+                problems.append("include loop: " + " -> ".join(loop))
+            elif used not in done and used in uses:
+                visit(used)
+        path.pop()
+        del on_path[unit]
+        done.add(unit)
+
+    for unit in sorted(uses):
+        if unit not in done:
+            visit(unit)
     return problems
 
 
@@ -101,6 +135,7 @@ def main(root: pathlib.Path) -> int:
             problems.append(f"python/src/{source.name} has no python/tests/test_{area}.py")
     problems += layer_problems(root, design)
     problems += glance_problems(root, design)
+    problems += include_loop_problems(root)
     for problem in problems:
         print(problem)
     return 1 if problems else 0
@@ -134,6 +169,19 @@ def self_test() -> int:
         (root / "src" / "unlisted").mkdir()
         if not any("no row for src/unlisted/" in p for p in layer_problems(root, design)):
             print("self-test: a folder without a row was not named")
+            return 1
+        # A loop within one folder: a's source includes b, whose header includes a.
+        (root / "src" / "low" / "base.hpp").write_text("#pragma once\n")
+        (root / "src" / "low" / "a.hpp").write_text("#pragma once\n")
+        (root / "src" / "low" / "a.cpp").write_text('#include "low/a.hpp"\n#include "low/b.hpp"\n')
+        (root / "src" / "low" / "b.hpp").write_text('#pragma once\n#include "low/base.hpp"\n')
+        if include_loop_problems(root):
+            print("self-test: units that include each other one way were called a loop")
+            return 1
+        (root / "src" / "low" / "b.hpp").write_text('#pragma once\n#include "low/a.hpp"\n')
+        if include_loop_problems(root) != ["include loop: low/a -> low/b -> low/a"]:
+            print("self-test: a loop between a source and a header was not named: "
+                  + repr(include_loop_problems(root)))
             return 1
     return 0
 

@@ -1,5 +1,7 @@
 #include "outputs/summary_file.hpp"
 
+#include "outputs/paper_figure_data.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>

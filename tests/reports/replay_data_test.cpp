@@ -22,6 +22,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The page's data of `climb`, as crux report computes and writes it.
+nlohmann::ordered_json replayed(const BodyModel& model, const Wall& wall, const RecordedClimb& climb,
+                                const ReachabilityParameters& reach, const ReplayOptions& options = {}) {
+  return replay_data(model, wall, replay_climb(model, wall, climb, reach, "test", options), nullptr, "test");
+}
+
 Posture frame(const nlohmann::ordered_json& replay, int index) {
   Posture posture;
   for (int i = 0; i < kConfigurationDof; ++i) posture[i] = replay["frames"]["postures"][index * kConfigurationDof + i];
@@ -34,7 +40,7 @@ TEST(ReplayData, MovesCoverTheFramesAndEndOnTheRecordedPostures) {
   const RunFolder folder = testing::read_trained_run();
   const ReplayOptions settings;
   const RecordedClimb& climb = folder.last;
-  const auto replay = replay_data(testing::human_model(), folder.wall, climb, {}, "test", "test", settings);
+  const auto replay = replayed(testing::human_model(), folder.wall, climb, {}, settings);
   const auto& moves = replay["moves"];
   ASSERT_EQ(moves.size(), climb.steps.size());
   int next = 1;
@@ -62,10 +68,10 @@ TEST(ReplayData, AReplayShowsTheFirstMaxMovesOfALongerClimb) {
   const RunFolder folder = testing::read_trained_run();
   const RecordedClimb& climb = folder.last;
   ASSERT_GT(climb.steps.size(), 3u);
-  const auto whole = replay_data(testing::human_model(), folder.wall, climb, {}, "test", "test");
+  const auto whole = replayed(testing::human_model(), folder.wall, climb, {});
   ReplayOptions cut;
   cut.max_moves = 3;
-  const auto first = replay_data(testing::human_model(), folder.wall, climb, {}, "test", "test", cut);
+  const auto first = replayed(testing::human_model(), folder.wall, climb, {}, cut);
   ASSERT_EQ(first["moves"].size(), 3u);
   EXPECT_EQ(first["climb_moves"], climb.steps.size());
   EXPECT_EQ(whole["climb_moves"], climb.steps.size());
@@ -85,7 +91,7 @@ TEST(ReplayData, EachReachedPostureGraspsTheConfigurationShown) {
   const ReachabilityParameters reach;
   BodyData data(model);
   for (const RecordedClimb* climb : {&folder.last, &folder.greedy}) {
-    const auto replay = replay_data(model, folder.wall, *climb, reach, "test", "test");
+    const auto replay = replayed(model, folder.wall, *climb, reach);
     std::size_t posture = 0;
     for (const auto& move : replay["moves"]) {
       if (!move["success"]) continue;
@@ -110,7 +116,7 @@ void expect_continuous(const RecordedClimb& climb, const nlohmann::ordered_json&
 TEST(ReplayData, InBetweenFramesAreContinuous) {
   const RunFolder folder = testing::read_trained_run();
   for (const RecordedClimb* climb : {&folder.last, &folder.greedy}) {
-    expect_continuous(*climb, replay_data(testing::human_model(), folder.wall, *climb, {}, "test", "test"));
+    expect_continuous(*climb, replayed(testing::human_model(), folder.wall, *climb, {}));
   }
 }
 
@@ -136,7 +142,7 @@ void expect_continuous(const RecordedClimb& climb, const nlohmann::ordered_json&
 TEST(ReplayData, TheCheckPointsAreTheForwardKinematicsOfTheirFrame) {
   const BodyModel& model = testing::human_model();
   const RunFolder folder = testing::read_trained_run();
-  const auto replay = replay_data(model, folder.wall, folder.greedy, {}, "test", "test");
+  const auto replay = replayed(model, folder.wall, folder.greedy, {});
   const int check = replay["check"]["frame"];
   BodyData data(model);
   forward_kinematics(model, data, frame(replay, check));

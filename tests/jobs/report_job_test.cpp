@@ -1,4 +1,5 @@
-#include "reports/report_page.hpp"
+#include "jobs/report_job.hpp"
+#include "reports/written_report.hpp"
 
 #include <unistd.h>
 
