@@ -70,6 +70,32 @@ nlohmann::ordered_json stance_json(const StanceLoads& loads) {
           {"joint_ratios", ratios}};
 }
 
+nlohmann::ordered_json replay_wall_json(const Wall& wall) {
+  nlohmann::ordered_json holds = nlohmann::ordered_json::array();
+  for (const Hold& hold : wall.holds) {
+    holds.push_back({{"id", hold.id}, {"position", vector_json(hold.position)}, {"radius", hold.radius}});
+  }
+  nlohmann::ordered_json out = {{"name", wall.name},
+                                {"finish_height", wall.finish_height},
+                                {"holds", holds},
+                                {"start", configuration_json(wall, start_configuration(wall))}};
+  // Only an inclined wall says so, so that a vertical wall's replay keeps its bytes.
+  if (wall.incline_deg != 0.0) out["incline"] = wall.incline_deg;
+  return out;
+}
+
+// What the page's forward kinematics must reproduce, on the rounded posture it reads: the
+// grasp points of the middle frame.
+nlohmann::ordered_json replay_check_json(const BodyModel& model, BodyData& data, const FrameWriter& frames) {
+  const int check = frames.count() / 2;
+  forward_kinematics(model, data, frames.frame(check));
+  nlohmann::ordered_json points = nlohmann::ordered_json::array();
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    points.push_back(vector_json(data.points[operational_point(static_cast<Limb>(limb))]));
+  }
+  return {{"frame", check}, {"grasp_points", points}};
+}
+
 }  // namespace
 
 nlohmann::ordered_json body_model_json(const BodyModel& model) {
@@ -122,16 +148,7 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
   out["climb"] = climb.kind;
   out["model"] = body_model_json(model);
   out["grasp_radius"] = reach.ik.tolerances.grasp_radius;
-  nlohmann::ordered_json holds = nlohmann::ordered_json::array();
-  for (const Hold& hold : wall.holds) {
-    holds.push_back({{"id", hold.id}, {"position", vector_json(hold.position)}, {"radius", hold.radius}});
-  }
-  out["wall"] = {{"name", wall.name},
-                 {"finish_height", wall.finish_height},
-                 {"holds", holds},
-                 {"start", configuration_json(wall, start_configuration(wall))}};
-  // Only an inclined wall says so, so that a vertical wall's replay keeps its bytes.
-  if (wall.incline_deg != 0.0) out["wall"]["incline"] = wall.incline_deg;
+  out["wall"] = replay_wall_json(wall);
 
   IkParameters ik = reach.ik;
   ik.solver = IkSolverKind::Paper;
@@ -186,16 +203,7 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
   out["climb_moves"] = climb.steps.size();
   out["frames"] = {{"count", frames.count()}, {"postures", frames.values()}};
   out["moves"] = std::move(moves);
-  if (frames.count() > 0) {
-    // What the page's forward kinematics must reproduce, on the rounded posture it reads.
-    const int check = frames.count() / 2;
-    forward_kinematics(model, data, frames.frame(check));
-    nlohmann::ordered_json points = nlohmann::ordered_json::array();
-    for (int limb = 0; limb < kLimbCount; ++limb) {
-      points.push_back(vector_json(data.points[operational_point(static_cast<Limb>(limb))]));
-    }
-    out["check"] = {{"frame", check}, {"grasp_points", points}};
-  }
+  if (frames.count() > 0) out["check"] = replay_check_json(model, data, frames);
   return out;
 }
 
