@@ -29,9 +29,8 @@ HoldConfiguration three_configuration_from(const py::handle& holds, const Wall& 
   return c;
 }
 
-}  // namespace
-
-void bind_wall(py::module_& m) {
+// Wall, with its constructors, file round trip and holds as numpy arrays.
+void bind_wall_type(py::module_& m) {
   py::class_<Wall>(m, "Wall", "A climbing wall: hold spheres, the start configuration and the finishing height")
       .def_static(
           "random",
@@ -84,7 +83,10 @@ void bind_wall(py::module_& m) {
         return fmt::format("<crux.Wall '{}', {} holds, finish at {} m>", wall.name, wall.hold_count(),
                            wall.finish_height);
       });
+}
 
+// The geometric filter and the possible actions it leaves a 3-configuration.
+void bind_geometric_filter(py::module_& m) {
   m.def(
       "passes_filter",
       [](const Wall& wall, const py::handle& configuration, const py::handle& config) {
@@ -106,7 +108,10 @@ void bind_wall(py::module_& m) {
       },
       py::arg("wall"), py::arg("configuration"), py::arg("config") = py::none(),
       "The holds (indices, ascending) the free limb of a 3-configuration may take under the geometric filter");
+}
 
+// The moving grid, its placement on a free limb, and the codes of the two state spaces.
+void bind_moving_grid(py::module_& m) {
   py::class_<GridPlacement>(m, "GridPlacement", "The moving grid placed on a free limb (section III-D, Fig. 2a)")
       .def_property_readonly(
           "origin", [](const GridPlacement& p) { return to_array(Eigen::Vector3d(0.0, p.origin.x(), p.origin.y())); },
@@ -161,6 +166,14 @@ void bind_wall(py::module_& m) {
         return encode(configuration_from(configuration, wall, "configuration"), wall.hold_count());
       },
       py::arg("wall"), py::arg("configuration"), "The problem-space code of a configuration");
+}
+
+}  // namespace
+
+void bind_wall(py::module_& m) {
+  bind_wall_type(m);
+  bind_geometric_filter(m);
+  bind_moving_grid(m);
 }
 
 }  // namespace crux::python

@@ -117,21 +117,16 @@ QTable preceding_q_grid(const BodyModel& model, std::span<const ExperimentWall> 
   return std::move(*q_grid);
 }
 
-ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& settings,
-                                      const std::function<void(int)>& progress,
-                                      const std::function<void()>& interruption_point) {
-  const auto started = std::chrono::steady_clock::now();
-  const int walls = settings.wall_pairs, runs = settings.runs();
-  std::optional<tbb::global_control> limit;
-  if (settings.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
+namespace {
 
-  ExperimentResult result;
-  const int preceding = settings.training_walls - 1;
+// Every wall of the experiment, in parallel (each is drawn from its own stream, so the
+// order changes none): the training walls' preceding walls, then the training and
+// transfer walls with their filtered pairs.
+void draw_experiment_walls(const BodyModel& model, const ExperimentParameters& settings,
+                           const std::function<void(int)>& interruptible, ExperimentResult& result) {
+  const int walls = settings.wall_pairs, preceding = settings.training_walls - 1;
   result.walls.resize(2 * walls);
   result.preceding_training_walls.resize(static_cast<std::size_t>(walls) * preceding);
-  const auto interruptible = [&](int) {
-    if (interruption_point) interruption_point();
-  };
   tbb::parallel_for(0, walls * preceding, [&](int w) {
     interruptible(w);
     result.preceding_training_walls[w] = draw_preceding_training_wall(model, settings, w / preceding, w % preceding);
@@ -142,13 +137,35 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentPa
     wall = draw_wall(model, settings, w < walls ? kTrainingWalls : kTransferWalls, w % walls);
     wall.filtered_pairs = filtered_pairs(wall.wall, settings.learning.climbing.filter);
   });
+}
 
+// Each condition's slots for its runs, made before the runs so that each task writes its own.
+void size_condition_results(int runs, ExperimentResult& result) {
   for (ConditionResult& c : result.conditions) {
     c.runs.resize(runs);
     c.wall_of_run.resize(runs);
     c.cluster_of_run.resize(runs);
     c.learning_seeds.resize(runs);
   }
+}
+
+}  // namespace
+
+ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& settings,
+                                      const std::function<void(int)>& progress,
+                                      const std::function<void()>& interruption_point) {
+  const auto started = std::chrono::steady_clock::now();
+  const int walls = settings.wall_pairs, runs = settings.runs();
+  std::optional<tbb::global_control> limit;
+  if (settings.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
+
+  ExperimentResult result;
+  const int preceding = settings.training_walls - 1;
+  const auto interruptible = [&](int) {
+    if (interruption_point) interruption_point();
+  };
+  draw_experiment_walls(model, settings, interruptible, result);
+  size_condition_results(runs, result);
   std::mutex progress_mutex;
   int done = 0;
   const auto count_done = [&] {

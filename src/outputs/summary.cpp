@@ -190,15 +190,53 @@ nlohmann::ordered_json iterations_spent_json(const ExperimentResult& result, con
           {"preceding_training_walls", preceding}};
 }
 
+// A wall's seed, or null when `seeded` is false: a wall read from a file has none.
+nlohmann::json summary_wall_seed(const ExperimentWall& wall, bool seeded) {
+  return seeded ? nlohmann::json(wall.seed) : nlohmann::json(nullptr);
+}
+
+// One run's entry of run_facts: its wall, its seeds and what it learnt at what cost.
+nlohmann::ordered_json run_facts_json(const RunResult& run, const ExperimentWall& wall, std::size_t wall_pair,
+                                      std::uint64_t learning_seed, const ExperimentParameters& settings, bool seeded) {
+  return {{"wall", wall.wall.name},
+          {"wall_pair", wall_pair},
+          {"wall_seed", summary_wall_seed(wall, seeded)},
+          {"learning_seed", learning_seed},
+          {"take_off_iteration", take_off_iteration(run, settings.analysis.threshold_length)},
+          {"planning_updates_per_step",
+           static_cast<double>(run.planning_updates) / static_cast<double>(run.iterations.size())},
+          {"episodes", run.episode_lengths.size()},
+          {"greedy_length", run.greedy_length},
+          {"plan_length", wall.plan.found ? wall.plan.length : -1},
+          {"explored_pairs", run.explored_pairs},
+          {"explored_share", wall.filtered_pairs > 0 ? nlohmann::json(static_cast<double>(run.explored_pairs) /
+                                                                      static_cast<double>(wall.filtered_pairs))
+                                                     : nlohmann::json(nullptr)},
+          {"ik_solves", run.ik_solves},
+          {"reached_configurations", run.reached_configurations},
+          {"unreachable_configurations", run.unreachable_configurations}};
+}
+
+nlohmann::ordered_json summary_walls_json(const ExperimentResult& result, bool seeded) {
+  nlohmann::ordered_json walls = nlohmann::json::array();
+  for (const ExperimentWall& w : result.walls) {
+    walls.push_back({{"name", w.wall.name},
+                     {"seed", summary_wall_seed(w, seeded)},
+                     {"rejected_seeds", w.rejected_seeds},
+                     {"plan_length", w.plan.found ? w.plan.length : -1},
+                     {"plan_holds", w.plan.hold_ids},
+                     {"plan_stopped_at_limit", w.plan.stopped_at_limit}});
+  }
+  return walls;
+}
+
 }  // namespace
 
 nlohmann::ordered_json summary_json(const ExperimentResult& result, const ExperimentAnalysis* analysis,
                                     const ExperimentParameters& settings, const Provenance& provenance) {
   const int beginning = settings.analysis.beginning;
   // A wall read from a file has no seed.
-  const auto wall_seed_json = [&](const ExperimentWall& wall) {
-    return analysis != nullptr || provenance.wall_seed ? nlohmann::json(wall.seed) : nlohmann::json(nullptr);
-  };
+  const bool seeded = analysis != nullptr || provenance.wall_seed;
   nlohmann::ordered_json out;
   out["format"] = "crux-summary";
   out["version"] = 4;  // 4: no wall-clock seconds; the provenance names its caller
@@ -232,24 +270,7 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
       const RunResult& run = c.runs[i];
       const ExperimentWall& wall = result.walls[c.wall_of_run[i]];
       lengths[name].push_back(run.episode_lengths);
-      runs[name].push_back(
-          {{"wall", wall.wall.name},
-           {"wall_pair", c.cluster_of_run[i]},
-           {"wall_seed", wall_seed_json(wall)},
-           {"learning_seed", c.learning_seeds[i]},
-           {"take_off_iteration", take_off_iteration(run, settings.analysis.threshold_length)},
-           {"planning_updates_per_step",
-            static_cast<double>(run.planning_updates) / static_cast<double>(run.iterations.size())},
-           {"episodes", run.episode_lengths.size()},
-           {"greedy_length", run.greedy_length},
-           {"plan_length", wall.plan.found ? wall.plan.length : -1},
-           {"explored_pairs", run.explored_pairs},
-           {"explored_share", wall.filtered_pairs > 0 ? nlohmann::json(static_cast<double>(run.explored_pairs) /
-                                                                       static_cast<double>(wall.filtered_pairs))
-                                                      : nlohmann::json(nullptr)},
-           {"ik_solves", run.ik_solves},
-           {"reached_configurations", run.reached_configurations},
-           {"unreachable_configurations", run.unreachable_configurations}});
+      runs[name].push_back(run_facts_json(run, wall, c.cluster_of_run[i], c.learning_seeds[i], settings, seeded));
     }
     const auto mean_map = mean_q_grid_maps(c, grid);
     for (int l = 0; l < kLimbCount; ++l) {
@@ -261,16 +282,7 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
   out["episode_lengths"] = lengths;
   out["run_facts"] = runs;
   out["qgrid_maps"] = maps;
-  nlohmann::ordered_json walls = nlohmann::json::array();
-  for (const ExperimentWall& w : result.walls) {
-    walls.push_back({{"name", w.wall.name},
-                     {"seed", wall_seed_json(w)},
-                     {"rejected_seeds", w.rejected_seeds},
-                     {"plan_length", w.plan.found ? w.plan.length : -1},
-                     {"plan_holds", w.plan.hold_ids},
-                     {"plan_stopped_at_limit", w.plan.stopped_at_limit}});
-  }
-  out["walls"] = walls;
+  out["walls"] = summary_walls_json(result, seeded);
   return out;
 }
 

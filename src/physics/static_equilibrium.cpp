@@ -40,6 +40,22 @@ void keep_clp_work_areas_on_the_heap() {
       mallopt(M_MMAP_THRESHOLD, 4 << 20) == 1 && mallopt(M_TRIM_THRESHOLD, 16 << 20) == 1;
 }
 
+// The balance precheck on the held limbs' contacts, their levers about the root: true when
+// no forces within their cones and normal limits balance the weight and its moment.
+bool precheck_proves_unbalanced(const BodyData& data, const Eigen::Vector3d& root,
+                                const std::array<const PointContact*, kLimbCount>& held,
+                                const std::array<FrictionConeGenerators, kLimbCount>& cones,
+                                const Eigen::Vector3d& weight, const Eigen::Vector3d& weight_moment) {
+  std::array<HeldContact, kLimbCount> held_contacts;
+  std::size_t held_count = 0;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    if (held[limb] == nullptr) continue;
+    held_contacts[held_count++] = {data.points[operational_point(limb)] - root, cones[limb],
+                                   held[limb]->normal_force_limit};
+  }
+  return proven_unbalanced(std::span<const HeldContact>(held_contacts.data(), held_count), -weight, -weight_moment);
+}
+
 }  // namespace
 
 StaticEquilibrium::StaticEquilibrium(const BodyModel& model, const StrengthProfile& strength,
@@ -120,17 +136,9 @@ bool StaticEquilibrium::load_stance(BodyData& data, const Posture& g, std::span<
   // Most stances that cannot balance are refused here, without the program (40 % of all
   // stances on random vertical walls, 86 % of those unbalanced): see docs/PHYSICS.md,
   // "Proven unbalanced without a program". The basis stays the last program's.
-  if (precheck_ == EquilibriumPrecheck::On) {
-    std::array<HeldContact, kLimbCount> held_contacts;
-    std::size_t held_count = 0;
-    for (int limb = 0; limb < kLimbCount; ++limb) {
-      if (held_[limb] == nullptr) continue;
-      held_contacts[held_count++] = {data.points[operational_point(limb)] - root, cones_[limb],
-                                     held_[limb]->normal_force_limit};
-    }
-    if (proven_unbalanced(std::span<const HeldContact>(held_contacts.data(), held_count), -weight, -weight_moment)) {
-      return false;
-    }
+  if (precheck_ == EquilibriumPrecheck::On &&
+      precheck_proves_unbalanced(data, root, held_, cones_, weight, weight_moment)) {
+    return false;
   }
   operational_jacobians(model_, data);
   // tau_j = -(tau_g_j + r_j) with r_j = sum of J_c(:, j) . f_c; sign * tau_j <= t * limit

@@ -77,11 +77,8 @@ constexpr const char* kRunFacts[] = {"episodes",
                                      "unreachable_configurations",
                                      "planning_updates_per_step"};
 
-}  // namespace
-
-nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path& folder,
-                                           const nlohmann::ordered_json& provenance) {
-  // Metric columns: every metric any cell's windows define, in order of appearance.
+// Metric columns: every metric any cell's windows define, in order of appearance.
+std::vector<std::string> sweep_metric_names(const SweepPlan& plan) {
   std::vector<std::string> metric_names;
   for (const SweepCell& cell : plan.cells) {
     for (const EpisodeMetric& m : episode_metrics(metric_windows(cell.config.settings))) {
@@ -90,79 +87,95 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
       }
     }
   }
+  return metric_names;
+}
+
+std::string sweep_results_csv_header(const SweepPlan& plan, const std::vector<std::string>& metric_names) {
   std::string csv = "cell";
   for (const std::string& key : plan.keys) csv += fmt::format(",{}", csv_cell(key));
   csv += ",condition,run,wall_pair,seed_index,wall_seed,learning_seed";
   for (const std::string& name : metric_names) csv += fmt::format(",{}", name);
   for (const char* fact : kRunFacts) csv += fmt::format(",{}", fact);
   csv += ",plan_length,filtered_pairs\n";
+  return csv;
+}
 
-  nlohmann::ordered_json cells = nlohmann::json::array();
-  for (std::size_t c = 0; c < plan.cells.size(); ++c) {
-    const SweepCell& cell = plan.cells[c];
-    const ExperimentParameters& settings = cell.config.settings;
-    const MetricWindows windows = metric_windows(settings);
-    const std::vector<EpisodeMetric> metrics = episode_metrics(windows);
-    ExperimentResult result;
-    for (const Condition condition : kConditions) {
-      ConditionResult& runs = result.conditions[static_cast<int>(condition)];
-      for (int r = 0; r < settings.runs(); ++r) {
-        const SweepTask& task = plan.tasks[run_task_index(plan, c, condition, r)];
-        const fs::path directory = folder / task.folder;
-        const std::string summary_file = (directory / "summary.json").string();
-        const OrderedJson summary = read_summary(directory);
-        runs.runs.push_back(read_run(directory, summary_iterations(summary, summary_file)));
-        const int pair = r / settings.seeds_per_wall;
-        runs.cluster_of_run.push_back(static_cast<std::size_t>(pair));
-        runs.wall_of_run.push_back(static_cast<std::size_t>(pair));
-        const std::string name = condition_name(condition);
-        const JsonField facts = JsonField(summary_file, summary)["run_facts"][name][0];
-        runs.learning_seeds.push_back(facts["learning_seed"].unsigned_integer());
-        const fs::path wall_folder =
-            folder / "walls" / fmt::format("g{}", cell.wall_group) /
-            fmt::format("{}_{}", condition == Condition::Training ? "training" : "transfer", pair);
-        const nlohmann::json wall = read_json_file(wall_folder / kWallFactsFile);
+// Cell c's runs, read back from their folders for the analysis, each appended to `csv` as
+// a row of results.csv with its wall's facts.
+ExperimentResult read_sweep_cell(const SweepPlan& plan, const fs::path& folder, std::size_t c,
+                                 const std::vector<std::string>& metric_names, std::string& csv) {
+  const SweepCell& cell = plan.cells[c];
+  const ExperimentParameters& settings = cell.config.settings;
+  const MetricWindows windows = metric_windows(settings);
+  const std::vector<EpisodeMetric> metrics = episode_metrics(windows);
+  ExperimentResult result;
+  for (const Condition condition : kConditions) {
+    ConditionResult& runs = result.conditions[static_cast<int>(condition)];
+    for (int r = 0; r < settings.runs(); ++r) {
+      const SweepTask& task = plan.tasks[run_task_index(plan, c, condition, r)];
+      const fs::path directory = folder / task.folder;
+      const std::string summary_file = (directory / "summary.json").string();
+      const OrderedJson summary = read_summary(directory);
+      runs.runs.push_back(read_run(directory, summary_iterations(summary, summary_file)));
+      const int pair = r / settings.seeds_per_wall;
+      runs.cluster_of_run.push_back(static_cast<std::size_t>(pair));
+      runs.wall_of_run.push_back(static_cast<std::size_t>(pair));
+      const std::string name = condition_name(condition);
+      const JsonField facts = JsonField(summary_file, summary)["run_facts"][name][0];
+      runs.learning_seeds.push_back(facts["learning_seed"].unsigned_integer());
+      const fs::path wall_folder =
+          folder / "walls" / fmt::format("g{}", cell.wall_group) /
+          fmt::format("{}_{}", condition == Condition::Training ? "training" : "transfer", pair);
+      const nlohmann::json wall = read_json_file(wall_folder / kWallFactsFile);
 
-        csv += fmt::format("{}", c);
-        for (const std::string& value : cell.values) csv += fmt::format(",{}", csv_cell(value));
-        csv += fmt::format(",{},{},{},{},{},{}", name, r, pair, r % settings.seeds_per_wall,
-                           facts["wall_seed"].json().dump(), runs.learning_seeds.back());
-        for (const std::string& metric : metric_names) {
-          const auto m =
-              std::find_if(metrics.begin(), metrics.end(), [&](const EpisodeMetric& e) { return e.name == metric; });
-          csv += m == metrics.end() ? std::string(",") : fmt::format(",{}", m->of_run(runs.runs.back(), windows));
-        }
-        for (const char* fact : kRunFacts) csv += fmt::format(",{}", number_cell(facts[fact].json()));
-        const nlohmann::json& wall_plan = wall.at("plan");
-        csv += fmt::format(",{},{}\n", wall_plan.is_null() ? std::string() : number_cell(wall_plan.at("length")),
-                           number_cell(wall.at("filtered_pairs")));
+      csv += fmt::format("{}", c);
+      for (const std::string& value : cell.values) csv += fmt::format(",{}", csv_cell(value));
+      csv += fmt::format(",{},{},{},{},{},{}", name, r, pair, r % settings.seeds_per_wall,
+                         facts["wall_seed"].json().dump(), runs.learning_seeds.back());
+      for (const std::string& metric : metric_names) {
+        const auto m =
+            std::find_if(metrics.begin(), metrics.end(), [&](const EpisodeMetric& e) { return e.name == metric; });
+        csv += m == metrics.end() ? std::string(",") : fmt::format(",{}", m->of_run(runs.runs.back(), windows));
       }
+      for (const char* fact : kRunFacts) csv += fmt::format(",{}", number_cell(facts[fact].json()));
+      const nlohmann::json& wall_plan = wall.at("plan");
+      csv += fmt::format(",{},{}\n", wall_plan.is_null() ? std::string() : number_cell(wall_plan.at("length")),
+                         number_cell(wall.at("filtered_pairs")));
     }
-    const ExperimentAnalysis analysis = analyse_experiment(result, settings);
-    nlohmann::ordered_json entry;
-    entry["cell"] = c;
-    nlohmann::ordered_json parameters = nlohmann::ordered_json::object();
-    for (std::size_t k = 0; k < plan.keys.size(); ++k) parameters[plan.keys[k]] = cell.values[k];
-    entry["parameters"] = parameters;
-    entry["wall_group"] = cell.wall_group;
-    entry["seed"] = settings.seed;
-    entry["wall_pairs"] = settings.wall_pairs;
-    entry["seeds_per_wall"] = settings.seeds_per_wall;
-    entry["iterations"] = settings.learning.iterations;
-    // Taylor and Stone's total time per transfer run, for every K (crux paper's
-    // iterations_spent, whose preceding walls are the sweep's walls/g<G>/preceding_*).
-    const long iterations = settings.learning.iterations;
-    entry["iterations_spent"] = {{"training_walls", settings.training_walls},
-                                 {"training", settings.training_walls * iterations},
-                                 {"transfer", iterations},
-                                 {"total", (settings.training_walls + 1) * iterations},
-                                 {"control", iterations}};
-    entry["transfer_vs_control"] = transfer_vs_control_json(analysis);
-    entry["take_off"] = take_off_json(analysis);
-    entry["transfer_control_divergence"] = divergence_json(analysis);
-    cells.push_back(entry);
   }
-  // Holm over the cells, one family per metric: "which cells show an effect" stays at 5 %.
+  return result;
+}
+
+// Cell c's entry of summary.json: its parameters, its runs' budget and its analysis.
+nlohmann::ordered_json sweep_cell_entry(const SweepPlan& plan, std::size_t c, const ExperimentAnalysis& analysis) {
+  const SweepCell& cell = plan.cells[c];
+  const ExperimentParameters& settings = cell.config.settings;
+  nlohmann::ordered_json entry;
+  entry["cell"] = c;
+  nlohmann::ordered_json parameters = nlohmann::ordered_json::object();
+  for (std::size_t k = 0; k < plan.keys.size(); ++k) parameters[plan.keys[k]] = cell.values[k];
+  entry["parameters"] = parameters;
+  entry["wall_group"] = cell.wall_group;
+  entry["seed"] = settings.seed;
+  entry["wall_pairs"] = settings.wall_pairs;
+  entry["seeds_per_wall"] = settings.seeds_per_wall;
+  entry["iterations"] = settings.learning.iterations;
+  // Taylor and Stone's total time per transfer run, for every K (crux paper's
+  // iterations_spent, whose preceding walls are the sweep's walls/g<G>/preceding_*).
+  const long iterations = settings.learning.iterations;
+  entry["iterations_spent"] = {{"training_walls", settings.training_walls},
+                               {"training", settings.training_walls * iterations},
+                               {"transfer", iterations},
+                               {"total", (settings.training_walls + 1) * iterations},
+                               {"control", iterations}};
+  entry["transfer_vs_control"] = transfer_vs_control_json(analysis);
+  entry["take_off"] = take_off_json(analysis);
+  entry["transfer_control_divergence"] = divergence_json(analysis);
+  return entry;
+}
+
+// Holm over the cells, one family per metric: "which cells show an effect" stays at 5 %.
+void add_holm_over_cells(const std::vector<std::string>& metric_names, nlohmann::ordered_json& cells) {
   for (const std::string& metric : metric_names) {
     std::vector<double> p_values;
     std::vector<std::size_t> holders;
@@ -178,6 +191,20 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
           adjusted[i];
     }
   }
+}
+
+}  // namespace
+
+nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path& folder,
+                                           const nlohmann::ordered_json& provenance) {
+  const std::vector<std::string> metric_names = sweep_metric_names(plan);
+  std::string csv = sweep_results_csv_header(plan, metric_names);
+  nlohmann::ordered_json cells = nlohmann::json::array();
+  for (std::size_t c = 0; c < plan.cells.size(); ++c) {
+    const ExperimentResult result = read_sweep_cell(plan, folder, c, metric_names, csv);
+    cells.push_back(sweep_cell_entry(plan, c, analyse_experiment(result, plan.cells[c].config.settings)));
+  }
+  add_holm_over_cells(metric_names, cells);
   nlohmann::ordered_json summary;
   summary["format"] = "crux-sweep-summary";
   summary["version"] = 1;

@@ -169,6 +169,89 @@ WallBandSeries episode_length_series(const PaperConditionData& condition) {
   return series;
 }
 
+namespace {
+
+// Where Fig. 2b's maps go: each fits a 130 x 240 pixel box, its tiles keeping their
+// proportions, in one slot per free limb wide enough for the limb's heading.
+struct Fig2bLayout {
+  double cell_width = 0, cell_height = 0, map_width = 0, map_height = 0, slot = 0;
+  double maps_left = kFigureMargin + 56;  // room for the row numbers and the row title
+  // Numbers at most every 14 pixels, so that they never touch.
+  int column_every = 1, row_every = 1;
+
+  double map_left(int limb) const { return maps_left + slot * limb + (slot - 32 - map_width) / 2; }
+  double maps_right() const { return maps_left + slot * kLimbCount - 32; }
+};
+
+Fig2bLayout fig2b_layout(const GridParameters& grid) {
+  const double scale = std::min(130.0 / (grid.columns * grid.tile_width), 240.0 / (grid.rows * grid.tile_height));
+  Fig2bLayout layout;
+  layout.cell_width = grid.tile_width * scale;
+  layout.cell_height = grid.tile_height * scale;
+  layout.map_width = layout.cell_width * grid.columns;
+  layout.map_height = layout.cell_height * grid.rows;
+  double heading_width = 0;
+  for (int l = 0; l < kLimbCount; ++l) {
+    heading_width = std::max(heading_width, estimated_text_width(limb_title(static_cast<Limb>(l)), kPlotLabelFontSize));
+  }
+  layout.slot = std::max(layout.map_width, heading_width) + 32;
+  layout.column_every = static_cast<int>(std::ceil(14 / layout.cell_width));
+  layout.row_every = static_cast<int>(std::ceil(14 / layout.cell_height));
+  return layout;
+}
+
+// One colour scale for all maps, from 0 to the lowest and the highest value of any.
+DivergingScale fig2b_colour_scale(const PaperFigureData& data) {
+  DivergingScale colours{0, 0};
+  for (const PaperConditionData& c : data.conditions) {
+    for (const auto& map : c.q_grid_maps) {
+      if (map.size() != static_cast<std::size_t>(data.grid.tile_count())) {
+        throw std::invalid_argument(
+            fmt::format("fig2b_svg: a map of {} values for a grid of {} tiles", map.size(), data.grid.tile_count()));
+      }
+      for (const double v : map) {
+        colours.low = std::min(colours.low, v);
+        colours.high = std::max(colours.high, v);
+      }
+    }
+  }
+  return colours;
+}
+
+// One condition's row of maps, its top at y, with the row numbers on its left.
+void draw_fig2b_condition_maps(std::string& svg, const GridParameters& grid, const Fig2bLayout& layout,
+                               const PaperConditionData& c, const DivergingScale& colours, double y) {
+  for (int l = 0; l < kLimbCount; ++l) {
+    // The climber's view: column 0 (the climber's right) on the right, row 0 at the bottom.
+    const auto cell_x = [&](int column) {
+      return layout.map_left(l) + (grid.columns - 1 - column) * layout.cell_width;
+    };
+    const auto cell_y = [&](int row) { return y + (grid.rows - 1 - row) * layout.cell_height; };
+    std::vector<Cell> cells;
+    for (int tile = 0; tile < grid.tile_count(); ++tile) {
+      const int column = tile % grid.columns, row = tile / grid.columns;
+      cells.push_back({cell_x(column), cell_y(row), layout.cell_width, layout.cell_height, c.q_grid_maps[l][tile]});
+    }
+    draw_cells(svg, cells, colours);
+    svg += fmt::format(
+        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
+        "stroke-width=\"1\"/>\n",
+        layout.map_left(l), y, layout.map_width, layout.map_height, kPlotFrameColour);
+    if (grid.space != AgentSpaceKind::Grid) continue;  // the reach agent space has no anchors
+    const auto [anchor_column, anchor_row] = grid.anchors[l];
+    svg += fmt::format(
+        "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"4.5\" fill=\"{}\" stroke=\"white\" "
+        "stroke-width=\"1.5\"/>\n",
+        cell_x(anchor_column) + layout.cell_width / 2, cell_y(anchor_row) + layout.cell_height / 2, kAnchorColour);
+  }
+  for (int row = 0; row < grid.rows; row += layout.row_every) {
+    draw_text(svg, layout.maps_left - 8, y + (grid.rows - 0.5 - row) * layout.cell_height + 4, std::to_string(row),
+              {.size = kPlotTickFontSize, .anchor = "end", .colour = kDarkGrey});
+  }
+}
+
+}  // namespace
+
 // Paper, Fig. 2b: one map per free limb of the summed Q_grid value of each tile, with the
 // limb's P_i point. Rows here are conditions, so that transfer's maps sit under
 // training's.
@@ -182,85 +265,34 @@ std::string fig2b_svg(const PaperFigureData& data) {
                    "right)",
                    grid.columns, grid.rows, grid.tile_width, grid.tile_height),
        "one colour scale for all maps: white at 0; blue to the lowest value, red to the highest"}};
-
-  // Each map fits a 130 x 240 pixel box, its tiles keeping their proportions.
-  const double scale = std::min(130.0 / (grid.columns * grid.tile_width), 240.0 / (grid.rows * grid.tile_height));
-  const double cell_width = grid.tile_width * scale, cell_height = grid.tile_height * scale;
-  const double map_width = cell_width * grid.columns, map_height = cell_height * grid.rows;
-  double heading_width = 0;
-  for (int l = 0; l < kLimbCount; ++l) {
-    heading_width = std::max(heading_width, estimated_text_width(limb_title(static_cast<Limb>(l)), kPlotLabelFontSize));
-  }
-  const double slot = std::max(map_width, heading_width) + 32;
-  const double maps_left = kFigureMargin + 56;  // room for the row numbers and the row title
-  const auto map_left = [&](int limb) { return maps_left + slot * limb + (slot - 32 - map_width) / 2; };
-
-  DivergingScale colours{0, 0};
-  for (const PaperConditionData& c : data.conditions) {
-    for (const auto& map : c.q_grid_maps) {
-      if (map.size() != static_cast<std::size_t>(grid.tile_count())) {
-        throw std::invalid_argument(
-            fmt::format("fig2b_svg: a map of {} values for a grid of {} tiles", map.size(), grid.tile_count()));
-      }
-      for (const double v : map) {
-        colours.low = std::min(colours.low, v);
-        colours.high = std::max(colours.high, v);
-      }
-    }
-  }
+  const Fig2bLayout layout = fig2b_layout(grid);
+  const DivergingScale colours = fig2b_colour_scale(data);
 
   std::string svg;
   header.draw(svg);
   double y = kFigureMargin + header.height();
   for (int l = 0; l < kLimbCount; ++l) {
-    draw_text(svg, map_left(l) + map_width / 2, y + 12, limb_title(static_cast<Limb>(l)),
+    draw_text(svg, layout.map_left(l) + layout.map_width / 2, y + 12, limb_title(static_cast<Limb>(l)),
               {.anchor = "middle", .bold = true});
   }
   y += 22;
-  // Numbers at most every 14 pixels, so that they never touch.
-  const int column_every = static_cast<int>(std::ceil(14 / cell_width));
-  const int row_every = static_cast<int>(std::ceil(14 / cell_height));
   const double rows_top = y;
   for (const PaperConditionData& c : data.conditions) {
-    draw_text(svg, maps_left - 30, y + 13,
+    draw_text(svg, layout.maps_left - 30, y + 13,
               fmt::format("{} (mean over {})", condition_name(c.condition),
                           runs_phrase(static_cast<int>(c.runs.size()), wall_count(c))),
               {.colour = condition_colour(c.condition), .bold = true});
     y += 22;
-    for (int l = 0; l < kLimbCount; ++l) {
-      // The climber's view: column 0 (the climber's right) on the right, row 0 at the bottom.
-      const auto cell_x = [&](int column) { return map_left(l) + (grid.columns - 1 - column) * cell_width; };
-      const auto cell_y = [&](int row) { return y + (grid.rows - 1 - row) * cell_height; };
-      std::vector<Cell> cells;
-      for (int tile = 0; tile < grid.tile_count(); ++tile) {
-        const int column = tile % grid.columns, row = tile / grid.columns;
-        cells.push_back({cell_x(column), cell_y(row), cell_width, cell_height, c.q_grid_maps[l][tile]});
-      }
-      draw_cells(svg, cells, colours);
-      svg += fmt::format(
-          "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
-          "stroke-width=\"1\"/>\n",
-          map_left(l), y, map_width, map_height, kPlotFrameColour);
-      if (grid.space != AgentSpaceKind::Grid) continue;  // the reach agent space has no anchors
-      const auto [anchor_column, anchor_row] = grid.anchors[l];
-      svg += fmt::format(
-          "<circle class=\"anchor\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"4.5\" fill=\"{}\" stroke=\"white\" "
-          "stroke-width=\"1.5\"/>\n",
-          cell_x(anchor_column) + cell_width / 2, cell_y(anchor_row) + cell_height / 2, kAnchorColour);
-    }
-    for (int row = 0; row < grid.rows; row += row_every) {
-      draw_text(svg, maps_left - 8, y + (grid.rows - 0.5 - row) * cell_height + 4, std::to_string(row),
-                {.size = kPlotTickFontSize, .anchor = "end", .colour = kDarkGrey});
-    }
-    y += map_height + 14;
+    draw_fig2b_condition_maps(svg, grid, layout, c, colours, y);
+    y += layout.map_height + 14;
   }
   for (int l = 0; l < kLimbCount; ++l) {
-    for (int column = 0; column < grid.columns; column += column_every) {
-      draw_text(svg, map_left(l) + (grid.columns - 0.5 - column) * cell_width, y + 2, std::to_string(column),
-                {.size = kPlotTickFontSize, .anchor = "middle", .colour = kDarkGrey});
+    for (int column = 0; column < grid.columns; column += layout.column_every) {
+      draw_text(svg, layout.map_left(l) + (grid.columns - 0.5 - column) * layout.cell_width, y + 2,
+                std::to_string(column), {.size = kPlotTickFontSize, .anchor = "middle", .colour = kDarkGrey});
     }
   }
-  const double maps_right = maps_left + slot * kLimbCount - 32;
+  const double maps_left = layout.maps_left, maps_right = layout.maps_right();
   draw_text(svg, (maps_left + maps_right) / 2, y + 22, "grid column (0 = the climber's right)", {.anchor = "middle"});
   draw_text(svg, kFigureMargin + 12, (rows_top + y - 14) / 2, "grid row (0 = bottom)",
             {.anchor = "middle", .rotation = -90});
@@ -325,6 +357,83 @@ std::string fig3_svg(const PaperFigureData& data) {
   return svg_document(width, top + kPanelHeight + kXAxisRoom + kFigureMargin, header.title, svg);
 }
 
+namespace {
+
+// Fig. 4's dashed lines: conditions whose walls give the same mean shortest climb share one
+// (transfer and control run on the same walls).
+struct Fig4ShortestClimbs {
+  std::map<std::string, std::vector<Condition>> conditions;  // the mean, formatted -> its conditions
+  std::map<std::string, double> values;                      // the mean, formatted -> the mean
+  // Over every condition's mean, so that the axis holds them all.
+  double lowest = std::numeric_limits<double>::infinity(), highest = -std::numeric_limits<double>::infinity();
+};
+
+Fig4ShortestClimbs fig4_shortest_climbs(const PaperFigureData& data) {
+  Fig4ShortestClimbs climbs;
+  for (const PaperConditionData& c : data.conditions) {
+    std::map<int, int> plan_of_wall;
+    for (const PaperRunData& run : c.runs) {
+      if (run.plan_length >= 0) plan_of_wall[run.wall_pair] = run.plan_length;
+    }
+    if (plan_of_wall.empty()) continue;
+    double sum = 0;
+    for (const auto& [wall, length] : plan_of_wall) sum += length;
+    const double mean = sum / static_cast<double>(plan_of_wall.size());
+    climbs.conditions[format_length(mean)].push_back(c.condition);
+    climbs.values[format_length(mean)] = mean;
+    climbs.lowest = std::min(climbs.lowest, mean);
+    climbs.highest = std::max(climbs.highest, mean);
+  }
+  return climbs;
+}
+
+// Each condition's band, then each one's mean line over all the bands.
+void draw_fig4_conditions(std::string& svg, const Panel& panel, const PaperFigureData& data,
+                          const std::vector<WallBandSeries>& series, std::vector<LegendEntry>& legend) {
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const PaperConditionData& c = data.conditions[k];
+    const bool band =
+        std::any_of(series[k].low.begin(), series[k].low.end(), [](double v) { return std::isfinite(v); });
+    // Fainter than Fig. 3's: three conditions' bands overlap here.
+    draw_band(svg, panel, series[k].x, series[k].low, series[k].high, condition_colour(c.condition), 0.15);
+    legend.push_back({band ? LegendMark::LineWithBand : LegendMark::Line, condition_colour(c.condition), "",
+                      fmt::format("{} ({})", condition_name(c.condition),
+                                  runs_phrase(static_cast<int>(c.runs.size()), wall_count(c)))});
+  }
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    draw_polyline(svg, panel, series[k].x, series[k].mean, {condition_colour(data.conditions[k].condition), 1.6, ""});
+  }
+}
+
+// Labels under the right end of their line, where no mean can be (no episode is shorter
+// than the shortest climb), on a white ground over the bands, pushed down so that close
+// lines' labels do not overlap; the highest line first.
+void draw_fig4_shortest_climbs(std::string& svg, const Panel& panel, const Fig4ShortestClimbs& climbs,
+                               std::vector<LegendEntry>& legend) {
+  double label_floor = -std::numeric_limits<double>::infinity();
+  for (auto it = climbs.conditions.rbegin(); it != climbs.conditions.rend(); ++it) {
+    const auto& [text, conditions] = *it;
+    const char* colour = conditions.size() == 1 ? condition_colour(conditions.front()) : kDarkGrey;
+    std::string names;
+    for (const Condition c : conditions) names += fmt::format("{}{}", names.empty() ? "" : ", ", condition_name(c));
+    const double value = climbs.values.at(text);
+    draw_reference_line(svg, panel, Direction::Horizontal, value, {colour, 1.6, "7 4"});
+    double label_y = std::max(panel.y_pixel(value) + 15, label_floor + 15);
+    if (label_y > panel.top + panel.height - 4) label_y = panel.y_pixel(value) - 5;  // a line on the axis
+    label_floor = label_y;
+    const std::string label = fmt::format("shortest climb {} ({})", text, names);
+    const double label_width = estimated_text_width(label, kPlotTickFontSize);
+    svg += fmt::format(
+        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"15\" fill=\"white\" fill-opacity=\"0.85\"/>\n",
+        panel.left + panel.width - 8 - label_width, label_y - 11.5, label_width + 4);
+    draw_text(svg, panel.left + panel.width - 6, label_y, label,
+              {.size = kPlotTickFontSize, .anchor = "end", .colour = colour});
+    legend.push_back({LegendMark::Line, colour, "7 4", fmt::format("shortest climb {} (walls of {})", text, names)});
+  }
+}
+
+}  // namespace
+
 // Paper, Fig. 4: episode length against episode, on a log scale, with the walls' shortest
 // climb for reference (the paper quotes about 10 actions for the optimal policy).
 std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
@@ -339,30 +448,15 @@ std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
     }
     episodes = std::max(episodes, static_cast<double>(series.back().x.size()));
   }
-  // The dashed lines: conditions whose walls give the same mean share one (transfer and
-  // control run on the same walls).
-  std::map<std::string, std::vector<Condition>> plans;  // the mean, formatted -> its conditions
-  std::map<std::string, double> plan_values;
-  for (const PaperConditionData& c : data.conditions) {
-    std::map<int, int> plan_of_wall;
-    for (const PaperRunData& run : c.runs) {
-      if (run.plan_length >= 0) plan_of_wall[run.wall_pair] = run.plan_length;
-    }
-    if (plan_of_wall.empty()) continue;
-    double sum = 0;
-    for (const auto& [wall, length] : plan_of_wall) sum += length;
-    const double mean = sum / static_cast<double>(plan_of_wall.size());
-    plans[format_length(mean)].push_back(c.condition);
-    plan_values[format_length(mean)] = mean;
-    low = std::min(low, mean);
-    high = std::max(high, mean);
-  }
+  const Fig4ShortestClimbs climbs = fig4_shortest_climbs(data);
+  low = std::min(low, climbs.lowest);
+  high = std::max(high, climbs.highest);
   if (!std::isfinite(low)) low = high = 1;  // no episode at all
   low = std::max(low, 1.0);
   Header header{std::string(title),
                 {band_phrase(data) + " (cut at the axis)",
                  "episode n counts only the runs that completed it, so later episodes rest on fewer runs"}};
-  if (!plans.empty()) {
+  if (!climbs.conditions.empty()) {
     header.subtitles.push_back(
         "dashed: the shortest climb of the condition's walls (exact plan), mean over the walls where it is known");
   }
@@ -374,47 +468,99 @@ std::string fig4_svg(const PaperFigureData& data, std::string_view title) {
   header.draw(svg);
   draw_axes(svg, panel);
   std::vector<LegendEntry> legend;
-  for (std::size_t k = 0; k < series.size(); ++k) {
-    const PaperConditionData& c = data.conditions[k];
-    const bool band =
-        std::any_of(series[k].low.begin(), series[k].low.end(), [](double v) { return std::isfinite(v); });
-    // Fainter than Fig. 3's: three conditions' bands overlap here.
-    draw_band(svg, panel, series[k].x, series[k].low, series[k].high, condition_colour(c.condition), 0.15);
-    legend.push_back({band ? LegendMark::LineWithBand : LegendMark::Line, condition_colour(c.condition), "",
-                      fmt::format("{} ({})", condition_name(c.condition),
-                                  runs_phrase(static_cast<int>(c.runs.size()), wall_count(c)))});
-  }
-  for (std::size_t k = 0; k < series.size(); ++k) {
-    draw_polyline(svg, panel, series[k].x, series[k].mean, {condition_colour(data.conditions[k].condition), 1.6, ""});
-  }
-  // Labels under the right end of their line, where no mean can be (no episode is shorter
-  // than the shortest climb), on a white ground over the bands, pushed down so that close
-  // lines' labels do not overlap; the highest line first.
-  double label_floor = -std::numeric_limits<double>::infinity();
-  for (auto it = plans.rbegin(); it != plans.rend(); ++it) {
-    const auto& [text, conditions] = *it;
-    const char* colour = conditions.size() == 1 ? condition_colour(conditions.front()) : kDarkGrey;
-    std::string names;
-    for (const Condition c : conditions) names += fmt::format("{}{}", names.empty() ? "" : ", ", condition_name(c));
-    const double value = plan_values[text];
-    draw_reference_line(svg, panel, Direction::Horizontal, value, {colour, 1.6, "7 4"});
-    double label_y = std::max(panel.y_pixel(value) + 15, label_floor + 15);
-    if (label_y > panel.top + panel.height - 4) label_y = panel.y_pixel(value) - 5;  // a line on the axis
-    label_floor = label_y;
-    const std::string label = fmt::format("shortest climb {} ({})", text, names);
-    const double label_width = estimated_text_width(label, kPlotTickFontSize);
-    svg += fmt::format(
-        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"15\" fill=\"white\" fill-opacity=\"0.85\"/>\n",
-        panel.left + panel.width - 8 - label_width, label_y - 11.5, label_width + 4);
-    draw_text(svg, panel.left + panel.width - 6, label_y, label,
-              {.size = kPlotTickFontSize, .anchor = "end", .colour = colour});
-    legend.push_back({LegendMark::Line, colour, "7 4", fmt::format("shortest climb {} (walls of {})", text, names)});
-  }
+  draw_fig4_conditions(svg, panel, data, series, legend);
+  draw_fig4_shortest_climbs(svg, panel, climbs, legend);
   const double legend_left = panel.left + panel.width + 20;
   draw_legend(svg, legend_left, panel.top, legend);
   const double width = std::max(legend_left + legend_width(legend), kFigureMargin + header.width()) + kFigureMargin;
   return svg_document(width, panel.top + panel.height + kXAxisRoom + kFigureMargin, header.title, svg);
 }
+
+namespace {
+
+constexpr const char* kFavoursTransfer = kOkabeItoBlue;
+constexpr const char* kFavoursControl = kOkabeItoVermillion;
+constexpr const char* kNoDifference = "#777777";
+constexpr double kTransferRowHeight = 46;
+
+// One metric's row of the forest plot, in % of |control's mean|.
+struct TransferMetricRow {
+  const TransferMetricData* metric;
+  bool available;
+  double value = 0, low = 0, high = 0;
+};
+
+std::vector<TransferMetricRow> transfer_metric_rows(const PaperFigureData& data) {
+  std::vector<TransferMetricRow> rows;
+  for (const TransferMetricData& m : data.transfer_metrics) {
+    TransferMetricRow row{&m, m.control_mean != 0};
+    if (row.available) {
+      const double scale = 100 / std::abs(m.control_mean);
+      row.value = m.difference * scale;
+      row.low = m.difference_ci95 ? (*m.difference_ci95)[0] * scale : row.value;
+      row.high = m.difference_ci95 ? (*m.difference_ci95)[1] * scale : row.value;
+      // A control mean so close to 0 that the ratio overflows is no comparison either.
+      row.available = std::isfinite(row.value) && std::isfinite(row.low) && std::isfinite(row.high);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string transfer_metric_title(const TransferMetricData& m) {
+  return m.name + (m.higher_is_better ? " (higher is better)" : " (lower is better)");
+}
+
+// The text right of each row's interval, and the widths the labels and these notes take.
+struct TransferMetricNotes {
+  std::vector<std::string> notes;
+  double label_width = 0, note_width = 0;
+};
+
+TransferMetricNotes transfer_metric_notes(const std::vector<TransferMetricRow>& rows) {
+  TransferMetricNotes out;
+  for (const TransferMetricRow& row : rows) {
+    const TransferMetricData& m = *row.metric;
+    out.label_width = std::max({out.label_width, estimated_text_width(transfer_metric_title(m), kPlotLabelFontSize),
+                                estimated_text_width(m.description, kPlotTickFontSize)});
+    std::string note = "n/a";
+    if (row.available) {
+      note = m.difference_ci95 ? fmt::format("{:+.1f} % [{:+.1f}, {:+.1f}]", row.value, row.low, row.high)
+                               : fmt::format("{:+.1f} % (no interval)", row.value);
+    }
+    out.notes.push_back(note);
+    out.note_width = std::max(out.note_width, estimated_text_width(note, kPlotTickFontSize));
+  }
+  return out;
+}
+
+// Row i of `count`: its labels on the left, its note and p-value on the right, and its
+// point and interval, coloured by which condition it favours.
+void draw_transfer_metric_row(std::string& svg, const Panel& panel, const TransferMetricRow& row,
+                              const std::string& note, std::size_t i, std::size_t count) {
+  const TransferMetricData& m = *row.metric;
+  const double centre = static_cast<double>(count) - 0.5 - static_cast<double>(i);
+  const double row_top = panel.top + kTransferRowHeight * static_cast<double>(i);
+  draw_text(svg, kFigureMargin + 4, row_top + 19, transfer_metric_title(m), {.bold = true});
+  draw_text(svg, kFigureMargin + 4, row_top + 36, m.description,
+            {.size = kPlotTickFontSize, .colour = kSubtitleColour});
+  const double text_left = panel.left + panel.width + 16;
+  draw_text(svg, text_left, row_top + 19, note, {.size = kPlotTickFontSize});
+  const std::string p = m.p_value < 0.001 ? "p < 0.001" : fmt::format("p = {:.3f}", m.p_value);
+  draw_text(svg, text_left, row_top + 36, fmt::format("{}, {}", p, counted(m.walls, "wall")),
+            {.size = kPlotTickFontSize, .colour = kSubtitleColour});
+  if (!row.available) {
+    draw_text(svg, panel.left + panel.width / 2, panel.y_pixel(centre) + 4, "not available: control's mean is 0",
+              {.size = kPlotTickFontSize, .anchor = "middle", .colour = kNoDifference, .italic = true});
+    return;
+  }
+  const char* colour = row.value == 0                          ? kNoDifference
+                       : (row.value > 0) == m.higher_is_better ? kFavoursTransfer
+                                                               : kFavoursControl;
+  draw_point_with_error_bar(svg, panel, row.value, row.low, row.high, centre, colour);
+}
+
+}  // namespace
 
 // Not in the paper: the transfer metrics as a forest plot, each difference divided by
 // |control's mean| so that metrics of different units share one axis.
@@ -427,54 +573,17 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
        fmt::format("bar: Student-t 95 % interval over {}; both in % of |control's mean|, so that metrics of "
                    "different units share one axis",
                    counted(walls, "wall"))}};
-  constexpr const char* kFavoursTransfer = kOkabeItoBlue;
-  constexpr const char* kFavoursControl = kOkabeItoVermillion;
-  constexpr const char* kNoDifference = "#777777";
-  constexpr double kRowHeight = 46;
-
-  struct Row {
-    const TransferMetricData* metric;
-    bool available;
-    double value = 0, low = 0, high = 0;
-  };
-  std::vector<Row> rows;
+  const std::vector<TransferMetricRow> rows = transfer_metric_rows(data);
   double low = 0, high = 0;
-  for (const TransferMetricData& m : data.transfer_metrics) {
-    Row row{&m, m.control_mean != 0};
-    if (row.available) {
-      const double scale = 100 / std::abs(m.control_mean);
-      row.value = m.difference * scale;
-      row.low = m.difference_ci95 ? (*m.difference_ci95)[0] * scale : row.value;
-      row.high = m.difference_ci95 ? (*m.difference_ci95)[1] * scale : row.value;
-      // A control mean so close to 0 that the ratio overflows is no comparison either.
-      row.available = std::isfinite(row.value) && std::isfinite(row.low) && std::isfinite(row.high);
-    }
-    if (row.available) {
-      low = std::min({low, row.value, row.low});
-      high = std::max({high, row.value, row.high});
-    }
-    rows.push_back(row);
+  for (const TransferMetricRow& row : rows) {
+    if (!row.available) continue;
+    low = std::min({low, row.value, row.low});
+    high = std::max({high, row.value, row.high});
   }
-  double label_width = 0, note_width = 0;
-  std::vector<std::string> notes;
-  for (const Row& row : rows) {
-    const TransferMetricData& m = *row.metric;
-    label_width =
-        std::max({label_width,
-                  estimated_text_width(m.name + (m.higher_is_better ? " (higher is better)" : " (lower is better)"),
-                                       kPlotLabelFontSize),
-                  estimated_text_width(m.description, kPlotTickFontSize)});
-    std::string note = "n/a";
-    if (row.available) {
-      note = m.difference_ci95 ? fmt::format("{:+.1f} % [{:+.1f}, {:+.1f}]", row.value, row.low, row.high)
-                               : fmt::format("{:+.1f} % (no interval)", row.value);
-    }
-    notes.push_back(note);
-    note_width = std::max(note_width, estimated_text_width(note, kPlotTickFontSize));
-  }
+  const TransferMetricNotes notes = transfer_metric_notes(rows);
   const Axis x = linear_axis(low, high, "transfer minus control (% of |control's mean|)", 6);
-  const double plot_left = kFigureMargin + label_width + 20;
-  const double plot_height = kRowHeight * static_cast<double>(std::max<std::size_t>(rows.size(), 1));
+  const double plot_left = kFigureMargin + notes.label_width + 20;
+  const double plot_height = kTransferRowHeight * static_cast<double>(std::max<std::size_t>(rows.size(), 1));
   const Panel panel{
       plot_left, kFigureMargin + header.height() + 6,
       380,       plot_height,
@@ -482,42 +591,20 @@ std::string transfer_metrics_svg(const PaperFigureData& data) {
 
   std::string svg;
   header.draw(svg);
-  const double right_edge = panel.left + panel.width + 16 + std::max(note_width, 120.0);
+  const double right_edge = panel.left + panel.width + 16 + std::max(notes.note_width, 120.0);
   for (std::size_t i = 0; i < rows.size(); i += 2) {  // every other row shaded, to guide the eye
     svg += fmt::format("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"#f4f4f4\"/>\n",
-                       kFigureMargin, panel.top + kRowHeight * static_cast<double>(i), right_edge - kFigureMargin,
-                       kRowHeight);
+                       kFigureMargin, panel.top + kTransferRowHeight * static_cast<double>(i),
+                       right_edge - kFigureMargin, kTransferRowHeight);
   }
   draw_axes(svg, panel);
   draw_reference_line(svg, panel, Direction::Vertical, 0, {kDarkGrey, 1.2, "5 4"});
   if (rows.empty()) {
-    draw_text(svg, panel.left + panel.width / 2, panel.top + kRowHeight / 2 + 4, "no metrics in this folder",
+    draw_text(svg, panel.left + panel.width / 2, panel.top + kTransferRowHeight / 2 + 4, "no metrics in this folder",
               {.anchor = "middle", .colour = kNoDifference, .italic = true});
   }
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Row& row = rows[i];
-    const TransferMetricData& m = *row.metric;
-    const double centre = static_cast<double>(rows.size()) - 0.5 - static_cast<double>(i);
-    const double row_top = panel.top + kRowHeight * static_cast<double>(i);
-    draw_text(svg, kFigureMargin + 4, row_top + 19,
-              m.name + (m.higher_is_better ? " (higher is better)" : " (lower is better)"), {.bold = true});
-    draw_text(svg, kFigureMargin + 4, row_top + 36, m.description,
-              {.size = kPlotTickFontSize, .colour = kSubtitleColour});
-    const double text_left = panel.left + panel.width + 16;
-    draw_text(svg, text_left, row_top + 19, notes[i], {.size = kPlotTickFontSize});
-    const std::string p = m.p_value < 0.001 ? "p < 0.001" : fmt::format("p = {:.3f}", m.p_value);
-    draw_text(svg, text_left, row_top + 36, fmt::format("{}, {}", p, counted(m.walls, "wall")),
-              {.size = kPlotTickFontSize, .colour = kSubtitleColour});
-    if (!row.available) {
-      draw_text(svg, panel.left + panel.width / 2, panel.y_pixel(centre) + 4, "not available: control's mean is 0",
-                {.size = kPlotTickFontSize, .anchor = "middle", .colour = kNoDifference, .italic = true});
-      continue;
-    }
-    const char* colour = row.value == 0                          ? kNoDifference
-                         : (row.value > 0) == m.higher_is_better ? kFavoursTransfer
-                                                                 : kFavoursControl;
-    draw_point_with_error_bar(svg, panel, row.value, row.low, row.high, centre, colour);
-  }
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    draw_transfer_metric_row(svg, panel, rows[i], notes.notes[i], i, rows.size());
   const std::vector<LegendEntry> legend{{LegendMark::PointWithBar, kFavoursTransfer, "", "favours transfer"},
                                         {LegendMark::PointWithBar, kFavoursControl, "", "favours control"},
                                         {LegendMark::Line, kDarkGrey, "5 4", "no difference"}};
