@@ -24,14 +24,17 @@ ExperimentConfig filter_stats_defaults() {
   return defaults;
 }
 
+std::vector<ConfigField> filter_stats_fields(int& walls) { return {wall_count_field(walls)}; }
+
 struct FilterStatsCommand {
+  int walls = 20;  // its own key, wall.count
   ParameterBinding binding{"filter-stats", kFilterStatsKeys, filter_stats_defaults()};
   bool json = false;
 
   void run() {
     const ExperimentConfig config = binding.resolve();
     FilterReport report;
-    report.wall_count = config.wall_count;
+    report.wall_count = walls;
     report.wall_seed = *config.wall_seed;
     report.parameters = config.settings.learning.climbing.filter;
     std::vector<Wall> walls;
@@ -51,6 +54,7 @@ void add_filter_stats_command(CLI::App& app) {
   auto cmd = std::make_shared<FilterStatsCommand>();
   auto* command = app.add_subcommand(
       "filter-stats", "Share of 3- and 4-configurations passing the geometric filter over random walls (paper III-C)");
+  cmd->binding.add_command_options(cmd->walls, filter_stats_fields);
   cmd->binding.bind(command);
   command->add_flag("--json", cmd->json, "Print JSON instead of text");
   command->callback([cmd] { cmd->run(); });

@@ -53,7 +53,22 @@ struct IkCommand {
   }
 };
 
+// ik-compare's own keys: its climbing-like queries, and the solver whose reached
+// postures start the walk's next queries.
+struct CompareOptions {
+  int queries = 2000;
+  IkSolverKind walk_solver = IkSolverKind::Paper;
+};
+
+std::vector<ConfigField> compare_fields(CompareOptions& options) {
+  return {
+      {"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &options.queries, "", kPositive},
+      {"compare.walk_solver", "Solver whose reached postures start the next queries of ik-compare's climbing walk",
+       choice_of(&options.walk_solver)}};
+}
+
 struct IkCompareCommand {
+  CompareOptions options;
   ParameterBinding binding{"ik-compare", kIkCompareKeys};
   bool json = false;
 
@@ -62,14 +77,13 @@ struct IkCompareCommand {
     const IkParameters& settings = config.settings.learning.climbing.reachability.ik;
     const BodyModel model = load_configured_body(config);
     IkParameters walk = settings;
-    walk.solver = config.compare_walk_solver;
+    walk.solver = options.walk_solver;
     // The queries are the same whatever the wall rule, so that rules compare on one set.
     walk.wall = WallRule::Ignore;
     ReachQueryParameters query_settings;
     query_settings.root = config.settings.learning.climbing.reachability.root;
-    const auto batch =
-        climbing_reach_queries(model, walk, config.compare_queries, config.settings.seed, query_settings);
-    ProgressBar progress("ik-compare", config.compare_queries, config.progress);
+    const auto batch = climbing_reach_queries(model, walk, options.queries, config.settings.seed, query_settings);
+    ProgressBar progress("ik-compare", options.queries, config.progress);
     const SolverAgreement a = compare_solvers(model, batch, settings, [&](int done) { progress.update(done); });
     progress.finish();
     std::cout << (json ? solver_agreement_json(a, config.settings.seed).dump(2) + "\n"
@@ -97,6 +111,7 @@ void add_ik_commands(CLI::App& app) {
   auto compare = std::make_shared<IkCompareCommand>();
   auto* compare_command = app.add_subcommand(
       "ik-compare", "Run both solvers on climbing-like queries and measure how often their verdicts agree");
+  compare->binding.add_command_options(compare->options, compare_fields);
   compare->binding.bind(compare_command);
   compare_command->add_flag("--json", compare->json, "Print JSON instead of text");
   compare_command->callback([compare] { compare->run(); });

@@ -8,6 +8,7 @@
 #include "cli/parameter_binding.hpp"
 #include "cli/progress_bar.hpp"
 #include "experiments/run_inputs.hpp"
+#include "experiments/stance_survey.hpp"
 #include "reports/stance_survey_description.hpp"
 
 namespace crux::cli {
@@ -22,11 +23,24 @@ const ParameterSet kStancesKeys{{"experiment.urdf", "wall", "ik", "physics", "fi
 ExperimentConfig stances_defaults() {
   ExperimentConfig defaults;
   defaults.wall_seed = 1;
-  defaults.wall_count = 30;
   return defaults;
 }
 
+// crux stances' own keys: the walls it surveys and the random kinematic moves per wall
+// whose stances it checks.
+struct StancesOptions {
+  int walls = 30;
+  int moves = 300;
+};
+
+std::vector<ConfigField> stances_fields(StancesOptions& options) {
+  return {wall_count_field(options.walls),
+          {"stances.moves", "Random kinematic moves per wall whose stances crux stances checks", &options.moves, "",
+           closed_range(1, kMaxStanceMoves)}};
+}
+
 struct StancesCommand {
+  StancesOptions options;
   ParameterBinding binding{"stances", kStancesKeys, stances_defaults()};
   bool json = false;
 
@@ -35,8 +49,8 @@ struct StancesCommand {
     const BodyModel model = load_configured_body(config);
     StanceSurveyParameters parameters;
     parameters.wall_seed = *config.wall_seed;
-    parameters.wall_count = config.wall_count;
-    parameters.moves = config.stance_moves;
+    parameters.wall_count = options.walls;
+    parameters.moves = options.moves;
     parameters.walls = config.settings.walls;
     parameters.climbing = config.settings.learning.climbing;
     ProgressBar progress("stances", parameters.wall_count, config.progress);
@@ -55,6 +69,7 @@ void add_stances_command(CLI::App& app) {
       "stances",
       "Share of the stances random kinematic climbs reach that hold still under the static model, and why the others "
       "fail");
+  cmd->binding.add_command_options(cmd->options, stances_fields);
   cmd->binding.bind(command);
   command->add_flag("--json", cmd->json, "Print JSON instead of text");
   command->callback([cmd] { cmd->run(); });

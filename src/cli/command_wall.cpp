@@ -41,7 +41,13 @@ IkResult check_start(const ExperimentConfig& config, const Wall& wall) {
   return solve_start(model, data, wall, config.settings.learning.climbing.reachability);
 }
 
+// wall generate's own key, wall.name: the name stored in the file.
+std::vector<ConfigField> generate_fields(std::string& name) {
+  return {{"wall.name", "Name stored in a generated wall file", &name}};
+}
+
 struct GenerateCommand {
+  std::string name;
   ParameterBinding binding{"wall generate", kGenerateKeys, generate_defaults()};
   std::string output;
   bool json = false;
@@ -52,7 +58,7 @@ struct GenerateCommand {
     const ExperimentConfig config = binding.resolve();
     check_output_file(output, {configured_urdf_path(config), binding.config_path()});
     Wall wall = load_configured_wall(config);
-    if (!config.wall_name.empty()) wall.name = config.wall_name;
+    if (!name.empty()) wall.name = name;
     const IkResult reach = check_start(config, wall);
     save_wall(output, wall);
     const std::string solver = enum_name(config.settings.learning.climbing.reachability.ik.solver);
@@ -116,6 +122,7 @@ void add_wall_command(CLI::App& app) {
   auto* g = wall->add_subcommand("generate", "Generate a random wall (paper III-A) and check its start with IK");
   g->add_option("-o,--output", generate->output, "Wall file to write (JSON)")->required();
   g->add_flag("--json", generate->json, "Print JSON instead of text");
+  generate->binding.add_command_options(generate->name, generate_fields);
   generate->binding.bind(g);
   g->callback([generate] { generate->run(); });
 

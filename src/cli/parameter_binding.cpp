@@ -26,38 +26,41 @@ ParameterBinding::ParameterBinding(std::string command, ParameterSet accepted, E
       defaults_(defaults),
       from_flags_(std::move(defaults)) {}
 
+void ParameterBinding::bind_field(CLI::App* command, const ConfigField& field) {
+  if (!accepted_.accepts(field.key)) return;
+  const std::string help = field.described_help();
+  std::visit(
+      [&](auto target) {
+        using T = std::remove_pointer_t<decltype(target)>;
+        CLI::Option* option = nullptr;
+        if constexpr (std::is_same_v<T, ChoiceTarget<false>>) {
+          std::string& text = choice_texts_[field.key];
+          option = command->add_option(flag_for_key(field.key), text, help);
+          option->default_str(target.type->text(target.target));
+        } else {
+          option = command->add_option(flag_for_key(field.key), *target, help);
+          if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, std::optional<std::uint64_t>>) {
+            option->check(kSeedDigits);
+          }
+          if constexpr (std::is_same_v<T, std::optional<std::uint64_t>> || std::is_same_v<T, std::optional<int>> ||
+                        std::is_same_v<T, std::optional<double>>) {
+            if (target->has_value()) option->default_str(fmt::format("{}", **target));
+          } else if constexpr (std::is_same_v<T, std::string>) {
+            if (!target->empty()) option->capture_default_str();
+          } else {
+            option->capture_default_str();
+          }
+        }
+        options_.emplace_back(field.key, option);
+      },
+      field.target);
+}
+
 void ParameterBinding::bind(CLI::App* command) {
   command->add_option("--config", config_path_,
                       "TOML config file, keys as in the config.toml crux writes (flags override it)");
-  for (const ConfigField& field : config_fields(from_flags_)) {
-    if (!accepted_.accepts(field.key)) continue;
-    const std::string help = field.described_help();
-    std::visit(
-        [&](auto target) {
-          using T = std::remove_pointer_t<decltype(target)>;
-          CLI::Option* option = nullptr;
-          if constexpr (std::is_same_v<T, ChoiceTarget<false>>) {
-            std::string& text = choice_texts_[field.key];
-            option = command->add_option(flag_for_key(field.key), text, help);
-            option->default_str(target.type->text(target.target));
-          } else {
-            option = command->add_option(flag_for_key(field.key), *target, help);
-            if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, std::optional<std::uint64_t>>) {
-              option->check(kSeedDigits);
-            }
-            if constexpr (std::is_same_v<T, std::optional<std::uint64_t>> || std::is_same_v<T, std::optional<int>> ||
-                          std::is_same_v<T, std::optional<double>>) {
-              if (target->has_value()) option->default_str(fmt::format("{}", **target));
-            } else if constexpr (std::is_same_v<T, std::string>) {
-              if (!target->empty()) option->capture_default_str();
-            } else {
-              option->capture_default_str();
-            }
-          }
-          options_.emplace_back(field.key, option);
-        },
-        field.target);
-  }
+  for (const ConfigField& field : config_fields(from_flags_)) bind_field(command, field);
+  for (const ConfigField& field : command_flag_fields_) bind_field(command, field);
   // A wall is a file or a seed.
   if (CLI::Option* file = option("wall.file"); file != nullptr) {
     if (CLI::Option* seed = option("wall.seed"); seed != nullptr) file->excludes(seed);
@@ -100,6 +103,25 @@ std::vector<ListedKey> ParameterBinding::listed_keys() {
   return listed;
 }
 
+void ParameterBinding::take_flag(const ConfigField& flag, const ConfigField& field, ExperimentConfig& config) {
+  const CLI::Option* given = option(field.key);
+  if (given == nullptr || given->count() == 0) return;
+  config.given.insert(field.key);
+  std::visit(
+      [&](auto destination) {
+        if constexpr (std::is_pointer_v<decltype(destination)>) {
+          *destination = *std::get<decltype(destination)>(flag.target);
+        } else {
+          try {
+            assign_text(field, choice_texts_.at(field.key));
+          } catch (const InputError& e) {
+            throw InputError(where(e.source()), e.problem());
+          }
+        }
+      },
+      field.target);
+}
+
 ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
   ExperimentConfig config = defaults_;
   // A flag replaces a key's list as it replaces a value.
@@ -107,27 +129,15 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
   for (const auto& [key, given] : options_) {
     if (given->count() > 0) effective.emplace(key, 0);
   }
-  if (!config_path_.empty()) lines_ = apply_config_document(document(), config, accepted_, command_, effective);
+  if (reset_command_options_) reset_command_options_();
+  if (!config_path_.empty()) {
+    lines_ = apply_config_document(document(), config, command_fields_, accepted_, command_, effective);
+  }
   const auto flags = config_fields(from_flags_);
   const auto fields = config_fields(config);
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    const CLI::Option* given = option(fields[i].key);
-    if (given == nullptr || given->count() == 0) continue;
-    config.given.insert(fields[i].key);
-    std::visit(
-        [&](auto destination) {
-          if constexpr (std::is_pointer_v<decltype(destination)>) {
-            *destination = *std::get<decltype(destination)>(flags[i].target);
-          } else {
-            try {
-              assign_text(fields[i], choice_texts_.at(fields[i].key));
-            } catch (const InputError& e) {
-              throw InputError(where(e.source()), e.problem());
-            }
-          }
-        },
-        fields[i].target);
-  }
+  for (std::size_t i = 0; i < fields.size(); ++i) take_flag(flags[i], fields[i], config);
+  for (std::size_t i = 0; i < command_fields_.size(); ++i)
+    take_flag(command_flag_fields_[i], command_fields_[i], config);
   // A wall flag replaces the config file's wall of the other kind.
   if (const CLI::Option* seed = option("wall.seed"); seed != nullptr && seed->count() > 0) config.wall_file.clear();
   if (const CLI::Option* file = option("wall.file"); file != nullptr && file->count() > 0) config.wall_seed.reset();
@@ -150,6 +160,7 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
     throw InputError(where("wall.seed"), "give a wall file or a wall seed, not both");
   }
   try {
+    require_within_bounds(command_fields_);
     finalize_config(config);
   } catch (const InputError& e) {
     throw InputError(where(e.source()), e.problem());

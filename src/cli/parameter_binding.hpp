@@ -4,7 +4,9 @@
 // command's defaults. Every error names what the user typed: the flag, or the file, its
 // line and the key.
 
+#include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -22,9 +24,27 @@ inline ParameterSet with_progress(ParameterSet keys) {
   return keys;
 }
 
+// wall.count, the random walls filter-stats and stances count over: a key of those two
+// commands, declared once for both.
+inline ConfigField wall_count_field(int& count) {
+  return {"wall.count", "Random walls to count over", &count, "", kPositive};
+}
+
 class ParameterBinding {
  public:
   ParameterBinding(std::string command, ParameterSet accepted, ExperimentConfig defaults = {});
+
+  // A command's own keys, declared beside the command by `fields` over its own `options`,
+  // which resolve() fills as it fills the config: the defaults `options` holds now, then
+  // --config, then the flags. Call before bind().
+  template <typename Options>
+  void add_command_options(Options& options, std::vector<ConfigField> (*fields)(Options&)) {
+    auto from_flags = std::make_shared<Options>(options);
+    command_flag_fields_ = fields(*from_flags);
+    command_fields_ = fields(options);
+    command_from_flags_ = std::move(from_flags);
+    reset_command_options_ = [&options, defaults = options] { options = defaults; };
+  }
 
   void bind(CLI::App* command);
   CLI::Option* option(const std::string& key) const;
@@ -54,6 +74,14 @@ class ParameterBinding {
   ConfigLines lines_;
   // The config file, read and parsed at its first use: a sweep resolves every cell from it.
   std::optional<ConfigDocument> document_;
+  // add_command_options': the flags' copy of the options, its fields, the options' own.
+  std::shared_ptr<void> command_from_flags_;
+  std::vector<ConfigField> command_flag_fields_, command_fields_;
+  std::function<void()> reset_command_options_;
+
+  void bind_field(CLI::App* command, const ConfigField& field);
+  // `field` takes the value its flag gave `flag`'s target, if the flag was given.
+  void take_flag(const ConfigField& flag, const ConfigField& field, ExperimentConfig& config);
 
   const ConfigDocument& document();
 };

@@ -12,12 +12,12 @@
 namespace crux {
 
 // The seed of the cluster bootstrap: its own named stream of the experiment seed.
-std::uint64_t bootstrap_seed(const ExperimentParameters& settings);
+std::uint64_t bootstrap_seed(const ExperimentParameters& parameters);
 // The stratified bootstrap's stream (rliable's intervals): another named stream of it.
-RandomStream stratified_bootstrap_stream(const ExperimentParameters& settings);
+RandomStream stratified_bootstrap_stream(const ExperimentParameters& parameters);
 
-// The windows of the transfer metrics under `settings`.
-MetricWindows metric_windows(const ExperimentParameters& settings);
+// The windows of the transfer metrics under `parameters`.
+MetricWindows metric_windows(const ExperimentParameters& parameters);
 
 // What summary.json reports of the transfer metrics, take-off and paired divergence,
 // computed once for the file and the printed report.
@@ -33,6 +33,6 @@ struct ExperimentAnalysis {
   double median_first_divergence = 0.0;                      // "never" counted as the run's length + 1
   std::array<ChoiceProfile, kRegimeCount> transfer_choices;  // transfer's beginning, per regime
 };
-ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const ExperimentParameters& settings);
+ExperimentAnalysis analyse_experiment(const ExperimentResult& result, const ExperimentParameters& parameters);
 
 }  // namespace crux

@@ -90,7 +90,7 @@ namespace {
 
 template <typename Enum>
 ChoiceTarget<false> choice(Enum* target) {
-  return {target, &enum_choice_type<Enum>()};
+  return choice_of(target);
 }
 template <typename Enum>
 ChoiceTarget<true> choice(const Enum* target) {
@@ -289,20 +289,6 @@ void physics_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
       });
 }
 
-// The keys of one command each: ik-compare's [compare] and crux stances' [stances].
-template <typename Config>
-void single_command_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
-  keys.insert(keys.end(), {
-                              {"compare.queries", "Climbing-like queries that ik-compare gives both solvers",
-                               &c.compare_queries, "", kPositive},
-                              {"stances.moves", "Random kinematic moves per wall whose stances crux stances checks",
-                               &c.stance_moves, "", closed_range(1, kMaxStanceMoves)},
-                              {"compare.walk_solver",
-                               "Solver whose reached postures start the next queries of ik-compare's climbing walk",
-                               choice(&c.compare_walk_solver)},
-                          });
-}
-
 // The [filter] and [grid] keys: the geometric filter and the agent space.
 template <typename Config>
 void configuration_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
@@ -344,8 +330,6 @@ void wall_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
       {
           {"wall.file", "Wall file (JSON)", &c.wall_file, "", {}, true},
           {"wall.seed", "Seed of a random wall", &c.wall_seed},
-          {"wall.name", "Name stored in a generated wall file", &c.wall_name},
-          {"wall.count", "Random walls to count over", &c.wall_count, "", kPositive},
           {"wall.columns", "Tiles across a random wall", &s.walls.columns},
           {"wall.rows", "Tiles up a random wall", &s.walls.rows},
           {"wall.tile_width", "Tile width of a random wall", &s.walls.tile_width, "m", kPositive},
@@ -398,7 +382,6 @@ std::vector<FieldOf<Config>> fields_of(Config& c) {
   learning_keys(keys, c);
   ik_keys(keys, c);
   physics_keys(keys, c);
-  single_command_keys(keys, c);
   configuration_keys(keys, c);
   wall_keys(keys, c);
   output_keys(keys, c);
@@ -579,9 +562,16 @@ ConfigLines apply_config_text(const std::string& text, const std::string& path, 
 
 ConfigLines apply_config_document(const ConfigDocument& document, ExperimentConfig& config,
                                   const ParameterSet& accepted, const std::string& command, const ListChoice& choice) {
+  return apply_config_document(document, config, {}, accepted, command, choice);
+}
+
+ConfigLines apply_config_document(const ConfigDocument& document, ExperimentConfig& config,
+                                  std::span<const ConfigField> command_fields, const ParameterSet& accepted,
+                                  const std::string& command, const ListChoice& choice) {
   const toml::table& table = document.table().value;
   const std::string& path = document.source();
-  const std::vector<ConfigField> fields = config_fields(config);
+  std::vector<ConfigField> fields = config_fields(config);
+  fields.insert(fields.end(), command_fields.begin(), command_fields.end());
   ConfigLines lines;
   for (const auto& [section, section_node] : table) {
     const toml::table* entries = section_node.as_table();
@@ -678,12 +668,9 @@ bool is_wall_generator_key(const std::string& key) {
          key != "wall.count";
 }
 
-namespace {
-
-// Every number within its declared bounds (flags may spell nan or inf: no parameter
-// means anything then); unset optional numbers are not checked.
-void require_declared_bounds(ExperimentConfig& config) {
-  for (const ConfigField& field : config_fields(config)) {
+// Flags may spell nan or inf: no parameter means anything then.
+void require_within_bounds(std::span<const ConfigField> fields) {
+  for (const ConfigField& field : fields) {
     std::optional<double> value;
     std::visit(
         [&](auto target) {
@@ -700,6 +687,8 @@ void require_declared_bounds(ExperimentConfig& config) {
     require(field.bounds.contains(*value), field.key, field.bounds.problem(field.is_integer()));
   }
 }
+
+namespace {
 
 // The keys that only mean something together with others.
 void require_consistent_keys(const ExperimentConfig& config) {
@@ -742,7 +731,7 @@ void finalize_config(ExperimentConfig& config) {
       }
     }
   }
-  require_declared_bounds(config);
+  require_within_bounds(config_fields(config));
   PhysicsParameters& physics = s.learning.climbing.physics;
   // Derived values, each recorded in config.toml as what ran.
   if (physics.model == PhysicsModel::Static && !config.given.contains("ik.wall")) {

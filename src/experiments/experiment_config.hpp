@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -34,8 +35,6 @@ struct ExperimentConfig {
   std::string wall_file;
   std::optional<std::uint64_t> wall_seed;
   int checkpoint_every = 0;  // train, transfer: iterations between checkpoints (run_checkpoint.hpp)
-  std::string wall_name;     // wall generate: the name stored in the file
-  int wall_count = 20;       // filter-stats: random walls counted
   // N walls with one seed each, the paper's design, when given: finalize_config turns it
   // into walls = N, seeds_per_wall = 1 and clears it.
   std::optional<int> runs;
@@ -51,12 +50,6 @@ struct ExperimentConfig {
   // physics.strength: a climbing level whose grip finalize_config sets, unless physics.grip
   // is given; empty (unset, and then not written to config.toml): physics.grip alone.
   std::string physics_strength;
-  // ik-compare: its climbing-like queries, and the solver whose reached postures start
-  // the walk's next queries.
-  int compare_queries = 2000;
-  IkSolverKind compare_walk_solver = IkSolverKind::Paper;
-  // crux stances: random kinematic moves per wall whose stances it checks.
-  int stance_moves = 300;
   // output.progress: how long commands show their progress on stderr (no result depends on it).
   ProgressDisplay progress = ProgressDisplay::Bar;
   // The [provenance] table of a config file read back (key -> value), to be checked
@@ -151,6 +144,16 @@ std::vector<ConstConfigField> config_fields(const ExperimentConfig& config);
 // `key`'s field, or null.
 const ConfigField* find_field(const std::vector<ConfigField>& fields, std::string_view key);
 
+// A choice field over `target`, an enum with EnumNames.
+template <typename Enum>
+ChoiceTarget<false> choice_of(Enum* target) {
+  return {target, &enum_choice_type<Enum>()};
+}
+
+// Every number of `fields` within its declared bounds (and finite); unset optional numbers
+// are not checked. InputError(key, problem) otherwise.
+void require_within_bounds(std::span<const ConfigField> fields);
+
 // Sets a choice or text field from text as a flag or a Python string gives it (numbers
 // reach their fields typed, through CLI11 or Python). Throws InputError(key, problem) for
 // a name that is not one of the choices, or for a field of another type.
@@ -209,6 +212,11 @@ ConfigLines apply_config_text(const std::string& text, const std::string& source
 ConfigLines apply_config_document(const ConfigDocument& document, ExperimentConfig& config,
                                   const ParameterSet& accepted, const std::string& command,
                                   const ListChoice& choice = {});
+// ... with a command's own keys besides (declared beside the command, over its own options:
+// `command_fields`), which the file may set as it sets the others.
+ConfigLines apply_config_document(const ConfigDocument& document, ExperimentConfig& config,
+                                  std::span<const ConfigField> command_fields, const ParameterSet& accepted,
+                                  const std::string& command, const ListChoice& choice = {});
 
 // The accepted keys given a list of values in TOML `text`, in the order of
 // config_fields: InputError(source, ...) for an empty list or a key that takes one value.

@@ -64,14 +64,14 @@ std::uint64_t preceding_learning_seed(std::uint64_t seed, int run, int j) {
 namespace {
 
 // The first wall of `stream`'s candidates whose start is reachable.
-ExperimentWall draw_wall_from(const BodyModel& model, const ExperimentParameters& settings, bool training,
+ExperimentWall draw_wall_from(const BodyModel& model, const ExperimentParameters& experiment, bool training,
                               std::uint64_t stream, const std::string& label) {
   ExperimentWall out;
   for (int attempt = 0; attempt < kWallAttempts; ++attempt) {
     const std::uint64_t seed = derive_seed(stream, static_cast<std::uint64_t>(attempt));
-    Wall wall = generate_random_wall(seed, training ? settings.training_wall_parameters() : settings.walls);
-    ConfigurationReacher reacher(model, wall, settings.learning.climbing.reachability,
-                                 settings.learning.climbing.physics);
+    Wall wall = generate_random_wall(seed, training ? experiment.training_wall_parameters() : experiment.walls);
+    ConfigurationReacher reacher(model, wall, experiment.learning.climbing.reachability,
+                                 experiment.learning.climbing.physics);
     if (reacher.reach_start() == nullptr) {
       out.rejected_seeds.push_back(seed);
       continue;
@@ -82,8 +82,8 @@ ExperimentWall draw_wall_from(const BodyModel& model, const ExperimentParameters
     return out;
   }
   // Only the parameters can make every random wall's start unreachable.
-  const std::string walls = training && settings.training_wall ? "--training-wall-*" : "--wall-*";
-  throw InputError(settings.learning.climbing.physics.model == PhysicsModel::Static
+  const std::string walls = training && experiment.training_wall ? "--training-wall-*" : "--wall-*";
+  throw InputError(experiment.learning.climbing.physics.model == PhysicsModel::Static
                        ? walls + ", --ik-* and --physics-* parameters"
                        : walls + " and --ik-* parameters",
                    fmt::format("no random wall drawn with them has a reachable start ({} tried)", kWallAttempts));
@@ -91,26 +91,26 @@ ExperimentWall draw_wall_from(const BodyModel& model, const ExperimentParameters
 
 }  // namespace
 
-ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& settings, int role, int run) {
-  const std::uint64_t stream = derive_seed(derive_seed(settings.seed, static_cast<std::uint64_t>(role)), run);
-  return draw_wall_from(model, settings, role != kTransferWalls, stream,
+ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& parameters, int role, int run) {
+  const std::uint64_t stream = derive_seed(derive_seed(parameters.seed, static_cast<std::uint64_t>(role)), run);
+  return draw_wall_from(model, parameters, role != kTransferWalls, stream,
                         fmt::format("{} wall {}", role == kTrainingWalls ? "training" : "transfer", run));
 }
 
-ExperimentWall draw_preceding_training_wall(const BodyModel& model, const ExperimentParameters& settings, int pair,
+ExperimentWall draw_preceding_training_wall(const BodyModel& model, const ExperimentParameters& parameters, int pair,
                                             int j) {
   const std::uint64_t stream = derive_seed(
-      derive_seed(derive_seed(settings.seed, static_cast<std::uint64_t>(kPrecedingTrainingWalls)), pair), j);
-  return draw_wall_from(model, settings, true, stream, fmt::format("training wall {}, preceding wall {}", pair, j));
+      derive_seed(derive_seed(parameters.seed, static_cast<std::uint64_t>(kPrecedingTrainingWalls)), pair), j);
+  return draw_wall_from(model, parameters, true, stream, fmt::format("training wall {}, preceding wall {}", pair, j));
 }
 
 QTable preceding_q_grid(const BodyModel& model, std::span<const ExperimentWall> walls,
-                        const ExperimentParameters& settings, int run,
+                        const ExperimentParameters& parameters, int run,
                         const std::function<void(int)>& interruption_point) {
   std::optional<QTable> q_grid;
   for (std::size_t j = 0; j < walls.size(); ++j) {
-    RunResult learnt = run_learning(model, walls[j].wall, settings.learning,
-                                    preceding_learning_seed(settings.seed, run, static_cast<int>(j)),
+    RunResult learnt = run_learning(model, walls[j].wall, parameters.learning,
+                                    preceding_learning_seed(parameters.seed, run, static_cast<int>(j)),
                                     q_grid ? &*q_grid : nullptr, interruption_point);
     q_grid = std::move(learnt.q_grid);
   }
@@ -122,20 +122,20 @@ namespace {
 // Every wall of the experiment, in parallel (each is drawn from its own stream, so the
 // order changes none): the training walls' preceding walls, then the training and
 // transfer walls with their filtered pairs.
-void draw_experiment_walls(const BodyModel& model, const ExperimentParameters& settings,
+void draw_experiment_walls(const BodyModel& model, const ExperimentParameters& parameters,
                            const std::function<void(int)>& interruptible, ExperimentResult& result) {
-  const int walls = settings.wall_pairs, preceding = settings.training_walls - 1;
+  const int walls = parameters.wall_pairs, preceding = parameters.training_walls - 1;
   result.walls.resize(2 * walls);
   result.preceding_training_walls.resize(static_cast<std::size_t>(walls) * preceding);
   tbb::parallel_for(0, walls * preceding, [&](int w) {
     interruptible(w);
-    result.preceding_training_walls[w] = draw_preceding_training_wall(model, settings, w / preceding, w % preceding);
+    result.preceding_training_walls[w] = draw_preceding_training_wall(model, parameters, w / preceding, w % preceding);
   });
   tbb::parallel_for(0, 2 * walls, [&](int w) {
     interruptible(w);
     ExperimentWall& wall = result.walls[w];
-    wall = draw_wall(model, settings, w < walls ? kTrainingWalls : kTransferWalls, w % walls);
-    wall.filtered_pairs = filtered_pairs(wall.wall, settings.learning.climbing.filter);
+    wall = draw_wall(model, parameters, w < walls ? kTrainingWalls : kTransferWalls, w % walls);
+    wall.filtered_pairs = filtered_pairs(wall.wall, parameters.learning.climbing.filter);
   });
 }
 
@@ -151,20 +151,20 @@ void size_condition_results(int runs, ExperimentResult& result) {
 
 }  // namespace
 
-ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& settings,
+ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& parameters,
                                       const std::function<void(int)>& progress,
                                       const std::function<void()>& interruption_point) {
   const auto started = std::chrono::steady_clock::now();
-  const int walls = settings.wall_pairs, runs = settings.runs();
+  const int walls = parameters.wall_pairs, runs = parameters.runs();
   std::optional<tbb::global_control> limit;
-  if (settings.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
+  if (parameters.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, parameters.threads);
 
   ExperimentResult result;
-  const int preceding = settings.training_walls - 1;
+  const int preceding = parameters.training_walls - 1;
   const auto interruptible = [&](int) {
     if (interruption_point) interruption_point();
   };
-  draw_experiment_walls(model, settings, interruptible, result);
+  draw_experiment_walls(model, parameters, interruptible, result);
   size_condition_results(runs, result);
   std::mutex progress_mutex;
   int done = 0;
@@ -175,11 +175,11 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentPa
   };
   const auto run_one = [&](Condition condition, int i, const QTable* initial) {
     ConditionResult& c = result.conditions[static_cast<int>(condition)];
-    const int pair = i / settings.seeds_per_wall;
+    const int pair = i / parameters.seeds_per_wall;
     c.cluster_of_run[i] = pair;
     c.wall_of_run[i] = condition == Condition::Training ? pair : walls + pair;
-    c.learning_seeds[i] = learning_seed(settings.seed, condition, i);
-    c.runs[i] = run_learning(model, result.walls[c.wall_of_run[i]].wall, settings.learning, c.learning_seeds[i],
+    c.learning_seeds[i] = learning_seed(parameters.seed, condition, i);
+    c.runs[i] = run_learning(model, result.walls[c.wall_of_run[i]].wall, parameters.learning, c.learning_seeds[i],
                              initial, interruptible);
     count_done();
   };
@@ -188,12 +188,12 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentPa
   // the control runs, and each training run followed by its transfer run. Every task
   // writes its own slots and draws from its own streams, so the order changes no result.
   tbb::task_group tasks;
-  if (settings.plan) {
+  if (parameters.plan) {
     for (int w = 0; w < 2 * walls; ++w) {
       tasks.run([&, w] {
         interruptible(w);
         result.walls[w].plan =
-            shortest_plan(model, result.walls[w].wall, settings.learning.climbing, settings.plan_search);
+            shortest_plan(model, result.walls[w].wall, parameters.learning.climbing, parameters.plan_search);
       });
     }
   }
@@ -203,9 +203,10 @@ ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentPa
         run_one(Condition::Training, i, nullptr);
       } else {
         const std::span<const ExperimentWall> pair_walls(
-            result.preceding_training_walls.data() + static_cast<std::size_t>(i / settings.seeds_per_wall) * preceding,
+            result.preceding_training_walls.data() +
+                static_cast<std::size_t>(i / parameters.seeds_per_wall) * preceding,
             preceding);
-        const QTable q_grid = preceding_q_grid(model, pair_walls, settings, i, interruptible);
+        const QTable q_grid = preceding_q_grid(model, pair_walls, parameters, i, interruptible);
         for (int j = 0; j < preceding; ++j) count_done();
         run_one(Condition::Training, i, &q_grid);
       }

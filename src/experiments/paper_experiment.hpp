@@ -87,7 +87,7 @@ struct ExperimentResult {
 // Progress: the number of runs finished out of learning_runs() (called under a lock).
 // `interruption_point` is called often from the worker threads (before each wall and at
 // every learning iteration); an exception it throws stops the experiment and leaves it.
-ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& settings,
+ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& parameters,
                                       const std::function<void(int runs_done)>& progress = {},
                                       const std::function<void()>& interruption_point = {});
 
@@ -97,10 +97,10 @@ inline constexpr int kTrainingWalls = 0, kTransferWalls = 1, kPrecedingTrainingW
 
 // Draws the wall of (role, wall pair) from the experiment seed, skipping candidates
 // whose start configuration is unreachable (they are recorded, never used).
-ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& settings, int role, int pair);
+ExperimentWall draw_wall(const BodyModel& model, const ExperimentParameters& parameters, int role, int pair);
 // Preceding training wall j (0..K-2) of a pair: the stream of kPrecedingTrainingWalls and
 // the pair, then j.
-ExperimentWall draw_preceding_training_wall(const BodyModel& model, const ExperimentParameters& settings, int pair,
+ExperimentWall draw_preceding_training_wall(const BodyModel& model, const ExperimentParameters& parameters, int pair,
                                             int j);
 
 // The learning seed of run `run` of `condition`: its own stream of the experiment seed.
@@ -114,7 +114,7 @@ std::uint64_t preceding_learning_seed(std::uint64_t seed, int run, int j);
 // starting from the Q_grid the previous one ended with (the first from an empty one): the
 // Q_grid that the run on the pair's training wall starts from. `walls` is not empty.
 QTable preceding_q_grid(const BodyModel& model, std::span<const ExperimentWall> walls,
-                        const ExperimentParameters& settings, int run,
+                        const ExperimentParameters& parameters, int run,
                         const std::function<void(int)>& interruption_point = {});
 
 // The (3-configuration, possible action) pairs of `wall` that pass the filter.

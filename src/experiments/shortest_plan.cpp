@@ -22,7 +22,7 @@ struct Node {
 }  // namespace
 
 Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
-                   const PlanParameters& settings) {
+                   const PlanParameters& search) {
   // The planner needs verdicts only: under the static model, the cheaper program.
   ConfigurationReacher reacher(model, wall, parameters.reachability, parameters.physics, StanceQuestion::HoldsStill);
   const Posture* start = &reacher.require_start(wall.name);
@@ -34,13 +34,13 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
   // The path's postures are checked on the three holds kept during the move; its first
   // posture is the last stance, which holds on them.
   std::optional<StanceCheck> move_check;
-  if (settings.check_moves) move_check.emplace(model, wall, parameters.physics);
-  plan.checked_moves = settings.check_moves;
+  if (search.check_moves) move_check.emplace(model, wall, parameters.physics);
+  plan.checked_moves = search.check_moves;
   BodyData path_data(model);
   std::vector<Posture> path, samples;
   const auto holds_on_the_way = [&](const Node& node, const HoldConfiguration& complete, const Posture& reached) {
     const ReachTarget target = reach_target(model, wall, complete, parameters.reachability.root);
-    ik_path_samples(model, path_data, *node.posture, reached, target, parameters.reachability.ik, settings.move_samples,
+    ik_path_samples(model, path_data, *node.posture, reached, target, parameters.reachability.ik, search.move_samples,
                     path, samples);
     for (std::size_t s = 1; s + 1 < samples.size(); ++s) {
       if (!move_check->solve(samples[s], node.configuration).feasible) return false;
@@ -60,7 +60,7 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
     plan.length = static_cast<int>(plan.hold_ids.size());
   };
   while (!frontier.empty() && !plan.found) {
-    if (reacher.solves() >= static_cast<std::size_t>(settings.max_ik_solves)) {
+    if (reacher.solves() >= static_cast<std::size_t>(search.max_ik_solves)) {
       plan.stopped_at_limit = true;
       break;
     }
@@ -71,7 +71,7 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
     const Limb free = node.configuration.free_limb();
     const int count = possible_actions(wall, node.configuration, parameters.filter, possible);
     for (int i = 0; i < count && !plan.found && !plan.stopped_at_limit; ++i) {
-      if (reacher.solves() >= static_cast<std::size_t>(settings.max_ik_solves)) {
+      if (reacher.solves() >= static_cast<std::size_t>(search.max_ik_solves)) {
         plan.stopped_at_limit = true;
         break;
       }

@@ -36,6 +36,6 @@ struct Plan {
 };
 
 Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
-                   const PlanParameters& settings = {});
+                   const PlanParameters& search = {});
 
 }  // namespace crux

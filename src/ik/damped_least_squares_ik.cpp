@@ -117,13 +117,13 @@ double dls_trial_cost(const BodyModel& model, BodyData& data, const ReachTarget&
 
 IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, const Posture& g_init,
                                        const ReachTarget& target, const ReachTolerances& tolerances, double time_step_s,
-                                       const DampedLeastSquaresParameters& settings, const PathRecorder& recorder) {
+                                       const DampedLeastSquaresParameters& parameters, const PathRecorder& recorder) {
   DlsWorkspace w;
   Posture g = g_init;
   const ChainCoordinates chains = chain_coordinates(model);
   // With the wall, every joint is placed (the head and neck are no operational point's),
   // and the step solves the stacked task of ik/wall_clearance.hpp.
-  const bool wall = settings.keep_out_of_wall;
+  const bool wall = parameters.keep_out_of_wall;
   const auto place = [&](const Posture& posture, WallClearance& out) {
     if (!wall) return operational_forward_kinematics(model, data, posture);
     forward_kinematics(model, data, posture);
@@ -132,22 +132,22 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
 
   place(g, w.clearance);
   recorder.start(g);
-  task_error(data, target, tolerances, settings.aim_fraction, w.error);
+  task_error(data, target, tolerances, parameters.aim_fraction, w.error);
   double cost = 0.5 * w.error.squaredNorm() + (wall ? w.clearance.cost() : 0.0);
-  double damping = settings.initial_damping;
+  double damping = parameters.initial_damping;
   int iteration = 0, stalled = 0;
   bool reached = target_reached(data.points, target, tolerances) && (!wall || w.clearance.clear());
-  while (!reached && iteration < settings.max_iterations && stalled < settings.stall_iterations) {
+  while (!reached && iteration < parameters.max_iterations && stalled < parameters.stall_iterations) {
     ++iteration;
     dls_linearise(model, data, chains, g, wall, w);
     bool improved = false;
     double trial_cost = cost;
-    while (damping <= settings.max_damping) {
+    while (damping <= parameters.max_damping) {
       dls_step(data, chains, wall, damping, w);
-      trial_cost = dls_trial_cost(model, data, target, tolerances, settings.aim_fraction, wall, g, cost, w);
+      trial_cost = dls_trial_cost(model, data, target, tolerances, parameters.aim_fraction, wall, g, cost, w);
       if (trial_cost < cost) {
         improved = true;
-        damping = std::max(damping / 3.0, settings.min_damping);
+        damping = std::max(damping / 3.0, parameters.min_damping);
         break;
       }
       damping *= 4.0;
@@ -156,7 +156,7 @@ IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, c
       place(g, w.clearance);
       break;
     }
-    stalled = (cost - trial_cost) < settings.stall_relative_decrease * cost ? stalled + 1 : 0;
+    stalled = (cost - trial_cost) < parameters.stall_relative_decrease * cost ? stalled + 1 : 0;
     g = w.trial;
     cost = trial_cost;
     w.error = w.trial_error;

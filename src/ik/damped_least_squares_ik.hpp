@@ -32,6 +32,7 @@ struct DampedLeastSquaresParameters {
 // `time_step_s`: simulated time charged per linearisation, as per iteration of Algorithm 1.
 IkResult solve_ik_damped_least_squares(const BodyModel& model, BodyData& data, const Posture& g_init,
                                        const ReachTarget& target, const ReachTolerances& tolerances, double time_step_s,
-                                       const DampedLeastSquaresParameters& settings, const PathRecorder& recorder = {});
+                                       const DampedLeastSquaresParameters& parameters,
+                                       const PathRecorder& recorder = {});
 
 }  // namespace crux

@@ -29,12 +29,12 @@ void cost_gradient(const BodyModel& model, const BodyData& data, const ReachTarg
 
 IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const Posture& g_init,
                                    const ReachTarget& target, const ReachTolerances& tolerances, double time_step_s,
-                                   const GradientDescentParameters& settings, const PathRecorder& recorder) {
-  const int max_iterations = settings.max_iterations(time_step_s);
+                                   const GradientDescentParameters& parameters, const PathRecorder& recorder) {
+  const int max_iterations = parameters.max_iterations(time_step_s);
   Posture g = g_init;
   Posture gradient;
   // With the wall, every joint is placed (the head and neck are no operational point's).
-  const bool wall = settings.keep_out_of_wall;
+  const bool wall = parameters.keep_out_of_wall;
   WallClearance clearance;
   const auto place = [&](const Posture& posture) {
     if (!wall) return operational_forward_kinematics(model, data, posture);
@@ -50,7 +50,7 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
   // f of the last stall_iterations + 1 iterates, for the stall exit.
   constexpr int kMaxStallWindow = 64;
   std::array<double, kMaxStallWindow + 1> recent_costs;
-  const int window = std::clamp(settings.stall_iterations, 0, kMaxStallWindow);  // the config caps it at 64
+  const int window = std::clamp(parameters.stall_iterations, 0, kMaxStallWindow);  // the config caps it at 64
   recent_costs[0] = cost_now();
   while (!reached && iteration < max_iterations) {
     ++iteration;
@@ -58,7 +58,7 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
     cost_gradient(model, data, target, gradient);
     for (int r = 0; wall && r < clearance.rows; ++r) gradient += clearance.excess[r] * clearance.gradient[r];
     for (int i = 0; i < kConfigurationDof; ++i) {
-      const double next = g[i] - settings.step_size * gradient[i];
+      const double next = g[i] - parameters.step_size * gradient[i];
       // "Modify descent direction": a joint whose step would cross its limit stays put.
       if (next >= model.lower_limits[i] && next <= model.upper_limits[i]) g[i] = next;
     }
@@ -69,8 +69,8 @@ IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const
     const double cost = cost_now();
     recent_costs[iteration % (window + 1)] = cost;
     if (iteration >= window &&
-        recent_costs[(iteration - window) % (window + 1)] - cost < settings.stall_decrease * cost &&
-        tolerance_excess(data.points, target, tolerances) > settings.stall_margin_m) {
+        recent_costs[(iteration - window) % (window + 1)] - cost < parameters.stall_decrease * cost &&
+        tolerance_excess(data.points, target, tolerances) > parameters.stall_margin_m) {
       break;
     }
   }

@@ -35,6 +35,6 @@ struct GradientDescentParameters {
 // `time_step_s`: simulated time per iteration (docs/MODEL.md, choice C9).
 IkResult solve_ik_gradient_descent(const BodyModel& model, BodyData& data, const Posture& g_init,
                                    const ReachTarget& target, const ReachTolerances& tolerances, double time_step_s,
-                                   const GradientDescentParameters& settings, const PathRecorder& recorder = {});
+                                   const GradientDescentParameters& parameters, const PathRecorder& recorder = {});
 
 }  // namespace crux

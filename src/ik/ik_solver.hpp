@@ -41,6 +41,6 @@ struct IkParameters {
 
 // Dispatches to the chosen solver, after the reach envelope's check.
 IkResult solve_ik(const BodyModel& model, BodyData& data, const Posture& g_init, const ReachTarget& target,
-                  const IkParameters& settings, const PathRecorder& recorder = {});
+                  const IkParameters& parameters, const PathRecorder& recorder = {});
 
 }  // namespace crux

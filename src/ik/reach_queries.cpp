@@ -28,44 +28,44 @@ bool natural_layout(const std::array<Eigen::Vector3d, kLimbCount>& h) {
 
 }  // namespace
 
-Posture start_layout_posture(const BodyModel& model, const IkParameters& settings, const RootTargetParameters& root) {
+Posture start_layout_posture(const BodyModel& model, const IkParameters& parameters, const RootTargetParameters& root) {
   ReachTarget target;
   target.hold_centres = start_layout_holds();
   target.root = root_target(model, target.hold_centres, root);
   BodyData data(model);
-  const IkResult result = solve_ik(model, data, standing_posture(target.root), target, settings);
+  const IkResult result = solve_ik(model, data, standing_posture(target.root), target, parameters);
   if (!result.reached) throw std::runtime_error("the start layout is not reachable from the standing posture");
   return result.posture;
 }
 
 std::vector<ReachQuery> climbing_reach_queries(const BodyModel& model, const IkParameters& walk_settings, int count,
-                                               std::uint64_t seed, const ReachQueryParameters& settings) {
+                                               std::uint64_t seed, const ReachQueryParameters& parameters) {
   Random random(seed);
   BodyData data(model);
-  const Posture home = start_layout_posture(model, walk_settings, settings.root);
+  const Posture home = start_layout_posture(model, walk_settings, parameters.root);
   const auto home_holds = start_layout_holds();
   Posture posture = home;
   auto holds = home_holds;
   std::vector<ReachQuery> queries;
   queries.reserve(count);
   for (int n = 0; n < count; ++n) {
-    if (settings.restart_every > 0 && n % settings.restart_every == 0) {
+    if (parameters.restart_every > 0 && n % parameters.restart_every == 0) {
       posture = home;
       holds = home_holds;
     }
     ReachQuery query;
     query.start = posture;
-    query.far_move = random.uniform() < settings.far_share;
+    query.far_move = random.uniform() < parameters.far_share;
     do {
       query.moved_limb = static_cast<Limb>(random.below(kLimbCount));
-      const double distance = query.far_move ? random.uniform(settings.far_move_min_m, settings.far_move_max_m)
-                                             : settings.max_move_m * std::sqrt(random.uniform());
+      const double distance = query.far_move ? random.uniform(parameters.far_move_min_m, parameters.far_move_max_m)
+                                             : parameters.max_move_m * std::sqrt(random.uniform());
       const double angle = random.uniform(0.0, 2.0 * M_PI);
       query.target.hold_centres = holds;
       query.target.hold_centres[static_cast<int>(query.moved_limb)] +=
           Eigen::Vector3d(0.0, distance * std::cos(angle), distance * std::sin(angle));
     } while (!natural_layout(query.target.hold_centres));
-    query.target.root = root_target(model, query.target.hold_centres, settings.root);
+    query.target.root = root_target(model, query.target.hold_centres, parameters.root);
     const IkResult result = solve_ik(model, data, posture, query.target, walk_settings);
     if (result.reached) {
       posture = result.posture;

@@ -35,12 +35,12 @@ std::array<Eigen::Vector3d, kLimbCount> start_layout_holds();
 
 // Solves the start layout from the standing posture placed at H(C4); throws
 // std::runtime_error if the solver cannot reach it.
-Posture start_layout_posture(const BodyModel& model, const IkParameters& settings,
+Posture start_layout_posture(const BodyModel& model, const IkParameters& parameters,
                              const RootTargetParameters& root = {});
 
 // `count` queries of a random climbing walk driven by `walk_settings` (its successful
 // moves become the next start postures). Deterministic in `seed`.
 std::vector<ReachQuery> climbing_reach_queries(const BodyModel& model, const IkParameters& walk_settings, int count,
-                                               std::uint64_t seed, const ReachQueryParameters& settings = {});
+                                               std::uint64_t seed, const ReachQueryParameters& parameters = {});
 
 }  // namespace crux

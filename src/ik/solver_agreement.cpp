@@ -5,8 +5,8 @@
 namespace crux {
 
 SolverAgreement compare_solvers(const BodyModel& model, const std::vector<ReachQuery>& queries,
-                                const IkParameters& settings, const std::function<void(int done)>& progress) {
-  IkParameters paper = settings, fast = settings;
+                                const IkParameters& parameters, const std::function<void(int done)>& progress) {
+  IkParameters paper = parameters, fast = parameters;
   paper.solver = IkSolverKind::Paper;
   fast.solver = IkSolverKind::Fast;
   BodyData data(model);

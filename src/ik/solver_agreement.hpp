@@ -19,9 +19,9 @@ struct SolverAgreement {
   double agreement() const { return queries > 0 ? static_cast<double>(agree) / queries : 0.0; }
 };
 
-// Runs both solvers on every query from its start posture. `settings` gives the shared
+// Runs both solvers on every query from its start posture. `parameters` gives the shared
 // tolerances and each solver's parameters; its `solver` field is ignored.
 SolverAgreement compare_solvers(const BodyModel& model, const std::vector<ReachQuery>& queries,
-                                const IkParameters& settings, const std::function<void(int done)>& progress = {});
+                                const IkParameters& parameters, const std::function<void(int done)>& progress = {});
 
 }  // namespace crux

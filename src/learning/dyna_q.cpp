@@ -7,13 +7,14 @@
 
 namespace crux {
 
-DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaParameters& settings, std::uint64_t seed)
-    : settings_(settings),
+DynaQAgent::DynaQAgent(int wall_action_count, int grid_action_count, const DynaParameters& parameters,
+                       std::uint64_t seed)
+    : settings_(parameters),
       selection_streams_(seed),
       planning_stream_(seed, "planning"),
       q_wall_(wall_action_count),
       q_grid_(grid_action_count),
-      model_(settings.planner == Planner::Prioritized) {}
+      model_(parameters.planner == Planner::Prioritized) {}
 
 void DynaQAgent::set_q_grid(QTable q_grid) {
   if (settings_.transfer == TransferMode::Seeded || settings_.transfer == TransferMode::Ordered) transferred_ = q_grid;

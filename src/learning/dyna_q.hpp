@@ -44,7 +44,7 @@ struct DynaParameters {
 // their draws iteration by iteration.
 class DynaQAgent {
  public:
-  DynaQAgent(int wall_action_count, int grid_action_count, const DynaParameters& settings, std::uint64_t seed);
+  DynaQAgent(int wall_action_count, int grid_action_count, const DynaParameters& parameters, std::uint64_t seed);
 
   // Starts from a Q_grid learnt elsewhere (transfer); its visit counts say what has
   // "already been taken" in agent space. The seeded, shaping and ordered modes also keep

@@ -142,16 +142,16 @@ std::string config_file_text(ExperimentConfig& config, const ParameterSet& accep
 }
 
 void write_experiment_folder(const fs::path& directory, const ExperimentResult& result,
-                             const ExperimentParameters& settings, const BodyModel& model,
+                             const ExperimentParameters& parameters, const BodyModel& model,
                              const std::string& config_toml, const nlohmann::ordered_json& summary,
                              const std::function<void(const fs::path&)>& draw_figures) {
   begin_output_folder(directory);
   write_file_atomically(directory / "config.toml", config_toml);
   make_output_directory(directory / "walls");
   for (std::size_t w = 0; w < result.walls.size(); ++w) {
-    const bool training = static_cast<int>(w) < settings.wall_pairs;
+    const bool training = static_cast<int>(w) < parameters.wall_pairs;
     save_wall(
-        (directory / "walls" / fmt::format("{}_{}.json", training ? "training" : "transfer", w % settings.wall_pairs))
+        (directory / "walls" / fmt::format("{}_{}.json", training ? "training" : "transfer", w % parameters.wall_pairs))
             .string(),
         result.walls[w].wall);
   }
@@ -159,14 +159,14 @@ void write_experiment_folder(const fs::path& directory, const ExperimentResult& 
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];
     for (std::size_t i = 0; i < c.runs.size(); ++i) {
       write_run_files(directory / "runs" / fmt::format("{}_{}", condition_name(condition), i), c.runs[i], model,
-                      settings.learning.climbing.grid);
+                      parameters.learning.climbing.grid);
     }
   }
   make_output_directory(directory / "figures");
-  write_file_atomically(directory / "figures" / "fig3_regimes.csv", fig3_csv(result, settings.learning.iterations));
+  write_file_atomically(directory / "figures" / "fig3_regimes.csv", fig3_csv(result, parameters.learning.iterations));
   write_file_atomically(directory / "figures" / "fig4_episode_lengths.csv", fig4_csv(result));
   write_file_atomically(directory / "figures" / "fig2b_qgrid_maps.csv",
-                        fig2b_csv(result, settings.learning.climbing.grid));
+                        fig2b_csv(result, parameters.learning.climbing.grid));
   write_file_atomically(directory / "summary.json", summary.dump(2) + "\n");
   draw_figures(directory);
   finish_output_folder(directory);

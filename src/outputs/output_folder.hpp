@@ -55,7 +55,7 @@ std::string config_file_text(ExperimentConfig& config, const ParameterSet& accep
 // `crux figures` redraws them), before the folder is marked complete: the drawing is the
 // reports' and views', above this layer.
 void write_experiment_folder(const std::filesystem::path& directory, const ExperimentResult& result,
-                             const ExperimentParameters& settings, const BodyModel& model,
+                             const ExperimentParameters& parameters, const BodyModel& model,
                              const std::string& config_toml, const nlohmann::ordered_json& summary,
                              const std::function<void(const std::filesystem::path&)>& draw_figures);
 

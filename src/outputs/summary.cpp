@@ -176,16 +176,16 @@ namespace {
 
 // Taylor and Stone's total time: the iterations behind each transfer run, training over
 // K walls included, beside control's; and the preceding training walls that cost them.
-nlohmann::ordered_json iterations_spent_json(const ExperimentResult& result, const ExperimentParameters& settings) {
-  const long iterations = settings.learning.iterations;
+nlohmann::ordered_json iterations_spent_json(const ExperimentResult& result, const ExperimentParameters& parameters) {
+  const long iterations = parameters.learning.iterations;
   nlohmann::ordered_json preceding = nlohmann::json::array();
   for (const ExperimentWall& w : result.preceding_training_walls) {
     preceding.push_back({{"name", w.wall.name}, {"seed", w.seed}, {"rejected_seeds", w.rejected_seeds}});
   }
-  return {{"training_walls", settings.training_walls},
-          {"training", settings.training_walls * iterations},
+  return {{"training_walls", parameters.training_walls},
+          {"training", parameters.training_walls * iterations},
           {"transfer", iterations},
-          {"total", (settings.training_walls + 1) * iterations},
+          {"total", (parameters.training_walls + 1) * iterations},
           {"control", iterations},
           {"preceding_training_walls", preceding}};
 }
@@ -197,12 +197,13 @@ nlohmann::json summary_wall_seed(const ExperimentWall& wall, bool seeded) {
 
 // One run's entry of run_facts: its wall, its seeds and what it learnt at what cost.
 nlohmann::ordered_json run_facts_json(const RunResult& run, const ExperimentWall& wall, std::size_t wall_pair,
-                                      std::uint64_t learning_seed, const ExperimentParameters& settings, bool seeded) {
+                                      std::uint64_t learning_seed, const ExperimentParameters& parameters,
+                                      bool seeded) {
   return {{"wall", wall.wall.name},
           {"wall_pair", wall_pair},
           {"wall_seed", summary_wall_seed(wall, seeded)},
           {"learning_seed", learning_seed},
-          {"take_off_iteration", take_off_iteration(run, settings.analysis.threshold_length)},
+          {"take_off_iteration", take_off_iteration(run, parameters.analysis.threshold_length)},
           {"planning_updates_per_step",
            static_cast<double>(run.planning_updates) / static_cast<double>(run.iterations.size())},
           {"episodes", run.episode_lengths.size()},
@@ -233,8 +234,8 @@ nlohmann::ordered_json summary_walls_json(const ExperimentResult& result, bool s
 }  // namespace
 
 nlohmann::ordered_json summary_json(const ExperimentResult& result, const ExperimentAnalysis* analysis,
-                                    const ExperimentParameters& settings, const Provenance& provenance) {
-  const int beginning = settings.analysis.beginning;
+                                    const ExperimentParameters& parameters, const Provenance& provenance) {
+  const int beginning = parameters.analysis.beginning;
   // A wall read from a file has no seed.
   const bool seeded = analysis != nullptr || provenance.wall_seed;
   nlohmann::ordered_json out;
@@ -242,25 +243,25 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
   out["version"] = 4;  // 4: no wall-clock seconds; the provenance names its caller
   out["kind"] = analysis != nullptr ? "experiment" : "run";
   out["provenance"] = provenance_json(provenance);
-  out["seed"] = settings.seed;
-  out["wall_pairs"] = analysis != nullptr ? settings.wall_pairs : 1;
-  out["seeds_per_wall"] = analysis != nullptr ? settings.seeds_per_wall : 1;
-  out["runs_per_condition"] = analysis != nullptr ? settings.runs() : 1;
-  out["iterations"] = settings.learning.iterations;
+  out["seed"] = parameters.seed;
+  out["wall_pairs"] = analysis != nullptr ? parameters.wall_pairs : 1;
+  out["seeds_per_wall"] = analysis != nullptr ? parameters.seeds_per_wall : 1;
+  out["runs_per_condition"] = analysis != nullptr ? parameters.runs() : 1;
+  out["iterations"] = parameters.learning.iterations;
   out["beginning_iterations"] = beginning;
-  out["threshold_length"] = settings.analysis.threshold_length;
-  out["solver"] = enum_name(settings.learning.climbing.reachability.ik.solver);
+  out["threshold_length"] = parameters.analysis.threshold_length;
+  out["solver"] = enum_name(parameters.learning.climbing.reachability.ik.solver);
   out["table1"] = table_one_json(result, beginning);
   if (analysis != nullptr) {
     out["table1_over_runs"] = table_one_over_runs_json(result, beginning);
     out["transfer_vs_control"] = transfer_vs_control_json(*analysis);
-    if (settings.training_walls > 1) out["iterations_spent"] = iterations_spent_json(result, settings);
+    if (parameters.training_walls > 1) out["iterations_spent"] = iterations_spent_json(result, parameters);
     out["take_off"] = take_off_json(*analysis);
     out["transfer_choices"] = transfer_choices_json(*analysis);
     out["transfer_control_divergence"] = divergence_json(*analysis);
   }
   nlohmann::ordered_json lengths, runs, maps;
-  const GridParameters& grid = settings.learning.climbing.grid;
+  const GridParameters& grid = parameters.learning.climbing.grid;
   for (const Condition condition : present_conditions(result)) {
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];
     const char* name = condition_name(condition);
@@ -270,7 +271,7 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
       const RunResult& run = c.runs[i];
       const ExperimentWall& wall = result.walls[c.wall_of_run[i]];
       lengths[name].push_back(run.episode_lengths);
-      runs[name].push_back(run_facts_json(run, wall, c.cluster_of_run[i], c.learning_seeds[i], settings, seeded));
+      runs[name].push_back(run_facts_json(run, wall, c.cluster_of_run[i], c.learning_seeds[i], parameters, seeded));
     }
     const auto mean_map = mean_q_grid_maps(c, grid);
     for (int l = 0; l < kLimbCount; ++l) {

@@ -21,7 +21,7 @@ ExperimentResult single_run_result(RunResult run, const Wall& wall, std::optiona
 
 // `analysis` is null for a single run.
 nlohmann::ordered_json summary_json(const ExperimentResult& result, const ExperimentAnalysis* analysis,
-                                    const ExperimentParameters& settings, const Provenance& provenance);
+                                    const ExperimentParameters& parameters, const Provenance& provenance);
 
 // Parts of an experiment's summary, also written per cell of a sweep: the transfer
 // metrics with their clustered statistics, take-off, and where paired runs part ways.

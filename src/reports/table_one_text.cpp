@@ -8,14 +8,15 @@
 
 namespace crux {
 
-std::string table_one_text(const ExperimentResult& result, const ExperimentParameters& settings) {
+std::string table_one_text(const ExperimentResult& result, const ExperimentParameters& parameters) {
   const PaperTableOne& paper = paper_table_one();
   std::array<std::array<std::array<RegimeStats, kRegimeCount>, 2>, 3> ours;
   for (const Condition c : kConditions) {
-    ours[static_cast<int>(c)] = table_one(result.conditions[static_cast<int>(c)].runs, settings.analysis.beginning);
+    ours[static_cast<int>(c)] = table_one(result.conditions[static_cast<int>(c)].runs, parameters.analysis.beginning);
   }
-  std::string text = fmt::format("\nTable I: ours (paper's in brackets), over {} per condition; beginning = first {}\n",
-                                 counted(settings.runs(), "run"), counted(settings.analysis.beginning, "iteration"));
+  std::string text =
+      fmt::format("\nTable I: ours (paper's in brackets), over {} per condition; beginning = first {}\n",
+                  counted(parameters.runs(), "run"), counted(parameters.analysis.beginning, "iteration"));
   for (const Window w : {Window::Beginning, Window::Overall}) {
     text += fmt::format("\n{:<26}{:>16}{:>16}{:>10}\n", window_name(w), "training", "transfer", "control");
     for (int metric = 0; metric < 3; ++metric) {

@@ -7,6 +7,6 @@
 
 namespace crux {
 
-std::string table_one_text(const ExperimentResult& result, const ExperimentParameters& settings);
+std::string table_one_text(const ExperimentResult& result, const ExperimentParameters& parameters);
 
 }  // namespace crux

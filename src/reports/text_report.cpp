@@ -13,8 +13,8 @@ namespace crux {
 
 namespace {
 
-std::string episode_text(const ExperimentResult& result, const ExperimentParameters& settings) {
-  const int total = settings.runs();
+std::string episode_text(const ExperimentResult& result, const ExperimentParameters& parameters) {
+  const int total = parameters.runs();
   std::string text = "\nEpisode lengths (mean over runs):\n";
   for (const Condition c : kConditions) {
     const auto& cr = result.conditions[static_cast<int>(c)];
@@ -28,7 +28,7 @@ std::string episode_text(const ExperimentResult& result, const ExperimentParamet
                         episodes, greedy_ok, counted(total, "run"),
                         greedy_ok ? fmt::format(", in {:.1f} actions on average", greedy / greedy_ok) : "");
   }
-  if (settings.plan) {
+  if (parameters.plan) {
     double plan = 0;
     int found = 0;
     int stopped = 0;
@@ -41,7 +41,7 @@ std::string episode_text(const ExperimentResult& result, const ExperimentParamet
                         found, counted(result.walls.size(), "wall"), kPaperOptimalClimbLength);
     if (stopped > 0) {
       text += fmt::format("  the exact planner stopped at its limit of {} on {} (--plan-max-solves)\n",
-                          counted(settings.plan_search.max_ik_solves, "IK solve"), counted(stopped, "wall"));
+                          counted(parameters.plan_search.max_ik_solves, "IK solve"), counted(stopped, "wall"));
     }
   }
   return text;
@@ -61,16 +61,16 @@ std::string walls_for_power_text(const MetricComparison& m) {
   return fmt::format("more than {} (the difference is tiny against its spread over walls)", kMaxClustersForPower);
 }
 
-std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentParameters& settings) {
+std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentParameters& parameters) {
   std::string text = fmt::format(
       "\nTransfer against control, paired by wall and seed ({} x {}); means over walls with 95 % intervals:\n",
-      counted(settings.wall_pairs, "wall"), counted(settings.seeds_per_wall, "seed"));
-  if (settings.training_walls > 1) {
+      counted(parameters.wall_pairs, "wall"), counted(parameters.seeds_per_wall, "seed"));
+  if (parameters.training_walls > 1) {
     // Taylor and Stone's total time: transfer's runs were paid for by K training runs.
-    const long iterations = settings.learning.iterations;
+    const long iterations = parameters.learning.iterations;
     text += fmt::format("  Iterations spent per transfer run: training over {} {}, transfer {}, total {}; control {}\n",
-                        counted(settings.training_walls, "wall"), settings.training_walls * iterations, iterations,
-                        (settings.training_walls + 1) * iterations, iterations);
+                        counted(parameters.training_walls, "wall"), parameters.training_walls * iterations, iterations,
+                        (parameters.training_walls + 1) * iterations, iterations);
   }
   for (const MetricComparison& m : analysis.metrics) {
     const auto& tr = m.per_condition[static_cast<int>(Condition::Transfer)];
@@ -104,7 +104,7 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentPa
                         estimate(r.probability_of_improvement, "{:.2f} [{:.2f}, {:.2f}]"));
   }
   text += fmt::format("\nTake-off (first episode of at most {}, at least half w-greedy):\n",
-                      counted(settings.analysis.threshold_length, "iteration"));
+                      counted(parameters.analysis.threshold_length, "iteration"));
   for (const Condition c : kConditions) {
     const ExperimentAnalysis::TakeOff& t = analysis.take_off[static_cast<int>(c)];
     text += fmt::format("  {:<9} {} of {} take off{}\n", condition_name(c), t.taken_off, counted(t.runs, "run"),
@@ -115,7 +115,7 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentPa
   text += fmt::format(
       "\nTransfer's choices in its first {} (evidence: earlier tries of the same "
       "agent-space pair; far: more than {:.0f} cm from them in the tile):\n",
-      counted(settings.analysis.beginning, "iteration"), 100 * kFarFromEvidence);
+      counted(parameters.analysis.beginning, "iteration"), 100 * kFarFromEvidence);
   const auto share = [](int part, int whole) {
     return whole > 0 ? fmt::format("{:.0f} %", 100.0 * part / whole) : std::string("-");
   };
@@ -140,8 +140,8 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentPa
 }  // namespace
 
 std::string experiment_text(const ExperimentResult& result, const ExperimentAnalysis& analysis,
-                            const ExperimentParameters& settings) {
-  return table_one_text(result, settings) + episode_text(result, settings) + transfer_text(analysis, settings);
+                            const ExperimentParameters& parameters) {
+  return table_one_text(result, parameters) + episode_text(result, parameters) + transfer_text(analysis, parameters);
 }
 
 std::string run_text(const ExperimentResult& result, int iterations, const std::string& output) {

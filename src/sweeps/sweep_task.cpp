@@ -20,22 +20,22 @@ namespace fs = std::filesystem;
 namespace {
 
 void write_wall_task(const SweepTask& task, const SweepCell& cell, const BodyModel& model, const fs::path& folder) {
-  const ExperimentParameters& settings = cell.config.settings;
+  const ExperimentParameters& parameters = cell.config.settings;
   const int role = task.condition == Condition::Training ? kTrainingWalls : kTransferWalls;
   const ExperimentWall drawn = task.preceding >= 0
-                                   ? draw_preceding_training_wall(model, settings, task.index, task.preceding)
-                                   : draw_wall(model, settings, role, task.index);
+                                   ? draw_preceding_training_wall(model, parameters, task.index, task.preceding)
+                                   : draw_wall(model, parameters, role, task.index);
   nlohmann::ordered_json facts;
   facts["format"] = "crux-sweep-wall";
   facts["version"] = 1;
   facts["name"] = drawn.wall.name;
   facts["seed"] = drawn.seed;
   facts["rejected_seeds"] = drawn.rejected_seeds;
-  facts["filtered_pairs"] = filtered_pairs(drawn.wall, settings.learning.climbing.filter);
+  facts["filtered_pairs"] = filtered_pairs(drawn.wall, parameters.learning.climbing.filter);
   facts["plan"] = nullptr;
-  if (settings.plan && task.preceding < 0) {
+  if (parameters.plan && task.preceding < 0) {
     facts["plan"] =
-        plan_json(drawn.wall, shortest_plan(model, drawn.wall, settings.learning.climbing, settings.plan_search));
+        plan_json(drawn.wall, shortest_plan(model, drawn.wall, parameters.learning.climbing, parameters.plan_search));
   }
   save_wall((folder / "wall.json").string(), drawn.wall);
   write_file_atomically(folder / kWallFactsFile, facts.dump(2) + "\n");
