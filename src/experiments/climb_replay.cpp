@@ -19,10 +19,6 @@ void add_frame(ClimbReplay& replay, const Posture& posture, double decimals) {
   ++replay.frame_count;
 }
 
-Posture replay_frame(const ClimbReplay& replay, int index) {
-  return Eigen::Map<const Posture>(replay.frames.data() + static_cast<std::size_t>(index) * kConfigurationDof);
-}
-
 }  // namespace
 
 ClimbReplay replay_climb(const BodyModel& model, const Wall& wall, const RecordedClimb& climb,
@@ -64,7 +60,7 @@ ClimbReplay replay_climb(const BodyModel& model, const Wall& wall, const Recorde
   }
   if (replay.frame_count > 0) {
     replay.check_frame = replay.frame_count / 2;
-    forward_kinematics(model, data, replay_frame(replay, replay.check_frame));
+    forward_kinematics(model, data, replay.frame(replay.check_frame));
     for (int limb = 0; limb < kLimbCount; ++limb) {
       replay.check_grasp_points[limb] = data.points[operational_point(static_cast<Limb>(limb))];
     }

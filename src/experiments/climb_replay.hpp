@@ -46,6 +46,11 @@ struct ClimbReplay {
   // forward kinematics must reproduce on the rounded posture it reads.
   int check_frame = -1;
   std::array<Eigen::Vector3d, kLimbCount> check_grasp_points{};
+
+  // Frame `index`'s posture, as rounded.
+  Posture frame(int index) const {
+    return Eigen::Map<const Posture>(frames.data() + static_cast<std::size_t>(index) * kConfigurationDof);
+  }
 };
 
 // `climb` is one of a folder read with `model`, on `wall`. `reach` gives the root target

@@ -1,12 +1,9 @@
 #include "jobs/report_job.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
 
 #include "body/kinematics.hpp"
 #include "body/wall_penetration.hpp"
-#include "common/counted.hpp"
 #include "experiments/climb_stances.hpp"
 #include "outputs/run_folder.hpp"
 #include "reports/replay_data.hpp"

@@ -10,10 +10,6 @@
 namespace crux {
 namespace {
 
-Posture replay_frame(const ClimbReplay& replay, int index) {
-  return Eigen::Map<const Posture>(replay.frames.data() + static_cast<std::size_t>(index) * kConfigurationDof);
-}
-
 // The start is frame 0; each move then takes its frames in order, a reached move ending
 // on the posture it reached (rounded as options.decimals says), an unreachable one
 // keeping the body where it is.
@@ -38,7 +34,7 @@ TEST(ClimbReplay, EachMoveTakesItsFramesAndEndsOnItsPosture) {
     }
     EXPECT_EQ(move.posture, ++reached);
     const Posture expected = (climb.postures[reached] * 1e5).array().round() / 1e5;
-    EXPECT_EQ(replay_frame(replay, move.last_frame), expected);
+    EXPECT_EQ(replay.frame(move.last_frame), expected);
   }
   EXPECT_EQ(replay.frame_count, frames);
   EXPECT_EQ(replay.frames.size(), static_cast<std::size_t>(frames) * kConfigurationDof);
