@@ -4,9 +4,6 @@
 
 #include <fmt/format.h>
 
-#include "common/atomic_file.hpp"
-#include "common/input_error.hpp"
-#include "common/input_file.hpp"
 #include "common/json_field.hpp"
 #include "experiments/experiment_analysis.hpp"
 #include "experiments/statistics.hpp"
@@ -14,6 +11,7 @@
 #include "outputs/run_folder.hpp"
 #include "outputs/summary.hpp"
 #include "outputs/summary_file.hpp"
+#include "outputs/sweep_files.hpp"
 #include "reports/sweep_report.hpp"
 #include "sweeps/sweep_task.hpp"
 
@@ -41,15 +39,6 @@ RunResult read_run(const fs::path& directory, int recorded_iterations) {
   }
   run.episode_lengths = read_episode_lengths(directory);
   return run;
-}
-
-nlohmann::json read_json_file(const fs::path& file) {
-  const std::string text = read_input_file(file.string(), "JSON file");
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(file.string(), std::string("not valid JSON: ") + e.what());
-  }
 }
 
 std::string csv_cell(const std::string& text) {
@@ -126,7 +115,7 @@ ExperimentResult read_sweep_cell(const SweepPlan& plan, const fs::path& folder, 
       const fs::path wall_folder =
           folder / "walls" / fmt::format("g{}", cell.wall_group) /
           fmt::format("{}_{}", condition == Condition::Training ? "training" : "transfer", pair);
-      const nlohmann::json wall = read_json_file(wall_folder / kWallFactsFile);
+      const nlohmann::json wall = read_sweep_wall_facts(wall_folder);
 
       csv += fmt::format("{}", c);
       for (const std::string& value : cell.values) csv += fmt::format(",{}", csv_cell(value));
@@ -205,22 +194,12 @@ nlohmann::ordered_json write_sweep_results(const SweepPlan& plan, const fs::path
     cells.push_back(sweep_cell_entry(plan, c, analyse_experiment(result, plan.cells[c].config.settings)));
   }
   add_holm_over_cells(metric_names, cells);
-  nlohmann::ordered_json summary;
-  summary["format"] = "crux-sweep-summary";
-  summary["version"] = 1;
-  summary["provenance"] = provenance;
-  summary["listed_keys"] = plan.keys;
-  summary["cells"] = cells;
-  write_file_atomically(folder / "results.csv", csv);
-  write_file_atomically(folder / "summary.json", summary.dump(2) + "\n");
-  return summary;
+  return write_sweep_results_files(folder, csv, provenance, plan.keys, cells);
 }
 
 std::vector<fs::path> write_sweep_report(const SweepPlan& plan, const fs::path& folder,
                                          const nlohmann::ordered_json& summary) {
-  std::vector<fs::path> written;
   std::vector<std::string> figures;
-  fs::create_directories(folder / "figures");
   for (std::size_t c = 0; c < plan.cells.size(); ++c) {
     const ExperimentParameters& settings = plan.cells[c].config.settings;
     PaperFigureData data;
@@ -230,8 +209,8 @@ std::vector<fs::path> write_sweep_report(const SweepPlan& plan, const fs::path& 
     // Transfer and control share the transfer walls: each wall's plan is read once.
     std::vector<int> plan_lengths;
     for (int pair = 0; pair < settings.wall_pairs; ++pair) {
-      const nlohmann::json wall = read_json_file(folder / "walls" / fmt::format("g{}", plan.cells[c].wall_group) /
-                                                 fmt::format("transfer_{}", pair) / kWallFactsFile);
+      const nlohmann::json wall = read_sweep_wall_facts(
+          folder / "walls" / fmt::format("g{}", plan.cells[c].wall_group) / fmt::format("transfer_{}", pair));
       plan_lengths.push_back(wall.at("plan").is_null() ? -1 : wall.at("plan").at("length").get<int>());
     }
     for (const Condition condition : {Condition::Transfer, Condition::Control}) {
@@ -247,12 +226,8 @@ std::vector<fs::path> write_sweep_report(const SweepPlan& plan, const fs::path& 
       data.conditions.push_back(std::move(runs));
     }
     figures.push_back(fig4_svg(data, sweep_cell_title(summary.at("cells").at(c))));
-    written.push_back(folder / "figures" / fmt::format("c{}_episode_lengths.svg", c));
-    write_file_atomically(written.back(), figures.back());
   }
-  written.push_back(folder / "report.html");
-  write_file_atomically(written.back(), sweep_report_html(summary, figures));
-  return written;
+  return write_sweep_report_files(folder, figures, sweep_report_html(summary, figures));
 }
 
 }  // namespace crux

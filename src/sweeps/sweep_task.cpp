@@ -10,6 +10,7 @@
 #include "jobs/learning_job.hpp"
 #include "learning/q_table_file.hpp"
 #include "outputs/output_folder.hpp"
+#include "outputs/sweep_files.hpp"
 #include "reports/plan_description.hpp"
 #include "wall/wall_file.hpp"
 
@@ -26,8 +27,6 @@ void write_wall_task(const SweepTask& task, const SweepCell& cell, const BodyMod
                                    ? draw_preceding_training_wall(model, parameters, task.index, task.preceding)
                                    : draw_wall(model, parameters, role, task.index);
   nlohmann::ordered_json facts;
-  facts["format"] = "crux-sweep-wall";
-  facts["version"] = 1;
   facts["name"] = drawn.wall.name;
   facts["seed"] = drawn.seed;
   facts["rejected_seeds"] = drawn.rejected_seeds;
@@ -38,7 +37,7 @@ void write_wall_task(const SweepTask& task, const SweepCell& cell, const BodyMod
         plan_json(drawn.wall, shortest_plan(model, drawn.wall, parameters.learning.climbing, parameters.plan_search));
   }
   save_wall((folder / "wall.json").string(), drawn.wall);
-  write_file_atomically(folder / kWallFactsFile, facts.dump(2) + "\n");
+  write_sweep_wall_facts(folder, facts);
 }
 
 void write_run_task(const SweepPlan& plan, const SweepTask& task, const BodyModel& model, const fs::path& sweep_folder,

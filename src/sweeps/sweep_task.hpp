@@ -24,7 +24,4 @@ void run_sweep_task(const SweepPlan& plan, std::size_t task, const BodyModel& mo
 // (runs/c<C>/training_<r>.preceding_q_grid.bin), relative to the sweep folder.
 std::filesystem::path preceding_q_grid_file(const SweepTask& task);
 
-// A wall task's facts file (beside its wall.json).
-inline constexpr const char* kWallFactsFile = "wall_facts.json";
-
 }  // namespace crux

@@ -14,6 +14,7 @@
 #include "learning/q_table_file.hpp"
 #include "outputs/iterations_file.hpp"
 #include "outputs/summary.hpp"
+#include "outputs/sweep_files.hpp"
 #include "support/sweep_cells.hpp"
 #include "support/test_models.hpp"
 #include "sweeps/sweep_run.hpp"
@@ -136,7 +137,7 @@ TEST(SweepResults, ACellOverThreeTrainingWallsIsCruxPapersExperiment) {
     }
   }
   // The walls are crux paper's, pair w's preceding wall j at w (K - 1) + j.
-  const nlohmann::json facts = read_json(job.folder / "walls/g0/preceding_1_1" / kWallFactsFile);
+  const nlohmann::json facts = read_sweep_wall_facts(job.folder / "walls/g0/preceding_1_1");
   EXPECT_EQ(facts.at("seed"), paper.preceding_training_walls[3].seed);
   const fs::path paper_walls = job.folder / "paper_walls";
   fs::create_directories(paper_walls);

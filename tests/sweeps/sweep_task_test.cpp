@@ -2,12 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "jobs/command_keys.hpp"
 #include "outputs/iterations_file.hpp"
 #include "outputs/run_config_file.hpp"
 #include "outputs/run_folder.hpp"
+#include "outputs/sweep_files.hpp"
 #include "reports/plan_description.hpp"
 #include "support/sweep_cells.hpp"
 #include "support/test_models.hpp"
@@ -53,8 +52,7 @@ TEST(SweepTask, AWallTaskWritesTheWallAndItsFacts) {
   run_sweep_task(plan, 1, testing::human_model(), folder);  // the transfer wall
   const ExperimentWall drawn = draw_wall(testing::human_model(), config.settings, kTransferWalls, 0);
   EXPECT_EQ(load_wall((folder / "walls/g0/transfer_0/wall.json").string()).holds.size(), drawn.wall.holds.size());
-  std::ifstream in(folder / "walls/g0/transfer_0" / kWallFactsFile);
-  const nlohmann::json facts = nlohmann::json::parse(in);
+  const nlohmann::json facts = read_sweep_wall_facts(folder / "walls/g0/transfer_0");
   EXPECT_EQ(facts.at("seed"), drawn.seed);
   EXPECT_EQ(facts.at("filtered_pairs"), filtered_pairs(drawn.wall, config.settings.learning.climbing.filter));
   const Plan plan_now =
