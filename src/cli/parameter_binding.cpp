@@ -1,5 +1,8 @@
 #include "cli/parameter_binding.hpp"
 
+#include <algorithm>
+#include <set>
+
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
@@ -18,7 +21,27 @@ const CLI::Validator kSeedDigits(
     },
     "SEED");
 
+std::set<std::string>& command_owned_keys() {
+  static std::set<std::string> keys;
+  return keys;
+}
+
 }  // namespace
+
+void ParameterBinding::register_command_keys(const std::vector<ConfigField>& fields) {
+  for (const ConfigField& field : fields) command_owned_keys().insert(field.key);
+}
+
+void ParameterBinding::refuse_other_commands_keys() {
+  for (const std::string& key : command_owned_keys()) {
+    const bool own = std::any_of(command_fields_.begin(), command_fields_.end(),
+                                 [&](const ConfigField& field) { return field.key == key; });
+    if (own) continue;
+    if (const std::optional<int> line = document().line_of(key)) {
+      throw InputError(config_path_, fmt::format("line {}: crux {} does not take {}", *line, command_, key));
+    }
+  }
+}
 
 ParameterBinding::ParameterBinding(std::string command, ParameterSet accepted, ExperimentConfig defaults)
     : command_(std::move(command)),
@@ -61,6 +84,10 @@ void ParameterBinding::bind(CLI::App* command) {
                       "TOML config file, keys as in the config.toml crux writes (flags override it)");
   for (const ConfigField& field : config_fields(from_flags_)) bind_field(command, field);
   for (const ConfigField& field : command_flag_fields_) bind_field(command, field);
+  if (CLI::Option* progress = option("output.progress"); progress != nullptr) {
+    command->add_flag("-q,--quiet", quiet_, "Show no progress on stderr (output.progress = \"none\")")
+        ->excludes(progress);
+  }
   // A wall is a file or a seed.
   if (CLI::Option* file = option("wall.file"); file != nullptr) {
     if (CLI::Option* seed = option("wall.seed"); seed != nullptr) file->excludes(seed);
@@ -131,6 +158,7 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
   }
   if (reset_command_options_) reset_command_options_();
   if (!config_path_.empty()) {
+    refuse_other_commands_keys();
     lines_ = apply_config_document(document(), config, command_fields_, accepted_, command_, effective);
   }
   const auto flags = config_fields(from_flags_);
@@ -138,6 +166,7 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
   for (std::size_t i = 0; i < fields.size(); ++i) take_flag(flags[i], fields[i], config);
   for (std::size_t i = 0; i < command_fields_.size(); ++i)
     take_flag(command_flag_fields_[i], command_fields_[i], config);
+  if (quiet_) config.progress = ProgressDisplay::None;
   // A wall flag replaces the config file's wall of the other kind.
   if (const CLI::Option* seed = option("wall.seed"); seed != nullptr && seed->count() > 0) config.wall_file.clear();
   if (const CLI::Option* file = option("wall.file"); file != nullptr && file->count() > 0) config.wall_seed.reset();

@@ -42,6 +42,7 @@ class ParameterBinding {
     auto from_flags = std::make_shared<Options>(options);
     command_flag_fields_ = fields(*from_flags);
     command_fields_ = fields(options);
+    register_command_keys(command_fields_);
     command_from_flags_ = std::move(from_flags);
     reset_command_options_ = [&options, defaults = options] { options = defaults; };
   }
@@ -68,6 +69,7 @@ class ParameterBinding {
   ExperimentConfig defaults_;
   ExperimentConfig from_flags_;
   std::string config_path_;
+  bool quiet_ = false;                                         // --quiet: output.progress = "none"
   std::vector<std::pair<std::string, CLI::Option*>> options_;  // key, its flag
   // A choice's flag text by key, parsed by resolve() so that its error names the flag.
   std::map<std::string, std::string> choice_texts_;
@@ -78,6 +80,11 @@ class ParameterBinding {
   std::shared_ptr<void> command_from_flags_;
   std::vector<ConfigField> command_flag_fields_, command_fields_;
   std::function<void()> reset_command_options_;
+
+  // Every command's own keys, so that a config file giving one to another command is told
+  // that this command does not take it, not that the key is unknown.
+  static void register_command_keys(const std::vector<ConfigField>& fields);
+  void refuse_other_commands_keys();
 
   void bind_field(CLI::App* command, const ConfigField& field);
   // `field` takes the value its flag gave `flag`'s target, if the flag was given.

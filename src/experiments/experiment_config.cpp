@@ -532,6 +532,12 @@ ConfigDocument::~ConfigDocument() = default;
 
 std::size_t ConfigDocument::parses() { return config_parse_count; }
 
+std::optional<int> ConfigDocument::line_of(const std::string& key) const {
+  const toml::node* node = table_->value.at_path(key).node();
+  if (node == nullptr) return std::nullopt;
+  return static_cast<int>(node->source().begin.line);
+}
+
 std::vector<ListedKey> listed_keys(const ConfigDocument& document, const ParameterSet& accepted) {
   const toml::table& table = document.table().value;
   const std::string& path = document.source();

@@ -183,6 +183,8 @@ class ConfigDocument {
   const std::string& source() const { return source_; }
   struct Table;
   const Table& table() const { return *table_; }
+  // The line that sets `key` ("section.name"), if the document sets it.
+  std::optional<int> line_of(const std::string& key) const;
 
   // The config texts this process has parsed so far (tests count parses with it).
   static std::size_t parses();
