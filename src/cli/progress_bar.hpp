@@ -1,10 +1,10 @@
 #pragma once
-// Progress on stderr, as output.progress asks. bar: a bar redrawn in place, only when
-// stderr is a terminal so that logs and pipelines stay quiet; a timed bar (long jobs
-// such as sweeps) adds the rate and the time left, and when stderr is not a terminal
-// (mpirun's pipes, a batch log) writes the same as a plain line every ten seconds.
-// lines: a plain line every 10 % (a timed one every ten seconds), terminal or not.
-// none: nothing.
+// Progress on stderr, as output.progress asks, so that stdout and every file stay the same.
+// bar: on a terminal, a bar redrawn in place with the rate and the time left; elsewhere (a
+// pipe, a batch log, mpirun's pipes) the same as a plain line every ten seconds, and a last
+// one at the end once one was written, so that a command shorter than ten seconds writes
+// nothing there. lines: a plain line every 10 % (a sweep's every ten seconds), terminal or
+// not. none: nothing (also --quiet).
 
 #include <unistd.h>
 
@@ -20,12 +20,18 @@ namespace crux::cli {
 
 class ProgressBar {
  public:
-  ProgressBar(std::string label, long total, ProgressDisplay display, bool timed = false)
+  // `timed_lines`: lines every ten seconds rather than every 10 % (a sweep, whose tasks
+  // can take minutes each). `sink` and `line_seconds` are stderr's and ten but in tests.
+  ProgressBar(std::string label, long total, ProgressDisplay display, bool timed_lines = false,
+              std::FILE* sink = stderr, double line_seconds = 10.0)
       : label_(std::move(label)),
         total_(total),
-        terminal_(display == ProgressDisplay::Bar && ::isatty(2) == 1),
-        timed_(timed),
-        enabled_(display == ProgressDisplay::Lines || (display == ProgressDisplay::Bar && (terminal_ || timed))),
+        sink_(sink),
+        line_seconds_(line_seconds),
+        terminal_(display == ProgressDisplay::Bar && ::isatty(::fileno(sink)) == 1),
+        timed_(display == ProgressDisplay::Bar || timed_lines),
+        enabled_(display != ProgressDisplay::None),
+        silent_when_short_(display == ProgressDisplay::Bar && !terminal_),
         step_(display == ProgressDisplay::Lines ? 10 : 1) {}
   ~ProgressBar() { finish(); }
 
@@ -37,7 +43,12 @@ class ProgressBar {
     const int percent = static_cast<int>(100 * done / total_) / step_ * step_;
     const auto now = std::chrono::steady_clock::now();
     const double since_shown = std::chrono::duration<double>(now - shown_).count();
-    if (timed_ ? since_shown < (terminal_ ? 0.25 : 10.0) && done < total_ : percent == last_percent_) return;
+    if (timed_) {
+      const bool finished = done >= total_;
+      if (finished ? silent_when_short_ && last_percent_ < 0 : since_shown < (terminal_ ? 0.25 : line_seconds_)) return;
+    } else if (percent == last_percent_) {
+      return;
+    }
     last_percent_ = percent;
     shown_ = now;
     std::string rate;
@@ -50,22 +61,25 @@ class ProgressBar {
     }
     constexpr int width = 40;
     const int filled = percent * width / 100;
-    std::fprintf(stderr, "%s%s [%s%s] %3d%% (%ld/%ld%s)%s", terminal_ ? "\r" : "", label_.c_str(),
+    std::fprintf(sink_, "%s%s [%s%s] %3d%% (%ld/%ld%s)%s", terminal_ ? "\r" : "", label_.c_str(),
                  std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), percent, done, total_,
                  rate.c_str(), terminal_ ? "" : "\n");
-    std::fflush(stderr);
+    std::fflush(sink_);
   }
 
   void finish() {
-    if (enabled_ && terminal_ && last_percent_ >= 0) std::fputc('\n', stderr);
+    if (enabled_ && terminal_ && last_percent_ >= 0) std::fputc('\n', sink_);
     enabled_ = false;
   }
 
  private:
   std::string label_;
   long total_;
+  std::FILE* sink_;
+  double line_seconds_;
   bool terminal_, timed_, enabled_;
-  int step_;  // percent between two lines
+  bool silent_when_short_;  // a bar off a terminal: no line for a job shorter than ten seconds
+  int step_;                // percent between two lines
   int last_percent_ = -1;
   long first_ = 0;
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now(), shown_ = started_;

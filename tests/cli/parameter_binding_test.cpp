@@ -39,5 +39,36 @@ TEST(ParameterBinding, ASweepFileIsReadAndParsedOnceForAllItsCells) {
   EXPECT_EQ(ConfigDocument::parses() - parses_before, 1u) << "6 cells";
 }
 
+// Parses `arguments` for a command that shows progress; "" when they are refused.
+std::string progress_after(std::vector<std::string> arguments) {
+  CLI::App app;
+  ParameterBinding binding("paper", with_progress(kPaperKeys));
+  binding.bind(&app);
+  std::reverse(arguments.begin(), arguments.end());
+  try {
+    app.parse(arguments);
+  } catch (const CLI::ParseError&) {
+    return "";
+  }
+  return std::string(enum_name(binding.resolve().progress));
+}
+
+TEST(ParameterBinding, QuietIsProgressNoneAndExcludesTheProgressFlag) {
+  EXPECT_EQ(progress_after({}), "bar");
+  EXPECT_EQ(progress_after({"--quiet"}), "none");
+  EXPECT_EQ(progress_after({"-q"}), "none");
+  EXPECT_EQ(progress_after({"--output-progress", "lines"}), "lines");
+  EXPECT_EQ(progress_after({"--quiet", "--output-progress", "lines"}), "");
+  // A config file's progress gives way to --quiet, as any key to its flag.
+  const auto file = testing::write_temporary("binding_progress.toml", "[output]\nprogress = \"lines\"\n");
+  EXPECT_EQ(progress_after({"--config", file.string()}), "lines");
+  EXPECT_EQ(progress_after({"--config", file.string(), "--quiet"}), "none");
+  // A command without progress has no --quiet.
+  CLI::App plain;
+  ParameterBinding plan("plan", kPaperKeys);
+  plan.bind(&plain);
+  EXPECT_THROW(plain.parse(std::vector<std::string>{"--quiet"}), CLI::ParseError);
+}
+
 }  // namespace
 }  // namespace crux::cli
