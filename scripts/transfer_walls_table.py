@@ -24,6 +24,14 @@ def cell_name(parameters):
     return ", ".join(parts)
 
 
+def estimate(e, form):
+    """rliable's {value, low, high} as "value [low, high]", or "value (no interval)" when the
+    stratified bootstrap had nothing to resample (one seed per wall)."""
+    if e["low"] is None or e["high"] is None:
+        return f"{e['value']:{form}} (no interval)"
+    return f"{e['value']:{form}} [{e['low']:{form}}, {e['high']:{form}}]"
+
+
 def main():
     folder = sys.argv[1]
     metric = sys.argv[2] if len(sys.argv) > 2 else "first_5_iterations"
@@ -47,8 +55,7 @@ def main():
             total = f"{spent['training']} + {transfer:.0f} = {spent['training'] + transfer:.0f} ({control:.0f})"
         print(f"| {cell_name(cell['parameters'])} | {transfer:.0f}, {control:.0f} | {d['mean']:+.0f} [{lo:+.0f}, {hi:+.0f}], "
               f"p = {d['p_value']:.2g} ({d['p_value_holm_over_cells']:.2g}) | {100 * saving:.0f} % | "
-              f"{iqm['value']:+.0f} [{iqm['low']:+.0f}, {iqm['high']:+.0f}] | "
-              f"{poi['value']:.2f} [{poi['low']:.2f}, {poi['high']:.2f}] | {total} |")
+              f"{estimate(iqm, '+.0f')} | {estimate(poi, '.2f')} | {total} |")
 
 
 if __name__ == "__main__":

@@ -81,3 +81,9 @@ def test_table_gives_the_saving_and_the_total(tmp_path):
     row = out.splitlines()[2]
     assert row == ("| K=16, prior | 1500, 3000 | -1500 [-1800, -1200], p = 1e-06 (2e-06) | 50 % | -1400 [-1600, -1100] "
                    "| 0.88 [0.80, 0.95] | 128000 + 1500 = 129500 (3000) |"), row
+    # One seed per wall: summary.json has no stratified interval, and the table says so.
+    for estimate in (metric["iqm"]["difference"], metric["probability_of_improvement"]):
+        estimate["low"] = estimate["high"] = None
+    (tmp_path / "sweep" / "summary.json").write_text(json.dumps(summary))
+    row = run_script("transfer_walls_table.py", tmp_path / "sweep").splitlines()[2]
+    assert "| -1400 (no interval) | 0.88 (no interval) |" in row, row

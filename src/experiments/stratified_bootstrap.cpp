@@ -126,6 +126,14 @@ StratifiedComparison stratified_comparison(const std::vector<double>& a, const s
     }
     return probability_of_improvement(drawn, drawn_b, strata.starts, higher_is_better);
   });
+  for (std::size_t k = 0; k + 1 < strata.starts.size(); ++k) {
+    if (strata.starts[k + 1] - strata.starts[k] >= 2) out.has_intervals = true;
+  }
+  if (!out.has_intervals) {
+    for (BootstrapEstimate* e : {&out.iqm_a, &out.iqm_b, &out.iqm_difference, &out.probability_of_improvement}) {
+      e->low = e->high = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
   return out;
 }
 

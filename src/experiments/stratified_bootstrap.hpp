@@ -92,12 +92,22 @@ class StratifiedBootstrap {
 
 inline constexpr int kStratifiedBootstrapReplicates = 2000;
 
+// What a StratifiedComparison's intervals resample, or why it has none, in the printed
+// report and summary.json.
+inline constexpr const char* kStratifiedIntervals = "seeds resampled within walls";
+inline constexpr const char* kNoStratifiedIntervals =
+    "one seed per wall leaves the stratified bootstrap nothing to resample";
+
 // rliable's view of a paired comparison of a (transfer) against b (control), pair i on
 // stratum stratum_of_pair[i]: the IQM of a's runs, of b's, and of the pair differences
 // a - b, and P(a beats b), each with its stratified bootstrap interval. A resample draws
-// pairs (learning seeds), so a and b keep their pairing within it.
+// pairs (learning seeds), so a and b keep their pairing within it. With one pair per
+// stratum (one seed per wall) every resample is the sample: there is no interval, and the
+// estimates' low and high are NaN rather than a zero-width interval that would read as
+// certainty.
 struct StratifiedComparison {
   BootstrapEstimate iqm_a, iqm_b, iqm_difference, probability_of_improvement;
+  bool has_intervals = false;  // some stratum holds two pairs or more
 };
 StratifiedComparison stratified_comparison(const std::vector<double>& a, const std::vector<double>& b,
                                            const std::vector<std::size_t>& stratum_of_pair, bool higher_is_better,

@@ -149,6 +149,8 @@ nlohmann::ordered_json transfer_vs_control_json(const ExperimentAnalysis& analys
                     {"control", estimate_json(r.iqm_b)},
                     {"difference", estimate_json(r.iqm_difference)}};
     entry["probability_of_improvement"] = estimate_json(r.probability_of_improvement);
+    entry["stratified_intervals"] =
+        r.has_intervals ? std::string(kStratifiedIntervals) : std::string("none: ") + kNoStratifiedIntervals;
     comparison[m.metric.name] = entry;
   }
   return comparison;

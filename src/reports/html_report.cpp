@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "common/counted.hpp"
+#include "experiments/stratified_bootstrap.hpp"
 #include "learning/action_selection.hpp"
 #include "reports/paper_reference.hpp"
 #include "reports/replay_data.hpp"
@@ -193,7 +194,9 @@ class Page {
         "and their seeds resampled, so these intervals leave out wall-to-wall variation, which the t-intervals "
         "include.</p>\n<table class=\"numbers\">\n<thead><tr><th>metric</th><th>IQM transfer</th><th>IQM "
         "control</th><th>IQM difference</th><th>P(transfer better)</th></tr></thead>\n<tbody>\n";
+    // An interval only where the bootstrap had seeds to resample (summary.json's null).
     const auto estimate = [](const Json& e, const char* format) {
+      if (at(e, {"low"}).is_null()) return number(at(e, {"value"}), format);
       return fmt::format("{} [{}, {}]", number(at(e, {"value"}), format), number(at(e, {"low"}), format),
                          number(at(e, {"high"}), format));
     };
@@ -205,6 +208,9 @@ class Page {
                     estimate(at(values, {"probability_of_improvement"}), "{:.2f}"));
     }
     out_ += "</tbody>\n</table>\n";
+    if (at(at(comparisons.begin().value(), {"iqm", "difference"}), {"low"}).is_null()) {
+      append_format(out_, "<p>No intervals: {}.</p>\n", kNoStratifiedIntervals);
+    }
   }
 
   void write_run_facts() {

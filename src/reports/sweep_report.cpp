@@ -38,7 +38,9 @@ std::string stratified_cell(const nlohmann::ordered_json& comparison) {
   const auto number = [](const nlohmann::ordered_json& v, const char* format) {
     return v.is_number() ? fmt::format(fmt::runtime(format), v.get<double>()) : std::string("-");
   };
+  // An interval only where the bootstrap had seeds to resample (summary.json's null).
   const auto estimate = [&](const nlohmann::ordered_json& e, const char* format) {
+    if (e.at("low").is_null()) return number(e.at("value"), format) + " (no interval)";
     return fmt::format("{} [{}, {}]", number(e.at("value"), format), number(e.at("low"), format),
                        number(e.at("high"), format));
   };

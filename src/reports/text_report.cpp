@@ -1,6 +1,7 @@
 #include "reports/text_report.hpp"
 
 #include <cmath>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -93,9 +94,14 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentPa
       "transfer beats control on a wall, with 95 % stratified bootstrap intervals ({} replicates; the walls are kept "
       "and their seeds resampled, so they leave out wall-to-wall variation, unlike the t-intervals above):\n",
       kStratifiedBootstrapReplicates);
+  // An interval only where the bootstrap had seeds to resample.
   const auto estimate = [](const BootstrapEstimate& e, const char* format) {
+    const std::string_view full(format);
+    if (std::isnan(e.low)) return fmt::format(fmt::runtime(full.substr(0, full.find(' '))), e.value);
     return fmt::format(fmt::runtime(format), e.value, e.low, e.high);
   };
+  const bool intervals = analysis.metrics.empty() || analysis.metrics.front().stratified.has_intervals;
+  if (!intervals) text += fmt::format("  No intervals: {}.\n", kNoStratifiedIntervals);
   for (const MetricComparison& m : analysis.metrics) {
     const StratifiedComparison& r = m.stratified;
     text += fmt::format("  {:<22} IQM transfer {}, control {}, difference {}; P(improvement) {}\n", m.metric.name,

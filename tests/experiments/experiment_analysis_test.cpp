@@ -143,7 +143,9 @@ TEST(ExperimentAnalysis, MetricsUseTheSettingsWindowsByHand) {
 }
 
 TEST(ExperimentAnalysis, MetricsAreCompareTransferWithTheExperimentsBootstrapSeed) {
-  const ExperimentResult result = small_experiment();
+  ExperimentResult result = small_experiment();
+  // Runs 0 and 1 on one wall, so that the stratified bootstrap has seeds to resample.
+  for (ConditionResult& c : result.conditions) c.cluster_of_run = c.wall_of_run = {0, 0, 1};
   const ExperimentParameters settings = small_settings();
   const ExperimentAnalysis analysis = analyse_experiment(result, settings);
   const std::vector<MetricComparison> direct =
@@ -157,6 +159,7 @@ TEST(ExperimentAnalysis, MetricsAreCompareTransferWithTheExperimentsBootstrapSee
     EXPECT_EQ(a.bootstrap_low, d.bootstrap_low) << direct[m].metric.name;
     EXPECT_EQ(a.bootstrap_high, d.bootstrap_high) << direct[m].metric.name;
     const StratifiedComparison &ra = analysis.metrics[m].stratified, &rd = direct[m].stratified;
+    ASSERT_TRUE(ra.has_intervals) << direct[m].metric.name;
     EXPECT_EQ(ra.iqm_difference.low, rd.iqm_difference.low) << direct[m].metric.name;
     EXPECT_EQ(ra.probability_of_improvement.high, rd.probability_of_improvement.high) << direct[m].metric.name;
   }

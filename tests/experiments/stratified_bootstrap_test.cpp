@@ -125,12 +125,24 @@ TEST(StratifiedBootstrap, ComparisonOfPairedRuns) {
     EXPECT_GE(e.high, e.value);
   }
   EXPECT_LT(c.iqm_difference.low, c.iqm_difference.high);
-  // One seed per wall: nothing to resample within a wall, so every interval is the value.
+  EXPECT_TRUE(c.has_intervals);
+  // One seed per wall: nothing to resample within a wall. The estimates stand, without an
+  // interval rather than with one of zero width.
   const StratifiedComparison single =
       stratified_comparison({1, 5, 2}, {3, 4, 2}, {0, 1, 2}, true, RandomStream(1, "test"));
-  EXPECT_EQ(single.iqm_difference.low, single.iqm_difference.value);
-  EXPECT_EQ(single.iqm_difference.high, single.iqm_difference.value);
-  EXPECT_EQ(single.probability_of_improvement.low, single.probability_of_improvement.high);
+  EXPECT_FALSE(single.has_intervals);
+  EXPECT_DOUBLE_EQ(single.iqm_difference.value, -1.0 / 3.0);
+  // Wall 0: 1 < 3 loses, wall 1: 5 > 4 wins, wall 2: a tie: (0 + 1 + 1/2) / 3.
+  EXPECT_DOUBLE_EQ(single.probability_of_improvement.value, 0.5);
+  for (const BootstrapEstimate& e :
+       {single.iqm_a, single.iqm_b, single.iqm_difference, single.probability_of_improvement}) {
+    EXPECT_TRUE(std::isnan(e.low) && std::isnan(e.high));
+  }
+  // One wall of two seeds is enough to resample.
+  const StratifiedComparison mixed =
+      stratified_comparison({1, 5, 2}, {3, 4, 2}, {0, 1, 1}, true, RandomStream(1, "test"));
+  EXPECT_TRUE(mixed.has_intervals);
+  EXPECT_LE(mixed.iqm_difference.low, mixed.iqm_difference.high);
 }
 
 }  // namespace

@@ -77,6 +77,24 @@ TEST(HtmlReport, TableOneShowsOursBesideThePapersAndTheStatisticsTheirIntervals)
       << html;
 }
 
+TEST(HtmlReport, WithoutStratifiedIntervalsTheTableSaysSoRatherThanShowZeroWidths) {
+  ReportPage page = experiment_page();
+  auto& comparison = page.summary["transfer_vs_control"]["jumpstart"];
+  for (auto* estimate : {&comparison["iqm"]["transfer"], &comparison["iqm"]["control"],
+                         &comparison["iqm"]["difference"], &comparison["probability_of_improvement"]}) {
+    (*estimate)["low"] = nullptr;
+    (*estimate)["high"] = nullptr;
+  }
+  const std::string html = html_report(page);
+  EXPECT_NE(html.find("<tr><th>jumpstart</th><td>700</td><td>540</td><td>+150</td><td>0.38</td></tr>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<p>No intervals: one seed per wall leaves the stratified bootstrap nothing to resample.</p>"),
+            std::string::npos)
+      << html;
+  EXPECT_EQ(html_report(experiment_page()).find("No intervals"), std::string::npos);
+}
+
 TEST(HtmlReport, FiguresAreInlinedWithoutTheirXmlDeclaration) {
   const std::string html = html_report(experiment_page());
   EXPECT_EQ(html.find("<?xml"), std::string::npos);
