@@ -42,14 +42,18 @@ bool ConfigurationReacher::known_unreachable(const HoldConfiguration& complete, 
   return cache_.known_unreachable(cache_key(complete, next_to_move));
 }
 
+IkResult ConfigurationReacher::solve(const Posture& from, const HoldConfiguration& complete) {
+  const ReachTarget target = reach_target(model_, wall_, complete, parameters_.root);
+  return parameters_.guess == IkGuess::Standing
+             ? solve_ik(model_, data_, standing_posture(target.root), target, parameters_.ik)
+             : solve_ik(model_, data_, from, target, parameters_.ik);
+}
+
 const Posture* ConfigurationReacher::reach(const Posture& from, const HoldConfiguration& complete, Limb next_to_move) {
   const std::uint64_t code = cache_key(complete, next_to_move);
   if (const Posture* cached = cache_.reached(code)) return cached;
   if (cache_.known_unreachable(code)) return nullptr;
-  const ReachTarget target = reach_target(model_, wall_, complete, parameters_.root);
-  const IkResult result = parameters_.guess == IkGuess::Standing
-                              ? solve_ik(model_, data_, standing_posture(target.root), target, parameters_.ik)
-                              : solve_ik(model_, data_, from, target, parameters_.ik);
+  const IkResult result = solve(from, complete);
   ++solves_;
   if (result.reached) {
     bool holds = true;
@@ -77,8 +81,18 @@ const Posture* ConfigurationReacher::reach_start() {
 
 const Posture& ConfigurationReacher::require_start(const std::string& source) {
   const Posture* start = reach_start();
-  if (start == nullptr) throw InputError(source, "the start configuration is not reachable");
-  return *start;
+  if (start != nullptr) return *start;
+  // Which test failed: the IK's, or (under the static model) the stance's. The IK is solved
+  // once more, without the stance check, on this error path only.
+  const bool avoiding = parameters_.ik.wall == WallRule::Avoid;
+  if (stance_ && solve(start_guess(model_, wall_, parameters_.root), start_configuration(wall_)).reached) {
+    throw InputError(source,
+                     "the IK reaches the start configuration, but its stance does not hold still under the static "
+                     "model (on its four holds and on the three left when the right hand lets go)");
+  }
+  throw InputError(source, std::string("the start configuration is not reachable: the IK finds no posture grasping "
+                                       "its four holds") +
+                               (avoiding ? " with the body kept out of the wall (ik.wall = avoid)" : ""));
 }
 
 const BodyData& ConfigurationReacher::place(const Posture& posture) {

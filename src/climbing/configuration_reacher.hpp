@@ -47,7 +47,8 @@ class ConfigurationReacher {
   const Posture* reach_start();
 
   // reach_start's posture; InputError naming `source` (the wall as the user gave it)
-  // when the start is not reachable.
+  // when the start is not reachable, saying which test failed: the IK (with the body kept
+  // out of the wall, under ik.wall = avoid) or the static model's stance.
   const Posture& require_start(const std::string& source);
 
   // Forward kinematics and centre of mass of `posture`; valid until the next call.
@@ -61,6 +62,8 @@ class ConfigurationReacher {
 
  private:
   std::uint64_t cache_key(const HoldConfiguration& complete, Limb next_to_move) const;
+  // The IK's solve for `complete` from `from` (or from standing, as ik.guess says).
+  IkResult solve(const Posture& from, const HoldConfiguration& complete);
 
   const BodyModel& model_;
   const Wall& wall_;

@@ -31,6 +31,7 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
   std::deque<std::size_t> frontier{0};
   std::vector<int> possible(wall.hold_count());
   Plan plan;
+  plan.physics_model = parameters.physics.model;
   // The path's postures are checked on the three holds kept during the move; its first
   // posture is the last stance, which holds on them.
   std::optional<StanceCheck> move_check;

@@ -24,6 +24,7 @@ struct PlanParameters {
 };
 
 struct Plan {
+  PhysicsModel physics_model = PhysicsModel::Kinematic;  // the model it planned under
   bool found = false;
   bool stopped_at_limit = false;  // the budget ran out before a climb was found or ruled out
   int length = 0;                 // actions

@@ -10,6 +10,7 @@ namespace crux {
 nlohmann::ordered_json plan_json(const Wall& wall, const Plan& plan) {
   nlohmann::ordered_json out;
   out["wall"] = wall.name;
+  out["physics_model"] = enum_name(plan.physics_model);
   out["found"] = plan.found;
   out["stopped_at_limit"] = plan.stopped_at_limit;
   out["length"] = plan.found ? plan.length : -1;
@@ -24,17 +25,18 @@ nlohmann::ordered_json plan_json(const Wall& wall, const Plan& plan) {
 }
 
 std::string plan_text(const Wall& wall, const Plan& plan) {
+  const std::string model = fmt::format("under the {} model", enum_name(plan.physics_model));
   if (plan.stopped_at_limit) {
     return fmt::format(
-        "no climb found on '{}' within {} ({} explored); the search stopped at its limit, "
+        "no climb found on '{}' {} within {} ({} explored); the search stopped at its limit, "
         "--plan-max-solves raises it\n",
-        printable(wall.name), counted(plan.ik_solves, "IK solve"), counted(plan.expanded_states, "state"));
+        printable(wall.name), model, counted(plan.ik_solves, "IK solve"), counted(plan.expanded_states, "state"));
   }
   if (!plan.found) {
-    return fmt::format("no climb exists on '{}' ({} explored, {})\n", printable(wall.name),
+    return fmt::format("no climb exists on '{}' {} ({} explored, {})\n", printable(wall.name), model,
                        counted(plan.expanded_states, "state"), counted(plan.ik_solves, "IK solve"));
   }
-  std::string out = fmt::format("shortest climb on '{}': {} ({} explored, {})\n", printable(wall.name),
+  std::string out = fmt::format("shortest climb on '{}' {}: {} ({} explored, {})\n", printable(wall.name), model,
                                 counted(plan.length, "action"), counted(plan.expanded_states, "state"),
                                 counted(plan.ik_solves, "IK solve"));
   for (int i = 0; i < plan.length; ++i) {

@@ -67,7 +67,10 @@ TEST(ConfigurationReacher, StartIsSolveStartAnsweredThroughTheCache) {
           reacher.require_start("wall.json");
           ADD_FAILURE() << "seed " << seed << ": an unreachable start is an input error";
         } catch (const InputError& error) {
-          EXPECT_STREQ(error.what(), "wall.json: the start configuration is not reachable") << "seed " << seed;
+          EXPECT_STREQ(error.what(),
+                       "wall.json: the start configuration is not reachable: the IK finds no posture grasping its "
+                       "four holds")
+              << "seed " << seed;
         }
         ++refused;
       }
@@ -82,6 +85,47 @@ TEST(ConfigurationReacher, StartIsSolveStartAnsweredThroughTheCache) {
 // The reach envelope only saves time: on 4-configurations of a wall that move one
 // limb of the start to any hold, or put every limb on any hold, every verdict and
 // posture equals a solve that iterates whatever the target.
+// Under the static model a start can fail two ways, and the error says which: a wall whose
+// start the IK reaches with the body out of the wall but whose stance does not hold, and
+// one whose start the IK does not reach at all.
+TEST(ConfigurationReacher, AnUnreachableStartSaysWhichTestFailed) {
+  const BodyModel& model = testing::human_model();
+  RandomWallParameters overhang;
+  overhang.incline_deg = 40.0;
+  const auto error_of = [&](ConfigurationReacher& reacher) {
+    try {
+      reacher.require_start("wall.json");
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  bool stance_failed = false, ik_failed = false;
+  for (std::uint64_t seed = 1; seed <= 40 && !(stance_failed && ik_failed); ++seed) {
+    const Wall wall = generate_random_wall(seed, overhang);
+    BodyData data(model);
+    const bool ik_reaches = solve_start(model, data, wall, kept_out_of_the_wall()).reached;
+    ConfigurationReacher reacher(model, wall, kept_out_of_the_wall(), PhysicsParameters{PhysicsModel::Static});
+    const std::string error = error_of(reacher);
+    if (error.empty()) continue;
+    if (ik_reaches) {
+      stance_failed = true;
+      EXPECT_EQ(error,
+                "wall.json: the IK reaches the start configuration, but its stance does not hold still under the "
+                "static model (on its four holds and on the three left when the right hand lets go)")
+          << "seed " << seed;
+    } else {
+      ik_failed = true;
+      EXPECT_EQ(error,
+                "wall.json: the start configuration is not reachable: the IK finds no posture grasping its four "
+                "holds with the body kept out of the wall (ik.wall = avoid)")
+          << "seed " << seed;
+    }
+  }
+  EXPECT_TRUE(stance_failed) << "a 40-degree wall among the first 40 whose start reaches but does not hold";
+  EXPECT_TRUE(ik_failed) << "a 40-degree wall among the first 40 whose start the IK does not reach";
+}
+
 TEST(ConfigurationReacher, ReachEnvelopeChangesNoVerdict) {
   const BodyModel& model = testing::human_model();
   ReachabilityParameters paper;
