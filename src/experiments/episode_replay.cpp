@@ -45,6 +45,7 @@ RecordedClimb replay_episode(const BodyModel& model, const Wall& wall, const Cli
     if (outcome.fell) {  // the episode's climb starts again: show its last attempt
       climb.steps.clear();
       climb.postures.assign(1, mdp.posture());
+      ++climb.attempt;
     }
     climb.finished = outcome.finished;
   }

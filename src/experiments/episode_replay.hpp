@@ -33,6 +33,9 @@ struct RecordedClimb {
   bool finished = true;  // false for a replayed episode that the run's iterations cut off
   std::vector<RunStep> steps;     // every move; a greedy move has iteration 0
   std::vector<Posture> postures;  // the start, then one per reached move
+  // Which attempt of its episode it is, from 1: under the static model a fall takes the
+  // climber back to the start, and the climb shown is the episode's last attempt.
+  int attempt = 1;
 };
 
 // Episode `episode` (an index from 0, as in iterations.csv) of the run whose every step

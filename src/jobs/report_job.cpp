@@ -26,6 +26,7 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
   page.replay_title = fmt::format("{} on '{}': {}", run.name, run.wall.name, climb_description(climb));
   page.replay_climb = climb.kind;
   page.replay_episode = climb.episode;
+  page.replay_attempt = climb.attempt;
   page.replay_reason = shown_climb_reason(run, climb, climb_choice, recorded.settings.learning.greedy_cap, "--climb");
   const std::optional<ClimbStances> stances = climb_stances(model, run.wall, climb, climbing.physics);
   if (stances && !climb.postures.empty()) {

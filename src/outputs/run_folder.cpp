@@ -58,9 +58,13 @@ std::string paper_run_names(const fs::path& folder) {
 }  // namespace
 
 std::string climb_description(const RecordedClimb& climb) {
-  return climb.kind == "greedy" ? std::string("the greedy policy's climb after learning")
-                                : fmt::format("the climb of episode {}{}", climb.episode + 1,  // from 1, as in Fig. 4
-                                              climb.finished ? "" : " (unfinished)");
+  return climb.kind == "greedy"
+             ? std::string("the greedy policy's climb after learning")
+             : fmt::format("the climb of episode {}{}{}", climb.episode + 1,  // from 1, as in Fig. 4
+                           climb.attempt > 1 ? fmt::format(", attempt {} (after {} back to the start)", climb.attempt,
+                                                           counted(climb.attempt - 1, "fall"))
+                                             : "",
+                           climb.finished ? "" : " (unfinished)");
 }
 
 const RecordedClimb& chosen_climb(const RunFolder& folder, std::string_view kind) {
@@ -200,6 +204,7 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
     if (step.fell) {  // climb.csv holds the episode's last attempt, from the start it fell back to
       last.steps.clear();
       reached = 0;
+      ++last.attempt;
     }
   }
 
@@ -242,8 +247,11 @@ RecordedClimb climb_to_show(const RunFolder& folder, const BodyModel& model, con
                         (folder.directory / "iterations.csv").string(), flag);
 }
 
-std::string shown_climb_reason(const RunFolder& folder, const RecordedClimb& shown, const std::string& choice,
-                               int greedy_cap, const std::string& flag) {
+namespace {
+
+// shown_climb_reason's words for the choice, whatever the attempt.
+std::string chosen_climb_reason(const RunFolder& folder, const RecordedClimb& shown, const std::string& choice,
+                                int greedy_cap, const std::string& flag) {
   const std::string last = fmt::format("the last completed episode (episode {})", folder.last.episode + 1);
   if (shown.kind == "greedy") {
     return fmt::format("the greedy policy's climb after learning, which reaches the top in {}",
@@ -261,6 +269,16 @@ std::string shown_climb_reason(const RunFolder& folder, const RecordedClimb& sho
   }
   return fmt::format("episode {}, as {} {} asks{}", shown.episode + 1, flag, choice,
                      shown.finished ? "" : "; the run ended during it, so it does not reach the top");
+}
+
+}  // namespace
+
+std::string shown_climb_reason(const RunFolder& folder, const RecordedClimb& shown, const std::string& choice,
+                               int greedy_cap, const std::string& flag) {
+  const std::string reason = chosen_climb_reason(folder, shown, choice, greedy_cap, flag);
+  if (shown.attempt == 1) return reason;
+  return fmt::format("{}; it shows the episode's last attempt, attempt {}, after {} back to the start", reason,
+                     shown.attempt, counted(shown.attempt - 1, "fall"));
 }
 
 }  // namespace crux

@@ -25,6 +25,7 @@ struct ReportPage {
   std::string replay_title;
   std::string replay_climb;       // its kind: greedy, last or episode (RecordedClimb)
   int replay_episode = -1;        // its episode's index from 0; -1 for the greedy climb
+  int replay_attempt = 1;         // which attempt of its episode, from 1 (a fall starts another)
   std::string replay_reason;      // which climb it is and why, or why there is no replay (shown_climb_reason)
   nlohmann::ordered_json replay;  // replay_data(); null for none
   // The replayed climb's recorded postures that pass through the wall (body/wall_penetration),

@@ -32,6 +32,7 @@ nlohmann::ordered_json written_report_json(const ReportPage& page, const std::st
   out["replay_climb"] = page.replay.is_null() ? nlohmann::ordered_json() : nlohmann::ordered_json(page.replay_climb);
   // Episodes are numbered from 1 wherever crux shows one, as in the paper's Fig. 4.
   out["replay_episode"] = page.replay_episode < 0 ? -1 : page.replay_episode + 1;
+  out["replay_attempt"] = page.replay_attempt;
   out["replay_reason"] = page.replay_reason;
   out["replay_moves"] = replay_moves(page);
   out["climb_moves"] = climb_moves(page);

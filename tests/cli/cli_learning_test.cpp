@@ -298,6 +298,19 @@ TEST(CliLearning, AStaticRunWhoseLastClimbFellIsReportedFromItsLastAttempt) {
   const auto json = nlohmann::json::parse(report.out);
   EXPECT_EQ(json.at("replay_climb"), "last");
   EXPECT_EQ(json.at("climb_moves"), moves_since_fall);
+  // Which attempt of which episode it shows: the one after the episode's last fall.
+  EXPECT_EQ(json.at("replay_episode"), completed);
+  EXPECT_EQ(json.at("replay_attempt"), falls + 1);
+  EXPECT_NE(json.at("replay_reason")
+                .get<std::string>()
+                .find(fmt::format("it shows the episode's last attempt, attempt {}, after {} fall", falls + 1, falls)),
+            std::string::npos)
+      << json.at("replay_reason");
+  // The same episode asked by number says the same.
+  const auto numbered = run_crux("report " + run.string() + " --climb " + std::to_string(completed) + " -o " +
+                                 learning_scratch("static_falls_numbered").string() + " --json");
+  ASSERT_EQ(numbered.exit_code, 0) << numbered.err;
+  EXPECT_EQ(nlohmann::json::parse(numbered.out).at("replay_attempt"), falls + 1);
 }
 
 TEST(CliLearning, TrainingWallsOutsideTheirRangeAreOneLine) {

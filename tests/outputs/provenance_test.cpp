@@ -4,6 +4,7 @@
 
 #include "common/input_error.hpp"
 #include "common/sha256.hpp"
+#include "support/repository_docs.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
@@ -24,6 +25,24 @@ TEST(Provenance, RecordsTheInputsDigestsAndTheSeed) {
   EXPECT_NE(toml.find("urdf_sha256 = \"" + p.urdf_sha256 + "\""), std::string::npos);
   EXPECT_EQ(provenance_json(p)["wall_seed"], 42);
   EXPECT_TRUE(provenance_json(p)["wall_sha256"].is_null());
+}
+
+// README says what config.toml's [provenance] records: every key it can write, by name.
+TEST(Provenance, ReadmeNamesEveryKeyConfigTomlRecords) {
+  Provenance every;
+  every.crux_version = every.git_commit = every.produced_by = every.urdf = every.urdf_sha256 = "x";
+  every.wall_file = every.wall_sha256 = every.q_grid = every.q_grid_sha256 = "x";
+  const std::string readme = testing::repository_file("README.md");
+  const std::string toml = provenance_toml(every);
+  std::size_t keys = 0;
+  for (std::size_t at = toml.find("\n", toml.find("[provenance]")); at + 1 < toml.size();
+       at = toml.find('\n', at + 1)) {
+    const std::string key = toml.substr(at + 1, toml.find(" = ", at) - at - 1);
+    EXPECT_NE(readme.find("`" + key + "`"), std::string::npos) << key;
+    ++keys;
+  }
+  EXPECT_EQ(keys, 9u);
+  EXPECT_EQ(readme.find("the command that ran it"), std::string::npos) << "it records the job, not the command line";
 }
 
 TEST(Provenance, AReplayWithAnotherFileIsRefusedNamingTheConfig) {

@@ -158,6 +158,10 @@ TEST(RunFolder, AClimbIsDescribedByItsKind) {
   EXPECT_EQ(climb_description({"last", 7, true, {}, {}}), "the climb of episode 8");
   EXPECT_EQ(climb_description({"episode", 0, true, {}, {}}), "the climb of episode 1");
   EXPECT_EQ(climb_description({"episode", 9, false, {}, {}}), "the climb of episode 10 (unfinished)");
+  EXPECT_EQ(climb_description({"episode", 0, true, {}, {}, 3}),
+            "the climb of episode 1, attempt 3 (after 2 falls back to the start)");
+  EXPECT_EQ(climb_description({"last", 4, true, {}, {}, 2}),
+            "the climb of episode 5, attempt 2 (after 1 fall back to the start)");
 }
 
 }  // namespace
