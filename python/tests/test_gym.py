@@ -1,6 +1,8 @@
 """crux.gym against the real Gymnasium 1.4.0: its checker, make, wrappers and vector env,
 masks, seeds, the finishing observation, walls per episode and the held-out split."""
 
+import pathlib
+import re
 import subprocess
 import sys
 
@@ -17,6 +19,7 @@ from gymnasium.utils.env_checker import check_env  # noqa: E402 (after Gymnasium
 import crux.gym  # noqa: E402
 
 FORMS = ("numeric", "paper")
+REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
 
 
 def masked_random_steps(env, seed, count, reset_seed=None):
@@ -274,6 +277,12 @@ def test_rgb_array_tells_left_from_right_and_says_which_is_which():
         "right hand", "left hand", "right foot", "left foot", "trunk, head",
         "held hold", "possible hold", "other hold", "centre of mass", "finish, 3.00 m",
     ]
+    # The limbs' colours are those of the SVG views, in limb order.
+    palette = (REPOSITORY / "src" / "views" / "palette.hpp").read_text()
+    named = dict(re.findall(r'(kOkabeIto\w+) = "(#[0-9a-f]{6})"', palette))
+    styles = re.findall(r'\{"[RL][HF]", "([a-z ]+)", (kOkabeIto\w+)\}', palette)
+    assert [(name, named[colour]) for name, colour in styles] == [
+        (name.replace("_", " "), colour) for name, colour in zip(crux.LIMB_NAMES, crux.gym._LIMB_COLOURS)]
     # Each limb's colour is drawn on the wall itself, not only in the legend beside it.
     on_the_wall = image[:, : int(legend.get_window_extent().x0)]
     for name, colour in zip(crux.LIMB_NAMES, crux.gym._LIMB_COLOURS):
