@@ -6,7 +6,12 @@ random policy on the same walls (docs/BASELINES.md).
     /usr/bin/python3 examples/python/dqn_baseline.py train --steps 20000         # one run, as JSON
     /usr/bin/python3 examples/python/dqn_baseline.py search --out build/baseline # the tuning grid, 3 seeds a setting
     /usr/bin/python3 examples/python/dqn_baseline.py compare --out build/baseline   # on the held-out walls
-    /usr/bin/python3 examples/python/dqn_baseline.py plot --out build/baseline docs/images/baseline_curves.svg
+    /usr/bin/python3 examples/python/dqn_baseline.py plot --out build/baseline docs/images/baseline_curves.png
+
+search writes OUT/search.jsonl (OUT/search-KofN.jsonl with --part K/N), one JSON record
+per run, and the networks in OUT/nets/; compare writes OUT/comparison.json; plot writes
+the figure it is given (.png or .svg). docs/BASELINES.md times the full run (about half
+an hour on 2 cores) and gives the same pipeline at a scale that runs in minutes.
 
 Walls are random walls named by their seeds: training walls 0 .. N-1, validation walls
 from 10000 (to choose the setting), held-out evaluation walls from 20000 (to report).
@@ -53,6 +58,7 @@ STATE_SIZE = 55  # free limb 4, held holds 12, root 3, joint angles 32, centre o
 CHECKPOINTS = 2  # validation evaluations, evenly spaced, the last at the end
 SEARCH_GRID = {"lr": [3e-4, 1e-3], "epsilon_decay": [0.2, 0.6], "hidden": [64, 128]}
 SEEDS_PER_SETTING = 3
+COMPARISON_FILE = "comparison.json"
 DYNA_CONDITIONS = [("Dyna-Q paper, from scratch", "paper", False), ("Dyna-Q paper, transfer", "paper", True),
                    ("Dyna-Q prior, from scratch", "prior", False), ("Dyna-Q prior, transfer", "prior", True)]
 
@@ -442,6 +448,11 @@ def part(text):
     return index, count
 
 
+def search_log_name(index, count):
+    """The file that part index of count of the search appends its records to."""
+    return "search.jsonl" if count == 1 else f"search-{index}of{count}.jsonl"
+
+
 def search_records(out):
     """The records of every part of the search, in the grid's order."""
     records = [json.loads(line) for path in sorted(out.glob("search*.jsonl")) for line in path.read_text().splitlines()]
@@ -453,7 +464,7 @@ def command_search(args):
     out = pathlib.Path(args.out)
     (out / "nets").mkdir(parents=True, exist_ok=True)
     index, count = args.part
-    log_path = out / ("search.jsonl" if count == 1 else f"search-{index}of{count}.jsonl")
+    log_path = out / search_log_name(index, count)
     done = set()
     if log_path.exists():
         done = {(setting_name(r["setting"]), r["seed"]) for r in map(json.loads, log_path.read_text().splitlines())}
@@ -622,7 +633,7 @@ def command_compare(args):
     summary["search"] = {name: rows for name, rows in table.items()}
     summary["episode_ends"] = curves
     summary["runs"] = results
-    (out / "comparison.json").write_text(json.dumps(summary, indent=1, sort_keys=True))
+    (out / COMPARISON_FILE).write_text(json.dumps(summary, indent=1, sort_keys=True))
     print(markdown(summary))
 
 
@@ -679,7 +690,7 @@ def command_plot(args):
 
     out = pathlib.Path(args.out)
     records = search_records(out)
-    summary = json.loads((out / "comparison.json").read_text())
+    summary = json.loads((out / COMPARISON_FILE).read_text())
     matplotlib.rcParams["svg.hashsalt"] = "crux"  # the same figure, the same bytes
     figure, (left, middle, right) = plt.subplots(1, 3, figsize=(16, 4.6))
     by_setting = collections.defaultdict(list)
@@ -716,7 +727,8 @@ def command_plot(args):
 
 
 def main(argv=None):
-    parser = OneLineParser(description=__doc__.splitlines()[0])
+    # The whole docstring, so that --help gives the commands and the files they write.
+    parser = OneLineParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     commands = parser.add_subparsers(dest="command", required=True, parser_class=OneLineParser)
     one = commands.add_parser("train", help="one DQN run; prints its record as JSON")
     one.add_argument("--steps", type=positive, default=20000, help="environment steps of training")
@@ -728,7 +740,8 @@ def main(argv=None):
     one.add_argument("--train-walls", type=positive, default=500)
     one.add_argument("--validation-walls", type=positive, default=30)
     one.add_argument("--save", help="where to write the network's state_dict")
-    search = commands.add_parser("search", help="the tuning grid, appending to OUT/search.jsonl")
+    search = commands.add_parser(
+        "search", help="the tuning grid, appending to OUT/search.jsonl (search-KofN.jsonl with --part K/N)")
     search.add_argument("--out", required=True)
     search.add_argument("--steps", type=positive, default=20000)
     search.add_argument("--seed", type=int, default=1)

@@ -31,6 +31,60 @@ WALL_ORDERS = ("cycle", "sample")
 DEFAULT_MAX_CANDIDATES = 32
 
 
+# rgb_array's colours are those of crux's SVG views (src/views/palette.hpp, wall_svg.cpp),
+# so that a frame reads as `crux view` and `crux wall show` do: each limb its own
+# Okabe-Ito colour (right hand vermillion, left hand blue, right foot orange, left foot
+# reddish purple, in limb order), so left tells from right; held holds dark, other holds
+# grey, and the holds a move may take in the palette's bluish green.
+_LIMB_COLOURS = ("#d55e00", "#0072b2", "#e69f00", "#cc79a7")
+_TRUNK_COLOUR = "#77624f"  # the URDF's crux_skin, as the body view strokes it
+_HELD_HOLD_COLOUR = "#222222"
+_POSSIBLE_HOLD_COLOUR = "#009e73"
+_OTHER_HOLD_COLOUR = "#bbbbbb"
+_FINISH_COLOUR = "#444444"
+_COM_COLOUR = "#111111"
+_RGB_WALL_WIDTH = 2 / 3  # of the frame's width; the legend takes the rest
+# A limb's joints by name (the default body's): its side, then these words.
+_LIMB_JOINT_WORDS = {"hand": ("shoulder", "elbow", "forearm", "wrist"), "foot": ("hip", "knee", "ankle")}
+
+
+def _joint_limbs(joint_names):
+    """Each joint's limb (its index in crux.LIMB_NAMES), or -1 for the root, trunk and head."""
+    limb_of = {}
+    for limb, limb_name in enumerate(_crux.LIMB_NAMES):
+        side, part = limb_name.split("_")
+        for word in _LIMB_JOINT_WORDS[part]:
+            limb_of[f"{side}_{word}"] = limb
+    return [next((limb for prefix, limb in limb_of.items() if name.startswith(prefix)), -1) for name in joint_names]
+
+
+def _rgb_legend(finish_height):
+    """The rgb_array frame's legend: what each colour and marker stands for."""
+    from matplotlib.lines import Line2D
+
+    def line(colour, label, **style):
+        return Line2D([], [], color=colour, label=label, **style)
+
+    limbs = [line(c, name.replace("_", " "), linewidth=3) for name, c in zip(_crux.LIMB_NAMES, _LIMB_COLOURS)]
+    holds = [
+        line(c, label, marker="o", linestyle="", markersize=6)
+        for label, c in (("held hold", _HELD_HOLD_COLOUR), ("possible hold", _POSSIBLE_HOLD_COLOUR),
+                         ("other hold", _OTHER_HOLD_COLOUR))
+    ]
+    return [
+        *limbs,
+        line(_TRUNK_COLOUR, "trunk, head", linewidth=3),
+        *holds,
+        line(_COM_COLOUR, "centre of mass", marker="x", linestyle="", markersize=7),
+        line(_FINISH_COLOUR, f"finish, {finish_height:.2f} m", linestyle="--", linewidth=1),
+    ]
+
+
+def _plot_segment(axes, ends, colour):
+    """A bone of the skeleton from its two ends (world points), as seen on the wall (y, z)."""
+    axes.plot(ends[:, 1], ends[:, 2], color=colour, linewidth=3, zorder=2, solid_capstyle="round")
+
+
 class MaskedDiscrete(spaces.Discrete):
     """Discrete(n) whose sample() with no mask draws among the actions the current state
     offers (the environment keeps `offered` up to date), so that a random agent, and
@@ -165,7 +219,8 @@ class ClimbEnv(gymnasium.Env):
     config: the keys of config.toml's [reward], [ik], [physics], [filter] and [grid] tables and experiment.urdf.
     max_candidates: the numeric form's action count, the most candidates a state may offer.
     model: a crux.BodyModel, or None for experiment.urdf's body or the default one.
-    render_mode: None, "rgb_array" (the climber on the wall, by matplotlib) or "ansi".
+    render_mode: None, "rgb_array" (the climber on the wall, each limb in its colour, with a
+        legend; by matplotlib) or "ansi".
     """
 
     metadata = {"render_modes": ["rgb_array", "ansi"], "render_fps": 2}
@@ -380,38 +435,55 @@ class ClimbEnv(gymnasium.Env):
         )
 
     def _render_rgb(self):
+        figure = self._rgb_figure()
+        figure.canvas.draw()
+        return np.asarray(figure.canvas.buffer_rgba())[:, :, :3].copy()
+
+    def _rgb_figure(self):
+        """The rgb_array frame as a matplotlib Figure: the wall on the left, its legend on the right."""
         # Imported here: only rgb_array needs matplotlib (Debian's python3-matplotlib).
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure
 
         wall, raw = self.wall, self._raw
         positions = wall.positions
-        figure = Figure(figsize=(3.2, 4.8), dpi=100)
+        figure = Figure(figsize=(4.8, 4.8), dpi=100)
         FigureCanvasAgg(figure)
-        axes = figure.add_axes((0, 0, 1, 1))
+        axes = figure.add_axes((0, 0, _RGB_WALL_WIDTH, 1))
         axes.set_aspect("equal")
         axes.axis("off")
         # Seen from behind the climber (x < 0, facing +x, y to its left): y grows leftwards.
         low, high = positions.min(axis=0), positions.max(axis=0)
         axes.set_xlim(high[1] + 0.5, low[1] - 0.5)
         axes.set_ylim(low[2] - 0.5, max(high[2], wall.finish_height) + 0.5)
-        axes.axhline(wall.finish_height, color="#c0392b", linestyle="--", linewidth=1)
+        axes.axhline(wall.finish_height, color=_FINISH_COLOUR, linestyle="--", linewidth=1)
         offered = self._env.action_mask()
         held = raw["configuration"][raw["configuration"] >= 0]
-        colours = np.array(["#bbbbbb"] * wall.hold_count, dtype=object)
-        colours[offered] = "#27ae60"
-        colours[held] = "#2c3e50"
+        colours = np.array([_OTHER_HOLD_COLOUR] * wall.hold_count, dtype=object)
+        colours[offered] = _POSSIBLE_HOLD_COLOUR
+        colours[held] = _HELD_HOLD_COLOUR
         axes.scatter(positions[:, 1], positions[:, 2], s=40, c=list(colours), zorder=1)
-        # The skeleton: every joint past the root's translations joined to its parent, and the grasp points.
+        # The skeleton: each joint past the root's translations joined to its parent, the
+        # segment coloured by the limb its parent joint moves, then each limb's last joint
+        # joined to its grasp point.
         body = _crux.forward_kinematics(self._model, raw["posture"], joints=True)
         origins, parents = body["joint_origins"], self._model.joint_parents
+        limbs = _joint_limbs(self._model.joint_names)
         for joint in range(_crux.ROOT_DOF, len(parents)):
-            segment = origins[[parents[joint], joint]]
-            axes.plot(segment[:, 1], segment[:, 2], color="#e67e22", linewidth=3, zorder=2, solid_capstyle="round")
-        axes.scatter(body["points"][1:, 1], body["points"][1:, 2], s=12, c="#e67e22", zorder=2)
-        axes.scatter([self._centre_of_mass[1]], [self._centre_of_mass[2]], s=60, c="#8e44ad", marker="x", zorder=3)
-        figure.canvas.draw()
-        return np.asarray(figure.canvas.buffer_rgba())[:, :, :3].copy()
+            parent = parents[joint]
+            colour = _TRUNK_COLOUR if limbs[parent] < 0 else _LIMB_COLOURS[limbs[parent]]
+            _plot_segment(axes, origins[[parent, joint]], colour)
+        for limb, colour in enumerate(_LIMB_COLOURS):
+            ends = [j for j in range(len(parents)) if limbs[j] == limb and j not in parents]
+            for end in ends:
+                _plot_segment(axes, np.stack([origins[end], body["points"][1 + limb]]), colour)
+            axes.scatter([body["points"][1 + limb, 1]], [body["points"][1 + limb, 2]], s=16, c=colour, zorder=3)
+        axes.scatter([self._centre_of_mass[1]], [self._centre_of_mass[2]], s=60, c=_COM_COLOUR, marker="x", zorder=4)
+        figure.legend(
+            handles=_rgb_legend(wall.finish_height), loc="center left", bbox_to_anchor=(_RGB_WALL_WIDTH, 0.5),
+            frameon=False, fontsize=8, title="from behind the climber", title_fontsize=8,
+        )
+        return figure
 
 
 class VectorClimbEnv(gymnasium.vector.VectorEnv):

@@ -6,6 +6,7 @@ import importlib.util
 import json
 import os
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -20,7 +21,9 @@ gymnasium, torch = need(
     ["gymnasium", "torch"], "the baseline needs Gymnasium (../shared/third_party/gymnasium-1.4.0) and Debian's python3-torch"
 )
 
-SCRIPT = pathlib.Path(__file__).resolve().parents[2] / "examples" / "python" / "dqn_baseline.py"
+REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
+SCRIPT = REPOSITORY / "examples" / "python" / "dqn_baseline.py"
+BASELINES = REPOSITORY / "docs" / "BASELINES.md"
 SHORT = ["--steps", "300", "--train-walls", "2", "--validation-walls", "2"]
 
 
@@ -33,8 +36,9 @@ def baseline():
 
 
 def run_script(*args):
-    # The example's interpreter finds crux and Gymnasium where this one did.
-    path = [str(pathlib.Path(crux.__file__).resolve().parents[1]), str(pathlib.Path(gymnasium.__file__).parents[1])]
+    # The example's interpreter finds crux and Gymnasium where this one did (not where a
+    # symlinked package file points, which may lack the extension).
+    path = [str(pathlib.Path(crux.__file__).absolute().parents[1]), str(pathlib.Path(gymnasium.__file__).parents[1])]
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(path))
     return subprocess.run([sys.executable, str(SCRIPT), *args], capture_output=True, text=True, env=env)
 
@@ -146,3 +150,36 @@ def test_bad_input_is_one_line_naming_the_argument(baseline, capsys, argument, v
 def test_train_refuses_a_budget_below_one(baseline):
     with pytest.raises(ValueError, match="^steps: must be a positive integer"):
         baseline.train(short_args(steps=0))
+
+
+def test_help_prints_the_whole_description(baseline, capsys):
+    with pytest.raises(SystemExit) as exit:
+        baseline.main(["--help"])
+    assert exit.value.code == 0
+    out = " ".join(capsys.readouterr().out.split())
+    # The first paragraph was cut after its first line; the whole docstring is the description.
+    assert " ".join(baseline.__doc__.split()) in out
+    assert "beside the paper's Dyna-Q and the random policy on the same walls (docs/BASELINES.md)." in out
+
+
+def test_the_docs_name_the_files_the_script_writes(baseline, tmp_path, monkeypatch):
+    # One setting and one seed: the search's files for two short runs instead of 24.
+    monkeypatch.setattr(baseline, "SEARCH_GRID", {"lr": [1e-3], "epsilon_decay": [0.2], "hidden": [16]})
+    monkeypatch.setattr(baseline, "SEEDS_PER_SETTING", 1)
+    for part, log in (("1/1", "search.jsonl"), ("1/2", "search-1of2.jsonl")):
+        out = tmp_path / part.replace("/", "of")
+        baseline.main(["search", "--out", str(out), "--steps", "20", "--train-walls", "2", "--validation-walls", "1",
+                       "--part", part])
+        assert sorted(path.name for path in out.iterdir()) == ["nets", log]
+        assert baseline.search_log_name(*map(int, part.split("/"))) == log
+    # What the docstring and BASELINES.md call them, their K/N included, and compare's file.
+    written = {baseline.search_log_name(k, n) for k, n in ((1, 1), (1, 2), (2, 2), ("K", "N"))}
+    written.add(baseline.COMPARISON_FILE)
+    for name, text in (("the docstring", baseline.__doc__), ("docs/BASELINES.md", BASELINES.read_text())):
+        quoted = set(re.findall(r"[\w-]+\.jsonl?\b", text))
+        assert {"search.jsonl", "search-KofN.jsonl", "comparison.json"} <= quoted <= written, name
+        # plot writes the figure it is given: the docs' is the one they show.
+        for figure in re.findall(r"dqn_baseline\.py plot --out \S+ (\S+)", text):
+            assert figure.endswith(".png"), (name, figure)
+            if figure.startswith("docs/"):
+                assert (REPOSITORY / figure).is_file() and f"]({figure[len('docs/'):]})" in BASELINES.read_text()

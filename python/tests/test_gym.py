@@ -1,6 +1,8 @@
 """crux.gym against the real Gymnasium 1.4.0: its checker, make, wrappers and vector env,
 masks, seeds, the finishing observation, walls per episode and the held-out split."""
 
+import pathlib
+import re
 import subprocess
 import sys
 
@@ -17,6 +19,7 @@ from gymnasium.utils.env_checker import check_env  # noqa: E402 (after Gymnasium
 import crux.gym  # noqa: E402
 
 FORMS = ("numeric", "paper")
+REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
 
 
 def masked_random_steps(env, seed, count, reset_seed=None):
@@ -254,12 +257,37 @@ def test_render_modes():
     env = gymnasium.make(crux.gym.ENV_ID, wall=crux.Wall.random(7), render_mode="rgb_array")
     env.reset(seed=0)
     image = env.render()
-    assert image.dtype == np.uint8 and image.shape == (480, 320, 3)
+    assert image.dtype == np.uint8 and image.shape == (480, 480, 3)
     assert len(np.unique(image.reshape(-1, 3), axis=0)) > 3  # holds, body and wall, not a blank frame
     text = gymnasium.make(crux.gym.ENV_ID, wall=crux.Wall.random(7), render_mode="ansi")
     text.reset(seed=0)
     out = text.render()
     assert out.startswith("random wall, seed 7: right_hand free") and "possible holds:" in out
+
+
+def test_rgb_array_tells_left_from_right_and_says_which_is_which():
+    env = crux.gym.ClimbEnv(crux.Wall.random(7), render_mode="rgb_array")
+    env.reset(seed=0)
+    image = env.render()
+    figure = env._rgb_figure()
+    figure.canvas.draw()
+    assert np.array_equal(image, np.asarray(figure.canvas.buffer_rgba())[:, :, :3])
+    (legend,) = figure.legends
+    assert [text.get_text() for text in legend.get_texts()] == [
+        "right hand", "left hand", "right foot", "left foot", "trunk, head",
+        "held hold", "possible hold", "other hold", "centre of mass", "finish, 3.00 m",
+    ]
+    # The limbs' colours are those of the SVG views, in limb order.
+    palette = (REPOSITORY / "src" / "views" / "palette.hpp").read_text()
+    named = dict(re.findall(r'(kOkabeIto\w+) = "(#[0-9a-f]{6})"', palette))
+    styles = re.findall(r'\{"[RL][HF]", "([a-z ]+)", (kOkabeIto\w+)\}', palette)
+    assert [(name, named[colour]) for name, colour in styles] == [
+        (name.replace("_", " "), colour) for name, colour in zip(crux.LIMB_NAMES, crux.gym._LIMB_COLOURS)]
+    # Each limb's colour is drawn on the wall itself, not only in the legend beside it.
+    on_the_wall = image[:, : int(legend.get_window_extent().x0)]
+    for name, colour in zip(crux.LIMB_NAMES, crux.gym._LIMB_COLOURS):
+        rgb = np.array([int(colour[i : i + 2], 16) for i in (1, 3, 5)], dtype=np.uint8)
+        assert np.all(on_the_wall == rgb, axis=2).sum() > 20, name
 
 
 def test_a_fall_under_the_static_model_terminates_on_the_dead_end():

@@ -1,0 +1,61 @@
+"""README's "From Python" lines run as written, with the PYTHONPATH README gives, so that
+README cannot drift from the module. Of its two ways to get Gymnasium, the test takes the
+source on the path (the tests' own Gymnasium); pip needs PyPI, which CI does not reach."""
+
+import os
+import pathlib
+import re
+import subprocess
+import textwrap
+
+import pytest
+
+import crux
+
+from needed import GYMNASIUM, need
+
+README = pathlib.Path(__file__).resolve().parents[2] / "README.md"
+
+
+def from_python():
+    text = README.read_text()
+    start = text.index("\n## From Python\n")
+    return text[start : text.index("\n## ", start + 1)]
+
+
+def fenced(language):
+    """The section's code blocks in `language`, those indented in list items dedented."""
+    pattern = re.compile(rf"^( *)```{language}\n(.*?)^\1```$", re.S | re.M)
+    return [textwrap.dedent(match.group(2)) for match in pattern.finditer(from_python())]
+
+
+@pytest.fixture
+def repository(tmp_path):
+    """A folder whose build/release/python is the module under test, for README's relative paths."""
+    (tmp_path / "build" / "release").mkdir(parents=True)
+    (tmp_path / "build" / "release" / "python").symlink_to(pathlib.Path(crux.__file__).absolute().parents[1])
+    return tmp_path
+
+
+def run_shell(script, cwd, stdin=None, **variables):
+    env = {key: value for key, value in os.environ.items() if key != "PYTHONPATH"}  # README sets its own
+    return subprocess.run(["bash", "-c", script], cwd=cwd, input=stdin, capture_output=True, text=True,
+                          env=dict(env, **variables), timeout=120)
+
+
+def test_import_crux_runs_with_readmes_pythonpath(repository):
+    (line,) = [line for block in fenced("sh") for line in block.splitlines()
+               if line.startswith("PYTHONPATH=build/release/python /usr/bin/python3 -c")]
+    done = run_shell(line, repository)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith("<crux.BodyModel 'crux_human'"), done.stdout
+
+
+def test_the_python_block_runs_with_gymnasiums_source_on_readmes_pythonpath(repository):
+    (gymnasium,) = need(["gymnasium"], GYMNASIUM)
+    (source_way,) = [block for block in fenced("sh") if block.startswith("GYMNASIUM=")]
+    _, command = source_way.splitlines()
+    (python,) = fenced("python")
+    # README's GYMNASIUM names the reader's unpacked source; here, the tests' one.
+    done = run_shell(command, repository, stdin=python, GYMNASIUM=str(pathlib.Path(gymnasium.__file__).parents[1]))
+    assert done.returncode == 0, done.stderr
