@@ -100,6 +100,44 @@ def learning_rate(text):
     return value
 
 
+class Progress:
+    """Progress on stderr as crux's long commands show it: a bar redrawn in place on a
+    terminal; elsewhere a line every ten seconds, and a last one at the end once one was
+    written (nothing for work done within ten seconds); nothing at all when quiet. stdout,
+    where train prints its record, never changes with it."""
+
+    def __init__(self, label, total, quiet=False, stream=None, every_s=10.0):
+        self.label, self.total, self.every_s = label, total, every_s
+        self.stream = stream if stream is not None else sys.stderr
+        self.enabled = not quiet and total > 0
+        self.terminal = self.enabled and self.stream.isatty()
+        self.started = self.shown = time.perf_counter()
+        self.written = False
+
+    def update(self, done):
+        if not self.enabled:
+            return
+        now = time.perf_counter()
+        finished = done >= self.total
+        if finished and not (self.terminal or self.written):
+            return
+        if not finished and now - self.shown < (0.25 if self.terminal else self.every_s):
+            return
+        self.shown, self.written = now, True
+        rate = done / (now - self.started) if now > self.started else 0.0
+        left = f"{int((self.total - done) / rate) // 60}m{int((self.total - done) / rate) % 60:02d}s" if rate else "?"
+        filled = 40 * done // self.total
+        line = (f"{self.label} [{'#' * filled}{'.' * (40 - filled)}] {100 * done // self.total:3d}% "
+                f"({done}/{self.total}, {rate:.0f}/s, {left} left)")
+        self.stream.write(("\r" + line) if self.terminal else line + "\n")
+        self.stream.flush()
+
+    def close(self):
+        if self.terminal and self.written:
+            self.stream.write("\n")
+            self.stream.flush()
+
+
 def deterministic(seed):
     torch.manual_seed(seed)
     torch.set_num_threads(1)
@@ -256,8 +294,9 @@ def greedy_climbs(net, env, walls, span):
     return results
 
 
-def train(args, validation_walls=None, log=None):
-    """One DQN run; returns its record (deterministic) and the network."""
+def train(args, validation_walls=None, log=None, progress=None):
+    """One DQN run; returns its record (deterministic) and the network. `progress`, if
+    given, hears the environment steps done (a Progress)."""
     for name in ("steps", "hidden", "train_walls"):
         value = getattr(args, name)
         if isinstance(value, bool) or not isinstance(value, int) or value < 1:
@@ -326,6 +365,8 @@ def train(args, validation_walls=None, log=None):
             losses.append(float(loss))
         if step % TARGET_EVERY == 0:
             target.load_state_dict(net.state_dict())
+        if progress:
+            progress.update(step)
         if validation and step in checkpoints:
             validate(step)
             if log:
@@ -420,7 +461,9 @@ def per_wall_mean(runs, key):
 
 def command_train(args):
     started = time.perf_counter()
-    record, net, validation_seconds = train(args, validation_walls=args.validation_walls)
+    progress = Progress("dqn train", args.steps, quiet=args.quiet)
+    record, net, validation_seconds = train(args, validation_walls=args.validation_walls, progress=progress)
+    progress.close()
     if args.save:
         torch.save(net.state_dict(), args.save)
     # Machine-dependent, apart from the rest of the record, which the seed fixes.
@@ -740,6 +783,8 @@ def main(argv=None):
     one.add_argument("--train-walls", type=positive, default=500)
     one.add_argument("--validation-walls", type=positive, default=30)
     one.add_argument("--save", help="where to write the network's state_dict")
+    one.add_argument("--quiet", action="store_true",
+                     help="no progress on stderr (a bar on a terminal, else a line every ten seconds)")
     search = commands.add_parser(
         "search", help="the tuning grid, appending to OUT/search.jsonl (search-KofN.jsonl with --part K/N)")
     search.add_argument("--out", required=True)

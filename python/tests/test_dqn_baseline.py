@@ -183,3 +183,29 @@ def test_the_docs_name_the_files_the_script_writes(baseline, tmp_path, monkeypat
             assert figure.endswith(".png"), (name, figure)
             if figure.startswith("docs/"):
                 assert (REPOSITORY / figure).is_file() and f"]({figure[len('docs/'):]})" in BASELINES.read_text()
+
+
+def test_progress_is_a_timed_line_off_a_terminal_and_nothing_when_quiet(baseline):
+    import io
+
+    def written(**options):
+        stream = io.StringIO()  # not a terminal
+        progress = baseline.Progress("dqn train", 5, stream=stream, **options)
+        for step in range(1, 6):
+            progress.update(step)
+        progress.close()
+        return stream.getvalue()
+
+    every_step = written(every_s=0.0)  # each step "ten seconds" after the last
+    assert every_step.count("\n") == 5, every_step
+    assert every_step.splitlines()[-1].startswith("dqn train [" + "#" * 40 + "] 100% (5/5, "), every_step
+    assert "\r" not in every_step
+    assert written(every_s=1e9) == "", "work done within the interval writes nothing"
+    assert written(every_s=0.0, quiet=True) == ""
+
+
+def test_train_keeps_stdout_to_its_record_and_takes_quiet():
+    done = run_script("train", *SHORT, "--quiet")
+    assert done.returncode == 0, done.stderr
+    assert done.stderr == ""
+    json.loads(done.stdout)
