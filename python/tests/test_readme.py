@@ -59,3 +59,31 @@ def test_the_python_block_runs_with_gymnasiums_source_on_readmes_pythonpath(repo
     # README's GYMNASIUM names the reader's unpacked source; here, the tests' one.
     done = run_shell(command, repository, stdin=python, GYMNASIUM=str(pathlib.Path(gymnasium.__file__).parents[1]))
     assert done.returncode == 0, done.stderr
+
+
+def quick_tour():
+    text = README.read_text()
+    start = text.index("\n## A quick tour\n")
+    block = text[text.index("```sh\n", start) + 6:]
+    return block[: block.index("\n```")].splitlines()
+
+
+def test_the_tours_static_model_lines_show_a_climb(tmp_path):
+    """Each static-model line of the tour learns a climb (not "0 episodes"), and the view
+    that follows draws it (a run without a climb has no posture to show: exit 2)."""
+    binary = os.environ.get("CRUX_BINARY")
+    if not binary:
+        pytest.skip("CRUX_BINARY names the crux binary (ctest sets it)")
+    (tmp_path / "bin").mkdir()
+    (tmp_path / "bin" / "crux").symlink_to(binary)
+    lines = [line for line in quick_tour()
+             if "--physics-model static" in line or line.startswith("crux view --run out/climbs")]
+    assert len(lines) >= 3, lines
+    path = f"{tmp_path / 'bin'}{os.pathsep}{os.environ['PATH']}"
+    for line in lines:
+        done = run_shell(line, tmp_path, PATH=path)
+        assert done.returncode == 0, f"{line}\n{done.stderr}"
+        if line.startswith("crux train"):
+            episodes = int(re.search(r": (\d+) episodes? in ", done.stdout).group(1))
+            assert episodes > 0, f"{line}\n{done.stdout}"
+            assert "greedy climb: does not finish" not in done.stdout, done.stdout
