@@ -10,6 +10,7 @@
 #include "bindings.hpp"
 #include "common/input_error.hpp"
 #include "conversions.hpp"
+#include "experiments/config_key_json.hpp"
 #include "interruption.hpp"
 #include "jobs/command_keys.hpp"
 #include "jobs/learning_job.hpp"
@@ -84,6 +85,11 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
     if (!config.wall_file.empty() || config.wall_seed) {
       throw InputError("wall", "give the wall as wall or as config's wall.file or wall.seed, not both");
     }
+    for (const std::string& key : config.given) {
+      if (is_wall_generator_key(key)) {
+        throw InputError(key, "shapes a random wall, and the wall argument gives the wall itself: drop one of them");
+      }
+    }
     job.wall = wall_handle.cast<Wall>();
   }
   if (!seed_handle.is_none()) config.settings.seed = uint64_from(seed_handle, "seed");
@@ -139,41 +145,11 @@ py::object run_experiment_py(const py::handle& config_handle, const py::handle& 
 
 namespace {
 
-// One declared key as a dict (crux.config_keys).
+// One declared key as a dict (crux.config_keys): its declaration, and its default as "default".
 py::dict key_dict(const ConstConfigField& field) {
+  nlohmann::ordered_json declared = config_key_json(field);
   py::dict out;
-  out["key"] = field.key;
-  out["flag"] = flag_for_key(field.key);
-  out["type"] = field.type_name();
-  py::object default_value = py::none();
-  std::visit(
-      [&](auto target) {
-        using T = std::remove_cvref_t<std::remove_pointer_t<decltype(target)>>;
-        if constexpr (std::is_same_v<T, ChoiceTarget<true>>) {
-          const std::string text = target.type->text(target.target);
-          if (!text.empty()) default_value = py::str(text);
-        } else if constexpr (std::is_same_v<T, std::string>) {
-          if (!target->empty()) default_value = py::str(*target);
-        } else if constexpr (std::is_same_v<T, std::optional<double>> || std::is_same_v<T, std::optional<int>> ||
-                             std::is_same_v<T, std::optional<std::uint64_t>>) {
-          if (*target) default_value = py::cast(**target);
-        } else {
-          default_value = py::cast(*target);
-        }
-      },
-      field.target);
-  out["default"] = default_value;
-  out["unit"] = field.unit;
-  const auto bound = [](double value) -> py::object {
-    return std::isfinite(value) ? py::object(py::float_(value)) : py::object(py::none());
-  };
-  out["min"] = bound(field.bounds.min);
-  out["max"] = bound(field.bounds.max);
-  out["min_open"] = field.bounds.min_open;
-  out["max_open"] = field.bounds.max_open;
-  const auto* choice = std::get_if<ChoiceTarget<true>>(&field.target);
-  out["choices"] = choice == nullptr ? py::object(py::none()) : py::object(py::str(choice->type->choices()));
-  out["help"] = field.described_help();
+  for (auto& [name, value] : declared.items()) out[py::str(name == "value" ? "default" : name)] = json_to_python(value);
   return out;
 }
 
@@ -210,7 +186,8 @@ void bind_experiment(py::module_& m) {
   m.def("config_keys", &config_keys_py,
         "Every config key, as crux declares it once for flags, config files and these dicts: a list of dicts with "
         "key, flag, type (number, integer, seed, boolean, text, path or choice), default (None when unset), unit, "
-        "min and max (None when unbounded) with min_open and max_open, choices and help");
+        "min and max (None when unbounded) with min_open and max_open, sizes_work (its maximum may take hours), "
+        "choices and help");
   m.def("run_learning", &run_learning_py, py::arg("wall") = py::none(), py::arg("config") = py::none(),
         py::arg("seed") = py::none(), py::arg("q_grid") = py::none(), py::arg("model") = py::none(),
         py::arg("output") = py::none(), py::arg("overwrite") = false,

@@ -61,10 +61,10 @@ struct CompareOptions {
 };
 
 std::vector<ConfigField> compare_fields(CompareOptions& options) {
-  return {
-      {"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &options.queries, "", kPositive},
-      {"compare.walk_solver", "Solver whose reached postures start the next queries of ik-compare's climbing walk",
-       choice_of(&options.walk_solver)}};
+  return {{"compare.queries", "Climbing-like queries that ik-compare gives both solvers", &options.queries, "",
+           work_size(1, 10000000)},
+          {"compare.walk_solver", "Solver whose reached postures start the next queries of ik-compare's climbing walk",
+           choice_of(&options.walk_solver)}};
 }
 
 struct IkCompareCommand {

@@ -36,7 +36,7 @@ struct StancesOptions {
 std::vector<ConfigField> stances_fields(StancesOptions& options) {
   return {wall_count_field(options.walls),
           {"stances.moves", "Random kinematic moves per wall whose stances crux stances checks", &options.moves, "",
-           closed_range(1, kMaxStanceMoves)}};
+           work_size(1, kMaxStanceMoves)}};
 }
 
 struct StancesCommand {

@@ -148,7 +148,7 @@ void add_sweep_command(CLI::App& app) {
   s->add_flag("--json", sweep->json, "Print summary.json's contents instead of text");
   s->add_flag("--overwrite", sweep->overwrite,
               "Replace another sweep's, or another crux command's, outputs in the output folder");
-  sweep->binding.bind(s);
+  sweep->binding.bind(s, false);
   sweep->binding.option("experiment.runs")
       ->excludes(sweep->binding.option("experiment.walls"))
       ->excludes(sweep->binding.option("experiment.seeds_per_wall"));

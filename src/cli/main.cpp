@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/parameter_binding.hpp"
 #include "cli/suggestion.hpp"
 #include "common/atomic_file.hpp"
 #include "common/build_info.hpp"
@@ -158,6 +159,8 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const crux::cli::DryRunDone&) {
+    return 0;
   } catch (const CLI::RuntimeError& e) {
     return e.get_exit_code();  // the command has already reported why
   } catch (const CLI::ExtrasError& e) {

@@ -1,12 +1,14 @@
 #include "cli/parameter_binding.hpp"
 
 #include <algorithm>
+#include <iostream>
 #include <set>
 
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
+#include "experiments/config_key_json.hpp"
 
 namespace crux::cli {
 
@@ -79,7 +81,13 @@ void ParameterBinding::bind_field(CLI::App* command, const ConfigField& field) {
       field.target);
 }
 
-void ParameterBinding::bind(CLI::App* command) {
+void ParameterBinding::bind(CLI::App* command, bool dry_run) {
+  command_app_ = command;
+  if (dry_run) {
+    command->add_flag("--dry-run", dry_run_,
+                      "Check every parameter, print the effective ones (TOML that --config reads; with --json each "
+                      "key's value, type and bounds) and exit, running nothing");
+  }
   command->add_option("--config", config_path_,
                       "TOML config file, keys as in the config.toml crux writes (flags override it)");
   for (const ConfigField& field : config_fields(from_flags_)) bind_field(command, field);
@@ -194,7 +202,31 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
   } catch (const InputError& e) {
     throw InputError(where(e.source()), e.problem());
   }
+  if (dry_run_) print_dry_run(config);
   return config;
+}
+
+void ParameterBinding::print_dry_run(const ExperimentConfig& config) const {
+  std::vector<ConstConfigField> fields;
+  for (const ConstConfigField& field : config_fields(config)) {
+    if (accepted_.accepts(field.key)) fields.push_back(field);
+  }
+  for (const ConfigField& field : command_fields_) fields.push_back(as_const(field));
+  const CLI::Option* json = command_app_->get_option_no_throw("--json");
+  if (json != nullptr && json->count() > 0) {
+    nlohmann::ordered_json keys = nlohmann::ordered_json::array();
+    for (const ConstConfigField& field : fields) keys.push_back(config_key_json(field));
+    std::cout << nlohmann::ordered_json{{"command", command_}, {"keys", std::move(keys)}}.dump(2) << '\n';
+  } else {
+    // Dotted keys, so that the text is a config file any command reads.
+    std::cout << fmt::format("# crux {} --dry-run: the effective parameters; nothing ran\n", command_);
+    for (const ConstConfigField& field : fields) {
+      const std::string value = field_value_text(field);
+      if (!value.empty()) std::cout << fmt::format("{} = {}  # {}\n", field.key, value, field.described_help());
+    }
+  }
+  std::cout.flush();
+  throw DryRunDone{};
 }
 
 }  // namespace crux::cli

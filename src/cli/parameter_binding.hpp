@@ -27,8 +27,12 @@ inline ParameterSet with_progress(ParameterSet keys) {
 // wall.count, the random walls filter-stats and stances count over: a key of those two
 // commands, declared once for both.
 inline ConfigField wall_count_field(int& count) {
-  return {"wall.count", "Random walls to count over", &count, "", kPositive};
+  return {"wall.count", "Random walls to count over", &count, "", work_size(1, 100000)};
 }
+
+// Thrown by resolve() under --dry-run once it has printed the effective parameters: the
+// command ends there, having run nothing and written no file (main returns 0).
+struct DryRunDone {};
 
 class ParameterBinding {
  public:
@@ -47,11 +51,15 @@ class ParameterBinding {
     reset_command_options_ = [&options, defaults = options] { options = defaults; };
   }
 
-  void bind(CLI::App* command);
+  // The flags, --config, --quiet for a command that shows progress, and --dry-run unless
+  // `dry_run` is false (crux sweep, which resolves once per cell).
+  void bind(CLI::App* command, bool dry_run = true);
   CLI::Option* option(const std::string& key) const;
 
   // The effective parameters, finalized (finalize_config); a list in the config file
-  // (crux sweep) takes the value `choice` names.
+  // (crux sweep) takes the value `choice` names. Under --dry-run it prints them instead
+  // (as TOML, or with the command's --json as every key's declaration and value) and
+  // throws DryRunDone.
   ExperimentConfig resolve(const ListChoice& choice = {});
   // The config file's keys given a list of values, minus those a flag sets to one value.
   std::vector<ListedKey> listed_keys();
@@ -69,7 +77,9 @@ class ParameterBinding {
   ExperimentConfig defaults_;
   ExperimentConfig from_flags_;
   std::string config_path_;
-  bool quiet_ = false;                                         // --quiet: output.progress = "none"
+  bool quiet_ = false;  // --quiet: output.progress = "none"
+  bool dry_run_ = false;
+  const CLI::App* command_app_ = nullptr;
   std::vector<std::pair<std::string, CLI::Option*>> options_;  // key, its flag
   // A choice's flag text by key, parsed by resolve() so that its error names the flag.
   std::map<std::string, std::string> choice_texts_;
@@ -91,6 +101,7 @@ class ParameterBinding {
   void take_flag(const ConfigField& flag, const ConfigField& field, ExperimentConfig& config);
 
   const ConfigDocument& document();
+  [[noreturn]] void print_dry_run(const ExperimentConfig& config) const;
 };
 
 }  // namespace crux::cli

@@ -23,9 +23,22 @@ namespace crux {
 
 namespace {
 
-constexpr long long kMaxRunsPerCondition = 1000000;
+// Runs per condition: the statistics keep each run's record in memory (about 1 kB each).
+constexpr int kMaxRunsPerCondition = 1000000;
 // Each training run learns K times its iterations: beyond this a typo, not an experiment.
 constexpr int kMaxTrainingWalls = 1000;
+// Dyna's updates per real step: a run of kMaxIterations then makes 1e11 updates, hours;
+// the docs use 200.
+constexpr int kMaxPlanningSteps = 10000;
+// Iterations of one IK solve (the fast solver's cap, the paper's Delta_t / time step):
+// 36 times the paper's 2750, so that one solve stays well under a second.
+constexpr double kMaxIkIterations = 100000;
+// A reward's magnitude: 5000 times the paper's finish reward, so that a run's sums of
+// rewards and Q-values (at most |reward| / (1 - gamma)) stay finite; 1e308 overflowed.
+constexpr double kMaxReward = 1e9;
+// A length on the wall or the body: beyond 100 m no limb (0.8 m) or wall of holds
+// (kMaxHoldCount holds) means anything, and the views scale what they draw to it.
+constexpr double kMaxLengthM = 100;
 
 std::string bound_text(double value) { return fmt::format("{}", value); }
 
@@ -112,6 +125,29 @@ constexpr Bounds kAboveZeroToOne{.min = 0, .max = 1, .min_open = true};
 constexpr Bounds kZeroToBelowOne{.min = 0, .max = 1, .max_open = true};
 constexpr Bounds kUnitInterval{.min = 0, .max = 1};
 constexpr Bounds kOpenRightAngle{.min = -kMaxInclineDeg, .max = kMaxInclineDeg, .min_open = true, .max_open = true};
+constexpr Bounds kRewardRange = closed_range(-kMaxReward, kMaxReward, "a run's sums of rewards must stay finite");
+constexpr Bounds kRewardWeight = closed_range(0, kMaxReward, "a run's sums of rewards must stay finite");
+constexpr Bounds kLength{.min = 0, .max = kMaxLengthM, .min_open = true};
+constexpr Bounds kShareOfOne = closed_range(0, 1, "a share");
+// A height on the wall: a random wall is at most kMaxHoldCount holds of at most 10 m tiles
+// tall, but a finish higher than this is never reached by a body that climbs 0.5 m a move
+// within the longest run's greedy climb.
+constexpr Bounds kWallHeight = closed_range(-1000, 1000);
+// A hold's radius: from a crimp to a 1 m ledge.
+constexpr Bounds kHoldRadius{.min = 0, .max = 1, .min_open = true};
+// The holds' displacement: four times the body's span moves a hold anywhere on the wall.
+constexpr Bounds kHoldScatter = closed_range(0, 10);
+// A tile of the agent space or of a random wall: from 1 cm (a hold's size) to 10 m (four
+// times the body's span). Fig. 2b draws the grid to scale: a tile of 1e20 m beside one
+// of 0.3 m left sub-pixel cells whose label spacing overflowed and hung the drawing.
+constexpr Bounds kTileSize = closed_range(0.01, 10, "from a hold's size to four times the body's span");
+// Tiles of the agent space: 1000 x 1000 cells hold far more than 32-bit agent-state
+// codes allow (checked with the other keys), so the count itself never overflows.
+constexpr Bounds kGridTiles = work_size(1, 1000);
+// Tiles of a random wall: its holds, (columns + 1) x (rows + 1), are at most kMaxHoldCount.
+constexpr Bounds kWallTiles = work_size(1, kMaxHoldCount);
+// A tile of the agent space: an anchor is one (checked against columns and rows for the grid).
+constexpr Bounds kAnchorTile = closed_range(0, 999, "a tile of the grid");
 
 // The one declaration of every key, for a config or a const one. Units and bounds go in
 // their columns, not in the help, which says what the key means.
@@ -133,40 +169,41 @@ void experiment_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
           {"experiment.seed", "Seed: the experiment's walls and runs, a run's learning or the queries derive from it",
            &s.seed},
           {"experiment.runs", "N walls with one seed each: sets walls = N and seeds_per_wall = 1", &c.runs, "",
-           kPositive},
+           work_size(1, kMaxRunsPerCondition)},
           {"experiment.walls", "Wall pairs (training and transfer wall); the unit of the statistics", &s.wall_pairs, "",
-           kPositive},
-          {"experiment.seeds_per_wall", "Learning seeds per wall pair", &s.seeds_per_wall, "", kPositive},
+           work_size(1, kMaxRunsPerCondition)},
+          {"experiment.seeds_per_wall", "Learning seeds per wall pair", &s.seeds_per_wall, "",
+           work_size(1, kMaxRunsPerCondition)},
           {"experiment.training_walls",
            "Walls each training run learns Q_grid on in sequence before transfer (docs/TRANSFER.md): the last is the "
            "pair's training wall",
-           &s.training_walls, "", closed_range(1, kMaxTrainingWalls)},
+           &s.training_walls, "", work_size(1, kMaxTrainingWalls)},
           {"experiment.threads", "Worker threads (0: all cores); results do not depend on it", &s.threads, "",
-           closed_range(0, kMaxThreads, "0: all cores")},
+           work_size(0, kMaxThreads, "0: all cores")},
           {"experiment.iterations", "Learning iterations (real actions) per run", &l.iterations, "",
-           closed_range(1, kMaxIterations, "a run keeps every iteration's record in memory")},
+           work_size(1, kMaxIterations, "a run keeps every iteration's record in memory")},
           {"experiment.beginning",
            "Iterations of Table I's beginning window and of the early and late windows of the metrics (0: 2000, or all "
            "iterations if fewer)",
-           &c.beginning, "", kNonNegative},
+           &c.beginning, "", closed_range(0, kMaxIterations, "a window inside the run")},
           {"experiment.threshold_length",
            "Episode length (iterations) that counts as climbing well: time to threshold and take-off",
-           &s.analysis.threshold_length, "", kPositive},
+           &s.analysis.threshold_length, "", closed_range(1, kMaxIterations, "an episode lies inside the run")},
           {"experiment.bootstrap_resamples", "Resamples of the cluster bootstrap over walls",
-           &s.analysis.bootstrap_resamples, "", closed_range(100, 10000000)},
+           &s.analysis.bootstrap_resamples, "", work_size(100, 10000000)},
           {"experiment.plan", "Compute each wall's exact shortest climb", &s.plan},
           {"experiment.plan_max_solves",
            "IK solves the exact planner may spend on a wall; it stops there without a plan (12-20 us each on average)",
-           &s.plan_search.max_ik_solves, "", kPositive},
+           &s.plan_search.max_ik_solves, "", work_size(1, 100000000, "at most about half an hour a wall")},
           {"experiment.plan_check_moves",
            "Static model: the exact planner also refuses a move whose IK path (the replay's 16 postures) does not hold "
            "still on the three holds kept",
            &s.plan_search.check_moves},
           {"experiment.greedy_cap", "Actions allowed to the greedy policy's evaluation climb", &l.greedy_cap, "",
-           kPositive},
+           work_size(1, 100000, "the climb keeps each action's posture")},
           {"experiment.checkpoint_every",
            "Iterations between checkpoints of a run (0: none); the same command started again resumes from the last",
-           &c.checkpoint_every, "", kNonNegative},
+           &c.checkpoint_every, "", closed_range(0, kMaxIterations, "an iteration of the run")},
           {"experiment.q_grid",
            "Q_grid file (q_grid.bin of a training run) that transfer starts from",
            &c.q_grid,
@@ -192,23 +229,25 @@ void learning_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
           {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha, "", kAboveZeroToOne},
           {"learning.gamma", "Discount factor gamma", &l.dyna.rates.gamma, "", kZeroToBelowOne},
           {"learning.epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon, "", kUnitInterval},
-          {"learning.planning_steps", "Dyna planning updates per real step", &l.dyna.planning_steps, "", kNonNegative},
+          {"learning.planning_steps", "Dyna planning updates per real step", &l.dyna.planning_steps, "",
+           work_size(0, kMaxPlanningSteps)},
           {"learning.planner",
            "Dyna planning: uniform (Algorithm 2) or prioritized (prioritized sweeping, same number of updates)",
            choice(&l.dyna.planner)},
           {"learning.priority_threshold", "Prioritized sweeping queues pairs whose |TD error| exceeds this",
-           &l.dyna.priority_threshold, "", kNonNegative},
-          {"reward.unreachable", "Reward of an unreachable 4-configuration", &m.rewards.unreachable},
-          {"reward.step", "Reward of a reachable 4-configuration", &m.rewards.step},
-          {"reward.finish", "Reward when the centre of mass passes the finishing height", &m.rewards.finish},
+           &l.dyna.priority_threshold, "", closed_range(0, kMaxReward, "a TD error is on the rewards' scale")},
+          {"reward.unreachable", "Reward of an unreachable 4-configuration", &m.rewards.unreachable, "", kRewardRange},
+          {"reward.step", "Reward of a reachable 4-configuration", &m.rewards.step, "", kRewardRange},
+          {"reward.finish", "Reward when the centre of mass passes the finishing height", &m.rewards.finish, "",
+           kRewardRange},
           {"reward.effort",
            "Static model: subtracted from a reached move's reward per unit of its stance's effort (0: the paper's "
            "rewards)",
-           &m.rewards.effort, "", kNonNegative},
+           &m.rewards.effort, "", kRewardWeight},
           {"reward.height",
            "Potential-based height shaping: weight per metre of the mean height of the held holds (0: the paper's "
            "rewards)",
-           &m.rewards.height, "per m", kNonNegative},
+           &m.rewards.height, "per m", kRewardWeight},
       });
 }
 
@@ -221,31 +260,46 @@ void ik_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
       keys.end(),
       {
           {"ik.solver", "IK solver: fast, or paper (Algorithm 1)", choice(&ik.solver)},
-          {"ik.alpha", "Step size of the paper's gradient descent", &ik.paper.step_size, "", kPositive},
-          {"ik.time_step", "Simulated seconds per IK iteration (both solvers)", &ik.time_step_s, "s", kPositive},
-          {"ik.timeout", "Delta_t: simulated seconds before the paper's solver gives up", &ik.paper.timeout_s, "s",
-           kPositive},
+          {"ik.alpha",
+           "Step size of the paper's gradient descent",
+           &ik.paper.step_size,
+           "",
+           {.min = 0, .max = 1000, .min_open = true}},
+          // The paper's solver iterates timeout / time_step times (at most kMaxIkIterations,
+          // checked with both keys).
+          {"ik.time_step",
+           "Simulated seconds per IK iteration (both solvers)",
+           &ik.time_step_s,
+           "s",
+           {.min = 0, .max = 1, .min_open = true}},
+          {"ik.timeout",
+           "Delta_t: simulated seconds before the paper's solver gives up",
+           &ik.paper.timeout_s,
+           "s",
+           {.min = 0, .max = 3600, .min_open = true, .sizes_work = true}},
           {"ik.paper_stall_iterations",
            "Steps over which the paper's solver looks for a stall (0: it never gives up before Delta_t, as Algorithm "
            "1)",
            &ik.paper.stall_iterations, "", closed_range(0, 64)},
           {"ik.paper_stall_decrease", "It has stalled when f fell by less than this share of f over those steps...",
-           &ik.paper.stall_decrease, "", kNonNegative},
+           &ik.paper.stall_decrease, "", kShareOfOne},
           {"ik.paper_stall_margin", "...while a point is more than this outside its sphere; it then gives up",
-           &ik.paper.stall_margin_m, "m", kNonNegative},
+           &ik.paper.stall_margin_m, "m", closed_range(0, kMaxLengthM)},
           {"ik.rule_out_beyond_reach",
            "Both solvers give up before iterating when a hold lies beyond its limb's reach (the verdict cannot change)",
            &ik.rule_out_beyond_reach},
-          {"ik.fast_max_iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations, "", kPositive},
+          {"ik.fast_max_iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations, "",
+           work_size(1, kMaxIkIterations)},
           {"ik.fast_stall_decrease", "The fast solver gives up when f drops by less than this share per step...",
-           &ik.fast.stall_relative_decrease, "", kNonNegative},
-          {"ik.fast_stall_iterations", "...this many steps in a row", &ik.fast.stall_iterations, "", kPositive},
+           &ik.fast.stall_relative_decrease, "", kShareOfOne},
+          {"ik.fast_stall_iterations", "...this many steps in a row", &ik.fast.stall_iterations, "",
+           closed_range(1, kMaxIkIterations)},
           {"ik.fast_aim", "The fast solver aims at this share of each tolerance radius", &ik.fast.aim_fraction, "",
            kZeroToBelowOne},
-          {"ik.grasp_radius", "Radius of the grasp spheres", &ik.tolerances.grasp_radius, "m", kPositive},
-          {"ik.root_tolerance", "Radius of the root tolerance sphere", &ik.tolerances.root_radius, "m", kPositive},
+          {"ik.grasp_radius", "Radius of the grasp spheres", &ik.tolerances.grasp_radius, "m", kLength},
+          {"ik.root_tolerance", "Radius of the root tolerance sphere", &ik.tolerances.root_radius, "m", kLength},
           {"ik.wall_distance", "Distance of the root target H(C4) from the wall, on the climber's side",
-           &m.reachability.root.distance_from_wall, "m"},
+           &m.reachability.root.distance_from_wall, "m", closed_range(-kMaxLengthM, kMaxLengthM)},
           {"ik.cache_unreachable", "Cache unreachable verdicts", &m.reachability.cache_unreachable},
           {"ik.wall",
            "The body and the wall: ignore it (the paper's kinematic model), reject a solved posture that passes "
@@ -271,13 +325,20 @@ void physics_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
            "kinematic (the paper's: IK alone decides) or static (the body kept out of the wall and each stance held "
            "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md)",
            choice(&m.physics.model)},
+          // Rubber on rock measures about 1; CLP answers the same from 10 to 1e8 (every stance
+          // that holds at 10 holds), wrongly from 1e10 (fewer stances hold than at 10), and at
+          // 1e14 not at all (docs/RELIABILITY.md).
           {"physics.friction", "Static model: Coulomb friction coefficient of every contact", &m.physics.friction, "",
-           kNonNegative},
+           closed_range(0, 10, "ten times rubber on rock; the equilibrium program stays well conditioned")},
           {"physics.strength",
            "Static model: a climbing level whose published grip sets physics.grip (docs/MODEL.md); an explicit "
            "physics.grip overrides it",
            level_choice(&c.physics_strength)},
-          {"physics.grip", "Static model: largest normal force of a hand on a hold", &m.physics.grip, "N", kPositive},
+          {"physics.grip",
+           "Static model: largest normal force of a hand on a hold",
+           &m.physics.grip,
+           "N",
+           {.min = 0, .max = 10000, .min_open = true, .why = "17 times elite climbers' mean finger force"}},
           {"physics.support_angle",
            "Static model: a hold without a support direction pushes a hand up and this far into the wall (a jug's "
            "incut lip)",
@@ -298,25 +359,27 @@ void configuration_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
       keys.end(),
       {
           {"filter.max_span", "Largest distance between two holds of a configuration", &m.filter.max_span_m, "m",
-           kPositive},
+           kLength},
           {"filter.reading", "Reading of 'both feet above the hands' (docs/MODEL.md, choice C13)",
            choice(&m.filter.feet_above_hands)},
           {"grid.agent_space",
            "Agent space (docs/TRANSFER.md): grid (the paper's moving grid) or reach (direction sectors = columns and "
            "distance rings of tile_height m = rows around the free limb's shoulder or hip)",
            choice(&grid.space)},
-          {"grid.columns", "Columns of the moving grid", &grid.columns, "", kPositive},
-          {"grid.rows", "Rows of the moving grid", &grid.rows, "", kPositive},
-          {"grid.tile_width", "Tile width of the moving grid", &grid.tile_width, "m", kPositive},
-          {"grid.tile_height", "Tile height of the moving grid", &grid.tile_height, "m", kPositive},
-          {"grid.right_hand_anchor_column", "Right hand's anchor tile P_1: column", &grid.anchors[0][0]},
-          {"grid.right_hand_anchor_row", "Right hand's anchor tile P_1: row", &grid.anchors[0][1]},
-          {"grid.left_hand_anchor_column", "Left hand's anchor tile P_2: column", &grid.anchors[1][0]},
-          {"grid.left_hand_anchor_row", "Left hand's anchor tile P_2: row", &grid.anchors[1][1]},
-          {"grid.right_foot_anchor_column", "Right foot's anchor tile P_3: column", &grid.anchors[2][0]},
-          {"grid.right_foot_anchor_row", "Right foot's anchor tile P_3: row", &grid.anchors[2][1]},
-          {"grid.left_foot_anchor_column", "Left foot's anchor tile P_4: column", &grid.anchors[3][0]},
-          {"grid.left_foot_anchor_row", "Left foot's anchor tile P_4: row", &grid.anchors[3][1]},
+          {"grid.columns", "Columns of the moving grid", &grid.columns, "", kGridTiles},
+          {"grid.rows", "Rows of the moving grid", &grid.rows, "", kGridTiles},
+          {"grid.tile_width", "Tile width of the moving grid", &grid.tile_width, "m", kTileSize},
+          {"grid.tile_height", "Tile height of the moving grid", &grid.tile_height, "m", kTileSize},
+          {"grid.right_hand_anchor_column", "Right hand's anchor tile P_1: column", &grid.anchors[0][0], "",
+           kAnchorTile},
+          {"grid.right_hand_anchor_row", "Right hand's anchor tile P_1: row", &grid.anchors[0][1], "", kAnchorTile},
+          {"grid.left_hand_anchor_column", "Left hand's anchor tile P_2: column", &grid.anchors[1][0], "", kAnchorTile},
+          {"grid.left_hand_anchor_row", "Left hand's anchor tile P_2: row", &grid.anchors[1][1], "", kAnchorTile},
+          {"grid.right_foot_anchor_column", "Right foot's anchor tile P_3: column", &grid.anchors[2][0], "",
+           kAnchorTile},
+          {"grid.right_foot_anchor_row", "Right foot's anchor tile P_3: row", &grid.anchors[2][1], "", kAnchorTile},
+          {"grid.left_foot_anchor_column", "Left foot's anchor tile P_4: column", &grid.anchors[3][0], "", kAnchorTile},
+          {"grid.left_foot_anchor_row", "Left foot's anchor tile P_4: row", &grid.anchors[3][1], "", kAnchorTile},
       });
 }
 
@@ -330,29 +393,29 @@ void wall_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
       {
           {"wall.file", "Wall file (JSON)", &c.wall_file, "", {}, true},
           {"wall.seed", "Seed of a random wall", &c.wall_seed},
-          {"wall.columns", "Tiles across a random wall", &s.walls.columns},
-          {"wall.rows", "Tiles up a random wall", &s.walls.rows},
-          {"wall.tile_width", "Tile width of a random wall", &s.walls.tile_width, "m", kPositive},
-          {"wall.tile_height", "Tile height of a random wall", &s.walls.tile_height, "m", kPositive},
-          {"wall.sigma", "Standard deviation of hold displacement", &s.walls.sigma, "m", kNonNegative},
-          {"wall.hold_radius", "Hold radius", &s.walls.hold_radius, "m", kPositive},
+          {"wall.columns", "Tiles across a random wall", &s.walls.columns, "", kWallTiles},
+          {"wall.rows", "Tiles up a random wall", &s.walls.rows, "", kWallTiles},
+          {"wall.tile_width", "Tile width of a random wall", &s.walls.tile_width, "m", kTileSize},
+          {"wall.tile_height", "Tile height of a random wall", &s.walls.tile_height, "m", kTileSize},
+          {"wall.sigma", "Standard deviation of hold displacement", &s.walls.sigma, "m", kHoldScatter},
+          {"wall.hold_radius", "Hold radius", &s.walls.hold_radius, "m", kHoldRadius},
           {"wall.finish_height", "Finishing height of the centre of mass, measured along the wall",
-           &s.walls.finish_height, "m"},
+           &s.walls.finish_height, "m", kWallHeight},
           {"wall.incline", "Incline of a random wall from vertical (> 0 overhanging, < 0 slab)", &s.walls.incline_deg,
            "degrees", kOpenRightAngle},
-          {"training_wall.columns", "Tiles across a training wall (unset: wall.columns)", &tw.columns},
-          {"training_wall.rows", "Tiles up a training wall (unset: wall.rows)", &tw.rows},
+          {"training_wall.columns", "Tiles across a training wall (unset: wall.columns)", &tw.columns, "", kWallTiles},
+          {"training_wall.rows", "Tiles up a training wall (unset: wall.rows)", &tw.rows, "", kWallTiles},
           {"training_wall.tile_width", "Tile width of a training wall (unset: wall.tile_width)", &tw.tile_width, "m",
-           kPositive},
+           kTileSize},
           {"training_wall.tile_height", "Tile height of a training wall (unset: wall.tile_height)", &tw.tile_height,
-           "m", kPositive},
+           "m", kTileSize},
           {"training_wall.sigma", "Standard deviation of a training wall's hold displacement (unset: wall.sigma)",
-           &tw.sigma, "m", kNonNegative},
+           &tw.sigma, "m", kHoldScatter},
           {"training_wall.hold_radius", "Hold radius of a training wall (unset: wall.hold_radius)", &tw.hold_radius,
-           "m", kPositive},
+           "m", kHoldRadius},
           {"training_wall.finish_height",
            "Finishing height of the centre of mass on a training wall (unset: wall.finish_height)", &tw.finish_height,
-           "m"},
+           "m", kWallHeight},
           {"training_wall.incline", "Incline of a training wall from vertical (unset: wall.incline)", &tw.incline,
            "degrees", kOpenRightAngle},
       });
@@ -710,6 +773,10 @@ void require_consistent_keys(const ExperimentConfig& config) {
           "out of the wall");
   require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition, "experiment.walls",
           "walls x seeds_per_wall must be at most 1000000 runs per condition");
+  const auto& ik = s.learning.climbing.reachability.ik;
+  require(ik.paper.timeout_s / ik.time_step_s <= kMaxIkIterations, "ik.timeout",
+          fmt::format("must be at most {} x ik.time_step: the paper's solver iterates timeout / time_step times",
+                      kMaxIkIterations));
   require(config.beginning <= s.learning.iterations, "experiment.beginning",
           "must not exceed the run's iterations (the window lies inside the run)");
   const GridParameters& grid = s.learning.climbing.grid;
@@ -790,9 +857,7 @@ std::string toml_quoted(const std::string& value) {
   return out + "\"";
 }
 
-namespace {
-
-std::string value_text(const ConstConfigField& field, bool toml) {
+std::string field_value_text(const ConstConfigField& field, bool toml) {
   std::string value;
   std::visit(
       [&](auto target) {
@@ -830,11 +895,23 @@ std::string value_text(const ConstConfigField& field, bool toml) {
   return value;
 }
 
-}  // namespace
+ConstConfigField as_const(const ConfigField& field) {
+  ConstConfigField out{field.key, field.help, {}, field.unit, field.bounds, field.is_path, field.recorded};
+  std::visit(
+      [&](auto target) {
+        if constexpr (std::is_same_v<decltype(target), ChoiceTarget<false>>) {
+          out.target = ChoiceTarget<true>{target.target, target.type};
+        } else {
+          out.target = static_cast<const std::remove_pointer_t<decltype(target)>*>(target);
+        }
+      },
+      field.target);
+  return out;
+}
 
 std::string config_value_text(const ExperimentConfig& config, const std::string& key, bool toml) {
   for (const ConstConfigField& field : config_fields(config)) {
-    if (field.key == key) return value_text(field, toml);
+    if (field.key == key) return field_value_text(field, toml);
   }
   return {};
 }
@@ -849,7 +926,7 @@ std::string config_to_toml(const ExperimentConfig& config, const ParameterSet& a
     // A wall file's run used no generator key: config.toml records what ran.
     if (!config.wall_file.empty() && is_wall_generator_key(field.key)) continue;
     const auto listed = lists.find(field.key);
-    const std::string value = listed != lists.end() ? listed->second : value_text(field, true);
+    const std::string value = listed != lists.end() ? listed->second : field_value_text(field, true);
     if (value.empty()) continue;
     const std::string field_section = field.key.substr(0, field.key.find('.'));
     if (field_section != section) {

@@ -64,13 +64,18 @@ struct ExperimentConfig {
 // gives its holds and finishing height itself, so none applies to it.
 bool is_wall_generator_key(const std::string& key);
 
-// The values a number key takes. An integer key's bounds are integers.
+// The values a number key takes. An integer key's bounds are integers. Each bound keeps
+// every computation that uses the key finite and its time bounded; `why` says what the
+// bound comes from.
 struct Bounds {
   double min = -std::numeric_limits<double>::infinity();
   double max = std::numeric_limits<double>::infinity();
   bool min_open = false;  // min itself excluded
   bool max_open = false;
   const char* why = nullptr;  // appended to the refusal, in parentheses
+  // The key sizes the work (iterations, walls, threads, resamples, cells): its maximum is
+  // accepted but may take hours, so a test of the bounds checks it without running it.
+  bool sizes_work = false;
 
   bool contains(double value) const;
   // "> 0", ">= 0", "0 to 1", "[0, 1)": for --help and config.toml's comments.
@@ -83,6 +88,10 @@ inline constexpr Bounds kPositive{.min = 0, .min_open = true};
 inline constexpr Bounds kNonNegative{.min = 0};
 constexpr Bounds closed_range(double min, double max, const char* why = nullptr) {
   return {.min = min, .max = max, .why = why};
+}
+// A count that sizes the work, from `min` to `max`.
+constexpr Bounds work_size(double min, double max, const char* why = nullptr) {
+  return {.min = min, .max = max, .why = why, .sizes_work = true};
 }
 
 // How a choice key's text and its enum meet: the enum's EnumNames, or a list of its own
@@ -140,6 +149,13 @@ using ConstConfigField = ConfigFieldOf<true>;
 // declaration of every key.
 std::vector<ConfigField> config_fields(ExperimentConfig& config);
 std::vector<ConstConfigField> config_fields(const ExperimentConfig& config);
+
+// `field` as a read-only field (a command's own fields are declared over mutable options).
+ConstConfigField as_const(const ConfigField& field);
+
+// `field`'s value as config.toml writes it ("" when unset), or, with `toml` false, as
+// plain text (a string without quotes).
+std::string field_value_text(const ConstConfigField& field, bool toml = true);
 
 // `key`'s field, or null.
 const ConfigField* find_field(const std::vector<ConfigField>& fields, std::string_view key);

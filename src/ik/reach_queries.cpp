@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
+#include "common/input_error.hpp"
 #include "common/random.hpp"
 
 namespace crux {
@@ -34,7 +34,12 @@ Posture start_layout_posture(const BodyModel& model, const IkParameters& paramet
   target.root = root_target(model, target.hold_centres, root);
   BodyData data(model);
   const IkResult result = solve_ik(model, data, standing_posture(target.root), target, parameters);
-  if (!result.reached) throw std::runtime_error("the start layout is not reachable from the standing posture");
+  // The IK's keys decide it (an extreme tolerance or step size): the user's input, not a fault.
+  if (!result.reached) {
+    throw InputError("ik",
+                     "with these ik settings the solver does not reach the start layout from standing, where "
+                     "the queries start");
+  }
   return result.posture;
 }
 

@@ -34,7 +34,7 @@ struct ReachQueryParameters {
 std::array<Eigen::Vector3d, kLimbCount> start_layout_holds();
 
 // Solves the start layout from the standing posture placed at H(C4); throws
-// std::runtime_error if the solver cannot reach it.
+// InputError("ik", ...) if the solver, with those parameters, cannot reach it.
 Posture start_layout_posture(const BodyModel& model, const IkParameters& parameters,
                              const RootTargetParameters& root = {});
 

@@ -227,7 +227,7 @@ TEST(CliLearning, EachCommandRefusesTheFlagsItDoesNotUse) {
 TEST(CliLearning, ErrorsNameTheFlagOrTheFileAndKeyTheUserTyped) {
   const auto runs = run_crux("paper --runs 0");
   EXPECT_EQ(runs.exit_code, 2);
-  EXPECT_EQ(runs.err, "crux: --runs: must be positive\n");
+  EXPECT_EQ(runs.err, "crux: --runs: must be from 1 to 1000000\n");
   const auto beginning = run_crux("train --wall-seed 3 --iterations 100 --beginning 200");
   EXPECT_EQ(beginning.exit_code, 2);
   EXPECT_EQ(beginning.err.rfind("crux: --beginning: must not exceed", 0), 0u) << beginning.err;
@@ -338,7 +338,7 @@ TEST(CliLearning, PaperWithTrainingWallsReportsTheTotalIterations) {
 TEST(CliLearning, TrainingWallKeysAreCheckedAsTheWallKeys) {
   auto outcome = run_crux("paper --training-wall-sigma -0.1");
   EXPECT_EQ(outcome.exit_code, 2);
-  EXPECT_EQ(outcome.err, "crux: --training-wall-sigma: must be 0 or positive\n");
+  EXPECT_EQ(outcome.err, "crux: --training-wall-sigma: must be in [0, 10]\n");
   outcome = run_crux("paper --training-wall-rows 2");
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(outcome.err, "crux: --training-wall-rows: must reach the start holds (at least 3 tiles)\n");

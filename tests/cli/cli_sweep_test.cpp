@@ -147,7 +147,7 @@ TEST(CliSweep, BadListsAndAnotherSweepsFolderAreOneLineErrors) {
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
   EXPECT_NE(outcome.err.find("training_wall.sigma"), std::string::npos) << outcome.err;
-  EXPECT_NE(outcome.err.find("must be 0 or positive"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("must be in [0, 10]"), std::string::npos) << outcome.err;
   outcome = run_crux("paper --config " + sweep_file().string() + " -o " + testing::sweep_scratch("paper").string());
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_NE(outcome.err.find("learning.epsilon must be one value; only crux sweep takes lists"), std::string::npos)

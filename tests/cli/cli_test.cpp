@@ -72,15 +72,19 @@ TEST(Cli, BadPhysicsParametersAreOneLineNamingTheFlag) {
     std::string flags, message;
   } cases[] = {
       {"--physics-model dynamic", "crux: --physics-model: unknown model 'dynamic' (expected kinematic or static)"},
-      {"--physics-friction -0.5", "crux: --physics-friction: must be 0 or positive"},
-      {"--physics-grip 0", "crux: --physics-grip: must be positive"},
+      {"--physics-friction -0.5",
+       "crux: --physics-friction: must be in [0, 10] (ten times rubber on rock; the equilibrium program stays "
+       "well conditioned)"},
+      {"--physics-grip 0", "crux: --physics-grip: must be in (0, 10000] (17 times elite climbers' mean finger force)"},
       {"--physics-strength pro",
        "crux: --physics-strength: unknown strength 'pro' (expected intermediate (383.0 N), advanced (575.7 N) or elite "
        "(563.1 N))"},
       {"--physics-support-angle 91", "crux: --physics-support-angle: must be in [-90, 90]"},
       {"--reward-effort 1", "crux: --reward-effort: needs physics.model = static: the kinematic model has no effort"},
-      {"--physics-model static --reward-effort -1", "crux: --reward-effort: must be 0 or positive"},
-      {"--reward-height -1", "crux: --reward-height: must be 0 or positive"},
+      {"--physics-model static --reward-effort -1",
+       "crux: --reward-effort: must be in [0, 1000000000] (a run's sums of rewards must stay finite)"},
+      {"--reward-height -1",
+       "crux: --reward-height: must be in [0, 1000000000] (a run's sums of rewards must stay finite)"},
       {"--ik-guess last", "crux: --ik-guess: unknown guess 'last' (expected previous or standing)"},
       {"--plan-check-moves true",
        "crux: --plan-check-moves: needs physics.model = static: the kinematic model checks no stance"},
@@ -234,7 +238,10 @@ TEST(Cli, TheDocsQuoteErrorLinesAsCruxPrintsThem) {
   };
   const std::string train = "train --wall-seed 3 --iterations 10 --config my.toml -o out";
   const std::vector<QuotedError> quoted{
-      {{"README.md", "docs/DESIGN.md", "docs/OUTPUTS.md"}, "crux: --runs: must be positive", "paper --runs 0", {}},
+      {{"README.md", "docs/DESIGN.md", "docs/OUTPUTS.md"},
+       "crux: --runs: must be from 1 to 1000000",
+       "paper --runs 0",
+       {}},
       {{"README.md"},
        "crux: wall.json: holds[3].radius must be positive, got -0.01",
        "wall show --wall-file wall.json",

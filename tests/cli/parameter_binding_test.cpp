@@ -6,6 +6,9 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "common/input_error.hpp"
 #include "jobs/command_keys.hpp"
 #include "support/test_models.hpp"
 
@@ -68,6 +71,54 @@ TEST(ParameterBinding, QuietIsProgressNoneAndExcludesTheProgressFlag) {
   ParameterBinding plan("plan", kPaperKeys);
   plan.bind(&plain);
   EXPECT_THROW(plain.parse(std::vector<std::string>{"--quiet"}), CLI::ParseError);
+}
+
+// --dry-run prints the effective parameters as a config file that crux reads back, or as
+// each key's declaration with --json, and ends the command before it runs.
+std::string dry_run_output(std::vector<std::string> arguments, bool json_flag) {
+  CLI::App app;
+  ParameterBinding binding("train", kTrainKeys);
+  binding.bind(&app);
+  bool json = false;
+  if (json_flag) app.add_flag("--json", json);
+  std::reverse(arguments.begin(), arguments.end());
+  app.parse(arguments);
+  ::testing::internal::CaptureStdout();
+  EXPECT_THROW(binding.resolve(), DryRunDone);
+  return ::testing::internal::GetCapturedStdout();
+}
+
+TEST(ParameterBinding, DryRunPrintsAConfigFileThatReadsBackToTheSameParameters) {
+  const std::string text = dry_run_output(
+      {"--dry-run", "--learning-epsilon", "0.3", "--wall-seed", "4", "--physics-friction", "0.7"}, false);
+  ExperimentConfig read_back;
+  apply_config_text(text, "dry-run", read_back, kTrainKeys, "train");
+  finalize_config(read_back);
+  EXPECT_DOUBLE_EQ(read_back.settings.learning.dyna.epsilon, 0.3);
+  EXPECT_DOUBLE_EQ(read_back.settings.learning.climbing.physics.friction, 0.7);
+  EXPECT_EQ(read_back.wall_seed, 4u);
+}
+
+TEST(ParameterBinding, DryRunWithJsonGivesEveryKeyOfTheCommandWithItsBounds) {
+  const auto json = nlohmann::json::parse(dry_run_output({"--dry-run", "--json", "--iterations", "77"}, true));
+  EXPECT_EQ(json["command"], "train");
+  std::size_t taken = 0;
+  for (const ConstConfigField& field : config_fields(ExperimentConfig{})) taken += kTrainKeys.accepts(field.key);
+  ASSERT_EQ(json["keys"].size(), taken);
+  for (const auto& key : json["keys"]) {
+    if (key["key"] == "experiment.iterations") {
+      EXPECT_EQ(key["value"], 77);
+      EXPECT_TRUE(key["sizes_work"]);
+    }
+  }
+}
+
+TEST(ParameterBinding, ABadValueIsRefusedUnderDryRunAsWithoutIt) {
+  CLI::App app;
+  ParameterBinding binding("train", kTrainKeys);
+  binding.bind(&app);
+  app.parse(std::vector<std::string>{"1e20", "--physics-friction", "--dry-run"});
+  EXPECT_THROW(binding.resolve(), InputError);
 }
 
 }  // namespace

@@ -95,7 +95,7 @@ TEST(RunConfigFile, AValueOfTheWrongTypeNamesItsLine) {
 TEST(RunConfigFile, AValueOutOfRangeNamesItsLineAndKey) {
   InputError e = run_config_error("run_config_rows.toml", edited_run_config("rows = 2", "rows = 0"));
   EXPECT_TRUE(e.source().ends_with("run_config_rows.toml: line 6: grid.rows")) << e.source();
-  EXPECT_EQ(e.problem(), "must be positive");
+  EXPECT_EQ(e.problem(), "must be from 1 to 1000");
   e = run_config_error("run_config_tiles.toml", edited_run_config("columns = 3", "columns = 1000"));
   EXPECT_TRUE(e.source().ends_with(": line 5: grid.columns")) << e.source();
   EXPECT_EQ(e.problem(), "the grid has too many tiles for 32-bit agent-state codes");
