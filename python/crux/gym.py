@@ -9,6 +9,7 @@ actions and the walls.
 """
 
 import copy
+import functools
 import operator
 import os
 
@@ -78,6 +79,21 @@ def _integer(value, argument, bounds=None, must_be="must be"):
     if isinstance(value, (int, np.integer)) and not isinstance(value, bool) and low <= int(value) <= high:
         return int(value)
     raise ValueError(f"{argument}: {must_be} an integer from {low} to {high}, got {value!r}")
+
+
+def _open_only(method):
+    """method (or a property's getter) refused once close() has run, with the error
+    Gymnasium's AsyncVectorEnv raises then."""
+
+    @functools.wraps(method)
+    def checked(self, *args, **kwargs):
+        if self.closed:
+            raise gymnasium.error.ClosedEnvironmentError(
+                f"crux.gym.{type(self).__name__} is closed (close() was called): make a new one"
+            )
+        return method(self, *args, **kwargs)
+
+    return checked
 
 
 def _joint_limbs(joint_names):
@@ -256,6 +272,7 @@ class ClimbEnv(gymnasium.Env):
     """
 
     metadata = {"render_modes": ["rgb_array", "ansi"], "render_fps": 2}
+    closed = False  # as gymnasium.vector.VectorEnv's: close() sets it
 
     def __init__(
         self,
@@ -363,16 +380,19 @@ class ClimbEnv(gymnasium.Env):
         return _crux.ClimbMdp(wall, config=self._config, max_steps=None, model=self._model_argument)
 
     @property
+    @_open_only
     def wall(self):
         """The wall of the current episode."""
         return self._env.wall
 
     @property
+    @_open_only
     def model(self):
         return self._model
 
     # --- Gymnasium's API --------------------------------------------------------------
 
+    @_open_only
     def reset(self, *, seed=None, options=None):
         super().reset(seed=seed)
         if options is not None and not isinstance(options, dict):
@@ -383,6 +403,7 @@ class ClimbEnv(gymnasium.Env):
         raw, info = self._env.reset()
         return self._observe(raw, info)
 
+    @_open_only
     def step(self, action):
         try:
             if isinstance(action, (bool, np.bool_)):
@@ -399,10 +420,12 @@ class ClimbEnv(gymnasium.Env):
         # Truncation is Gymnasium's TimeLimit's (the registered max_episode_steps).
         return obs, float(reward), bool(terminated), False, info
 
+    @_open_only
     def action_masks(self):
         """The possible actions of the state as bools, for maskable agents."""
         return self._mask.astype(bool)
 
+    @_open_only
     def render(self):
         if self.render_mode == "ansi":
             return self._render_ansi()
@@ -412,6 +435,8 @@ class ClimbEnv(gymnasium.Env):
 
     def close(self):
         self._envs.clear()
+        self._env = None
+        self.closed = True
 
     # --- observations -------------------------------------------------------------------
 
@@ -596,6 +621,7 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
         self._seeded = np.zeros(self.num_envs, dtype=np.bool_)
         self._mask = None
 
+    @_open_only
     def reset(self, *, seed=None, options=None):
         if seed is None or isinstance(seed, (int, np.integer)):
             seeds = [None if seed is None else int(seed) + i for i in range(self.num_envs)]
@@ -617,6 +643,7 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
         obs, _, _, _, parts = self._vector.reset()
         return obs, self._info(parts)
 
+    @_open_only
     def step(self, actions):
         if self._rngs[0] is None:
             raise gymnasium.error.ResetNeeded("Cannot call step() before reset()")  # as OrderEnforcing
@@ -625,9 +652,14 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
         obs, rewards, terminated, truncated, parts = self._vector.step(actions)
         return obs, rewards, terminated, truncated, self._info(parts)
 
+    @_open_only
     def action_masks(self):
         """The possible actions of each environment's state as bools, (num_envs, n), for maskable agents."""
         return self._mask.astype(bool)
+
+    @_open_only
+    def render(self):
+        return super().render()
 
     def close_extras(self, **kwargs):
         self._vector = None

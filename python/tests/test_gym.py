@@ -17,7 +17,14 @@ from needed import GYMNASIUM, need
 from gymnasium.utils.env_checker import check_env  # noqa: E402 (after Gymnasium is known to be there)
 
 import crux.gym  # noqa: E402
-from gym_arguments import integer_arguments, integer_walk, refusal, start_holds_alone  # noqa: E402
+from gym_extremes import (  # noqa: E402
+    integer_arguments,
+    integer_walk,
+    operate,
+    public_operations,
+    refusal,
+    start_holds_alone,
+)
 
 FORMS = ("numeric", "paper")
 REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
@@ -303,6 +310,29 @@ def test_max_candidates_reaches_the_most_holds_a_wall_may_have():
     header = (REPOSITORY / "src" / "wall" / "wall.hpp").read_text()
     assert re.search(r"constexpr int kMaxHoldCount = (\d+);", header).group(1) == str(crux.gym._MAX_HOLDS)
     assert crux.gym._INTEGER_ARGUMENTS["max_candidates"][1] == crux.gym._MAX_HOLDS
+
+
+def test_a_closed_environment_refuses_every_operation_and_closes_again():
+    closed = r"^crux.gym.ClimbEnv is closed \(close\(\) was called\): make a new one$"
+    operations = public_operations(crux.gym.ClimbEnv)
+    assert {"reset", "step", "action_masks", "render", "wall", "model"} <= set(operations)
+    for reset_first in (True, False):
+        env = crux.gym.ClimbEnv(7, render_mode="ansi")
+        if reset_first:
+            env.reset(seed=0)
+        env.close()
+        env.close()  # harmless
+        for name in operations:
+            with pytest.raises(gymnasium.error.ClosedEnvironmentError, match=closed):
+                operate(env, name)
+    # Through gymnasium.make's wrappers too.
+    env = gymnasium.make(crux.gym.ENV_ID, wall=7, render_mode="ansi")
+    env.reset(seed=0)
+    env.close()
+    env.close()
+    for operation in (env.reset, lambda: env.step(0), env.render):
+        with pytest.raises(gymnasium.error.ClosedEnvironmentError, match=closed):
+            operation()
 
 
 def test_render_modes():

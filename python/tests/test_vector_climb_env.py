@@ -15,7 +15,14 @@ from needed import GYMNASIUM, need
 from gymnasium.vector import AutoresetMode, SyncVectorEnv  # noqa: E402 (after Gymnasium is known to be there)
 
 import crux.gym  # noqa: E402
-from gym_arguments import integer_arguments, integer_walk, refusal, start_holds_alone  # noqa: E402
+from gym_extremes import (  # noqa: E402
+    integer_arguments,
+    integer_walk,
+    operate,
+    public_operations,
+    refusal,
+    start_holds_alone,
+)
 
 # Walls whose finish is low enough that random climbs finish often: episodes end both ways.
 LOW_FINISH = {"wall": {"finish_height": 1.3}}
@@ -203,3 +210,18 @@ def test_num_envs_times_max_candidates_is_bounded():
         crux.gym.VectorClimbEnv(envs + 1, wall, max_candidates=most)
     # The paper's form has no candidate slots.
     assert crux.gym.VectorClimbEnv(envs + 1, wall, "paper", max_candidates=most).num_envs == envs + 1
+
+
+def test_a_closed_environment_refuses_every_operation_and_closes_again():
+    closed = r"^crux.gym.VectorClimbEnv is closed \(close\(\) was called\): make a new one$"
+    operations = public_operations(crux.gym.VectorClimbEnv)
+    assert {"reset", "step", "action_masks", "render"} <= set(operations)
+    for reset_first in (True, False):
+        envs = crux.gym.VectorClimbEnv(2, crux.Wall.random(7))
+        if reset_first:
+            envs.reset(seed=0)
+        envs.close()
+        envs.close()  # harmless
+        for name in operations:
+            with pytest.raises(gymnasium.error.ClosedEnvironmentError, match=closed):
+                operate(envs, name)

@@ -1,5 +1,6 @@
-"""The integer arguments of crux.gym's environments, from the ranges crux.gym checks them
-against, and the values the tests try each at (test_gym.py, test_vector_climb_env.py)."""
+"""What the tests of crux.gym's environments (test_gym.py, test_vector_climb_env.py) try
+them at: each integer argument at its extremes, from the ranges crux.gym checks them
+against, and every operation of a closed environment."""
 
 import inspect
 import json
@@ -47,3 +48,21 @@ def start_holds_alone():
     held = set(wall["start"].values())
     wall["holds"] = [hold for hold in wall["holds"] if hold["id"] in held]
     return crux.Wall.from_json(json.dumps(wall))
+
+
+def public_operations(cls):
+    """The public methods and properties crux.gym gives cls, but close() and the
+    close_extras() that Gymnasium's VectorEnv.close calls."""
+    names = set()
+    for owner in cls.__mro__:
+        if owner.__module__ == crux.gym.__name__:
+            names |= {name for name, value in vars(owner).items() if callable(value) or isinstance(value, property)}
+    return sorted(name for name in names if not name.startswith("_") and name not in ("close", "close_extras"))
+
+
+def operate(env, name):
+    """Reads the property `name` of env, or calls the method with no arguments: a closed
+    environment refuses before it looks at them."""
+    if isinstance(getattr(type(env), name), property):
+        return getattr(env, name)
+    return getattr(env, name)()
