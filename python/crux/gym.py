@@ -27,6 +27,7 @@ ENV_ID = "crux/Climb-v0"
 MAX_EPISODE_STEPS = 1000
 OBSERVATION_FORMS = ("numeric", "paper")
 WALL_ORDERS = ("cycle", "sample")
+RESET_OPTIONS = ("wall",)
 # 40,000 random steps on the paper's random walls (4 x 8 tiles) met at most 27
 # candidates; denser walls may need more (ValueError naming max_candidates otherwise).
 DEFAULT_MAX_CANDIDATES = 32
@@ -79,6 +80,14 @@ def _integer(value, argument, bounds=None, must_be="must be"):
     if isinstance(value, (int, np.integer)) and not isinstance(value, bool) and low <= int(value) <= high:
         return int(value)
     raise ValueError(f"{argument}: {must_be} an integer from {low} to {high}, got {value!r}")
+
+
+def _check_options(options):
+    if options is not None and not isinstance(options, dict):
+        raise ValueError("options: must be a dict or None")
+    for name in options or ():
+        if name not in RESET_OPTIONS:
+            raise ValueError(f"options: unknown option {name!r} ({', '.join(RESET_OPTIONS)})")
 
 
 def _open_only(method):
@@ -394,9 +403,8 @@ class ClimbEnv(gymnasium.Env):
 
     @_open_only
     def reset(self, *, seed=None, options=None):
+        _check_options(options)
         super().reset(seed=seed)
-        if options is not None and not isinstance(options, dict):
-            raise ValueError("options: must be a dict or None")
         if seed is not None:
             self._walls.restart()  # the same seed, the same walls
         self._draw_wall(self.np_random, options)
@@ -629,10 +637,9 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
             seeds = list(seed)
             if len(seeds) != self.num_envs:
                 raise ValueError(f"seed: {len(seeds)} seeds for {self.num_envs} environments")
-        if options is not None and not isinstance(options, dict):
-            raise ValueError("options: must be a dict or None")
-        if options is not None and "reset_mask" in options:
+        if isinstance(options, dict) and "reset_mask" in options:
             raise ValueError("options: reset_mask is not supported: reset() resets every environment")
+        _check_options(options)
         super().reset(seed=int(seed) if isinstance(seed, (int, np.integer)) else None)
         for env, env_seed in enumerate(seeds):
             if env_seed is not None or self._rngs[env] is None:

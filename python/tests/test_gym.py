@@ -312,6 +312,16 @@ def test_max_candidates_reaches_the_most_holds_a_wall_may_have():
     assert crux.gym._INTEGER_ARGUMENTS["max_candidates"][1] == crux.gym._MAX_HOLDS
 
 
+def test_unknown_reset_options_are_refused():
+    env = crux.gym.ClimbEnv(7)
+    for options in ({"wal": 3}, {"wall": 3, "seed": 1}):
+        with pytest.raises(ValueError, match=r"^options: unknown option '(wal|seed)' \(wall\)$"):
+            env.reset(options=options)
+    with pytest.raises(ValueError, match="^options: must be a dict or None$"):
+        env.reset(options=["wall"])
+    assert env.reset(options={"wall": 3})[1]["wall_name"] == "random wall, seed 3"
+
+
 def test_a_closed_environment_refuses_every_operation_and_closes_again():
     closed = r"^crux.gym.ClimbEnv is closed \(close\(\) was called\): make a new one$"
     operations = public_operations(crux.gym.ClimbEnv)

@@ -151,6 +151,8 @@ def test_bad_input_is_a_value_error_naming_the_argument():
         envs.reset(seed=[1, 2])
     with pytest.raises(ValueError, match="^options: reset_mask is not supported"):
         envs.reset(options={"reset_mask": np.array([True, False, True])})
+    with pytest.raises(ValueError, match=r"^options: unknown option 'wal' \(wall\)$"):
+        envs.reset(options={"wal": 3})
     _, info = envs.reset(seed=0)
     actions = random_masked_actions(np.random.default_rng(0), info["action_mask"])
     outside = int(np.flatnonzero(info["action_mask"][1] == 0)[0])
