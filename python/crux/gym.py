@@ -9,6 +9,7 @@ actions and the walls.
 """
 
 import copy
+import functools
 import operator
 import os
 
@@ -26,9 +27,32 @@ ENV_ID = "crux/Climb-v0"
 MAX_EPISODE_STEPS = 1000
 OBSERVATION_FORMS = ("numeric", "paper")
 WALL_ORDERS = ("cycle", "sample")
+RESET_OPTIONS = ("wall",)
 # 40,000 random steps on the paper's random walls (4 x 8 tiles) met at most 27
 # candidates; denser walls may need more (ValueError naming max_candidates otherwise).
 DEFAULT_MAX_CANDIDATES = 32
+# The most holds crux takes on a wall (kMaxHoldCount, src/wall/wall.hpp).
+_MAX_HOLDS = 10000
+
+# The integer arguments of ClimbEnv and VectorClimbEnv and the range each is checked
+# against where Python receives it, from what it feeds: (lowest, highest).
+_INTEGER_ARGUMENTS = {
+    # A slot per candidate hold, and a state offers at most its wall's holds.
+    "max_candidates": (1, _MAX_HOLDS),
+    # crux.Wall.random's seed is a uint64 (also each seed of a list, of wall_split and of
+    # reset's options["wall"]).
+    "wall": (0, 2**64 - 1),
+    # Each environment keeps its own episode (MDP, posture cache, kinematics workspace):
+    # 2**16 of them took 2.3 GB and 10 s to reset on the paper's wall 7 (measured), and
+    # grow as they explore: what a workstation's memory holds (C++'s 2**20 would be 36 GB).
+    "num_envs": (1, 2**16),
+    # The C++ step count it is compared with is a C int.
+    "max_episode_steps": (1, 2**31 - 1),
+}
+# The numeric form's candidate slots, num_envs x max_candidates, take 25 bytes each in a
+# batch (features, mask, hold index, action mask) and 32 in the batched observation
+# space's bounds: at most 2**22 of them (240 MB), 2**16 environments of 64 candidates.
+_MAX_BATCH_SLOTS = 2**22
 
 
 # rgb_array's colours are those of crux's SVG views (src/views/palette.hpp, wall_svg.cpp),
@@ -46,6 +70,39 @@ _COM_COLOUR = "#111111"
 _RGB_WALL_WIDTH = 2 / 3  # of the frame's width; the legend takes the rest
 # A limb's joints by name (the default body's): its side, then these words.
 _LIMB_JOINT_WORDS = {"hand": ("shoulder", "elbow", "forearm", "wrist"), "foot": ("hip", "knee", "ankle")}
+
+
+def _integer(value, argument, bounds=None, must_be="must be"):
+    """value as an int if it is an integer (not a bool, nor a float even if whole, as for
+    step's action) within the range _INTEGER_ARGUMENTS gives `bounds` (by default
+    `argument`); otherwise a ValueError naming argument and the range."""
+    low, high = _INTEGER_ARGUMENTS[bounds or argument]
+    if isinstance(value, (int, np.integer)) and not isinstance(value, bool) and low <= int(value) <= high:
+        return int(value)
+    raise ValueError(f"{argument}: {must_be} an integer from {low} to {high}, got {value!r}")
+
+
+def _check_options(options):
+    if options is not None and not isinstance(options, dict):
+        raise ValueError("options: must be a dict or None")
+    for name in options or ():
+        if name not in RESET_OPTIONS:
+            raise ValueError(f"options: unknown option {name!r} ({', '.join(RESET_OPTIONS)})")
+
+
+def _open_only(method):
+    """method (or a property's getter) refused once close() has run, with the error
+    Gymnasium's AsyncVectorEnv raises then."""
+
+    @functools.wraps(method)
+    def checked(self, *args, **kwargs):
+        if self.closed:
+            raise gymnasium.error.ClosedEnvironmentError(
+                f"crux.gym.{type(self).__name__} is closed (close() was called): make a new one"
+            )
+        return method(self, *args, **kwargs)
+
+    return checked
 
 
 def _joint_limbs(joint_names):
@@ -152,7 +209,7 @@ def _wall_from(item, wall_config, argument):
     if isinstance(item, (str, os.PathLike)):
         return _crux.Wall.load(item)
     if isinstance(item, (int, np.integer)) and not isinstance(item, bool):
-        return _crux.Wall.random(int(item), wall_config)
+        return _crux.Wall.random(_integer(item, argument, "wall", "a random wall's seed must be"), wall_config)
     raise ValueError(f"{argument}: holds {item!r}, which is not a crux.Wall, a wall file or a random wall's seed")
 
 
@@ -224,6 +281,7 @@ class ClimbEnv(gymnasium.Env):
     """
 
     metadata = {"render_modes": ["rgb_array", "ansi"], "render_fps": 2}
+    closed = False  # as gymnasium.vector.VectorEnv's: close() sets it
 
     def __init__(
         self,
@@ -245,11 +303,9 @@ class ClimbEnv(gymnasium.Env):
             raise ValueError(f"wall_order: unknown order {wall_order!r} (cycle, sample)")
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
             raise ValueError(f"render_mode: unknown mode {render_mode!r} (rgb_array, ansi)")
-        if isinstance(max_candidates, bool) or not isinstance(max_candidates, (int, np.integer)) or max_candidates < 1:
-            raise ValueError("max_candidates: must be a positive integer")
+        self.max_candidates = _integer(max_candidates, "max_candidates")
         self.observation_form = observation
         self.render_mode = render_mode
-        self.max_candidates = int(max_candidates)
         self._config = config
         self._model_argument = model
         if evaluation and wall_split is None:
@@ -333,26 +389,29 @@ class ClimbEnv(gymnasium.Env):
         return _crux.ClimbMdp(wall, config=self._config, max_steps=None, model=self._model_argument)
 
     @property
+    @_open_only
     def wall(self):
         """The wall of the current episode."""
         return self._env.wall
 
     @property
+    @_open_only
     def model(self):
         return self._model
 
     # --- Gymnasium's API --------------------------------------------------------------
 
+    @_open_only
     def reset(self, *, seed=None, options=None):
+        _check_options(options)
         super().reset(seed=seed)
-        if options is not None and not isinstance(options, dict):
-            raise ValueError("options: must be a dict or None")
         if seed is not None:
             self._walls.restart()  # the same seed, the same walls
         self._draw_wall(self.np_random, options)
         raw, info = self._env.reset()
         return self._observe(raw, info)
 
+    @_open_only
     def step(self, action):
         try:
             if isinstance(action, (bool, np.bool_)):
@@ -369,10 +428,12 @@ class ClimbEnv(gymnasium.Env):
         # Truncation is Gymnasium's TimeLimit's (the registered max_episode_steps).
         return obs, float(reward), bool(terminated), False, info
 
+    @_open_only
     def action_masks(self):
         """The possible actions of the state as bools, for maskable agents."""
         return self._mask.astype(bool)
 
+    @_open_only
     def render(self):
         if self.render_mode == "ansi":
             return self._render_ansi()
@@ -382,6 +443,8 @@ class ClimbEnv(gymnasium.Env):
 
     def close(self):
         self._envs.clear()
+        self._env = None
+        self.closed = True
 
     # --- observations -------------------------------------------------------------------
 
@@ -518,14 +581,9 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
         model=None,
         max_episode_steps=MAX_EPISODE_STEPS,
     ):
-        if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or num_envs < 1:
-            raise ValueError(f"num_envs: must be a positive integer, got {num_envs!r}")
-        if max_episode_steps is not None and (
-            isinstance(max_episode_steps, bool)
-            or not isinstance(max_episode_steps, (int, np.integer))
-            or max_episode_steps < 1
-        ):
-            raise ValueError(f"max_episode_steps: must be a positive integer or None, got {max_episode_steps!r}")
+        num_envs = _integer(num_envs, "num_envs")
+        if max_episode_steps is not None:
+            max_episode_steps = _integer(max_episode_steps, "max_episode_steps", must_be="must be None or")
         # One single environment checks the arguments and gives the walls and the spaces.
         single = ClimbEnv(
             wall,
@@ -538,7 +596,13 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
             max_candidates=max_candidates,
             model=model,
         )
-        self.num_envs = int(num_envs)
+        if observation == "numeric" and num_envs * single.max_candidates > _MAX_BATCH_SLOTS:
+            raise ValueError(
+                f"num_envs: must be an integer from 1 to {_MAX_BATCH_SLOTS // single.max_candidates} with "
+                f"max_candidates={single.max_candidates} (at most {_MAX_BATCH_SLOTS} candidate slots a batch), "
+                f"got {num_envs}"
+            )
+        self.num_envs = num_envs
         self.observation_form = observation
         self.max_episode_steps = max_episode_steps
         self.single_observation_space = single.observation_space
@@ -565,6 +629,7 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
         self._seeded = np.zeros(self.num_envs, dtype=np.bool_)
         self._mask = None
 
+    @_open_only
     def reset(self, *, seed=None, options=None):
         if seed is None or isinstance(seed, (int, np.integer)):
             seeds = [None if seed is None else int(seed) + i for i in range(self.num_envs)]
@@ -572,10 +637,9 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
             seeds = list(seed)
             if len(seeds) != self.num_envs:
                 raise ValueError(f"seed: {len(seeds)} seeds for {self.num_envs} environments")
-        if options is not None and not isinstance(options, dict):
-            raise ValueError("options: must be a dict or None")
-        if options is not None and "reset_mask" in options:
+        if isinstance(options, dict) and "reset_mask" in options:
             raise ValueError("options: reset_mask is not supported: reset() resets every environment")
+        _check_options(options)
         super().reset(seed=int(seed) if isinstance(seed, (int, np.integer)) else None)
         for env, env_seed in enumerate(seeds):
             if env_seed is not None or self._rngs[env] is None:
@@ -586,6 +650,7 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
         obs, _, _, _, parts = self._vector.reset()
         return obs, self._info(parts)
 
+    @_open_only
     def step(self, actions):
         if self._rngs[0] is None:
             raise gymnasium.error.ResetNeeded("Cannot call step() before reset()")  # as OrderEnforcing
@@ -594,9 +659,14 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
         obs, rewards, terminated, truncated, parts = self._vector.step(actions)
         return obs, rewards, terminated, truncated, self._info(parts)
 
+    @_open_only
     def action_masks(self):
         """The possible actions of each environment's state as bools, (num_envs, n), for maskable agents."""
         return self._mask.astype(bool)
+
+    @_open_only
+    def render(self):
+        return super().render()
 
     def close_extras(self, **kwargs):
         self._vector = None

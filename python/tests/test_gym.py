@@ -17,6 +17,14 @@ from needed import GYMNASIUM, need
 from gymnasium.utils.env_checker import check_env  # noqa: E402 (after Gymnasium is known to be there)
 
 import crux.gym  # noqa: E402
+from gym_extremes import (  # noqa: E402
+    integer_arguments,
+    integer_walk,
+    operate,
+    public_operations,
+    refusal,
+    start_holds_alone,
+)
 
 FORMS = ("numeric", "paper")
 REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
@@ -251,6 +259,90 @@ def test_bad_input_is_a_value_error_naming_the_argument():
     for action in (1.5, True, "3", None):
         with pytest.raises(ValueError, match="^action: must be an integer"):
             env.step(action)
+
+
+def test_every_bounded_integer_is_an_argument_of_an_environment():
+    arguments = integer_arguments(crux.gym.ClimbEnv) + integer_arguments(crux.gym.VectorClimbEnv)
+    assert set(arguments) == set(crux.gym._INTEGER_ARGUMENTS)
+
+
+def climbs(env):
+    """env resets and takes a possible action, its observations in its space."""
+    obs, info = env.reset(seed=0)
+    assert env.observation_space.contains(obs)
+    obs = env.step(int(np.flatnonzero(info["action_mask"])[0]))[0]
+    assert env.observation_space.contains(obs)
+
+
+@pytest.mark.parametrize("name", integer_arguments(crux.gym.ClimbEnv))
+def test_integer_arguments_at_their_extremes_work_or_are_refused_naming_them(name):
+    arguments = {} if name == "wall" else {"wall": start_holds_alone()}
+    for value, accepted in integer_walk(name):
+        if accepted:
+            climbs(crux.gym.ClimbEnv(**arguments, **{name: value}))
+        else:
+            with pytest.raises(ValueError, match=refusal(name, value)):
+                crux.gym.ClimbEnv(**arguments, **{name: value})
+            with pytest.raises(ValueError, match=refusal(name, value)):
+                gymnasium.make(crux.gym.ENV_ID, **arguments, **{name: value})
+    for value in (True, 3.0, 3.5):  # not integers, even if whole
+        with pytest.raises(ValueError, match=rf"^{name}: "):
+            crux.gym.ClimbEnv(**arguments, **{name: value})
+
+
+def test_a_random_walls_seed_is_checked_wherever_it_is_given():
+    low, high = crux.gym._INTEGER_ARGUMENTS["wall"]
+    for seed in (high, 2**63, 2**31):
+        climbs(crux.gym.ClimbEnv([1, seed]))
+        climbs(crux.gym.ClimbEnv(wall_split={"train": [seed], "evaluation": [1]}))
+        assert crux.gym.ClimbEnv(7).reset(options={"wall": seed})[1]["wall_name"] == f"random wall, seed {seed}"
+    for seed in (low - 1, high + 1):
+        refused = rf"a random wall's seed must be an integer from {low} to {high}, got {seed}$"
+        with pytest.raises(ValueError, match=f"^wall: {refused}"):
+            crux.gym.ClimbEnv([1, seed])
+        with pytest.raises(ValueError, match=f"^wall_split: {refused}"):
+            crux.gym.ClimbEnv(wall_split={"train": [1], "evaluation": [seed]})
+        with pytest.raises(ValueError, match=f"^options: {refused}"):
+            crux.gym.ClimbEnv(7).reset(options={"wall": seed})
+
+
+def test_max_candidates_reaches_the_most_holds_a_wall_may_have():
+    header = (REPOSITORY / "src" / "wall" / "wall.hpp").read_text()
+    assert re.search(r"constexpr int kMaxHoldCount = (\d+);", header).group(1) == str(crux.gym._MAX_HOLDS)
+    assert crux.gym._INTEGER_ARGUMENTS["max_candidates"][1] == crux.gym._MAX_HOLDS
+
+
+def test_unknown_reset_options_are_refused():
+    env = crux.gym.ClimbEnv(7)
+    for options in ({"wal": 3}, {"wall": 3, "seed": 1}):
+        with pytest.raises(ValueError, match=r"^options: unknown option '(wal|seed)' \(wall\)$"):
+            env.reset(options=options)
+    with pytest.raises(ValueError, match="^options: must be a dict or None$"):
+        env.reset(options=["wall"])
+    assert env.reset(options={"wall": 3})[1]["wall_name"] == "random wall, seed 3"
+
+
+def test_a_closed_environment_refuses_every_operation_and_closes_again():
+    closed = r"^crux.gym.ClimbEnv is closed \(close\(\) was called\): make a new one$"
+    operations = public_operations(crux.gym.ClimbEnv)
+    assert {"reset", "step", "action_masks", "render", "wall", "model"} <= set(operations)
+    for reset_first in (True, False):
+        env = crux.gym.ClimbEnv(7, render_mode="ansi")
+        if reset_first:
+            env.reset(seed=0)
+        env.close()
+        env.close()  # harmless
+        for name in operations:
+            with pytest.raises(gymnasium.error.ClosedEnvironmentError, match=closed):
+                operate(env, name)
+    # Through gymnasium.make's wrappers too.
+    env = gymnasium.make(crux.gym.ENV_ID, wall=7, render_mode="ansi")
+    env.reset(seed=0)
+    env.close()
+    env.close()
+    for operation in (env.reset, lambda: env.step(0), env.render):
+        with pytest.raises(gymnasium.error.ClosedEnvironmentError, match=closed):
+            operation()
 
 
 def test_render_modes():

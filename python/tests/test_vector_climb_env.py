@@ -15,6 +15,14 @@ from needed import GYMNASIUM, need
 from gymnasium.vector import AutoresetMode, SyncVectorEnv  # noqa: E402 (after Gymnasium is known to be there)
 
 import crux.gym  # noqa: E402
+from gym_extremes import (  # noqa: E402
+    integer_arguments,
+    integer_walk,
+    operate,
+    public_operations,
+    refusal,
+    start_holds_alone,
+)
 
 # Walls whose finish is low enough that random climbs finish often: episodes end both ways.
 LOW_FINISH = {"wall": {"finish_height": 1.3}}
@@ -128,9 +136,9 @@ def test_an_environment_that_resets_ignores_its_action():
 def test_bad_input_is_a_value_error_naming_the_argument():
     wall = crux.Wall.random(7)
     for count in (0, -1, 1.5, True, "2"):
-        with pytest.raises(ValueError, match="^num_envs: must be a positive integer"):
+        with pytest.raises(ValueError, match=rf"^num_envs: must be an integer from 1 to 65536, got {count!r}$"):
             crux.gym.VectorClimbEnv(count, wall)
-    with pytest.raises(ValueError, match="^max_episode_steps: must be a positive integer or None"):
+    with pytest.raises(ValueError, match="^max_episode_steps: must be None or an integer from 1 to 2147483647, got 0$"):
         crux.gym.VectorClimbEnv(2, wall, max_episode_steps=0)
     with pytest.raises(ValueError, match="^observation: unknown form 'pixels'"):
         crux.gym.VectorClimbEnv(2, wall, "pixels")
@@ -143,6 +151,8 @@ def test_bad_input_is_a_value_error_naming_the_argument():
         envs.reset(seed=[1, 2])
     with pytest.raises(ValueError, match="^options: reset_mask is not supported"):
         envs.reset(options={"reset_mask": np.array([True, False, True])})
+    with pytest.raises(ValueError, match=r"^options: unknown option 'wal' \(wall\)$"):
+        envs.reset(options={"wal": 3})
     _, info = envs.reset(seed=0)
     actions = random_masked_actions(np.random.default_rng(0), info["action_mask"])
     outside = int(np.flatnonzero(info["action_mask"][1] == 0)[0])
@@ -156,3 +166,64 @@ def test_bad_input_is_a_value_error_naming_the_argument():
     with pytest.raises(ValueError, match="^actions:"):
         envs.step(actions.astype(float))
     envs.step(actions)  # a refused step changed nothing
+
+
+# Arguments that size the work: run up to this value, checked beyond it through the
+# validation alone (accepted, not run).
+RUN_AT_MOST = {"num_envs": 4}
+
+
+def climbs(envs):
+    """envs reset and take a possible action each, their observations in their space."""
+    obs, info = envs.reset(seed=0)
+    assert envs.observation_space.contains(obs)
+    obs = envs.step([int(np.flatnonzero(mask)[0]) for mask in info["action_mask"]])[0]
+    assert envs.observation_space.contains(obs)
+    envs.close()
+
+
+@pytest.mark.parametrize("name", integer_arguments(crux.gym.VectorClimbEnv))
+def test_integer_arguments_at_their_extremes_work_or_are_refused_naming_them(name):
+    arguments = {"num_envs": 2}
+    if name != "wall":
+        arguments["wall"] = start_holds_alone()
+    for value, accepted in integer_walk(name):
+        arguments[name] = value
+        if accepted and value > RUN_AT_MOST.get(name, value):
+            assert crux.gym._integer(value, name) == value
+        elif accepted:
+            climbs(crux.gym.VectorClimbEnv(**arguments))
+        else:
+            with pytest.raises(ValueError, match=refusal(name, value)):
+                crux.gym.VectorClimbEnv(**arguments)
+    for value in (True, 3.0, 3.5):  # not integers, even if whole
+        arguments[name] = value
+        with pytest.raises(ValueError, match=rf"^{name}: "):
+            crux.gym.VectorClimbEnv(**arguments)
+
+
+def test_num_envs_times_max_candidates_is_bounded():
+    wall = start_holds_alone()
+    most = crux.gym._INTEGER_ARGUMENTS["max_candidates"][1]
+    envs = crux.gym._MAX_BATCH_SLOTS // most
+    assert crux.gym.VectorClimbEnv(envs, wall, max_candidates=most).num_envs == envs
+    refused = rf"^num_envs: must be an integer from 1 to {envs} with max_candidates={most} .*, got {envs + 1}$"
+    with pytest.raises(ValueError, match=refused):
+        crux.gym.VectorClimbEnv(envs + 1, wall, max_candidates=most)
+    # The paper's form has no candidate slots.
+    assert crux.gym.VectorClimbEnv(envs + 1, wall, "paper", max_candidates=most).num_envs == envs + 1
+
+
+def test_a_closed_environment_refuses_every_operation_and_closes_again():
+    closed = r"^crux.gym.VectorClimbEnv is closed \(close\(\) was called\): make a new one$"
+    operations = public_operations(crux.gym.VectorClimbEnv)
+    assert {"reset", "step", "action_masks", "render"} <= set(operations)
+    for reset_first in (True, False):
+        envs = crux.gym.VectorClimbEnv(2, crux.Wall.random(7))
+        if reset_first:
+            envs.reset(seed=0)
+        envs.close()
+        envs.close()  # harmless
+        for name in operations:
+            with pytest.raises(gymnasium.error.ClosedEnvironmentError, match=closed):
+                operate(envs, name)
