@@ -22,11 +22,12 @@ Regime iteration_regime(std::string_view name, const std::string& file, std::siz
 
 }  // namespace
 
-std::vector<RunStep> read_iterations_file(const std::filesystem::path& path, int recorded_iterations) {
+std::vector<RunStep> read_iterations_file(const std::filesystem::path& path, int recorded_iterations,
+                                          PhysicsModel model) {
   const std::string file = path.string();
   const std::string text = read_input_file(file, "iterations file");
-  // A static run's file adds `fell`; any other first line is refused against the paper's header.
-  const bool with_falls = std::string_view(text).substr(0, text.find('\n')) == kIterationsHeaderWithFalls;
+  // The run's config says which header: a static run's falls are what its replays show.
+  const bool with_falls = model == PhysicsModel::Static;
   const std::vector<std::string_view> rows =
       csv_rows(text, file, with_falls ? kIterationsHeaderWithFalls : kIterationsHeader);
   std::vector<RunStep> steps;

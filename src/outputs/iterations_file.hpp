@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "experiments/episode_replay.hpp"
+#include "physics/physics_model.hpp"
 
 namespace crux {
 
@@ -15,12 +16,15 @@ inline constexpr const char* kIterationsHeader = "iteration,episode,regime,hold,
 inline constexpr const char* kIterationsHeaderWithFalls =
     "iteration,episode,regime,hold,success,root_rise_cm,reward,fell";
 
-// Every row, each checked: either header, 7 or 8 fields as it says, `fell` 0 or 1 and only
-// after a failure, iterations numbered 1, 2, ... in
+// Every row, each checked: the header of the run's physics `model` (the static model's adds
+// `fell`: a static run's file without it is refused, as is the kinematic model's with it),
+// 7 or 8 fields as it says, `fell` 0 or 1 and only after a failure, iterations numbered
+// 1, 2, ... in
 // order, episodes from 0 rising by 0 or 1, a known regime, success 0 or 1, integers and
 // finite numbers, a newline after the last row, and `recorded_iterations` rows (the
 // run's summary.json `iterations`), so that a file cut short is never read as a shorter
 // run. InputError(file, "line N: problem" or the problem) otherwise.
-std::vector<RunStep> read_iterations_file(const std::filesystem::path& file, int recorded_iterations);
+std::vector<RunStep> read_iterations_file(const std::filesystem::path& file, int recorded_iterations,
+                                          PhysicsModel model);
 
 }  // namespace crux

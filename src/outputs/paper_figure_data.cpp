@@ -72,13 +72,15 @@ void read_paper_summary(const std::filesystem::path& folder, PaperFigureData& da
 
 PaperFigureData read_paper_figure_data(const std::filesystem::path& folder) {
   PaperFigureData data;
-  data.grid = read_run_config(folder / "config.toml").settings.learning.climbing.grid;
+  const ExperimentConfig config = read_run_config(folder / "config.toml");
+  data.grid = config.settings.learning.climbing.grid;
   read_paper_summary(folder, data);
   for (PaperConditionData& condition : data.conditions) {
     for (std::size_t i = 0; i < condition.runs.size(); ++i) {
       const std::filesystem::path file =
           folder / "runs" / fmt::format("{}_{}", condition_name(condition.condition), i) / "iterations.csv";
-      for (const RunStep& step : read_iterations_file(file, data.iterations))
+      for (const RunStep& step :
+           read_iterations_file(file, data.iterations, config.settings.learning.climbing.physics.model))
         condition.runs[i].regimes.push_back(step.regime);
     }
   }

@@ -15,6 +15,7 @@
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
 #include "common/printable.hpp"
+#include "outputs/run_config_file.hpp"
 #include "outputs/summary_file.hpp"
 #include "wall/wall_file.hpp"
 
@@ -195,7 +196,8 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
   RecordedClimb& last = folder.last;
   last = {"last", -1, true, {}, {}};
   if (!episodes.empty()) last.episode = static_cast<int>(episodes.size()) - 1;
-  folder.steps = read_iterations_file(folder.directory / "iterations.csv", folder.iterations);
+  folder.steps = read_iterations_file(folder.directory / "iterations.csv", folder.iterations,
+                                      read_run_config(folder.config_file).settings.learning.climbing.physics.model);
   std::size_t reached = 0;
   for (const RunStep& step : folder.steps) {
     if (step.episode != last.episode) continue;

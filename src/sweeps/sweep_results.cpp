@@ -4,10 +4,13 @@
 
 #include <fmt/format.h>
 
+#include "common/input_error.hpp"
 #include "common/json_field.hpp"
+#include "common/sha256.hpp"
 #include "experiments/experiment_analysis.hpp"
 #include "experiments/statistics.hpp"
 #include "outputs/iterations_file.hpp"
+#include "outputs/run_config_file.hpp"
 #include "outputs/run_folder.hpp"
 #include "outputs/summary.hpp"
 #include "outputs/summary_file.hpp"
@@ -24,9 +27,9 @@ namespace {
 // A run as the analysis needs it: its iterations (problem-space columns of
 // iterations.csv, which must hold the `recorded_iterations` of its summary.json) and
 // episode lengths; the agent-space columns are not in the folder.
-RunResult read_run(const fs::path& directory, int recorded_iterations) {
+RunResult read_run(const fs::path& directory, int recorded_iterations, PhysicsModel model) {
   RunResult run;
-  for (const RunStep& step : read_iterations_file(directory / "iterations.csv", recorded_iterations)) {
+  for (const RunStep& step : read_iterations_file(directory / "iterations.csv", recorded_iterations, model)) {
     IterationRecord record;
     record.episode = step.episode;
     record.regime = step.regime;
@@ -89,6 +92,24 @@ std::string sweep_results_csv_header(const SweepPlan& plan, const std::vector<st
   return csv;
 }
 
+// A training run after K - 1 others read the Q_grid they left beside its folder; its
+// config.toml records that file's digest. A resumed sweep keeps the file: it must still be
+// the one the run read, as a replay of the run's config.toml would check.
+void check_preceding_q_grid(const fs::path& sweep_folder, const SweepTask& task, const fs::path& run_directory) {
+  const fs::path file = sweep_folder / preceding_q_grid_file(task);
+  const ExperimentConfig config = read_run_config(run_directory / "config.toml");
+  const auto recorded = config.recorded_provenance.find("q_grid_sha256");
+  const std::string digest = sha256_of_file(file.string(), "Q-table file");
+  if (recorded == config.recorded_provenance.end() || recorded->second != digest) {
+    throw InputError(
+        file.string(),
+        fmt::format("is not the Q_grid that {} read (sha256 {}, recorded {}): delete {} "
+                    "to run it again",
+                    task.folder.string(), digest,
+                    recorded == config.recorded_provenance.end() ? "none" : recorded->second, run_directory.string()));
+  }
+}
+
 // Cell c's runs, read back from their folders for the analysis, each appended to `csv` as
 // a row of results.csv with its wall's facts.
 ExperimentResult read_sweep_cell(const SweepPlan& plan, const fs::path& folder, std::size_t c,
@@ -105,7 +126,10 @@ ExperimentResult read_sweep_cell(const SweepPlan& plan, const fs::path& folder, 
       const fs::path directory = folder / task.folder;
       const std::string summary_file = (directory / "summary.json").string();
       const OrderedJson summary = read_summary(directory);
-      runs.runs.push_back(read_run(directory, summary_iterations(summary, summary_file)));
+      if (condition == Condition::Training && settings.training_walls > 1)
+        check_preceding_q_grid(folder, task, directory);
+      runs.runs.push_back(
+          read_run(directory, summary_iterations(summary, summary_file), settings.learning.climbing.physics.model));
       const int pair = r / settings.seeds_per_wall;
       runs.cluster_of_run.push_back(static_cast<std::size_t>(pair));
       runs.wall_of_run.push_back(static_cast<std::size_t>(pair));

@@ -14,10 +14,11 @@ const std::string kIterationsCsvHeader = "iteration,episode,regime,hold,success,
 
 // The problem of the InputError that reading `text` as a run of `recorded` iterations
 // raises, which must name the file.
-std::string iterations_problem(const std::string& name, const std::string& text, int recorded = 2) {
+std::string iterations_problem(const std::string& name, const std::string& text, int recorded = 2,
+                               PhysicsModel model = PhysicsModel::Kinematic) {
   const auto file = testing::write_temporary(name, text);
   try {
-    read_iterations_file(file, recorded);
+    read_iterations_file(file, recorded, model);
   } catch (const InputError& e) {
     EXPECT_EQ(e.source(), file.string());
     return e.problem();
@@ -30,7 +31,7 @@ TEST(IterationsFile, ReadsEveryRow) {
   const auto file = testing::write_temporary(
       "iterations_good.csv",
       kIterationsCsvHeader + "1,0,w_greedy,12,1,4.5,-1\n2,0,random,7,0,0,-10\n3,1,g_greedy,3,1,-2.25,100\n");
-  const std::vector<RunStep> steps = read_iterations_file(file, 3);
+  const std::vector<RunStep> steps = read_iterations_file(file, 3, PhysicsModel::Kinematic);
   ASSERT_EQ(steps.size(), 3u);
   EXPECT_EQ(steps[0].iteration, 1);
   EXPECT_EQ(steps[0].regime, Regime::WGreedy);
@@ -41,7 +42,9 @@ TEST(IterationsFile, ReadsEveryRow) {
   EXPECT_FALSE(steps[1].success);
   EXPECT_EQ(steps[2].episode, 1);
   EXPECT_EQ(steps[2].regime, Regime::GGreedy);
-  EXPECT_TRUE(read_iterations_file(testing::write_temporary("iterations_none.csv", kIterationsCsvHeader), 0).empty());
+  EXPECT_TRUE(read_iterations_file(testing::write_temporary("iterations_none.csv", kIterationsCsvHeader), 0,
+                                   PhysicsModel::Kinematic)
+                  .empty());
 }
 
 // A run of the static model adds `fell`: the failed moves after which the climber fell
@@ -51,28 +54,35 @@ TEST(IterationsFile, ReadsTheFallsOfAStaticRun) {
   const auto file = testing::write_temporary(
       "iterations_falls.csv",
       header + "1,0,w_greedy,12,1,4.5,-1,0\n2,0,random,7,0,0,-1000,1\n3,0,random,8,0,0,-1000,0\n");
-  const std::vector<RunStep> steps = read_iterations_file(file, 3);
+  const std::vector<RunStep> steps = read_iterations_file(file, 3, PhysicsModel::Static);
   ASSERT_EQ(steps.size(), 3u);
   EXPECT_FALSE(steps[0].fell);
   EXPECT_TRUE(steps[1].fell);
   EXPECT_FALSE(steps[2].fell);
   EXPECT_DOUBLE_EQ(steps[1].reward, -1000);
-  EXPECT_EQ(iterations_problem("iterations_fell_value.csv", header + "1,0,random,7,0,0,-1000,2\n", 1),
-            "line 2: fell must be 0 or 1");
-  EXPECT_EQ(iterations_problem("iterations_fell_reached.csv", header + "1,0,random,7,1,3,-1,1\n", 1),
-            "line 2: a reached move cannot fall");
-  EXPECT_EQ(iterations_problem("iterations_fell_fields.csv", header + "1,0,random,7,0,0,-1000\n", 1),
-            "line 2: 7 fields, not 8");
-  // Without the column nothing falls.
-  EXPECT_FALSE(
-      read_iterations_file(
-          testing::write_temporary("iterations_no_falls.csv", kIterationsCsvHeader + "1,0,random,7,0,0,-1000\n"), 1)
-          .front()
-          .fell);
+  EXPECT_EQ(
+      iterations_problem("iterations_fell_value.csv", header + "1,0,random,7,0,0,-1000,2\n", 1, PhysicsModel::Static),
+      "line 2: fell must be 0 or 1");
+  EXPECT_EQ(
+      iterations_problem("iterations_fell_reached.csv", header + "1,0,random,7,1,3,-1,1\n", 1, PhysicsModel::Static),
+      "line 2: a reached move cannot fall");
+  EXPECT_EQ(
+      iterations_problem("iterations_fell_fields.csv", header + "1,0,random,7,0,0,-1000\n", 1, PhysicsModel::Static),
+      "line 2: 7 fields, not 8");
+  // Issue 39: a static run's file without the column was read as a run without falls, and
+  // a kinematic run's file with it as one with falls: the run's config says which header.
+  EXPECT_EQ(iterations_problem("iterations_static_no_falls.csv", kIterationsCsvHeader + "1,0,random,7,0,0,-1000\n", 1,
+                               PhysicsModel::Static)
+                .rfind("line 1: the header must be '" + header.substr(0, header.size() - 1) + "', not 'iteration", 0),
+            0u);
+  EXPECT_NE(iterations_problem("iterations_kinematic_falls.csv", header + "1,0,random,7,0,0,-1000,0\n", 1)
+                .find("line 1: the header must be"),
+            std::string::npos);
 }
 
 TEST(IterationsFile, RefusesAMissingFileAndAnotherHeader) {
-  EXPECT_THROW(read_iterations_file(testing::temporary_path("iterations_missing.csv"), 0), InputError);
+  EXPECT_THROW(read_iterations_file(testing::temporary_path("iterations_missing.csv"), 0, PhysicsModel::Kinematic),
+               InputError);
   EXPECT_EQ(iterations_problem("iterations_empty.csv", ""),
             "is empty; the header line must be 'iteration,episode,regime,hold,success,root_rise_cm,reward'");
   EXPECT_EQ(iterations_problem("iterations_header.csv", "iteration,episode,mode\n1,0,random\n"),

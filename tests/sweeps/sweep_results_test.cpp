@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "agent_space/moving_grid.hpp"
+#include "common/input_error.hpp"
 #include "experiments/experiment_analysis.hpp"
 #include "experiments/statistics.hpp"
 #include "learning/q_table_file.hpp"
@@ -124,8 +125,8 @@ TEST(SweepResults, ACellOverThreeTrainingWallsIsCruxPapersExperiment) {
     const ConditionResult& expected = paper.conditions[static_cast<int>(condition)];
     for (int r = 0; r < config.settings.runs(); ++r) {
       const fs::path run = job.folder / job.plan.tasks[run_task_index(job.plan, 0, condition, r)].folder;
-      const std::vector<RunStep> steps =
-          read_iterations_file(run / "iterations.csv", config.settings.learning.iterations);
+      const std::vector<RunStep> steps = read_iterations_file(
+          run / "iterations.csv", config.settings.learning.iterations, config.settings.learning.climbing.physics.model);
       ASSERT_EQ(steps.size(), expected.runs[r].iterations.size());
       for (std::size_t i = 0; i < steps.size(); ++i) {
         ASSERT_EQ(steps[i].hold_id, expected.runs[r].iterations[i].hold_id) << condition_name(condition) << r;
@@ -150,6 +151,24 @@ TEST(SweepResults, ACellOverThreeTrainingWallsIsCruxPapersExperiment) {
   for (std::size_t h = 0; h < trained_on.holds.size(); ++h) {
     EXPECT_EQ(trained_on.holds[h].position, paper.walls[1].wall.holds[h].position) << "hold " << h;
   }
+
+  // Issue 39: a resume kept a damaged or missing preceding Q_grid and exited 0. The
+  // results check it against the digest the run's config.toml recorded, as a replay would.
+  const fs::path preceding =
+      job.folder / preceding_q_grid_file(job.plan.tasks[run_task_index(job.plan, 0, Condition::Training, 1)]);
+  const std::string kept = read_bytes(preceding);
+  std::ofstream(preceding, std::ios::binary | std::ios::app) << 'x';
+  try {
+    write_sweep_results(job.plan, job.folder, job.provenance);
+    ADD_FAILURE() << "a damaged preceding Q_grid was kept";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), preceding.string());
+    EXPECT_NE(e.problem().find("is not the Q_grid that runs/c0/training_1 read"), std::string::npos) << e.problem();
+  }
+  fs::remove(preceding);
+  EXPECT_THROW(write_sweep_results(job.plan, job.folder, job.provenance), InputError);
+  std::ofstream(preceding, std::ios::binary) << kept;
+  EXPECT_NO_THROW(write_sweep_results(job.plan, job.folder, job.provenance));
 }
 
 TEST(SweepResults, PValuesAreHolmAdjustedOverTheCells) {

@@ -29,7 +29,8 @@ TEST(SweepTask, ARunTaskWritesTheRunFolderThatCruxTrainWouldReplay) {
 
   const ExperimentResult paper = run_paper_experiment(testing::human_model(), config.settings);
   const RunFolder run = locate_run_folder(folder / "runs/c0/transfer_0");
-  const std::vector<RunStep> steps = read_iterations_file(run.directory / "iterations.csv", run.iterations);
+  const std::vector<RunStep> steps = read_iterations_file(run.directory / "iterations.csv", run.iterations,
+                                                          config.settings.learning.climbing.physics.model);
   const RunResult& expected = paper.conditions[static_cast<int>(Condition::Transfer)].runs[0];
   ASSERT_EQ(steps.size(), expected.iterations.size());
   for (std::size_t i = 0; i < steps.size(); ++i) {
