@@ -283,6 +283,14 @@ def test_wall_generator_keys_beside_a_wall_file_are_refused(tmp_path):
         crux.run_learning(config={"wall.file": str(tmp_path / "wall.json"), "wall.sigma": 0.2})
 
 
+def test_wall_generator_keys_beside_a_wall_object_are_refused():
+    """Issue 39: run_learning(wall, {"wall.incline": 30}) ran on the wall, ignoring the key."""
+    wall = crux.Wall.random(5)
+    for key, value in (("wall.incline", 30), ("wall.rows", 9), ("wall.sigma", 0.2)):
+        with pytest.raises(ValueError, match=f"^{key}: shapes a random wall, and the wall argument gives the wall"):
+            crux.run_learning(wall, config={key: value, "experiment.iterations": 5})
+
+
 def test_config_keys_are_the_declarations_flags_and_files_use():
     keys = {k["key"]: k for k in crux.config_keys()}
     assert len(keys) == len(crux.config_keys()), "each key is declared once"

@@ -104,6 +104,51 @@ TEST(Cli, BadPhysicsParametersAreOneLineNamingTheFlag) {
   EXPECT_FALSE(std::filesystem::exists(never));
 }
 
+// Issue 39's reports, as typed: each key was accepted at a value that a computation
+// downstream could not take (CLP failing or running for minutes, NaN rewards written, a
+// figure hanging). Each is now one line naming the flag or the file's line, exit 2,
+// nothing written.
+TEST(Cli, TheValuesIssue39FoundUnboundedAreRefusedBeforeAnyOutput) {
+  const std::filesystem::path never = testing::temporary_path("issue39_never");
+  const std::string wall = CRUX_SOURCE_DIR "/walls/home_12.json";
+  const std::string friction_sweep =
+      testing::write_temporary("issue39_friction.toml",
+                               "[physics]\nmodel = \"static\"\nfriction = [1.0, 1e20]\n[experiment]\nwalls = 1\n")
+          .string();
+  const std::string strength_sweep =
+      testing::write_temporary("issue39_strength.toml", "[physics]\nstrength = [\"\", \"elite\"]\n").string();
+  const struct {
+    std::string command, message_start;
+  } cases[] = {
+      {"train --wall-file " + wall + " --iterations 50 --physics-model static --physics-friction 1e308 -o " +
+           never.string(),
+       "crux: --physics-friction: must be in [0, 10]"},
+      {"plan --wall-file " + wall + " --physics-model static --physics-friction 1e20",
+       "crux: --physics-friction: must be in [0, 10]"},
+      {"stances --physics-friction 1e15", "crux: --physics-friction: must be in [0, 10]"},
+      {"train --wall-seed 1 --iterations 300 --reward-height 1e308 -o " + never.string(),
+       "crux: --reward-height: must be in [0, 1000000000]"},
+      {"paper --walls 1 --iterations 200 --plan false --grid-tile-height 1e20 -o " + never.string(),
+       "crux: --grid-tile-height: must be in [0.01, 10]"},
+      {"paper --walls 1 --iterations 200 --plan false --grid-agent-space reach --grid-tile-height 1e10 -o " +
+           never.string(),
+       "crux: --grid-tile-height: must be in [0.01, 10]"},
+      {"train --wall-seed 1 --physics-model static --physics-strength '' -o " + never.string(),
+       "crux: --physics-strength: unknown strength ''"},
+      {"sweep -o " + never.string() + " --config " + friction_sweep,
+       "crux: " + friction_sweep + ": line 3: physics.friction: must be in"},
+      {"sweep -o " + never.string() + " --config " + strength_sweep,
+       "crux: " + strength_sweep + ": line 2: physics.strength: unknown strength ''"},
+  };
+  for (const auto& c : cases) {
+    const testing::Outcome run = testing::run_crux(c.command);
+    EXPECT_EQ(run.exit_code, 2) << c.command;
+    EXPECT_EQ(testing::count_lines(run.err), 1) << c.command << ": " << run.err;
+    EXPECT_EQ(run.err.rfind(c.message_start, 0), 0u) << c.command << ": " << run.err;
+    EXPECT_FALSE(std::filesystem::exists(never)) << c.command;
+  }
+}
+
 // crux stances surveys the stances of kinematic climbs under the static model's
 // parameters: its JSON adds up, and its own bound is one line naming the flag.
 TEST(Cli, StancesSurveysAndRefusesABadMoveCount) {
