@@ -18,6 +18,7 @@ import json
 import math
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import tempfile
@@ -311,3 +312,22 @@ def test_python_takes_the_same_keys_at_their_extremes(function, tmp_path):
             if "NaN" in summary or "Infinity" in summary:
                 failures.append(f"{case}: a non-finite number in its summary")
     assert not failures, f"{len(failures)} failures:\n" + "\n".join(failures[:40])
+
+
+def test_the_regression_tests_reliability_names_exist():
+    """docs/RELIABILITY.md's issue-39 section names its regression tests: each exists."""
+    root = pathlib.Path(__file__).resolve().parents[2]
+    text = (root / "docs" / "RELIABILITY.md").read_text()
+    section = text[text.index("## Every key at its extremes") :]
+    section = section[: section.index("\n## ", 1)]
+    sources = "\n".join(p.read_text() for p in (root / "tests").rglob("*.cpp"))
+    python_sources = "\n".join(p.read_text() for p in (root / "python").rglob("test_*.py"))
+    named = 0
+    for name in sorted(set(re.findall(r"`([A-Z][A-Za-z]+\.[A-Z][A-Za-z0-9]+|test_[a-z0-9_]+)`", section))):
+        named += 1
+        if name.startswith("test_"):
+            assert f"def {name}(" in python_sources, name
+        else:
+            suite, case = name.split(".")
+            assert re.search(rf"TEST(_P|_F)?\({suite},\s*{case}\)", sources), name
+    assert named >= 10
