@@ -146,6 +146,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const crux::Posture posture = decoded_posture(in, body);
     const crux::Wall wall = decoded_wall(in, body, posture, config.settings.walls.incline_deg);
     const auto next = static_cast<crux::Limb>(in.byte() % crux::kLimbCount);
+    // A check of its own: one warm started from the last input's basis would make an
+    // input's outcome depend on the inputs before it, which no reproducer replays.
     crux::StanceCheck check(body, wall, config.settings.learning.climbing.physics);
     const crux::HoldConfiguration complete{{0, 1, 2, 3}};
     const double effort = check.effort(posture, complete, next);
