@@ -8,7 +8,8 @@
 #include "experiments/experiment_config.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const crux::ParameterSet kEveryKey{{"experiment", "learning", "reward", "ik", "filter", "grid", "wall"}, {}};
+  static const crux::ParameterSet kEveryKey{
+      {"experiment", "learning", "reward", "ik", "physics", "filter", "grid", "wall", "training_wall", "output"}, {}};
   crux::ExperimentConfig config;
   try {
     crux::apply_config_text(std::string(reinterpret_cast<const char*>(data), size), "fuzz.toml", config, kEveryKey,

@@ -21,8 +21,9 @@ packages=(
   coinor-libclp-dev
   # check_urdf validates the body model in tests
   liburdfdom-tools
-  # Fuzzing the readers: clang's libFuzzer (the fuzz preset).
-  clang libfuzzer-14-dev
+  # Fuzzing the readers: clang's libFuzzer (the fuzz preset); llvm-14's profile tools
+  # measure what a harness reaches (scripts/fuzz_coverage.sh).
+  clang libfuzzer-14-dev llvm-14
   # The one formatter of the C++ sources (.clang-format), checked by the tests.
   clang-format
   # The Python module, built for and tested with Debian's /usr/bin/python3; its examples
