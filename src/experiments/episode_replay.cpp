@@ -43,9 +43,8 @@ RecordedClimb replay_episode(const BodyModel& model, const Wall& wall, const Cli
     climb.steps.push_back(step);
     if (outcome.reached) climb.postures.push_back(*outcome.posture);
     if (outcome.fell) {  // the episode's climb starts again: show its last attempt
-      climb.steps.clear();
-      climb.postures.assign(1, mdp.posture());
-      ++climb.attempt;
+      climb.start_again();
+      climb.postures.push_back(mdp.posture());
     }
     climb.finished = outcome.finished;
   }

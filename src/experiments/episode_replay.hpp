@@ -36,6 +36,14 @@ struct RecordedClimb {
   // Which attempt of its episode it is, from 1: under the static model a fall takes the
   // climber back to the start, and the climb shown is the episode's last attempt.
   int attempt = 1;
+
+  // A fall: the climber is back at the start, and what is shown is the next attempt (the
+  // one place that counts them, for a replay through the MDP and for a run folder read back).
+  void start_again() {
+    steps.clear();
+    postures.clear();
+    ++attempt;
+  }
 };
 
 // Episode `episode` (an index from 0, as in iterations.csv) of the run whose every step

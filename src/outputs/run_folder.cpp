@@ -1,5 +1,6 @@
 #include "outputs/run_folder.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <map>
 #include <regex>
@@ -198,17 +199,13 @@ void read_run_climb(RunFolder& folder, const BodyModel& model) {
   if (!episodes.empty()) last.episode = static_cast<int>(episodes.size()) - 1;
   folder.steps = read_iterations_file(folder.directory / "iterations.csv", folder.iterations,
                                       read_run_config(folder.config_file).settings.learning.climbing.physics.model);
-  std::size_t reached = 0;
   for (const RunStep& step : folder.steps) {
     if (step.episode != last.episode) continue;
     last.steps.push_back(step);
-    reached += step.success ? 1 : 0;
-    if (step.fell) {  // climb.csv holds the episode's last attempt, from the start it fell back to
-      last.steps.clear();
-      reached = 0;
-      ++last.attempt;
-    }
+    if (step.fell) last.start_again();  // climb.csv holds the episode's last attempt
   }
+  const auto reached = static_cast<std::size_t>(
+      std::count_if(last.steps.begin(), last.steps.end(), [](const RunStep& step) { return step.success; }));
 
   const fs::path climb_file = folder.directory / "climb.csv";
   std::string climb_text;
