@@ -325,9 +325,10 @@ void physics_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
            "kinematic (the paper's: IK alone decides) or static (the body kept out of the wall and each stance held "
            "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md)",
            choice(&m.physics.model)},
-          // Rubber on rock measures about 1; CLP answers the same from 10 to 1e8 (every stance
-          // that holds at 10 holds), wrongly from 1e10 (fewer stances hold than at 10), and at
-          // 1e14 not at all (docs/RELIABILITY.md).
+          // Rubber on rock measures about 1. CLP's least efforts stay right up to 1e6 and go
+          // wrong from 1e7 (larger than at 10, which more friction cannot make them); from
+          // 1e10 fewer stances hold than at 10, and from about 1e14 CLP gives up or runs for
+          // minutes (docs/RELIABILITY.md).
           {"physics.friction", "Static model: Coulomb friction coefficient of every contact", &m.physics.friction, "",
            closed_range(0, 10, "ten times rubber on rock; the equilibrium program stays well conditioned")},
           {"physics.strength",
