@@ -508,7 +508,8 @@ TEST(ExperimentConfig, EveryDeclaredBoundIsEnforcedAtBothEdges) {
 // finite bound on each side, with its default inside.
 TEST(ExperimentConfig, EveryNumberKeyIsBoundedOnBothSidesAroundItsDefault) {
   int numbers = 0;
-  for (const ConstConfigField& field : config_fields(ExperimentConfig{})) {
+  const ExperimentConfig defaults;  // the fields point into it: it outlives the loop
+  for (const ConstConfigField& field : config_fields(defaults)) {
     bool is_number = false;
     std::optional<double> value;  // none for an optional key, unset by default
     std::visit(
