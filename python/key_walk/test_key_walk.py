@@ -147,14 +147,21 @@ def refused_in_one_line(code, err):
     return code == 2 and len(lines) == 1 and lines[0].startswith("crux: ")
 
 
+def at_sizing_maximum(declaration, value, within):
+    """Whether `value` is the maximum of a key that sizes the work: accepted, but checked
+    without running, since it may take hours."""
+    if not (declaration["sizes_work"] and within) or declaration["max"] is None or isinstance(value, str):
+        return False
+    return float(value) >= float(declaration["max"]) - (1 if declaration["max_open"] else 0)
+
+
 def attempt(command, declaration, value, within):
     """One (command, key, value): None when it behaved, else what went wrong."""
     spec = COMMANDS[command]
     flag = declaration["flag"]
     text = value if isinstance(value, str) else number_text(value, declaration["type"] == "integer")
     case = f"crux {command} {flag} {text}"
-    sizing_maximum = declaration["sizes_work"] and within and declaration["max"] is not None and float(value) >= float(
-        declaration["max"]) - (1 if declaration["max_open"] else 0)
+    sizing_maximum = at_sizing_maximum(declaration, value, within)
     with tempfile.TemporaryDirectory() as scratch:
         out = pathlib.Path(scratch) / "out"
         # "--flag=-1e300" keeps a negative number a value; a text goes on its own, since
@@ -286,8 +293,7 @@ def test_python_takes_the_same_keys_at_their_extremes(function, tmp_path):
         else:
             continue
         for value, within in cases:
-            sized = declaration["sizes_work"] and within and declaration["max"] is not None and not isinstance(
-                value, str) and float(value) >= float(declaration["max"]) - (1 if declaration["max_open"] else 0)
+            sized = at_sizing_maximum(declaration, value, within)
             # Python runs what it accepts: a maximum that sizes the work, and run_experiment's
             # accepted values (the CLI's paper runs walk them), are checked as refusals only.
             if within and (sized or function == "run_experiment"):

@@ -5,7 +5,9 @@ against, and every operation of a closed environment."""
 import inspect
 import json
 
+import gymnasium
 import numpy as np
+import pytest
 
 import crux
 import crux.gym
@@ -66,3 +68,20 @@ def operate(env, name):
     if isinstance(getattr(type(env), name), property):
         return getattr(env, name)
     return getattr(env, name)()
+
+
+def check_every_operation_refused_once_closed(cls, make):
+    """Each public operation of an environment `make()` builds, closed twice (harmlessly)
+    with or without a reset first, raises Gymnasium's ClosedEnvironmentError naming cls."""
+    closed = rf"^crux.gym.{cls.__name__} is closed \(close\(\) was called\): make a new one$"
+    operations = public_operations(cls)
+    for reset_first in (True, False):
+        env = make()
+        if reset_first:
+            env.reset(seed=0)
+        env.close()
+        env.close()  # harmless
+        for name in operations:
+            with pytest.raises(gymnasium.error.ClosedEnvironmentError, match=closed):
+                operate(env, name)
+    return operations
