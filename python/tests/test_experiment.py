@@ -170,12 +170,18 @@ SWITCH_NEVER = 1000.0
 # gone on into its next call and that call has released the GIL: the helper waits for
 # `go`, which the main thread sets just before the call, and then for the GIL, which the
 # main thread keeps until the call releases it. Needs sys.setswitchinterval(SWITCH_NEVER).
+# The GIL is also released by the file reads of an import the call makes on its way in
+# (crux imports numpy on first use): the helper then sees the main thread in an import's
+# Python frames, not in the script's own, and waits for the next release.
 WHILE_THE_CALL_RUNS = """
-import sys, threading
+import sys, threading, time
 def while_the_call_runs(action):
     go = threading.Event()
+    main = threading.main_thread().ident
     def wait_then_act():
         go.wait()
+        while sys._current_frames()[main].f_code.co_name != '<module>':
+            time.sleep(0.001)
         action()
     threading.Thread(target=wait_then_act, daemon=True).start()
     return go
