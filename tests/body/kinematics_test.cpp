@@ -10,6 +10,7 @@
 
 #include "body/urdf_loader.hpp"
 #include "support/allocation_counter.hpp"
+#include "support/sample_count.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
@@ -25,7 +26,7 @@ TEST(Kinematics, JacobiansMatchCentralFiniteDifferences) {
   BodyData data(model), probe(model);
   Random random(kSeed);
   constexpr double h = 1e-6;
-  for (int sample = 0; sample < 1000; ++sample) {
+  for (int sample = 0; sample < testing::sample_count(1000); ++sample) {
     const Posture g = random_posture(model, random);
     forward_kinematics(model, data, g);
     operational_jacobians(model, data);

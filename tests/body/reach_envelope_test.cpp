@@ -6,6 +6,7 @@
 
 #include "body/kinematics.hpp"
 #include "body/urdf_loader.hpp"
+#include "support/sample_count.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
@@ -39,7 +40,7 @@ std::array<double, kLimbCount> expect_sound(const BodyModel& model, const ReachE
   BodyData data(model);
   Random random(seed);
   std::array<double, kLimbCount> farthest{};
-  for (int sample = 0; sample < 20000; ++sample) {
+  for (int sample = 0; sample < testing::sample_count(20000); ++sample) {
     const Posture g = testing::random_posture(model, random);
     forward_kinematics(model, data, g);
     for (int limb = 0; limb < kLimbCount; ++limb) {

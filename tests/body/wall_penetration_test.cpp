@@ -9,6 +9,7 @@
 
 #include "body/kinematics.hpp"
 #include "common/random.hpp"
+#include "support/sample_count.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
@@ -108,7 +109,7 @@ TEST(WallPenetration, NoSurfacePointLiesDeeperThanTheDeepestPoint) {
 }
 
 // The gradient of each counted primitive's deepest x against central differences, on
-// 100 random postures.
+// 100 random postures (a tenth under the sanitizers: support/sample_count.hpp).
 TEST(WallPenetration, TheDeepestXGradientMatchesCentralDifferences) {
   const BodyModel& model = testing::human_model();
   BodyData data(model);
@@ -116,7 +117,7 @@ TEST(WallPenetration, TheDeepestXGradientMatchesCentralDifferences) {
   Random random(kSeed);
   const double h = 1e-6;
   Posture gradient;
-  for (int sample = 0; sample < 100; ++sample) {
+  for (int sample = 0; sample < testing::sample_count(100); ++sample) {
     const Posture g = testing::random_posture(model, random, {-0.3, 0.6, 1.0});
     for (int v = 0; v < static_cast<int>(model.visuals.size()); ++v) {
       const BodyVisual& visual = model.visuals[v];

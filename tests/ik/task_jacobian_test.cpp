@@ -9,6 +9,7 @@
 
 #include "body/kinematics.hpp"
 #include "body/urdf_loader.hpp"
+#include "support/sample_count.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
@@ -149,17 +150,18 @@ TEST(TaskJacobian, ChainCoordinatesAreTheChains) {
 }
 
 TEST(TaskJacobian, ProductsEqualEigensBitForBit) {
-  expect_eigens_bits(testing::human_model(), kSeed, 500, "human");
+  expect_eigens_bits(testing::human_model(), kSeed, testing::sample_count(500), "human");
   for (std::uint64_t tree = 1; tree <= 3; ++tree) {
     const auto path = testing::write_temporary("synthetic.urdf", testing::synthetic_tree_urdf(tree));
-    expect_eigens_bits(load_body_model(path.string()), kSeed + tree, 200, "synthetic tree " + std::to_string(tree));
+    expect_eigens_bits(load_body_model(path.string()), kSeed + tree, testing::sample_count(200),
+                       "synthetic tree " + std::to_string(tree));
   }
 }
 
 TEST(TaskJacobian, StackedProductsEqualEigensBitForBit) {
-  expect_eigens_stacked_bits(testing::human_model(), kSeed, 40, "human");
+  expect_eigens_stacked_bits(testing::human_model(), kSeed, testing::sample_count(40), "human");
   const auto path = testing::write_temporary("synthetic.urdf", testing::synthetic_tree_urdf(2));
-  expect_eigens_stacked_bits(load_body_model(path.string()), kSeed + 2, 10, "synthetic tree 2");
+  expect_eigens_stacked_bits(load_body_model(path.string()), kSeed + 2, testing::sample_count(10), "synthetic tree 2");
 }
 
 }  // namespace

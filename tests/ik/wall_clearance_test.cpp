@@ -5,6 +5,7 @@
 #include "body/kinematics.hpp"
 #include "body/wall_penetration.hpp"
 #include "ik/reach_queries.hpp"
+#include "support/sample_count.hpp"
 #include "support/test_models.hpp"
 
 namespace crux {
@@ -36,11 +37,12 @@ TEST(WallClearance, OneRowPerPrimitivePastTheSkinMargin) {
 
 // ik.wall = reject is ignore's verdict and posture, refused when the posture passes
 // through the wall; ik.wall = avoid reaches only postures clear of it, and reaches some
-// whose ignore solution passes through. 300 climbing-like queries, both solvers.
+// whose ignore solution passes through. 300 climbing-like queries (a tenth under the
+// sanitizers: support/sample_count.hpp), both solvers.
 TEST(WallClearance, RejectRefusesWhatPassesThroughAndAvoidReachesOnlyPosturesClearOfTheWall) {
   const BodyModel& model = testing::human_model();
   constexpr std::uint64_t kSeed = 24;
-  const auto queries = climbing_reach_queries(model, IkParameters{}, 300, kSeed);
+  const auto queries = climbing_reach_queries(model, IkParameters{}, testing::sample_count(300), kSeed);
   BodyData data(model);
   for (const IkSolverKind solver : {IkSolverKind::Fast, IkSolverKind::Paper}) {
     IkParameters ignore;
