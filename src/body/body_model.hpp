@@ -41,6 +41,9 @@ struct BodyJoint {
   double lower = 0.0, upper = 0.0;                                 // radians or metres
   double mass = 0.0;                                               // of the links rigidly attached after this joint
   Eigen::Vector3d centre_of_mass_local = Eigen::Vector3d::Zero();  // in the joint frame
+  // Their rotational inertia about that centre of mass, in the joint frame (kg m^2): what
+  // a dynamics engine needs beyond crux's statics (simulation/mjcf_model).
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
 };
 
 // How far each limb can reach, whatever its angles: the root does not rotate (section

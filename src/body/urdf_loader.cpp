@@ -154,10 +154,24 @@ class ModelBuilder {
       fail(fmt::format("link '{}' has mass {}; a mass is a finite number, 0 or more", link.name, link.inertial->mass));
     }
     if (link.inertial->mass == 0.0) return;
+    const urdf::Inertial& inertial = *link.inertial;
+    Eigen::Matrix3d inertia;
+    inertia << inertial.ixx, inertial.ixy, inertial.ixz, inertial.ixy, inertial.iyy, inertial.iyz, inertial.ixz,
+        inertial.iyz, inertial.izz;
+    if (!inertia.allFinite() || inertia.diagonal().minCoeff() < 0.0) {
+      fail(fmt::format("link '{}' has an inertia that is not finite or has a negative moment", link.name));
+    }
     BodyJoint& joint = model_.joints[carrier];
-    const Eigen::Vector3d com = in_carrier.then(link.inertial->origin).translation;
-    const double mass = joint.mass + link.inertial->mass;
-    joint.centre_of_mass_local = (joint.mass * joint.centre_of_mass_local + link.inertial->mass * com) / mass;
+    const RigidTransform frame = in_carrier.then(inertial.origin);
+    const Eigen::Vector3d com = frame.translation;
+    // Summed about the joint origin (parallel axes), taken to the joint's centre of mass
+    // once every link is in (finish()).
+    inertia_about_origin_.resize(model_.joints.size(), Eigen::Matrix3d::Zero());
+    inertia_about_origin_[carrier] +=
+        frame.rotation * inertia * frame.rotation.transpose() +
+        inertial.mass * (com.squaredNorm() * Eigen::Matrix3d::Identity() - com * com.transpose());
+    const double mass = joint.mass + inertial.mass;
+    joint.centre_of_mass_local = (joint.mass * joint.centre_of_mass_local + inertial.mass * com) / mass;
     joint.mass = mass;
   }
 
@@ -289,10 +303,15 @@ class ModelBuilder {
         }
       }
     }
+    inertia_about_origin_.resize(model_.joints.size(), Eigen::Matrix3d::Zero());
     for (int i = 0; i < kConfigurationDof; ++i) {
-      model_.lower_limits[i] = model_.joints[i].lower;
-      model_.upper_limits[i] = model_.joints[i].upper;
-      model_.total_mass += model_.joints[i].mass;
+      BodyJoint& joint = model_.joints[i];
+      model_.lower_limits[i] = joint.lower;
+      model_.upper_limits[i] = joint.upper;
+      model_.total_mass += joint.mass;
+      const Eigen::Vector3d& c = joint.centre_of_mass_local;
+      joint.inertia =
+          inertia_about_origin_[i] - joint.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
     }
     if (!(model_.total_mass > 0.0)) fail("the body has no mass (no <inertial> with a positive mass)");
 
@@ -320,6 +339,7 @@ class ModelBuilder {
   const GraspFrameNames& names_;
   BodyModel model_;
   std::vector<std::pair<std::string, AttachedPoint>> frames_;
+  std::vector<Eigen::Matrix3d> inertia_about_origin_;  // per joint, while links are added
   std::set<std::string> visited_;
   static constexpr int kMaxTreeDepth = 1000;
 };

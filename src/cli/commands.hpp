@@ -12,6 +12,7 @@ void add_demo_command(CLI::App& app);
 void add_filter_stats_command(CLI::App& app);
 void add_stances_command(CLI::App& app);
 void add_wall_command(CLI::App& app);
+void add_export_command(CLI::App& app);
 void add_learning_commands(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_view_command(CLI::App& app);

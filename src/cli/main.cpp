@@ -142,6 +142,7 @@ int main(int argc, char** argv) {
   crux::cli::add_ik_commands(app);
   crux::cli::add_demo_command(app);
   crux::cli::add_wall_command(app);
+  crux::cli::add_export_command(app);
   crux::cli::add_filter_stats_command(app);
   crux::cli::add_stances_command(app);
   crux::cli::add_learning_commands(app);

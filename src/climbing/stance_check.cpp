@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
 #include "physics/strength_profile.hpp"
+#include "wall/hold_support.hpp"
 #include "wall/incline.hpp"
 
 namespace crux {
@@ -37,11 +37,6 @@ StanceCheck::StanceCheck(const BodyModel& model, const Wall& wall, const Physics
       equilibrium_(model, strength_) {}
 
 std::span<const PointContact> StanceCheck::contacts(const HoldConfiguration& configuration) {
-  const double angle = physics_.support_angle_deg * std::numbers::pi / 180.0;
-  // A hand hooks the incut lip of a jug, which pushes it up and into the wall; a foot
-  // stands on the hold's top, which pushes it up.
-  const Eigen::Vector3d lip(std::sin(angle), 0.0, std::cos(angle));
-  const Eigen::Vector3d top = Eigen::Vector3d::UnitZ();
   int count = 0;
   for (int limb = 0; limb < kLimbCount; ++limb) {
     const int hold = configuration.holds[limb];
@@ -49,7 +44,7 @@ std::span<const PointContact> StanceCheck::contacts(const HoldConfiguration& con
     PointContact& contact = contacts_[count++];
     contact.limb = static_cast<Limb>(limb);
     const bool hand = limb == static_cast<int>(Limb::RightHand) || limb == static_cast<int>(Limb::LeftHand);
-    contact.support_direction = wall_.holds[hold].support.value_or(hand ? lip : top);
+    contact.support_direction = support_direction(wall_.holds[hold], contact.limb, physics_.support_angle_deg);
     contact.friction = physics_.friction;
     contact.normal_force_limit = hand ? physics_.grip : std::numeric_limits<double>::infinity();
   }

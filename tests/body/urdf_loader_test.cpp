@@ -116,6 +116,9 @@ std::string negative_mass(const std::string& u) {
   return replaced(u, "<mass value=\"24.14\"/>", "<mass value=\"-24.14\"/>");
 }
 std::string nan_mass(const std::string& u) { return replaced(u, "<mass value=\"24.14\"/>", "<mass value=\"nan\"/>"); }
+std::string negative_moment(const std::string& u) {
+  return replaced(u, "<inertia ixx=\"0.569023\"", "<inertia ixx=\"-0.569023\"");
+}
 
 class BadModel : public ::testing::TestWithParam<BadModelCase> {};
 
@@ -149,6 +152,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadModelCase{"cycle", cycle_back_to_torso, "torso"},
         BadModelCase{"very_long_chain", very_long_chain, "deeper than 1000 links"},
         BadModelCase{"negative_mass", negative_mass, "has mass -24.14"}, BadModelCase{"nan_mass", nan_mass, "mass"},
+        BadModelCase{"negative_moment", negative_moment, "link 'torso' has an inertia"},
         BadModelCase{"ends_inside_utf8_character", ends_inside_utf8_character, "ends inside a UTF-8 character"},
         BadModelCase{"nul_byte", nul_byte, "a NUL byte at offset"}),
     [](const auto& info) { return std::string(info.param.name); });

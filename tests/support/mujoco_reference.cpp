@@ -71,6 +71,16 @@ Posture MujocoReference::bias_forces() const {
   return out;
 }
 
+Eigen::MatrixXd MujocoReference::revolute_inertia() const {
+  Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> full(model_->nv, model_->nv);
+  mj_fullM(model_, full.data(), data_->qM);
+  Eigen::MatrixXd out(kRevoluteDof, kRevoluteDof);
+  for (int i = 0; i < kRevoluteDof; ++i) {
+    for (int k = 0; k < kRevoluteDof; ++k) out(i, k) = full(dof_address_[kRootDof + i], dof_address_[kRootDof + k]);
+  }
+  return out;
+}
+
 double MujocoReference::total_mass() const { return mj_getTotalmass(model_); }
 
 }  // namespace crux::testing

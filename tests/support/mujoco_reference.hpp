@@ -38,6 +38,10 @@ class MujocoReference {
   // the posture still against gravity, the negative of what gravity exerts.
   Posture bias_forces() const;
 
+  // The joint-space inertia matrix (mj_fullM) between the revolute joints, crux's order:
+  // it depends on every link's mass, centre and rotational inertia below each joint.
+  Eigen::MatrixXd revolute_inertia() const;
+
   double total_mass() const;
   const mjModel& model() const { return *model_; }
 
