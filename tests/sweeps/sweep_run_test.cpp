@@ -20,10 +20,10 @@ using testing::folder_contents;
 using testing::small_sweep_config;
 using testing::sweep_cell;
 
-// Two cells of two wall pairs, 300 iterations: 4 wall tasks (one group) and 12 runs.
+// Two cells of two wall pairs, 100 iterations: 4 wall tasks (one group) and 12 runs.
 SweepJob small_job(const fs::path& folder, int threads) {
-  std::vector<SweepCell> cells{sweep_cell(small_sweep_config(2, 300, "[learning]\nepsilon = 0.1\n"), {"0.1"}),
-                               sweep_cell(small_sweep_config(2, 300, "[learning]\nepsilon = 0.5\n"), {"0.5"})};
+  std::vector<SweepCell> cells{sweep_cell(small_sweep_config(2, 100, "[learning]\nepsilon = 0.1\n"), {"0.1"}),
+                               sweep_cell(small_sweep_config(2, 100, "[learning]\nepsilon = 0.5\n"), {"0.5"})};
   SweepJob job;
   job.plan = plan_sweep({"learning.epsilon"}, std::move(cells));
   job.folder = fs::absolute(folder);
