@@ -38,6 +38,12 @@ FrictionConeGenerators friction_cone_generators(const PointContact& contact);
 // True when `force` lies in the exact (round) cone, within `tolerance` newtons.
 bool inside_friction_cone(const PointContact& contact, const Eigen::Vector3d& force, double tolerance);
 
+// True when `force` is a combination of the pyramid's edges with weights >= 0, within
+// `tolerance` newtons: its tangential components along the edges' two axes sum, in
+// absolute value, to at most friction times its normal component (the four edges span
+// that square pyramid). What the static model admits, and a simulated grasp keeps to.
+bool inside_friction_pyramid(const PointContact& contact, const Eigen::Vector3d& force, double tolerance);
+
 // A support direction that is not unit (within 1e-9), or a friction or normal force limit
 // that is negative or not finite where it must be: InputError naming `source`. The normal
 // force limit may be +infinity (no bound).

@@ -526,7 +526,9 @@ TEST(ExperimentConfig, EveryNumberKeyIsBoundedOnBothSidesAroundItsDefault) {
     if (!is_number) continue;
     ++numbers;
     EXPECT_TRUE(std::isfinite(field.bounds.min) && std::isfinite(field.bounds.max)) << field.key;
-    if (value) EXPECT_TRUE(field.bounds.contains(*value)) << field.key << " = " << *value;
+    if (value) {
+      EXPECT_TRUE(field.bounds.contains(*value)) << field.key << " = " << *value;
+    }
   }
   EXPECT_GE(numbers, 60);
 }

@@ -8,9 +8,12 @@
 #include <limits>
 
 #include "common/input_error.hpp"
+#include "common/random.hpp"
 
 namespace crux {
 namespace {
+
+constexpr std::uint64_t kContactSeed = 20261129;
 
 PointContact contact_with(const Eigen::Vector3d& support, double friction) {
   PointContact contact;
@@ -48,6 +51,33 @@ TEST(ContactModel, InsideTheConeIsCoulombsInequality) {
   EXPECT_TRUE(inside_friction_cone(contact, Eigen::Vector3d(30.0, 40.0, 100.0), 1e-9));  // 50 <= 0.5 x 100
   EXPECT_FALSE(inside_friction_cone(contact, Eigen::Vector3d(30.0, 40.1, 100.0), 1e-9));
   EXPECT_FALSE(inside_friction_cone(contact, Eigen::Vector3d(0.0, 0.0, -1.0), 1e-9));  // a hold cannot pull
+}
+
+// Hand-computed on a jug's top (n = +z, so the edges' axes are x and y), mu = 0.5: the
+// pyramid admits |f_x| + |f_y| <= 0.5 f_z, inside the round cone, and every combination
+// of its edges with weights >= 0.
+TEST(ContactModel, InsideThePyramidIsWhatItsEdgesSpan) {
+  PointContact top;
+  top.support_direction = Eigen::Vector3d::UnitZ();
+  top.friction = 0.5;
+  EXPECT_TRUE(inside_friction_pyramid(top, {0.2, -0.3, 1.0}, 1e-12));
+  EXPECT_FALSE(inside_friction_pyramid(top, {0.3, 0.3, 1.0}, 1e-12)) << "0.6 > 0.5";
+  EXPECT_TRUE(inside_friction_cone(top, {0.3, 0.3, 1.0}, 1e-12)) << "0.42 < 0.5: the round cone admits it";
+  EXPECT_FALSE(inside_friction_pyramid(top, {0.0, 0.0, -1.0}, 1e-12)) << "a hold cannot pull";
+  PointContact lip;
+  lip.support_direction = Eigen::Vector3d(std::sqrt(0.5), 0.0, std::sqrt(0.5));
+  lip.friction = 0.8;
+  Random random(kContactSeed);
+  const FrictionConeGenerators edges = friction_cone_generators(lip);
+  for (int sample = 0; sample < 1000; ++sample) {
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& edge : edges) force += random.uniform(0.0, 100.0) * edge;
+    ASSERT_TRUE(inside_friction_pyramid(lip, force, 1e-9)) << "seed " << kContactSeed << " sample " << sample;
+    // Past an edge by a newton along the tangent that edge points to.
+    const Eigen::Vector3d outward = (edges[sample % 4] - lip.support_direction).normalized();
+    const Eigen::Vector3d beyond = 100.0 * edges[sample % 4] + outward;
+    ASSERT_FALSE(inside_friction_pyramid(lip, beyond, 1e-9)) << "seed " << kContactSeed << " sample " << sample;
+  }
 }
 
 TEST(ContactModel, BadContactsAreRefusedWithOneLineNamingTheLimb) {
