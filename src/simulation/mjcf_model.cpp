@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <Eigen/Geometry>
 
+#include "common/xml_escaped.hpp"
 #include "wall/hold_support.hpp"
 #include "wall/incline.hpp"
 
@@ -77,11 +78,10 @@ class MjcfWriter {
     children_.resize(model.joints.size());
     for (int i = kRootDof; i < static_cast<int>(model.joints.size()); ++i)
       children_[model.joints[i].parent].push_back(i);
-    for (int limb = 0; limb < kLimbCount; ++limb) carries_grasp_[limb] = model.grasp_points[limb].joint;
   }
 
   std::string write(const Posture& start) {
-    out_ += fmt::format("<mujoco model=\"{} on {}\">\n", escaped(model_.name), escaped(wall_.name));
+    out_ += fmt::format("<mujoco model=\"{} on {}\">\n", xml_escaped(model_.name), xml_escaped(wall_.name));
     // Radians as crux's; masses and inertias from the <inertial> elements alone, the
     // visuals being shapes to draw and to collide; a nanogram on each massless link, as
     // the URDF's own <mujoco> element sets, since MuJoCo refuses massless moving bodies.
@@ -108,32 +108,9 @@ class MjcfWriter {
   const StrengthProfile& limits_;
   Eigen::Matrix3d to_world_;
   std::vector<std::vector<int>> children_;
-  std::array<int, kLimbCount> carries_grasp_{};
   std::vector<int> joint_order_;  // crux's coordinates in MuJoCo's qpos order
+  int geom_count_ = 0;            // MuJoCo's geom names must differ
   std::string out_;
-
-  static std::string escaped(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-      switch (c) {
-        case '&':
-          out += "&amp;";
-          break;
-        case '<':
-          out += "&lt;";
-          break;
-        case '>':
-          out += "&gt;";
-          break;
-        case '"':
-          out += "&quot;";
-          break;
-        default:
-          out += c;
-      }
-    }
-    return out;
-  }
 
   std::string indent(int depth) const { return std::string(2 * depth, ' '); }
 
@@ -192,10 +169,10 @@ class MjcfWriter {
   void write_body(int joint, int depth) {
     const BodyJoint& j = model_.joints[joint];
     joint_order_.push_back(joint);
-    out_ += fmt::format("{}<body name=\"{}\" pos=\"{}\" quat=\"{}\">\n", indent(depth), escaped(j.name),
+    out_ += fmt::format("{}<body name=\"{}\" pos=\"{}\" quat=\"{}\">\n", indent(depth), xml_escaped(j.name),
                         vector_text(j.origin_translation), quaternion_text(j.origin_rotation));
     out_ += fmt::format("{}  <joint name=\"{}\" type=\"hinge\" axis=\"{}\" limited=\"true\" range=\"{} {}\"/>\n",
-                        indent(depth), escaped(j.name), vector_text(j.axis), j.lower, j.upper);
+                        indent(depth), xml_escaped(j.name), vector_text(j.axis), j.lower, j.upper);
     write_contents(joint, of_joint(j), depth + 1);
     out_ += fmt::format("{}</body>\n", indent(depth));
   }
@@ -207,16 +184,16 @@ class MjcfWriter {
       out_ += fmt::format("{}<inertial pos=\"{}\" mass=\"{}\" fullinertia=\"{} {} {} {} {} {}\"/>\n", indent(depth),
                           vector_text(mass.centre), mass.mass, I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2));
     }
-    const bool foot = joint == carries_grasp_[static_cast<int>(Limb::RightFoot)] ||
-                      joint == carries_grasp_[static_cast<int>(Limb::LeftFoot)];
+    const bool foot = joint == model_.grasp_points[static_cast<int>(Limb::RightFoot)].joint ||
+                      joint == model_.grasp_points[static_cast<int>(Limb::LeftFoot)].joint;
     for (const BodyVisual& visual : model_.visuals) {
       if (visual.joint != joint && !(joint == kRootDof - 1 && visual.joint < kRootDof)) continue;
       write_geom(visual, foot ? kFootContype : kBodyContype, depth);
     }
     for (int limb = 0; limb < kLimbCount; ++limb) {
-      if (carries_grasp_[limb] != joint) continue;
+      if (model_.grasp_points[limb].joint != joint) continue;
       out_ += fmt::format("{}<site name=\"{}\" pos=\"{}\" size=\"0.015\"/>\n", indent(depth),
-                          escaped(model_.grasp_frame_names[limb]), vector_text(model_.grasp_points[limb].offset));
+                          xml_escaped(model_.grasp_frame_names[limb]), vector_text(model_.grasp_points[limb].offset));
     }
     for (const int child : children_[joint]) write_body(child, depth);
   }
@@ -237,10 +214,9 @@ class MjcfWriter {
     out_ += fmt::format(
         "{}<geom name=\"{}_{}\" {} pos=\"{}\" quat=\"{}\" contype=\"{}\" conaffinity=\"0\" "
         "rgba=\"{} {} {} {}\"/>\n",
-        indent(depth), escaped(visual.link), geom_count_++, shape, vector_text(visual.translation),
+        indent(depth), xml_escaped(visual.link), geom_count_++, shape, vector_text(visual.translation),
         quaternion_text(visual.rotation), contype, visual.rgba[0], visual.rgba[1], visual.rgba[2], visual.rgba[3]);
   }
-  int geom_count_ = 0;
 
   void write_grasps() {
     out_ += "  <equality>\n";
@@ -248,7 +224,7 @@ class MjcfWriter {
       const AttachedPoint& grasp = model_.grasp_points[static_cast<int>(hand)];
       const std::string body = grasp.joint < kRootDof ? kMjcfRoot : model_.joints[grasp.joint].name;
       out_ += fmt::format("    <connect name=\"{}\" body1=\"{}\" anchor=\"{}\" active=\"false\"/>\n",
-                          mjcf_grasp_name(hand), escaped(body), vector_text(grasp.offset));
+                          mjcf_grasp_name(hand), xml_escaped(body), vector_text(grasp.offset));
     }
     out_ += "  </equality>\n";
   }
@@ -257,7 +233,7 @@ class MjcfWriter {
     out_ += "  <actuator>\n";
     for (const int joint : joint_order_) {
       const JointStrength& limit = limits_.joints[joint];
-      const std::string name = escaped(model_.joints[joint].name);
+      const std::string name = xml_escaped(model_.joints[joint].name);
       if (!std::isfinite(limit.positive) || !std::isfinite(limit.negative)) {
         // Only a body that no source measures at all (motor_limits): its motors are unbounded.
         out_ += fmt::format("    <motor name=\"{}\" joint=\"{}\" gear=\"1\"/>\n", name, name);

@@ -13,13 +13,10 @@
 
 #include <fmt/format.h>
 
+#include "common/xml_escaped.hpp"
 #include "views/palette.hpp"
 
 namespace crux {
-
-// `text` with XML's special characters escaped, and the control characters XML 1.0
-// forbids replaced by U+FFFD.
-std::string xml_escaped(std::string_view text);
 
 // Appends the formatted text to `out`: how the SVG and HTML writers build their documents.
 template <typename... Args>

@@ -88,15 +88,7 @@ class MujocoClimber {
     for (int i = kRootDof; i < kConfigurationDof; ++i) out[i] = data_->qfrc_bias[dof_[i]];
     return out;
   }
-  Eigen::MatrixXd revolute_inertia() const {
-    Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> full(mujoco_.get()->nv, mujoco_.get()->nv);
-    mj_fullM(mujoco_.get(), full.data(), data_->qM);
-    Eigen::MatrixXd out(kRevoluteDof, kRevoluteDof);
-    for (int i = 0; i < kRevoluteDof; ++i) {
-      for (int k = 0; k < kRevoluteDof; ++k) out(i, k) = full(dof_[kRootDof + i], dof_[kRootDof + k]);
-    }
-    return out;
-  }
+  Eigen::MatrixXd revolute_inertia() const { return testing::revolute_inertia(mujoco_.get(), data_, dof_); }
   Eigen::Vector3d site(const std::string& name) const {
     const int id = mj_name2id(mujoco_.get(), mjOBJ_SITE, name.c_str());
     EXPECT_GE(id, 0) << name;

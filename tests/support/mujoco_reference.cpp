@@ -71,12 +71,13 @@ Posture MujocoReference::bias_forces() const {
   return out;
 }
 
-Eigen::MatrixXd MujocoReference::revolute_inertia() const {
-  Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> full(model_->nv, model_->nv);
-  mj_fullM(model_, full.data(), data_->qM);
+Eigen::MatrixXd revolute_inertia(const mjModel* model, const mjData* data,
+                                 const std::array<int, kConfigurationDof>& dof_address) {
+  Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> full(model->nv, model->nv);
+  mj_fullM(model, full.data(), data->qM);
   Eigen::MatrixXd out(kRevoluteDof, kRevoluteDof);
   for (int i = 0; i < kRevoluteDof; ++i) {
-    for (int k = 0; k < kRevoluteDof; ++k) out(i, k) = full(dof_address_[kRootDof + i], dof_address_[kRootDof + k]);
+    for (int k = 0; k < kRevoluteDof; ++k) out(i, k) = full(dof_address[kRootDof + i], dof_address[kRootDof + k]);
   }
   return out;
 }

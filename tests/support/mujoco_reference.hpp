@@ -13,6 +13,12 @@
 
 namespace crux::testing {
 
+// The joint-space inertia matrix (mj_fullM) between the revolute joints, in crux's order,
+// `dof_address` giving each coordinate's MuJoCo dof: it depends on every link's mass,
+// centre and rotational inertia below each joint.
+Eigen::MatrixXd revolute_inertia(const mjModel* model, const mjData* data,
+                                 const std::array<int, kConfigurationDof>& dof_address);
+
 class MujocoReference {
  public:
   // Throws std::runtime_error with MuJoCo's message if it refuses the file, or if its
@@ -38,9 +44,8 @@ class MujocoReference {
   // the posture still against gravity, the negative of what gravity exerts.
   Posture bias_forces() const;
 
-  // The joint-space inertia matrix (mj_fullM) between the revolute joints, crux's order:
-  // it depends on every link's mass, centre and rotational inertia below each joint.
-  Eigen::MatrixXd revolute_inertia() const;
+  // crux::testing::revolute_inertia at the last posture set.
+  Eigen::MatrixXd revolute_inertia() const { return testing::revolute_inertia(model_, data_, dof_address_); }
 
   double total_mass() const;
   const mjModel& model() const { return *model_; }
