@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
+#include "configurations/held_contacts.hpp"
 #include "physics/strength_profile.hpp"
-#include "wall/hold_support.hpp"
 #include "wall/incline.hpp"
 
 namespace crux {
@@ -37,18 +37,7 @@ StanceCheck::StanceCheck(const BodyModel& model, const Wall& wall, const Physics
       equilibrium_(model, strength_) {}
 
 std::span<const PointContact> StanceCheck::contacts(const HoldConfiguration& configuration) {
-  int count = 0;
-  for (int limb = 0; limb < kLimbCount; ++limb) {
-    const int hold = configuration.holds[limb];
-    if (hold == kFree) continue;
-    PointContact& contact = contacts_[count++];
-    contact.limb = static_cast<Limb>(limb);
-    const bool hand = limb == static_cast<int>(Limb::RightHand) || limb == static_cast<int>(Limb::LeftHand);
-    contact.support_direction = support_direction(wall_.holds[hold], contact.limb, physics_.support_angle_deg);
-    contact.friction = physics_.friction;
-    contact.normal_force_limit = hand ? physics_.grip : std::numeric_limits<double>::infinity();
-  }
-  return {contacts_.data(), static_cast<std::size_t>(count)};
+  return held_contacts(wall_, configuration, physics_, contacts_);
 }
 
 const StaticEquilibriumResult& StanceCheck::solve(const Posture& posture, const HoldConfiguration& configuration) {

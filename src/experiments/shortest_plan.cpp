@@ -48,16 +48,20 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
     }
     return true;
   };
-  const auto finish = [&](std::size_t parent, int hold) {
+  const auto finish = [&](std::size_t parent, int hold, const Posture& last) {
     plan.found = true;
     std::vector<std::pair<int, Limb>> steps{{hold, nodes[parent].configuration.free_limb()}};
+    std::vector<const Posture*> postures{&last};
     for (long n = static_cast<long>(parent); nodes[n].parent >= 0; n = nodes[n].parent) {
       steps.push_back({nodes[n].hold, nodes[nodes[n].parent].configuration.free_limb()});
+      postures.push_back(nodes[n].posture);
     }
+    postures.push_back(start);
     for (auto it = steps.rbegin(); it != steps.rend(); ++it) {
       plan.hold_ids.push_back(wall.holds[it->first].id);
       plan.limbs.push_back(it->second);
     }
+    for (auto it = postures.rbegin(); it != postures.rend(); ++it) plan.postures.push_back(**it);
     plan.length = static_cast<int>(plan.hold_ids.size());
   };
   while (!frontier.empty() && !plan.found) {
@@ -84,7 +88,7 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
         continue;
       }
       if (reacher.place(*reached).centre_of_mass.z() >= wall.finish_height) {
-        finish(current, possible[i]);
+        finish(current, possible[i], *reached);
         break;
       }
       const HoldConfiguration next = complete.with(next_free_limb(free), kFree);

@@ -30,6 +30,7 @@ struct Plan {
   int length = 0;                 // actions
   std::vector<int> hold_ids;      // the hold taken by each action, in order
   std::vector<Limb> limbs;        // the limb that moved at each action
+  std::vector<Posture> postures;  // the start, then the stance each action reached
   std::size_t expanded_states = 0;
   std::size_t ik_solves = 0;
   bool checked_moves = false;                // PlanParameters::check_moves

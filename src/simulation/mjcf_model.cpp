@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <Eigen/Geometry>
 
+#include "body/wall_penetration.hpp"
 #include "common/xml_escaped.hpp"
 #include "wall/hold_support.hpp"
 #include "wall/incline.hpp"
@@ -17,13 +18,20 @@ namespace crux {
 
 namespace {
 
-// Geoms of the body collide with the wall (contype 1 against the wall's conaffinity 1),
-// never with each other (no geom of the body has a conaffinity); only the feet also touch
-// the holds' tops (bit 4): a hand holds through its grasp constraint, not by contact.
-constexpr int kBodyContype = 1;
-constexpr int kFootContype = 1 | 4;
+// The segments that crux keeps out of the wall (body/wall_penetration: all but the hands
+// and feet, which touch the wall where they hold) collide with it (contype 1 against the
+// wall's conaffinity 1), never with each other (no geom of the body has a conaffinity). A
+// foot touches a hold's top through a small sphere at its grasp point (bit 4), a point
+// contact as the static model's; a hand holds through its grasp constraint, not by contact.
+constexpr int kSegmentContype = 1;
+// The contacts' and grasps' time constant, s: MuJoCo's soft constraints give way in
+// proportion to it (2 cm under a climber's weight at its default 0.02), and it may not
+// be below two steps of 2 ms.
+constexpr double kConstraintTimeConstant = 0.005;
+constexpr int kFootContype = 4;
 constexpr int kWallConaffinity = 1;
-constexpr int kHoldConaffinity = 4;
+constexpr int kFootingConaffinity = 4;
+constexpr double kFootingSize = 0.04;  // half the side of a footing's top face, m
 
 std::string_view site_of(std::string_view joint) {
   for (const std::string_view side : {"right_", "left_"}) {
@@ -73,8 +81,14 @@ MassProperties of_joint(const BodyJoint& joint) { return {joint.mass, joint.cent
 
 class MjcfWriter {
  public:
-  MjcfWriter(const BodyModel& model, const Wall& wall, const PhysicsParameters& physics, const StrengthProfile& limits)
-      : model_(model), wall_(wall), physics_(physics), limits_(limits), to_world_(wall_to_world(wall.incline_deg)) {
+  MjcfWriter(const BodyModel& model, const Wall& wall, const PhysicsParameters& physics, const StrengthProfile& limits,
+             const ServoParameters& servo)
+      : model_(model),
+        wall_(wall),
+        physics_(physics),
+        limits_(limits),
+        servo_(servo),
+        to_world_(wall_to_world(wall.incline_deg)) {
     children_.resize(model.joints.size());
     for (int i = kRootDof; i < static_cast<int>(model.joints.size()); ++i)
       children_[model.joints[i].parent].push_back(i);
@@ -85,11 +99,17 @@ class MjcfWriter {
     // Radians as crux's; masses and inertias from the <inertial> elements alone, the
     // visuals being shapes to draw and to collide; a nanogram on each massless link, as
     // the URDF's own <mujoco> element sets, since MuJoCo refuses massless moving bodies.
+    // Implicit integration takes the servos' damping; noslip iterations keep MuJoCo's soft
+    // frictional contacts from creeping under a steady load (without them a planned
+    // stance's foot crept 1.5 cm in 0.8 s).
     out_ +=
         "  <compiler angle=\"radian\" inertiafromgeom=\"false\" boundmass=\"1e-12\" boundinertia=\"1e-14\"/>\n"
-        "  <option timestep=\"0.002\" gravity=\"0 0 -9.81\" cone=\"pyramidal\"/>\n";
-    out_ += fmt::format("  <default>\n    <geom condim=\"3\" friction=\"{} 0.005 0.0001\"/>\n  </default>\n",
-                        physics_.friction);
+        "  <option timestep=\"0.002\" gravity=\"0 0 -9.81\" cone=\"pyramidal\" integrator=\"implicit\" "
+        "noslip_iterations=\"10\"/>\n";
+    out_ += fmt::format(
+        "  <default>\n    <geom condim=\"3\" friction=\"{0} 0.005 0.0001\" solref=\"{1} 1\"/>\n"
+        "    <equality solref=\"{1} 1\"/>\n  </default>\n",
+        physics_.friction, kConstraintTimeConstant);
     out_ += "  <worldbody>\n";
     write_wall();
     write_root(start);
@@ -106,6 +126,7 @@ class MjcfWriter {
   const Wall& wall_;
   const PhysicsParameters& physics_;
   const StrengthProfile& limits_;
+  const ServoParameters& servo_;
   Eigen::Matrix3d to_world_;
   std::vector<std::vector<int>> children_;
   std::vector<int> joint_order_;  // crux's coordinates in MuJoCo's qpos order
@@ -115,7 +136,7 @@ class MjcfWriter {
   std::string indent(int depth) const { return std::string(2 * depth, ' '); }
 
   // The plane x = 0 of wall coordinates, facing the climber, and the holds, all in one
-  // static body turned by the incline.
+  // static body turned by the incline; then the feet's footings.
   void write_wall() {
     Eigen::Vector3d low = Eigen::Vector3d::Zero(), high = Eigen::Vector3d::Zero();
     if (!wall_.holds.empty()) low = high = wall_.holds.front().position;
@@ -128,29 +149,33 @@ class MjcfWriter {
     const Eigen::Vector3d centre(0.0, (low.y() + high.y()) / 2, (low.z() + high.z()) / 2);
     constexpr double kMargin = 1.0;
     out_ += fmt::format("    <body name=\"wall\" quat=\"{}\">\n", quaternion_text(to_world_));
-    // A plane's normal is its local +z: turned about y onto -x, towards the climber.
+    // A plane's normal is its local +z: turned about y onto -x, towards the climber. It
+    // stands kMjcfWallDepth behind x = 0: the IK leaves segments anywhere up to the skin's
+    // margin in the wall (body/wall_penetration), often just there, and a segment at the
+    // plane would share the load with the holds (MuJoCo's contacts are soft).
+    const Eigen::Vector3d plane = centre + kMjcfWallDepth * Eigen::Vector3d::UnitX();
     out_ += fmt::format(
         "      <geom name=\"wall\" type=\"plane\" pos=\"{}\" quat=\"{}\" size=\"{} {} 0.1\" contype=\"0\" "
         "conaffinity=\"{}\" rgba=\"0.80 0.78 0.72 1\"/>\n",
-        vector_text(centre), quaternion_text(z_to(-Eigen::Vector3d::UnitX())), (high.z() - low.z()) / 2 + kMargin,
+        vector_text(plane), quaternion_text(z_to(-Eigen::Vector3d::UnitX())), (high.z() - low.z()) / 2 + kMargin,
         (high.y() - low.y()) / 2 + kMargin, kWallConaffinity);
     for (const Hold& hold : wall_.holds) {
-      // The hold's frame has +z along a foot's support direction: its collision box's top
-      // face passes through the hold's centre, so that a foot standing there is pushed
-      // along that direction; the sphere is the hold as crux draws it.
-      const Eigen::Vector3d top = support_direction(hold, Limb::RightFoot, physics_.support_angle_deg);
-      out_ += fmt::format("      <body name=\"{}\" pos=\"{}\" quat=\"{}\">\n", mjcf_hold_name(hold.id),
-                          vector_text(hold.position), quaternion_text(z_to(top)));
-      out_ += fmt::format(
-          "        <geom type=\"box\" pos=\"0 0 {}\" size=\"{} {} {}\" contype=\"0\" conaffinity=\"{}\" "
-          "rgba=\"0.35 0.30 0.25 0.4\"/>\n",
-          -hold.radius / 2, hold.radius, hold.radius, hold.radius / 2, kHoldConaffinity);
+      out_ += fmt::format("      <body name=\"{}\" pos=\"{}\">\n", mjcf_hold_name(hold.id), vector_text(hold.position));
       out_ += fmt::format(
           "        <geom type=\"sphere\" size=\"{}\" contype=\"0\" conaffinity=\"0\" rgba=\"0.45 0.30 0.20 1\"/>\n",
           hold.radius);
       out_ += "      </body>\n";
     }
     out_ += "    </body>\n";
+    // Each foot's footing (simulation/footing): a box whose top face is the plane the foot
+    // stands on, placed where the foot takes its hold, parked out of reach meanwhile.
+    for (const Limb foot : {Limb::RightFoot, Limb::LeftFoot}) {
+      out_ += fmt::format(
+          "    <body name=\"{}\" mocap=\"true\" pos=\"{}\">\n      <geom type=\"box\" pos=\"0 0 {}\" size=\"{} {} {}\" "
+          "contype=\"0\" conaffinity=\"{}\" rgba=\"0.35 0.30 0.25 0.4\"/>\n    </body>\n",
+          mjcf_footing_name(foot), vector_text(kParkedFooting), -kFootingSize / 4, kFootingSize, kFootingSize,
+          kFootingSize / 4, kFootingConaffinity);
+    }
   }
 
   // The root body: crux's three root translations carry the torso's links; in MuJoCo a
@@ -184,16 +209,21 @@ class MjcfWriter {
       out_ += fmt::format("{}<inertial pos=\"{}\" mass=\"{}\" fullinertia=\"{} {} {} {} {} {}\"/>\n", indent(depth),
                           vector_text(mass.centre), mass.mass, I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2));
     }
-    const bool foot = joint == model_.grasp_points[static_cast<int>(Limb::RightFoot)].joint ||
-                      joint == model_.grasp_points[static_cast<int>(Limb::LeftFoot)].joint;
     for (const BodyVisual& visual : model_.visuals) {
       if (visual.joint != joint && !(joint == kRootDof - 1 && visual.joint < kRootDof)) continue;
-      write_geom(visual, foot ? kFootContype : kBodyContype, depth);
+      write_geom(visual, counts_for_the_wall(model_, visual) ? kSegmentContype : 0, depth);
     }
     for (int limb = 0; limb < kLimbCount; ++limb) {
       if (model_.grasp_points[limb].joint != joint) continue;
+      const std::string offset = vector_text(model_.grasp_points[limb].offset);
       out_ += fmt::format("{}<site name=\"{}\" pos=\"{}\" size=\"0.015\"/>\n", indent(depth),
-                          xml_escaped(model_.grasp_frame_names[limb]), vector_text(model_.grasp_points[limb].offset));
+                          xml_escaped(model_.grasp_frame_names[limb]), offset);
+      if (limb == static_cast<int>(Limb::RightFoot) || limb == static_cast<int>(Limb::LeftFoot)) {
+        out_ += fmt::format(
+            "{}<geom name=\"{}_contact\" type=\"sphere\" size=\"{}\" pos=\"{}\" contype=\"{}\" conaffinity=\"0\" "
+            "rgba=\"0.2 0.2 0.2 0.5\"/>\n",
+            indent(depth), xml_escaped(model_.grasp_frame_names[limb]), kFootContactRadius, offset, kFootContype);
+      }
     }
     for (const int child : children_[joint]) write_body(child, depth);
   }
@@ -229,20 +259,22 @@ class MjcfWriter {
     out_ += "  </equality>\n";
   }
 
+  // Each joint's servo (simulation/joint_servo): a general actuator, the control being the
+  // target angle with the feed-forward folded in, its force clamped at the joint's limits.
   void write_motors() {
     out_ += "  <actuator>\n";
     for (const int joint : joint_order_) {
       const JointStrength& limit = limits_.joints[joint];
+      const ServoGain gain = servo_gain(limit, servo_);
       const std::string name = xml_escaped(model_.joints[joint].name);
-      if (!std::isfinite(limit.positive) || !std::isfinite(limit.negative)) {
-        // Only a body that no source measures at all (motor_limits): its motors are unbounded.
-        out_ += fmt::format("    <motor name=\"{}\" joint=\"{}\" gear=\"1\"/>\n", name, name);
-        continue;
-      }
+      const std::string force_range =
+          std::isfinite(limit.positive) && std::isfinite(limit.negative)
+              ? fmt::format(" forcelimited=\"true\" forcerange=\"{} {}\"", -limit.negative, limit.positive)
+              : std::string();  // only a body that no source measures at all (motor_limits)
       out_ += fmt::format(
-          "    <motor name=\"{}\" joint=\"{}\" gear=\"1\" ctrllimited=\"true\" ctrlrange=\"{} {}\" "
-          "forcelimited=\"true\" forcerange=\"{} {}\"/>\n",
-          name, name, -limit.negative, limit.positive, -limit.negative, limit.positive);
+          "    <general name=\"{}\" joint=\"{}\" gear=\"1\" gaintype=\"fixed\" gainprm=\"{}\" biastype=\"affine\" "
+          "biasprm=\"0 {} {}\"{}/>\n",
+          name, name, gain.kp, -gain.kp, -gain.kv, force_range);
     }
     out_ += "  </actuator>\n";
   }
@@ -260,6 +292,8 @@ class MjcfWriter {
 std::string mjcf_grasp_name(Limb hand) { return fmt::format("grasp_{}", enum_name(hand)); }
 
 std::string mjcf_hold_name(int hold_id) { return fmt::format("hold_{}", hold_id); }
+
+std::string mjcf_footing_name(Limb foot) { return fmt::format("footing_{}", enum_name(foot)); }
 
 StrengthProfile motor_limits(const BodyModel& model, const StrengthProfile& published) {
   constexpr double kUnbounded = std::numeric_limits<double>::infinity();
@@ -284,8 +318,8 @@ StrengthProfile motor_limits(const BodyModel& model, const StrengthProfile& publ
 }
 
 std::string mjcf_text(const BodyModel& model, const Wall& wall, const PhysicsParameters& physics,
-                      const StrengthProfile& limits, const Posture& start) {
-  return MjcfWriter(model, wall, physics, limits).write(start);
+                      const StrengthProfile& limits, const Posture& start, const ServoParameters& servo) {
+  return MjcfWriter(model, wall, physics, limits, servo).write(start);
 }
 
 }  // namespace crux

@@ -10,7 +10,16 @@
 
 namespace crux {
 
+namespace {
+
+// MuJoCo's default handler appends warnings to MUJOCO_LOG.TXT in the working directory;
+// crux reads the counts in mjData::warning instead, and writes no file of its own.
+void ignore_warning(const char*) {}
+
+}  // namespace
+
 MujocoModel::MujocoModel(const std::string& mjcf, const std::string& source) {
+  mju_user_warning = ignore_warning;
   // MuJoCo 2.2.2 reads text through a virtual file system (2 MB of names: on the heap).
   const auto vfs = std::make_unique<mjVFS>();
   mj_defaultVFS(vfs.get());

@@ -17,11 +17,14 @@ TEST(ShortestPlan, ReplaysAsAClimbOfItsLength) {
   const Plan plan = shortest_plan(model, wall, parameters);
   ASSERT_TRUE(plan.found);
   ASSERT_EQ(static_cast<int>(plan.hold_ids.size()), plan.length);
+  ASSERT_EQ(static_cast<int>(plan.postures.size()), plan.length + 1) << "the start, then each action's stance";
   ClimbingMdp mdp(model, wall, parameters);
+  EXPECT_EQ(plan.postures.front(), mdp.start_posture());
   for (int i = 0; i < plan.length; ++i) {
     EXPECT_EQ(mdp.configuration().free_limb(), plan.limbs[i]);
     const StepOutcome o = mdp.step(wall.index_of(plan.hold_ids[i]));
     ASSERT_TRUE(o.reached) << "action " << i;
+    EXPECT_EQ(*o.posture, plan.postures[i + 1]) << "action " << i << ": the MDP's own stance";
     EXPECT_EQ(o.finished, i == plan.length - 1) << "action " << i;
   }
 }

@@ -4,16 +4,18 @@
 
 #include <mujoco/mujoco.h>
 #include <Eigen/Geometry>
+#include <algorithm>
 
 #include "body/gravity_forces.hpp"
 #include "body/kinematics.hpp"
 #include "body/urdf_loader.hpp"
+#include "body/wall_penetration.hpp"
 #include "configurations/reachability.hpp"
+#include "simulation/mujoco_layout.hpp"
 #include "simulation/mujoco_model.hpp"
 #include "support/mujoco_reference.hpp"
 #include "support/sample_count.hpp"
 #include "support/test_models.hpp"
-#include "wall/hold_support.hpp"
 #include "wall/incline.hpp"
 #include "wall/random_wall.hpp"
 
@@ -42,65 +44,38 @@ class MujocoClimber {
                 const StrengthProfile& limits = human_motor_limits())
       : mujoco_(mjcf_text(model, wall, PhysicsParameters{}, limits, start), "test"),
         data_(mj_makeData(mujoco_.get())),
-        to_world_(wall_to_world(wall.incline_deg)) {
-    const mjModel* m = mujoco_.get();
-    root_body_ = mj_name2id(m, mjOBJ_BODY, kMjcfRoot);
-    const int root_joint = mj_name2id(m, mjOBJ_JOINT, kMjcfRoot);
-    EXPECT_EQ(m->jnt_type[root_joint], mjJNT_FREE);
-    root_qpos_ = m->jnt_qposadr[root_joint];
-    root_dof_ = m->jnt_dofadr[root_joint];
-    for (int i = kRootDof; i < kConfigurationDof; ++i) {
-      const int joint = mj_name2id(m, mjOBJ_JOINT, model.joints[i].name.c_str());
-      EXPECT_GE(joint, 0) << model.joints[i].name;
-      qpos_[i] = m->jnt_qposadr[joint];
-      dof_[i] = m->jnt_dofadr[joint];
-    }
-  }
+        layout_(mujoco_layout(model, mujoco_.get(), wall.incline_deg)) {}
   ~MujocoClimber() { mj_deleteData(data_); }
 
   const mjModel* model() const { return mujoco_.get(); }
   mjData* data() { return data_; }
 
-  // crux's posture in wall coordinates, the root unturned: the free joint at the root's
-  // place in the world, turned as the wall is, at rest.
-  void set_posture(const Posture& g) {
-    mj_resetData(mujoco_.get(), data_);
-    const Eigen::Vector3d root = to_world_ * g.head<kRootDof>();
-    const Eigen::Quaterniond turn(to_world_);
-    for (int k = 0; k < 3; ++k) data_->qpos[root_qpos_ + k] = root[k];
-    data_->qpos[root_qpos_ + 3] = turn.w();
-    data_->qpos[root_qpos_ + 4] = turn.x();
-    data_->qpos[root_qpos_ + 5] = turn.y();
-    data_->qpos[root_qpos_ + 6] = turn.z();
-    for (int i = kRootDof; i < kConfigurationDof; ++i) data_->qpos[qpos_[i]] = g[i];
-    mj_forward(mujoco_.get(), data_);
-  }
+  // crux's posture in wall coordinates, the root unturned, at rest.
+  void set_posture(const Posture& g) { place_at_rest(layout_, mujoco_.get(), data_, g); }
 
   // In wall coordinates, as crux's.
   Eigen::Vector3d centre_of_mass() const {
-    return to_world_.transpose() * Eigen::Vector3d(data_->subtree_com + 3 * root_body_);
+    return layout_.to_world.transpose() * Eigen::Vector3d(data_->subtree_com + 3 * layout_.root_body);
   }
   // The generalised force that holds the body still against gravity, on crux's
   // coordinates: the root's translations in wall coordinates, then the revolute joints.
   GeneralisedForce holding_forces() const {
     GeneralisedForce out;
-    out.head<kRootDof>() = to_world_.transpose() * Eigen::Vector3d(data_->qfrc_bias + root_dof_);
-    for (int i = kRootDof; i < kConfigurationDof; ++i) out[i] = data_->qfrc_bias[dof_[i]];
+    out.head<kRootDof>() = layout_.to_world.transpose() * Eigen::Vector3d(data_->qfrc_bias + layout_.root_dof);
+    for (int i = kRootDof; i < kConfigurationDof; ++i) out[i] = data_->qfrc_bias[layout_.dof[i]];
     return out;
   }
-  Eigen::MatrixXd revolute_inertia() const { return testing::revolute_inertia(mujoco_.get(), data_, dof_); }
+  Eigen::MatrixXd revolute_inertia() const { return testing::revolute_inertia(mujoco_.get(), data_, layout_.dof); }
   Eigen::Vector3d site(const std::string& name) const {
     const int id = mj_name2id(mujoco_.get(), mjOBJ_SITE, name.c_str());
     EXPECT_GE(id, 0) << name;
-    return to_world_.transpose() * Eigen::Vector3d(data_->site_xpos + 3 * id);
+    return layout_.to_world.transpose() * Eigen::Vector3d(data_->site_xpos + 3 * id);
   }
 
  private:
   MujocoModel mujoco_;
   mjData* data_;
-  Eigen::Matrix3d to_world_;
-  int root_body_ = -1, root_qpos_ = -1, root_dof_ = -1;
-  std::array<int, kConfigurationDof> qpos_{}, dof_{};
+  MujocoLayout layout_;
 };
 
 // Issue 40: mass, centre of mass and gravity's torques as crux computes them, at the
@@ -189,7 +164,8 @@ TEST(MjcfModel, TheRootIsFreeAndEveryRevoluteJointHasOneMotorWithinItsLimits) {
   EXPECT_EQ(m->nq, 7 + kRevoluteDof);
   EXPECT_EQ(m->nv, 6 + kRevoluteDof);
   ASSERT_EQ(m->nu, kRevoluteDof);
-  EXPECT_EQ(m->nbody, 1 + 1 + wall.hold_count() + 1 + kRevoluteDof) << "world, wall, holds, root, one per joint";
+  EXPECT_EQ(m->nbody, 1 + 1 + wall.hold_count() + 2 + 1 + kRevoluteDof)
+      << "world, wall, holds, the feet's footings, root, one per joint";
   for (int a = 0; a < m->nu; ++a) {
     const int joint = m->actuator_trnid[2 * a];
     ASSERT_EQ(m->actuator_trntype[a], mjTRN_JOINT);
@@ -200,7 +176,12 @@ TEST(MjcfModel, TheRootIsFreeAndEveryRevoluteJointHasOneMotorWithinItsLimits) {
     EXPECT_EQ(m->actuator_gear[6 * a], 1.0);
     EXPECT_EQ(m->actuator_forcerange[2 * a], -limits.joints[i].negative) << name;
     EXPECT_EQ(m->actuator_forcerange[2 * a + 1], limits.joints[i].positive) << name;
-    EXPECT_EQ(m->actuator_ctrlrange[2 * a], -limits.joints[i].negative) << name;
+    const ServoGain gain = servo_gain(limits.joints[i], ServoParameters{});
+    EXPECT_EQ(m->actuator_ctrllimited[a], 0) << "the control is a target angle: " << name;
+    EXPECT_EQ(m->actuator_gainprm[mjNGAIN * a], gain.kp) << name;
+    EXPECT_EQ(m->actuator_biasprm[mjNBIAS * a], 0.0) << name;
+    EXPECT_EQ(m->actuator_biasprm[mjNBIAS * a + 1], -gain.kp) << name;
+    EXPECT_EQ(m->actuator_biasprm[mjNBIAS * a + 2], -gain.kv) << name;
     EXPECT_EQ(m->jnt_range[2 * joint], model.joints[i].lower) << name;
     EXPECT_EQ(m->jnt_range[2 * joint + 1], model.joints[i].upper) << name;
     EXPECT_EQ(Eigen::Vector3d(m->jnt_axis + 3 * joint), model.joints[i].axis) << name;
@@ -217,11 +198,10 @@ TEST(MjcfModel, TheRootIsFreeAndEveryRevoluteJointHasOneMotorWithinItsLimits) {
 
 // The keyframe "start" is the posture given; a foot's hold pushes along its support
 // direction, turned with the wall.
-TEST(MjcfModel, TheStartKeyframeIsThePostureAndAHoldsTopFacesItsSupportDirection) {
+TEST(MjcfModel, TheStartKeyframeIsThePostureAndEachHoldIsAtItsPlace) {
   const BodyModel& model = testing::human_model();
   Wall wall = generate_random_wall(3);
   wall.incline_deg = -15.0;
-  wall.holds[5].support = Eigen::Vector3d(0.6, 0.0, 0.8);
   const Posture start = start_posture(wall);
   MujocoClimber mujoco(wall, start);
   mj_resetDataKeyframe(mujoco.model(), mujoco.data(), mj_name2id(mujoco.model(), mjOBJ_KEY, "start"));
@@ -232,13 +212,52 @@ TEST(MjcfModel, TheStartKeyframeIsThePostureAndAHoldsTopFacesItsSupportDirection
     EXPECT_LT((mujoco.site(model.grasp_frame_names[limb]) - data.points[operational_point(limb)]).norm(), 1e-9);
   }
   const Eigen::Matrix3d to_world = wall_to_world(wall.incline_deg);
-  for (const int h : {0, 5}) {
-    const Hold& hold = wall.holds[h];
+  for (const Hold& hold : wall.holds) {
     const int body = mj_name2id(mujoco.model(), mjOBJ_BODY, mjcf_hold_name(hold.id).c_str());
     ASSERT_GE(body, 0);
-    const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> frame(mujoco.data()->xmat + 9 * body);
-    EXPECT_LT((frame.col(2) - to_world * support_direction(hold, Limb::LeftFoot, 45.0)).norm(), 1e-12) << h;
-    EXPECT_LT((Eigen::Vector3d(mujoco.data()->xpos + 3 * body) - to_world * hold.position).norm(), 1e-12) << h;
+    EXPECT_LT((Eigen::Vector3d(mujoco.data()->xpos + 3 * body) - to_world * hold.position).norm(), 1e-12) << hold.id;
+  }
+}
+
+// What touches what: the segments crux keeps out of the wall touch its plane, which stands
+// kMjcfWallDepth behind x = 0; the hands and feet touch nothing but a foot's contact sphere,
+// which touches only the footings.
+TEST(MjcfModel, SegmentsTouchTheWallAndOnlyTheFeetsSpheresTouchTheFootings) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = generate_random_wall(1);
+  MujocoClimber mujoco(wall, start_posture(wall));
+  const mjModel* m = mujoco.model();
+  mujoco.set_posture(standing_posture({-0.5, 0.0, 1.0}));
+  const int wall_geom = mj_name2id(m, mjOBJ_GEOM, "wall");
+  ASSERT_GE(wall_geom, 0);
+  const Eigen::Vector3d plane(mujoco.data()->geom_xpos + 3 * wall_geom);
+  EXPECT_NEAR(plane.x(), kMjcfWallDepth, 1e-12);
+  EXPECT_EQ(m->geom_conaffinity[wall_geom], 1);
+  int spheres = 0, segments = 0;
+  for (int g = 0; g < m->ngeom; ++g) {
+    const char* name = mj_id2name(m, mjOBJ_GEOM, g);
+    const std::string geom = name == nullptr ? "" : name;
+    if (m->geom_bodyid[g] < mj_name2id(m, mjOBJ_BODY, kMjcfRoot)) continue;
+    EXPECT_EQ(m->geom_conaffinity[g], 0) << geom << ": the body's geoms never touch each other";
+    if (geom.ends_with("_contact")) {
+      ++spheres;
+      EXPECT_EQ(m->geom_contype[g], 4) << geom;
+      EXPECT_EQ(m->geom_size[3 * g], kFootContactRadius) << geom;
+      continue;
+    }
+    const auto visual = std::find_if(model.visuals.begin(), model.visuals.end(),
+                                     [&](const BodyVisual& v) { return geom.substr(0, geom.rfind('_')) == v.link; });
+    ASSERT_NE(visual, model.visuals.end()) << geom;
+    EXPECT_EQ(m->geom_contype[g], counts_for_the_wall(model, *visual) ? 1 : 0) << geom;
+    segments += m->geom_contype[g];
+  }
+  EXPECT_EQ(spheres, 2);
+  EXPECT_GT(segments, 8);
+  for (const Limb foot : {Limb::RightFoot, Limb::LeftFoot}) {
+    const int footing = mj_name2id(m, mjOBJ_BODY, mjcf_footing_name(foot).c_str());
+    ASSERT_GE(footing, 0);
+    EXPECT_GE(m->body_mocapid[footing], 0);
+    EXPECT_EQ(m->geom_conaffinity[m->body_geomadr[footing]], 4);
   }
 }
 

@@ -1,0 +1,73 @@
+#include "simulation/simulated_climber.hpp"
+
+#include <stdexcept>
+
+#include <mujoco/mujoco.h>
+
+#include "simulation/mjcf_model.hpp"
+#include "wall/hold_support.hpp"
+
+namespace crux {
+
+SimulatedClimber::SimulatedClimber(const BodyModel& model, const Wall& wall, const PhysicsParameters& physics,
+                                   const StrengthProfile& limits, const Posture& start, const ServoParameters& servo)
+    : body_(model),
+      wall_(wall),
+      physics_(physics),
+      limits_(limits),
+      mjcf_(mjcf_text(model, wall, physics, limits, start, servo)),
+      mujoco_(mjcf_, wall.name),
+      data_(mj_makeData(mujoco_.get())),
+      layout_(mujoco_layout(model, mujoco_.get(), wall.incline_deg)),
+      grasps_{Grasp(mujoco_.get(), mjcf_grasp_name(Limb::RightHand)),
+              Grasp(mujoco_.get(), mjcf_grasp_name(Limb::LeftHand))},
+      footings_{Footing(mujoco_.get(), Limb::RightFoot), Footing(mujoco_.get(), Limb::LeftFoot)},
+      wall_geom_(mj_name2id(mujoco_.get(), mjOBJ_GEOM, "wall")) {
+  for (int i = kRootDof; i < static_cast<int>(model.joints.size()); ++i)
+    gains_[i] = servo_gain(limits.joints[i], servo);
+}
+
+SimulatedClimber::~SimulatedClimber() { mj_deleteData(data_); }
+
+const Grasp& SimulatedClimber::grasp(Limb hand) const {
+  if (hand != Limb::RightHand && hand != Limb::LeftHand) throw std::invalid_argument("a foot does not grasp");
+  return grasps_[static_cast<int>(hand)];
+}
+
+const Footing& SimulatedClimber::footing(Limb foot) const {
+  if (foot != Limb::RightFoot && foot != Limb::LeftFoot) throw std::invalid_argument("a hand has no footing");
+  return footings_[static_cast<int>(foot) - static_cast<int>(Limb::RightFoot)];
+}
+
+void SimulatedClimber::take(Limb limb, int hold) {
+  const Eigen::Vector3d grasp_point = layout_.to_world * simulated_grasp_point(layout_, data_, limb);
+  if (limb == Limb::RightHand || limb == Limb::LeftHand) {
+    grasp(limb).take(mujoco_.get(), grasp_point);
+  } else {
+    footing(limb).take(data_, grasp_point,
+                       layout_.to_world * support_direction(wall_.holds[hold], limb, physics_.support_angle_deg));
+  }
+}
+
+void SimulatedClimber::release(Limb limb) {
+  if (limb == Limb::RightHand || limb == Limb::LeftHand) {
+    grasp(limb).release(mujoco_.get());
+  } else {
+    footing(limb).release(data_);
+  }
+}
+
+void SimulatedClimber::place(const Posture& posture, const HoldConfiguration& holds) {
+  place_at_rest(layout_, mujoco_.get(), data_, posture);
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const int hold = holds.holds[limb];
+    if (hold == kFree) {
+      release(static_cast<Limb>(limb));
+    } else {
+      take(static_cast<Limb>(limb), hold);
+    }
+  }
+  mj_forward(mujoco_.get(), data_);
+}
+
+}  // namespace crux
