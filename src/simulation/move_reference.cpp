@@ -27,7 +27,6 @@ MoveReferences::MoveReferences(const BodyModel& model, const Wall& wall, const P
       physics_(physics),
       force_margin_(force_margin),
       lift_(lift),
-      reach_(reach),
       samples_(samples),
       gravity_(wall_to_world(wall.incline_deg).transpose() * kStandardGravity),
       data_(model),

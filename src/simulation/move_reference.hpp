@@ -1,10 +1,10 @@
 #pragma once
-// What a simulated move follows (simulation/performed_move): the postures of the IK path
-// that the report's replay draws (ik/ik_path), and at each the holding torques on the
-// three holds kept: the static model's least-effort answer where its program balances the
-// posture, which holds the body still by construction; where it does not (a kinematic
-// plan's stance, a sample the static model refuses), the least-squares contact forces'
-// (physics/least_squares_holding). The samples keep out of the wall, as the stances do.
+// What a simulated move follows (simulation/performed_move): postures from one stance to
+// the next that the IK solves with the free limb lifted off the wall, and at each the
+// holding torques on the three holds kept: the static model's least-effort answer where
+// its program balances the posture, which holds the body still by construction; where it
+// does not (a kinematic plan's stance, a sample the static model refuses), the
+// least-squares contact forces' (physics/least_squares_holding).
 
 #include "configurations/reachability.hpp"
 #include "physics/static_equilibrium.hpp"
@@ -36,7 +36,6 @@ class MoveReferences {
   PhysicsParameters physics_;
   double force_margin_;
   double lift_;  // m  // the share of friction and grip the feed-forward leaves unused, where it can
-  ReachabilityParameters reach_;
   int samples_;
   Eigen::Vector3d gravity_;
   BodyData data_;
