@@ -27,6 +27,7 @@ LeastSquaresHolding least_squares_holding(const BodyModel& model, BodyData& data
   needed << -tau_g.head<kRootDof>(), -model.total_mass * (com - root).cross(gravity);
   const Eigen::VectorXd forces = balance.completeOrthogonalDecomposition().solve(needed);
   LeastSquaresHolding holding;
+  holding.contact_forces.fill(Eigen::Vector3d::Zero());  // Eigen leaves a default vector unset
   GeneralisedForce contact_forces = GeneralisedForce::Zero();
   for (int c = 0; c < static_cast<int>(contacts.size()); ++c) {
     const Eigen::Vector3d force = forces.segment<3>(3 * c);

@@ -16,7 +16,7 @@ namespace crux {
 
 struct LeastSquaresHolding {
   // The force each hold exerts on its limb, newtons, limb order; zero for free limbs.
-  std::array<Eigen::Vector3d, kLimbCount> contact_forces{};
+  std::array<Eigen::Vector3d, kLimbCount> contact_forces;
   GeneralisedForce joint_torques = GeneralisedForce::Zero();
 };
 
