@@ -21,6 +21,8 @@ struct EnumNames<Limb> {
                                                           {Limb::LeftFoot, "left_foot", "lf"}}};
 };
 
+constexpr bool is_hand(Limb limb) { return limb == Limb::RightHand || limb == Limb::LeftHand; }
+
 // The index of a limb's grasp point among the operational points (e0 is index 0).
 constexpr int operational_point(Limb limb) { return 1 + static_cast<int>(limb); }
 constexpr int operational_point(int limb) { return 1 + limb; }

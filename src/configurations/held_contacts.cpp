@@ -11,8 +11,7 @@ PointContact held_contact(const Wall& wall, int hold, Limb limb, const PhysicsPa
   contact.limb = limb;
   contact.support_direction = support_direction(wall.holds[hold], limb, physics.support_angle_deg);
   contact.friction = physics.friction;
-  const bool hand = limb == Limb::RightHand || limb == Limb::LeftHand;
-  contact.normal_force_limit = hand ? physics.grip : std::numeric_limits<double>::infinity();
+  contact.normal_force_limit = is_hand(limb) ? physics.grip : std::numeric_limits<double>::infinity();
   return contact;
 }
 

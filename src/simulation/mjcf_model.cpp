@@ -218,7 +218,7 @@ class MjcfWriter {
       const std::string offset = vector_text(model_.grasp_points[limb].offset);
       out_ += fmt::format("{}<site name=\"{}\" pos=\"{}\" size=\"0.015\"/>\n", indent(depth),
                           xml_escaped(model_.grasp_frame_names[limb]), offset);
-      if (limb == static_cast<int>(Limb::RightFoot) || limb == static_cast<int>(Limb::LeftFoot)) {
+      if (!is_hand(static_cast<Limb>(limb))) {
         out_ += fmt::format(
             "{}<geom name=\"{}_contact\" type=\"sphere\" size=\"{}\" pos=\"{}\" contype=\"{}\" conaffinity=\"0\" "
             "rgba=\"0.2 0.2 0.2 0.5\"/>\n",

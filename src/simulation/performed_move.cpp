@@ -12,7 +12,8 @@ namespace crux {
 
 namespace {
 
-bool is_hand(Limb limb) { return limb == Limb::RightHand || limb == Limb::LeftHand; }
+// 0 to 1 with zero slope at both ends: a reference, or a load, that starts and ends at rest.
+double smoothstep(double tau) { return tau * tau * (3.0 - 2.0 * tau); }
 
 // The servos' references along a path of postures, in time.
 struct ReferencePoint {
@@ -44,7 +45,7 @@ class PathReference {
     }
     // A smoothstep in time: the reference starts and ends at rest.
     const double tau = t / duration_;
-    const double s = tau * tau * (3.0 - 2.0 * tau);
+    const double s = smoothstep(tau);
     const double ds = 6.0 * tau * (1.0 - tau) / duration_;
     const double segments = static_cast<double>(path_.size() - 1);
     const double u = s * segments;
@@ -63,10 +64,9 @@ class PathReference {
 
 class MoveSimulation {
  public:
-  MoveSimulation(SimulatedClimber& climber, const MoveParameters& parameters, const StepObserver& observe)
+  MoveSimulation(SimulatedClimber& climber, const MoveParameters& parameters)
       : climber_(climber),
         parameters_(parameters),
-        observe_(observe),
         wall_push_limit_(parameters.wall_push_share * climber.body().total_mass * kStandardGravity.norm()) {}
 
   // `moving`: the free limb goes to reference.hold; otherwise the body holds still on
@@ -88,10 +88,9 @@ class MoveSimulation {
     feed_forward.insert(feed_forward.end(), reference.feed_forward.begin(), reference.feed_forward.end());
     const PathReference path_reference(std::move(path), std::move(feed_forward), parameters_.joint_speed,
                                        parameters_.min_duration_s);
-    held_ = reference.kept;
+    hold_on(reference.kept);
     leaving_ = std::nullopt;
     if (moving) climber_.release(reference.limb);
-    const Eigen::Vector3d target = moving ? climber_.wall().holds[reference.hold].position : Eigen::Vector3d::Zero();
     bool arrived = !moving;
     const double path_start = data->time;
     const double end_of_path = moving ? path_reference.duration() : 0.0;
@@ -105,8 +104,7 @@ class MoveSimulation {
       path_reference.at(elapsed, point);
       if (arrived && moving) {
         // Weighting the new hold, as the old one was unweighted.
-        const double tau = std::min(1.0, (elapsed - arrival) / parameters_.unweight_time_s);
-        const double s = tau * tau * (3.0 - 2.0 * tau);
+        const double s = smoothstep(std::min(1.0, (elapsed - arrival) / parameters_.unweight_time_s));
         point.feed_forward = (1.0 - s) * point.feed_forward + s * reference.arrived_feed_forward;
       }
       outcome.failure = advance(point, outcome);
@@ -122,7 +120,7 @@ class MoveSimulation {
           on_hold(reference.limb, reference.hold)) {
         arrived = true;
         arrival = elapsed;
-        held_ = held_.with(reference.limb, reference.hold);
+        hold_on(held_.with(reference.limb, reference.hold));
         climber_.take(reference.limb, reference.hold);
       }
       if (arrived && elapsed >= end_of_path) {
@@ -142,12 +140,21 @@ class MoveSimulation {
  private:
   SimulatedClimber& climber_;
   const MoveParameters& parameters_;
-  const StepObserver& observe_;
   double wall_push_limit_;
   HoldConfiguration held_;
+  std::array<PointContact, kLimbCount> contacts_;  // of held_'s hands, judged each step
   int saturated_steps_ = 0;
   std::optional<Limb> leaving_;                 // the limb being unweighted
   std::array<double, kLimbCount> outside_s_{};  // how long each hand's force has been outside its limits
+
+  void hold_on(const HoldConfiguration& held) {
+    held_ = held;
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      if (held.holds[limb] != kFree) {
+        contacts_[limb] = held_contact(climber_.wall(), held.holds[limb], static_cast<Limb>(limb), climber_.physics());
+      }
+    }
+  }
 
   // The force the hold exerts on `limb`, world coordinates (zero when it holds nothing).
   Eigen::Vector3d hold_force(Limb limb) const {
@@ -182,7 +189,7 @@ class MoveSimulation {
   // move failed meanwhile.
   bool unweight(const MoveReference& reference, double start, MoveOutcome& outcome) {
     const mjData* data = climber_.data();
-    held_ = reference.kept.with(reference.limb, reference.left_hold);
+    hold_on(reference.kept.with(reference.limb, reference.left_hold));
     leaving_ = reference.limb;
     ReferencePoint point;
     point.angle = simulated_posture(climber_.layout(), data);
@@ -191,8 +198,7 @@ class MoveSimulation {
          outcome.failure == MoveFailure::None && t < 2.0 * parameters_.unweight_time_s &&
          (t < parameters_.unweight_time_s || hold_force(reference.limb).norm() > parameters_.grasp_tolerance_n);
          t = data->time - start) {
-      const double tau = std::min(1.0, t / parameters_.unweight_time_s);
-      const double s = tau * tau * (3.0 - 2.0 * tau);
+      const double s = smoothstep(std::min(1.0, t / parameters_.unweight_time_s));
       point.feed_forward = (1.0 - s) * reference.loaded_feed_forward + s * reference.unloaded_feed_forward;
       outcome.failure = advance(point, outcome);
     }
@@ -214,7 +220,6 @@ class MoveSimulation {
     ++outcome.steps;
     if (data->warning[mjWARN_BADQACC].number != bad_accelerations) return MoveFailure::Unstable;
     if (measure(outcome)) ++saturated_steps_;
-    if (observe_) observe_(climber_);
     const MoveFailure failure = failure_on_holds();
     const double push = wall_push();
     outcome.peak_wall_push_n = std::max(outcome.peak_wall_push_n, push);
@@ -271,14 +276,13 @@ class MoveSimulation {
         const Grasp& grasp = climber_.grasp(held_limb);
         if (!grasp.taken(model)) continue;
         const Eigen::Vector3d force = climber_.layout().to_world.transpose() * grasp.force(model, data);
-        const PointContact contact = held_contact(climber_.wall(), hold, held_limb, climber_.physics());
-        const GraspVerdict verdict = grasp_verdict(contact, force, parameters_.grasp_tolerance_n);
+        const GraspVerdict verdict = grasp_verdict(contacts_[limb], force, parameters_.grasp_tolerance_n);
         double& outside = outside_s_[limb];
         outside = verdict == GraspVerdict::Held ? 0.0 : outside + model->opt.timestep;
         if (outside < parameters_.slip_time_s - 1e-12) continue;
         if (held_limb == leaving_) {
           // A hand being unweighted that cannot hold what is left lets go a little early.
-          held_ = held_.with(held_limb, kFree);
+          hold_on(held_.with(held_limb, kFree));
           climber_.release(held_limb);
           continue;
         }
@@ -321,16 +325,14 @@ class MoveSimulation {
 
 }  // namespace
 
-MoveOutcome perform_move(SimulatedClimber& climber, const MoveReference& reference, const MoveParameters& parameters,
-                         const StepObserver& observe) {
-  MoveSimulation simulation(climber, parameters, observe);
+MoveOutcome perform_move(SimulatedClimber& climber, const MoveReference& reference, const MoveParameters& parameters) {
+  MoveSimulation simulation(climber, parameters);
   return simulation.run(reference, true, parameters.settle_time_s);
 }
 
 MoveOutcome hold_still(SimulatedClimber& climber, const Posture& posture, const HoldConfiguration& holds,
-                       const GeneralisedForce& feed_forward, double seconds, const MoveParameters& parameters,
-                       const StepObserver& observe) {
-  MoveSimulation simulation(climber, parameters, observe);
+                       const GeneralisedForce& feed_forward, double seconds, const MoveParameters& parameters) {
+  MoveSimulation simulation(climber, parameters);
   MoveReference reference;
   reference.kept = holds;
   reference.samples = {posture};

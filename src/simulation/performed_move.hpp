@@ -6,7 +6,6 @@
 // the body but gravity, the contacts, the grasps and the joints' range limits. The move
 // starts from wherever the last one left the body.
 
-#include <functional>
 #include <vector>
 
 #include "body/gravity_forces.hpp"
@@ -93,18 +92,13 @@ struct MoveOutcome {
   double peak_wall_push_n = 0.0;   // the wall's largest push on the segments
 };
 
-// Called after each step, with the simulation's time.
-using StepObserver = std::function<void(const SimulatedClimber&)>;
-
-// Performs `reference` from the climber's present state. A hand that leaves its hold lets
-// go at the first step and takes its new hold where it arrives.
-MoveOutcome perform_move(SimulatedClimber& climber, const MoveReference& reference, const MoveParameters& parameters,
-                         const StepObserver& observe = {});
+// Performs `reference` from the climber's present state: the limb's hold unweighted, the
+// path followed, the new hold taken where the limb comes to rest on it.
+MoveOutcome perform_move(SimulatedClimber& climber, const MoveReference& reference, const MoveParameters& parameters);
 
 // Holds the climber still on `holds` with `feed_forward` towards `posture`, for at most
 // `seconds`: the outcome of a move that goes nowhere (the start settling, a stance's test).
 MoveOutcome hold_still(SimulatedClimber& climber, const Posture& posture, const HoldConfiguration& holds,
-                       const GeneralisedForce& feed_forward, double seconds, const MoveParameters& parameters,
-                       const StepObserver& observe = {});
+                       const GeneralisedForce& feed_forward, double seconds, const MoveParameters& parameters);
 
 }  // namespace crux

@@ -30,18 +30,18 @@ SimulatedClimber::SimulatedClimber(const BodyModel& model, const Wall& wall, con
 SimulatedClimber::~SimulatedClimber() { mj_deleteData(data_); }
 
 const Grasp& SimulatedClimber::grasp(Limb hand) const {
-  if (hand != Limb::RightHand && hand != Limb::LeftHand) throw std::invalid_argument("a foot does not grasp");
+  if (!is_hand(hand)) throw std::invalid_argument("a foot does not grasp");
   return grasps_[static_cast<int>(hand)];
 }
 
 const Footing& SimulatedClimber::footing(Limb foot) const {
-  if (foot != Limb::RightFoot && foot != Limb::LeftFoot) throw std::invalid_argument("a hand has no footing");
+  if (is_hand(foot)) throw std::invalid_argument("a hand has no footing");
   return footings_[static_cast<int>(foot) - static_cast<int>(Limb::RightFoot)];
 }
 
 void SimulatedClimber::take(Limb limb, int hold) {
   const Eigen::Vector3d grasp_point = layout_.to_world * simulated_grasp_point(layout_, data_, limb);
-  if (limb == Limb::RightHand || limb == Limb::LeftHand) {
+  if (is_hand(limb)) {
     grasp(limb).take(mujoco_.get(), grasp_point);
   } else {
     footing(limb).take(data_, grasp_point,
@@ -50,7 +50,7 @@ void SimulatedClimber::take(Limb limb, int hold) {
 }
 
 void SimulatedClimber::release(Limb limb) {
-  if (limb == Limb::RightHand || limb == Limb::LeftHand) {
+  if (is_hand(limb)) {
     grasp(limb).release(mujoco_.get());
   } else {
     footing(limb).release(data_);

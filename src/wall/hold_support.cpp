@@ -7,7 +7,7 @@ namespace crux {
 
 Eigen::Vector3d support_direction(const Hold& hold, Limb limb, double support_angle_deg) {
   if (hold.support) return *hold.support;
-  if (limb == Limb::RightFoot || limb == Limb::LeftFoot) return Eigen::Vector3d::UnitZ();
+  if (!is_hand(limb)) return Eigen::Vector3d::UnitZ();
   const double angle = support_angle_deg * std::numbers::pi / 180.0;
   return {std::sin(angle), 0.0, std::cos(angle)};
 }
