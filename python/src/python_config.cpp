@@ -109,6 +109,7 @@ ExperimentConfig config_from_python(const py::handle& config, const ParameterSet
     throw InputError(kSource, "must be None, a dict of config keys, or the path of a config.toml");
   }
   finalize_config(out);
+  require_physics_model_taken(out, accepted, "crux." + std::string(caller));
   return out;
 }
 

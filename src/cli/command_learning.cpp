@@ -1,4 +1,5 @@
-// crux paper | train | transfer | plan: learning to climb and transfer (section IV).
+// crux paper | train | transfer | plan | perform: learning to climb and transfer (section
+// IV), the exact plan, and a plan performed in MuJoCo.
 
 #include <filesystem>
 #include <iostream>
@@ -17,16 +18,14 @@
 #include "jobs/command_keys.hpp"
 #include "jobs/learning_job.hpp"
 #include "jobs/paper_job.hpp"
+#include "jobs/perform_job.hpp"
+#include "reports/perform_description.hpp"
 #include "reports/plan_description.hpp"
 #include "reports/text_report.hpp"
 
 namespace crux::cli {
 
 namespace {
-
-const ParameterSet kPlanKeys{
-    {"experiment.urdf", "experiment.plan_max_solves", "experiment.plan_check_moves", "ik", "physics", "filter", "wall"},
-    {"wall.name", "wall.count", "physics.fall_when_stuck"}};
 
 void require_wall(const ExperimentConfig& config) {
   if (config.wall_file.empty() && !config.wall_seed) {
@@ -109,6 +108,18 @@ struct SingleRunCommand {
   }
 };
 
+// The plan's answer with the climb performed in MuJoCo, and its wall-clock time.
+void print_performed(const PerformJobOutcome& outcome, bool json) {
+  if (json) {
+    nlohmann::ordered_json out = outcome.record;
+    out["wall_s"] = outcome.wall_s;
+    std::cout << out.dump(2) << '\n';
+    return;
+  }
+  std::cout << performed_plan_text(outcome.wall, outcome.performed)
+            << fmt::format("({:.1f} s of wall-clock time)\n", outcome.wall_s);
+}
+
 struct PlanCommand {
   ParameterBinding binding{"plan", kPlanKeys};
   bool json = false;
@@ -116,10 +127,44 @@ struct PlanCommand {
   void run() {
     ExperimentConfig config = binding.resolve();
     require_wall(config);
+    if (config.settings.learning.climbing.physics.model == PhysicsModel::Dynamic) {
+      PerformJob job{config, binding.config_path(), {}, false, {}};
+      print_performed(run_with_flags(binding,
+                                     [&] {
+                                       return run_perform_job(std::move(job), {"crux plan", {}, {}, {}});
+                                     }),
+                      json);
+      return;
+    }
     const BodyModel model = load_configured_body(config);
     const Wall wall = load_configured_wall(config);
     const Plan plan = shortest_plan(model, wall, config.settings.learning.climbing, config.settings.plan_search);
     std::cout << (json ? plan_json(wall, plan).dump(2) + "\n" : plan_text(wall, plan));
+  }
+};
+
+ExperimentConfig perform_defaults() {
+  ExperimentConfig defaults;
+  defaults.settings.learning.climbing.physics.model = PhysicsModel::Static;
+  return defaults;
+}
+
+struct PerformCommand {
+  ParameterBinding binding{"perform", kPerformKeys, perform_defaults()};
+  std::string output = "out/perform";
+  bool json = false;
+  bool overwrite = false;
+
+  void run() {
+    require_output(output);
+    ExperimentConfig config = binding.resolve();
+    require_wall(config);
+    PerformJob job{std::move(config), binding.config_path(), output, overwrite, {}};
+    const PerformJobOutcome outcome = run_with_flags(binding, [&] {
+      return run_perform_job(std::move(job), {"crux perform", {}, {}, {}});
+    });
+    print_performed(outcome, json);
+    if (!json) std::cout << fmt::format("wrote {}\n", output);
   }
 };
 
@@ -153,6 +198,18 @@ void add_learning_commands(CLI::App& app) {
                          with_progress(kTrainKeys));
   add_single_run_command(app, "transfer", "Learn to climb one wall starting from a Q_grid learnt elsewhere",
                          Condition::Transfer, with_progress(kTransferKeys));
+
+  auto perform = std::make_shared<PerformCommand>();
+  auto* f =
+      app.add_subcommand("perform",
+                         "Perform a wall's exact plan in MuJoCo from its start (physics.model static, the default "
+                         "here, performs it as planned; dynamic repairs it by planning again around the moves "
+                         "that fail) and write the climb's folder");
+  f->add_option("-o,--output", perform->output, "Output folder")->capture_default_str();
+  f->add_flag("--json", perform->json, "Print perform.json's contents and the wall-clock time instead of text");
+  f->add_flag("--overwrite", perform->overwrite, "Replace crux's outputs in an output folder that holds some");
+  perform->binding.bind(f);
+  f->callback([perform] { perform->run(); });
 
   auto plan = std::make_shared<PlanCommand>();
   auto* l = app.add_subcommand("plan", "Exact shortest climb of a wall under the learning's rules");

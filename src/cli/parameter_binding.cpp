@@ -199,6 +199,7 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
   try {
     require_within_bounds(command_fields_);
     finalize_config(config);
+    require_physics_model_taken(config, accepted_, "crux " + command_);
   } catch (const InputError& e) {
     throw InputError(where(e.source()), e.problem());
   }

@@ -195,6 +195,9 @@ void experiment_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
           {"experiment.plan_max_solves",
            "IK solves the exact planner may spend on a wall; it stops there without a plan (12-20 us each on average)",
            &s.plan_search.max_ik_solves, "", work_size(1, 100000000, "at most about half an hour a wall")},
+          {"experiment.plan_max_replans",
+           "Dynamic model: plans searched again after a move failed in MuJoCo, each refusing the moves that failed",
+           &s.plan_search.max_replans, "", work_size(0, 10000, "one climb performed each")},
           {"experiment.plan_check_moves",
            "Static model: the exact planner also refuses a move whose IK path (the replay's 16 postures) does not hold "
            "still on the three holds kept",
@@ -322,8 +325,9 @@ void physics_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
       keys.end(),
       {
           {"physics.model",
-           "kinematic (the paper's: IK alone decides) or static (the body kept out of the wall and each stance held "
-           "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md)",
+           "kinematic (the paper's: IK alone decides), static (the body kept out of the wall and each stance held "
+           "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md) or dynamic (crux plan "
+           "and crux perform: static stances, and each move of the plan performed in MuJoCo)",
            choice(&m.physics.model)},
           // Rubber on rock measures about 1. CLP's least efforts stay right up to 1e6 and go
           // wrong from 1e7 (larger than at 10, which more friction cannot make them); from
@@ -348,6 +352,63 @@ void physics_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
            "A failed move also falls when no limb can move to another hold of the stance, every such move known "
            "unreachable (a trap that C27's dead ends miss)",
            &m.fall_when_stuck},
+      });
+}
+
+// The [perform] keys: climbs performed in MuJoCo (docs/PHYSICS.md, "A move performed").
+// Each time's bound keeps a move's simulation within minutes of wall-clock time at the
+// measured 8 to 10 times real time.
+template <typename Config>
+void perform_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
+  auto& p = c.settings.perform;
+  constexpr Bounds kSimulatedTime = closed_range(0, 60, "a minute of simulated time, seconds of wall-clock time");
+  keys.insert(
+      keys.end(),
+      {
+          {"perform.joint_speed",
+           "A move's pace: its duration is its path's largest joint excursion over this speed (docs/PHYSICS.md)",
+           &p.move.joint_speed, "rad/s", closed_range(0.05, 20, "at least a minute for the longest path's excursion")},
+          {"perform.min_duration", "A move's shortest duration", &p.move.min_duration_s, "s", kSimulatedTime},
+          {"perform.settle_time", "Time allowed after a move's path to arrive and hold still", &p.move.settle_time_s,
+           "s", kSimulatedTime},
+          {"perform.start_time", "Time allowed to the start stance to hold still before the first move",
+           &p.start_time_s, "s", kSimulatedTime},
+          {"perform.unweight_time",
+           "Time over which a limb's hold is unweighted before it lets go, and the next weighted",
+           &p.move.unweight_time_s, "s", closed_range(0.002, 10, "from one simulation step")},
+          {"perform.slip_time", "A hand lets go when its force stays beyond the grip or the friction pyramid this long",
+           &p.move.slip_time_s, "s", closed_range(0.002, 10, "from one simulation step")},
+          {"perform.grasp_tolerance", "A hand's force within this of its limits is held", &p.move.grasp_tolerance_n,
+           "N", closed_range(0, 1000, "the body's weight")},
+          {"perform.still_speed",
+           "Held still: every velocity below this (rad/s, m/s for the root)",
+           &p.move.still_speed,
+           "",
+           {.min = 0, .max = 10, .min_open = true}},
+          {"perform.still_time", "Held still: for this long", &p.move.still_time_s, "s", kSimulatedTime},
+          {"perform.wall_push_share",
+           "The body hit the wall when the wall pushes it with more than this share of its weight",
+           &p.move.wall_push_share,
+           "",
+           {.min = 0, .max = 100, .min_open = true}},
+          {"perform.saturated_share",
+           "A move that timed out failed for its torques when a motor was at its limit in this share of its steps",
+           &p.move.saturated_share, "", kShareOfOne},
+          {"perform.path_samples", "IK postures along a move's path", &p.path_samples, "",
+           work_size(2, 1000, "one IK solve each")},
+          {"perform.force_margin",
+           "The share of friction and grip the feed-forward leaves unused where it can",
+           &p.force_margin,
+           "",
+           {.min = 0, .max = 1, .max_open = true}},
+          {"perform.lift", "How far a free limb's path bows away from the wall", &p.lift, "m", closed_range(0, 1)},
+          {"perform.servo_saturation_angle",
+           "A servo's angle error at which its feedback alone reaches the torque limit", &p.servo.saturation_angle,
+           "rad", closed_range(0.001, 3.14159)},
+          {"perform.servo_damping_time", "A servo's damping over its stiffness", &p.servo.damping_time, "s",
+           closed_range(0, 1)},
+          {"perform.record_interval", "The trajectory's sampling interval", &p.record_interval_s, "s",
+           closed_range(0.002, 10, "from one simulation step")},
       });
 }
 
@@ -446,6 +507,7 @@ std::vector<FieldOf<Config>> fields_of(Config& c) {
   learning_keys(keys, c);
   ik_keys(keys, c);
   physics_keys(keys, c);
+  perform_keys(keys, c);
   configuration_keys(keys, c);
   wall_keys(keys, c);
   output_keys(keys, c);
@@ -763,15 +825,16 @@ namespace {
 // The keys that only mean something together with others.
 void require_consistent_keys(const ExperimentConfig& config) {
   const ExperimentParameters& s = config.settings;
-  const bool is_static = s.learning.climbing.physics.model == PhysicsModel::Static;
+  const bool is_static = checks_stances(s.learning.climbing.physics.model);
   require(s.learning.climbing.rewards.effort == 0.0 || is_static, "reward.effort",
           "needs physics.model = static: the kinematic model has no effort");
   require(!s.plan_search.check_moves || is_static, "experiment.plan_check_moves",
-          "needs physics.model = static: the kinematic model checks no stance");
+          "needs physics.model = static or dynamic: the kinematic model checks no stance");
   // The static model's stances are solved with the body kept out of the wall.
   require(!is_static || s.learning.climbing.reachability.ik.wall == WallRule::Avoid, "ik.wall",
-          "must be avoid under physics.model = static (its default there): a stance that holds still keeps the body "
-          "out of the wall");
+          fmt::format("must be avoid under physics.model = {} (its default there): a stance that holds still keeps "
+                      "the body out of the wall",
+                      enum_name(s.learning.climbing.physics.model)));
   require(static_cast<long long>(s.wall_pairs) * s.seeds_per_wall <= kMaxRunsPerCondition, "experiment.walls",
           "walls x seeds_per_wall must be at most 1000000 runs per condition");
   const auto& ik = s.learning.climbing.reachability.ik;
@@ -796,6 +859,15 @@ void require_consistent_keys(const ExperimentConfig& config) {
 
 }  // namespace
 
+void require_physics_model_taken(const ExperimentConfig& config, const ParameterSet& accepted,
+                                 const std::string& caller) {
+  require(config.settings.learning.climbing.physics.model != PhysicsModel::Dynamic || accepted.takes_dynamic_physics,
+          "physics.model",
+          fmt::format("dynamic is not taken by {}: only crux plan and crux perform perform moves in MuJoCo (static "
+                      "checks the same stances without performing them)",
+                      caller));
+}
+
 void finalize_config(ExperimentConfig& config) {
   ExperimentParameters& s = config.settings;
   if (!config.wall_file.empty()) {
@@ -808,7 +880,7 @@ void finalize_config(ExperimentConfig& config) {
   require_within_bounds(config_fields(config));
   PhysicsParameters& physics = s.learning.climbing.physics;
   // Derived values, each recorded in config.toml as what ran.
-  if (physics.model == PhysicsModel::Static && !config.given.contains("ik.wall")) {
+  if (checks_stances(physics.model) && !config.given.contains("ik.wall")) {
     s.learning.climbing.reachability.ik.wall = WallRule::Avoid;
   }
   if (!config.physics_strength.empty() && !config.given.contains("physics.grip")) {

@@ -183,8 +183,16 @@ std::string flag_for_key(const std::string& key);
 struct ParameterSet {
   std::vector<std::string> include;
   std::vector<std::string> exclude;
+  // physics.model = dynamic performs each plan in MuJoCo: the commands that plan take it;
+  // those that learn do not yet.
+  bool takes_dynamic_physics = false;
   bool accepts(const std::string& key) const;
 };
+
+// InputError("physics.model", ...) when `config` asks for a physics model that `caller`
+// (a command's name, or crux.<function> in Python) does not take.
+void require_physics_model_taken(const ExperimentConfig& config, const ParameterSet& accepted,
+                                 const std::string& caller);
 
 // A config file's TOML, parsed once: a sweep applies it once per cell, so that expanding
 // a sweep costs one parse and grows linearly with its cells.

@@ -23,6 +23,7 @@
 
 #include "experiments/learning_run.hpp"
 #include "experiments/shortest_plan.hpp"
+#include "simulation/performed_climb.hpp"
 #include "wall/random_wall.hpp"
 
 namespace crux {
@@ -53,6 +54,7 @@ struct ExperimentParameters {
   int threads = 0;   // 0: all cores
   bool plan = true;  // compute each wall's exact shortest climb
   PlanParameters plan_search;
+  PerformParameters perform;  // climbs performed in MuJoCo (physics.model = dynamic, crux perform)
 
   int runs() const { return wall_pairs * seeds_per_wall; }  // per condition
   // What shapes the training walls, preceding ones included.

@@ -22,7 +22,7 @@ struct Node {
 }  // namespace
 
 Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
-                   const PlanParameters& search) {
+                   const PlanParameters& search, const RefusedMoves& refused) {
   // The planner needs verdicts only: under the static model, the cheaper program.
   ConfigurationReacher reacher(model, wall, parameters.reachability, parameters.physics, StanceQuestion::HoldsStill);
   const Posture* start = &reacher.require_start(wall.name);
@@ -80,6 +80,7 @@ Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParam
         plan.stopped_at_limit = true;
         break;
       }
+      if (!refused.empty() && refused.contains({encode(node.configuration, wall.hold_count()), possible[i]})) continue;
       const HoldConfiguration complete = node.configuration.with(free, possible[i]);
       const Posture* reached = reacher.reach(*node.posture, complete, next_free_limb(free));
       if (reached == nullptr) continue;

@@ -6,6 +6,9 @@
 // reaches the finishing height. The paper says an optimal climb takes about 10 actions.
 
 #include <cstddef>
+#include <cstdint>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "climbing/climbing_mdp.hpp"
@@ -21,6 +24,9 @@ struct PlanParameters {
   // IK path (the replay's samples) holds still on the three holds kept during it.
   bool check_moves = false;
   int move_samples = 16;  // per move, as the replay draws them (the last is the new stance)
+  // Dynamic model only: plans searched after the first, each refusing the moves that
+  // failed in MuJoCo (experiments/performed_plan).
+  int max_replans = 20;
 };
 
 struct Plan {
@@ -37,7 +43,12 @@ struct Plan {
   std::size_t moves_refused_on_the_way = 0;  // reached stances whose path did not hold
 };
 
+// Moves the search must not take: (a 3-configuration's code, encode(configuration,
+// hold_count), the hold taken from it, an index). The plans the dynamic model repairs
+// refuse the moves that failed in MuJoCo (experiments/performed_plan).
+using RefusedMoves = std::set<std::pair<std::uint64_t, int>>;
+
 Plan shortest_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
-                   const PlanParameters& search = {});
+                   const PlanParameters& search = {}, const RefusedMoves& refused = {});
 
 }  // namespace crux

@@ -21,9 +21,10 @@ namespace {
 // Everything a crux command writes into an output folder but a long run's checkpoint,
 // which stays until the folder is complete: a kill while the folder is written leaves
 // it to resume from.
-constexpr const char* kOutputNames[] = {"config.toml", "summary.json",     "runs",         "walls",
-                                        "figures",     "iterations.csv",   "episodes.csv", "q_grid.bin",
-                                        "climb.csv",   "greedy_climb.csv", "wall.json",    kIncompleteMarker};
+constexpr const char* kOutputNames[] = {"config.toml",    "summary.json",     "runs",           "walls",
+                                        "figures",        "iterations.csv",   "episodes.csv",   "q_grid.bin",
+                                        "climb.csv",      "greedy_climb.csv", "wall.json",      "perform.json",
+                                        "trajectory.csv", "climber.xml",      kIncompleteMarker};
 constexpr const char* kCheckpointOnly[] = {kCheckpointFile};
 
 // Complete, then without a checkpoint: a kill between the two resumes from it again.
@@ -194,6 +195,18 @@ void write_run_folder(const fs::path& directory, const ExperimentResult& result,
   write_file_atomically(directory / "config.toml", config_toml);
   save_wall((directory / "wall.json").string(), result.walls.front().wall);
   write_file_atomically(directory / "summary.json", summary.dump(2) + "\n");
+  finish_output_folder(directory);
+}
+
+void write_perform_folder(const fs::path& directory, const std::string& config_toml, const Wall& wall,
+                          const nlohmann::ordered_json& record, const std::string& trajectory_csv,
+                          const std::string& mjcf) {
+  begin_output_folder(directory);
+  write_file_atomically(directory / "config.toml", config_toml);
+  save_wall((directory / "wall.json").string(), wall);
+  write_file_atomically(directory / "perform.json", record.dump(2) + "\n");
+  write_file_atomically(directory / "trajectory.csv", trajectory_csv);
+  if (!mjcf.empty()) write_file_atomically(directory / "climber.xml", mjcf);
   finish_output_folder(directory);
 }
 

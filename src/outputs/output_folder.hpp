@@ -69,4 +69,11 @@ void write_run_folder(const std::filesystem::path& directory, const ExperimentRe
                       const GridParameters& grid, const std::string& config_toml,
                       const nlohmann::ordered_json& summary);
 
+// A `crux perform` folder: config.toml, wall.json, perform.json (the climb performed and
+// its moves), trajectory.csv (outputs/trajectory_csv) and climber.xml (the MJCF it was
+// performed in; empty when no plan was found, and then not written).
+void write_perform_folder(const std::filesystem::path& directory, const std::string& config_toml, const Wall& wall,
+                          const nlohmann::ordered_json& record, const std::string& trajectory_csv,
+                          const std::string& mjcf);
+
 }  // namespace crux

@@ -25,7 +25,7 @@ ExperimentConfig read_run_config(const std::filesystem::path& path) {
   std::erase_if(config.given, is_wall_generator_key);
   // Folders written before config.toml recorded the static model's ik.wall as what ran
   // recorded the ignore they were given; they ran with avoid, as finalize_config now sets.
-  if (config.settings.learning.climbing.physics.model == PhysicsModel::Static) config.given.erase("ik.wall");
+  if (checks_stances(config.settings.learning.climbing.physics.model)) config.given.erase("ik.wall");
   try {
     finalize_config(config);
   } catch (const InputError& e) {

@@ -7,13 +7,18 @@
 
 namespace crux {
 
-// kinematic: the paper's, IK alone decides; static: each stance must also hold still.
-enum class PhysicsModel { Kinematic, Static };
+// kinematic: the paper's, IK alone decides; static: each stance must also hold still;
+// dynamic: the static model's stances, and each move of a plan performed in MuJoCo
+// (crux plan and crux perform only: experiments/performed_plan).
+enum class PhysicsModel { Kinematic, Static, Dynamic };
 template <>
 struct EnumNames<PhysicsModel> {
-  static constexpr std::array<EnumName<PhysicsModel>, 2> entries{
-      {{PhysicsModel::Kinematic, "kinematic"}, {PhysicsModel::Static, "static"}}};
+  static constexpr std::array<EnumName<PhysicsModel>, 3> entries{
+      {{PhysicsModel::Kinematic, "kinematic"}, {PhysicsModel::Static, "static"}, {PhysicsModel::Dynamic, "dynamic"}}};
 };
+
+// Whether each stance must hold still (the static and dynamic models).
+inline bool checks_stances(PhysicsModel model) { return model != PhysicsModel::Kinematic; }
 
 struct PhysicsParameters {
   PhysicsModel model = PhysicsModel::Kinematic;  // the paper's, and the default

@@ -70,10 +70,14 @@ Posture simulated_posture(const MujocoLayout& layout, const mjData_* data) {
   return g;
 }
 
-double root_turn(const MujocoLayout& layout, const mjData_* data) {
+Eigen::Quaterniond root_orientation(const MujocoLayout& layout, const mjData_* data) {
   const double* q = data->qpos + layout.root_qpos + 3;
-  const Eigen::Quaterniond now(q[0], q[1], q[2], q[3]);
-  return now.angularDistance(Eigen::Quaterniond(layout.to_world));
+  const Eigen::Quaterniond world(q[0], q[1], q[2], q[3]);
+  return Eigen::Quaterniond(layout.to_world).conjugate() * world;
+}
+
+double root_turn(const MujocoLayout& layout, const mjData_* data) {
+  return root_orientation(layout, data).angularDistance(Eigen::Quaterniond::Identity());
 }
 
 Eigen::Vector3d simulated_grasp_point(const MujocoLayout& layout, const mjData_* data, Limb limb) {

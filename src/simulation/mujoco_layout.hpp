@@ -7,6 +7,7 @@
 #include <array>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "body/body_model.hpp"
 
@@ -36,6 +37,10 @@ void place_at_rest(const MujocoLayout& layout, const mjModel_* mujoco, mjData_* 
 // The simulated posture in crux's coordinates: the root's position in wall coordinates and
 // the joint angles (the root's rotation, which crux's model does not have, aside).
 Posture simulated_posture(const MujocoLayout& layout, const mjData_* data);
+
+// The root's rotation from its orientation on the wall, in wall coordinates (the identity
+// while it has not turned).
+Eigen::Quaterniond root_orientation(const MujocoLayout& layout, const mjData_* data);
 
 // The angle, radians, by which the root has turned from its orientation on the wall.
 double root_turn(const MujocoLayout& layout, const mjData_* data);

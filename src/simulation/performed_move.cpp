@@ -64,9 +64,10 @@ class PathReference {
 
 class MoveSimulation {
  public:
-  MoveSimulation(SimulatedClimber& climber, const MoveParameters& parameters)
+  MoveSimulation(SimulatedClimber& climber, const MoveParameters& parameters, TrajectoryRecorder* recorder)
       : climber_(climber),
         parameters_(parameters),
+        recorder_(recorder),
         wall_push_limit_(parameters.wall_push_share * climber.body().total_mass * kStandardGravity.norm()) {}
 
   // `moving`: the free limb goes to reference.hold; otherwise the body holds still on
@@ -140,6 +141,7 @@ class MoveSimulation {
  private:
   SimulatedClimber& climber_;
   const MoveParameters& parameters_;
+  TrajectoryRecorder* recorder_;
   double wall_push_limit_;
   HoldConfiguration held_;
   std::array<PointContact, kLimbCount> contacts_;  // of held_'s hands, judged each step
@@ -154,26 +156,6 @@ class MoveSimulation {
         contacts_[limb] = held_contact(climber_.wall(), held.holds[limb], static_cast<Limb>(limb), climber_.physics());
       }
     }
-  }
-
-  // The force the hold exerts on `limb`, world coordinates (zero when it holds nothing).
-  Eigen::Vector3d hold_force(Limb limb) const {
-    const mjModel* model = climber_.model();
-    const mjData* data = climber_.data();
-    if (is_hand(limb)) return climber_.grasp(limb).force(model, data);
-    Eigen::Vector3d total = Eigen::Vector3d::Zero();
-    for (int c = 0; c < data->ncon; ++c) {
-      const mjContact& contact = data->contact[c];
-      const int body = climber_.layout().limb_body[static_cast<int>(limb)];
-      if (model->geom_bodyid[contact.geom1] != body && model->geom_bodyid[contact.geom2] != body) continue;
-      mjtNum local[6];
-      mj_contactForce(model, data, c, local);
-      // The contact frame's rows are its normal and tangents; the force acts on geom2.
-      const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> frame(contact.frame);
-      const Eigen::Vector3d on_geom2 = frame.transpose() * Eigen::Vector3d(local[0], local[1], local[2]);
-      total += model->geom_bodyid[contact.geom2] == body ? on_geom2 : Eigen::Vector3d(-on_geom2);
-    }
-    return total;
   }
 
   // As the IK's termination test: the limb's grasp sphere meets the hold's sphere.
@@ -194,9 +176,9 @@ class MoveSimulation {
     ReferencePoint point;
     point.angle = simulated_posture(climber_.layout(), data);
     point.rate.setZero();
-    for (double t = 0.0;
-         outcome.failure == MoveFailure::None && t < 2.0 * parameters_.unweight_time_s &&
-         (t < parameters_.unweight_time_s || hold_force(reference.limb).norm() > parameters_.grasp_tolerance_n);
+    for (double t = 0.0; outcome.failure == MoveFailure::None && t < 2.0 * parameters_.unweight_time_s &&
+                         (t < parameters_.unweight_time_s ||
+                          climber_.hold_force(reference.limb).norm() > parameters_.grasp_tolerance_n);
          t = data->time - start) {
       const double s = smoothstep(std::min(1.0, t / parameters_.unweight_time_s));
       point.feed_forward = (1.0 - s) * reference.loaded_feed_forward + s * reference.unloaded_feed_forward;
@@ -218,6 +200,7 @@ class MoveSimulation {
     const int bad_accelerations = data->warning[mjWARN_BADQACC].number;
     mj_step(climber_.model(), data);
     ++outcome.steps;
+    if (recorder_ != nullptr) recorder_->record(climber_);
     if (data->warning[mjWARN_BADQACC].number != bad_accelerations) return MoveFailure::Unstable;
     if (measure(outcome)) ++saturated_steps_;
     const MoveFailure failure = failure_on_holds();
@@ -325,14 +308,16 @@ class MoveSimulation {
 
 }  // namespace
 
-MoveOutcome perform_move(SimulatedClimber& climber, const MoveReference& reference, const MoveParameters& parameters) {
-  MoveSimulation simulation(climber, parameters);
+MoveOutcome perform_move(SimulatedClimber& climber, const MoveReference& reference, const MoveParameters& parameters,
+                         TrajectoryRecorder* recorder) {
+  MoveSimulation simulation(climber, parameters, recorder);
   return simulation.run(reference, true, parameters.settle_time_s);
 }
 
 MoveOutcome hold_still(SimulatedClimber& climber, const Posture& posture, const HoldConfiguration& holds,
-                       const GeneralisedForce& feed_forward, double seconds, const MoveParameters& parameters) {
-  MoveSimulation simulation(climber, parameters);
+                       const GeneralisedForce& feed_forward, double seconds, const MoveParameters& parameters,
+                       TrajectoryRecorder* recorder) {
+  MoveSimulation simulation(climber, parameters, recorder);
   MoveReference reference;
   reference.kept = holds;
   reference.samples = {posture};

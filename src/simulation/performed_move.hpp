@@ -10,6 +10,7 @@
 
 #include "body/gravity_forces.hpp"
 #include "common/enum_names.hpp"
+#include "simulation/climb_trajectory.hpp"
 #include "simulation/simulated_climber.hpp"
 
 namespace crux {
@@ -93,12 +94,15 @@ struct MoveOutcome {
 };
 
 // Performs `reference` from the climber's present state: the limb's hold unweighted, the
-// path followed, the new hold taken where the limb comes to rest on it.
-MoveOutcome perform_move(SimulatedClimber& climber, const MoveReference& reference, const MoveParameters& parameters);
+// path followed, the new hold taken where the limb comes to rest on it. `recorder`, when
+// given, samples each step.
+MoveOutcome perform_move(SimulatedClimber& climber, const MoveReference& reference, const MoveParameters& parameters,
+                         TrajectoryRecorder* recorder = nullptr);
 
 // Holds the climber still on `holds` with `feed_forward` towards `posture`, for at most
 // `seconds`: the outcome of a move that goes nowhere (the start settling, a stance's test).
 MoveOutcome hold_still(SimulatedClimber& climber, const Posture& posture, const HoldConfiguration& holds,
-                       const GeneralisedForce& feed_forward, double seconds, const MoveParameters& parameters);
+                       const GeneralisedForce& feed_forward, double seconds, const MoveParameters& parameters,
+                       TrajectoryRecorder* recorder = nullptr);
 
 }  // namespace crux

@@ -57,6 +57,24 @@ void SimulatedClimber::release(Limb limb) {
   }
 }
 
+Eigen::Vector3d SimulatedClimber::hold_force(Limb limb) const {
+  const mjModel* model = mujoco_.get();
+  if (is_hand(limb)) return grasp(limb).force(model, data_);
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  const int body = layout_.limb_body[static_cast<int>(limb)];
+  for (int c = 0; c < data_->ncon; ++c) {
+    const mjContact& contact = data_->contact[c];
+    if (model->geom_bodyid[contact.geom1] != body && model->geom_bodyid[contact.geom2] != body) continue;
+    mjtNum local[6];
+    mj_contactForce(model, data_, c, local);
+    // The contact frame's rows are its normal and tangents; the force acts on geom2.
+    const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> frame(contact.frame);
+    const Eigen::Vector3d on_geom2 = frame.transpose() * Eigen::Vector3d(local[0], local[1], local[2]);
+    total += model->geom_bodyid[contact.geom2] == body ? on_geom2 : Eigen::Vector3d(-on_geom2);
+  }
+  return total;
+}
+
 void SimulatedClimber::place(const Posture& posture, const HoldConfiguration& holds) {
   place_at_rest(layout_, mujoco_.get(), data_, posture);
   for (int limb = 0; limb < kLimbCount; ++limb) {

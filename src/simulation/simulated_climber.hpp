@@ -49,6 +49,9 @@ class SimulatedClimber {
   // The limb takes hold `hold` where its grasp point is now: a hand's grasp, a foot's footing.
   void take(Limb limb, int hold);
   void release(Limb limb);
+  // The force its hold exerts on `limb`, MuJoCo's world coordinates: a hand's grasp, a
+  // foot's contacts (zero when it holds nothing).
+  Eigen::Vector3d hold_force(Limb limb) const;
   int wall_geom() const { return wall_geom_; }
 
  private:

@@ -71,7 +71,8 @@ TEST(Cli, BadPhysicsParametersAreOneLineNamingTheFlag) {
   const struct {
     std::string flags, message;
   } cases[] = {
-      {"--physics-model dynamic", "crux: --physics-model: unknown model 'dynamic' (expected kinematic or static)"},
+      {"--physics-model quantum",
+       "crux: --physics-model: unknown model 'quantum' (expected kinematic, static or dynamic)"},
       {"--physics-friction -0.5",
        "crux: --physics-friction: must be in [0, 10] (ten times rubber on rock; the equilibrium program stays "
        "well conditioned)"},
@@ -87,7 +88,7 @@ TEST(Cli, BadPhysicsParametersAreOneLineNamingTheFlag) {
        "crux: --reward-height: must be in [0, 1000000000] (a run's sums of rewards must stay finite)"},
       {"--ik-guess last", "crux: --ik-guess: unknown guess 'last' (expected previous or standing)"},
       {"--plan-check-moves true",
-       "crux: --plan-check-moves: needs physics.model = static: the kinematic model checks no stance"},
+       "crux: --plan-check-moves: needs physics.model = static or dynamic: the kinematic model checks no stance"},
   };
   for (const auto& c : cases) {
     std::vector<std::string> commands;

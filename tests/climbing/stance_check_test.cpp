@@ -252,10 +252,10 @@ TEST(StanceCheck, ABodyWithoutStatureIsRefusedNamingItsFile) {
 }
 
 TEST(StanceCheck, PhysicsModelNamesRoundTrip) {
-  for (const PhysicsModel model : {PhysicsModel::Kinematic, PhysicsModel::Static}) {
+  for (const PhysicsModel model : {PhysicsModel::Kinematic, PhysicsModel::Static, PhysicsModel::Dynamic}) {
     EXPECT_EQ(parse_enum<PhysicsModel>(enum_name(model)), model);
   }
-  EXPECT_FALSE(parse_enum<PhysicsModel>("dynamic").has_value());
+  EXPECT_FALSE(parse_enum<PhysicsModel>("quantum").has_value());
 }
 
 }  // namespace

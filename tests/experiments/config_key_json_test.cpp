@@ -46,7 +46,7 @@ TEST(ConfigKeyJson, AChoiceGivesItsNameAndTheChoices) {
   const auto json = declared(ExperimentConfig{}, "physics.model");
   EXPECT_EQ(json["type"], "choice");
   EXPECT_EQ(json["value"], "kinematic");
-  EXPECT_EQ(json["choices"], "kinematic or static");
+  EXPECT_EQ(json["choices"], "kinematic, static or dynamic");
 }
 
 }  // namespace

@@ -419,8 +419,8 @@ TEST(ExperimentConfig, ConfigToTomlWritesAListInPlaceOfItsValue) {
 namespace crux {
 namespace {
 
-const ParameterSet kEveryKeyAndOutput{{"experiment", "learning", "reward", "ik", "physics", "compare", "stances",
-                                       "filter", "grid", "wall", "training_wall", "output"},
+const ParameterSet kEveryKeyAndOutput{{"experiment", "learning", "reward", "ik", "physics", "perform", "compare",
+                                       "stances", "filter", "grid", "wall", "training_wall", "output"},
                                       {}};
 
 // A number's field set to `value`, whatever its type.

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "configurations/reachability.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
@@ -92,6 +93,25 @@ TEST(ShortestPlan, CheckingTheMovesOnTheWayRefusesSomeAndLengthensTheClimb) {
   EXPECT_TRUE(on_the_way.checked_moves);
   EXPECT_GT(on_the_way.moves_refused_on_the_way, 0u);
   EXPECT_GT(on_the_way.length, stances_only.length);
+}
+
+// The dynamic model's repair refuses a move that failed in MuJoCo: the search never takes
+// it again, and finds the next shortest climb without it.
+TEST(ShortestPlan, ARefusedMoveIsNeverTaken) {
+  const BodyModel& model = testing::human_model();
+  Wall wall = generate_random_wall(10);
+  wall.finish_height = 1.4;
+  ClimbingParameters parameters;
+  parameters.physics.model = PhysicsModel::Static;
+  parameters.reachability.ik.wall = WallRule::Avoid;
+  const Plan first = shortest_plan(model, wall, parameters);
+  ASSERT_TRUE(first.found);
+  const HoldConfiguration start = start_configuration(wall).with(Limb::RightHand, kFree);
+  const RefusedMoves refused{{encode(start, wall.hold_count()), wall.index_of(first.hold_ids[0])}};
+  const Plan again = shortest_plan(model, wall, parameters, {}, refused);
+  ASSERT_TRUE(again.found);
+  EXPECT_NE(again.hold_ids[0], first.hold_ids[0]) << "the right hand's first move from the start was refused";
+  EXPECT_GE(again.length, first.length);
 }
 
 }  // namespace

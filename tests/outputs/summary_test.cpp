@@ -18,7 +18,7 @@ ExperimentParameters small_settings() {
 }
 
 // A hand-made run: 6 iterations in two episodes (3 and 3), one w-greedy success.
-RunResult hand_made_run() {
+RunResult hand_made_summary_run() {
   RunResult run;
   for (int i = 0; i < 6; ++i) {
     IterationRecord r;
@@ -82,7 +82,8 @@ TEST(Summary, ARunHasTheExperimentsShapeForItsOneCondition) {
   settings.analysis.beginning = 3;
   Provenance provenance;
   provenance.wall_seed = 5;
-  const ExperimentResult run = single_run_result(hand_made_run(), generate_random_wall(5), 5, 11, Condition::Transfer);
+  const ExperimentResult run =
+      single_run_result(hand_made_summary_run(), generate_random_wall(5), 5, 11, Condition::Transfer);
   const auto summary = summary_json(run, nullptr, settings, provenance);
   EXPECT_EQ(summary["kind"], "run");
   EXPECT_EQ(summary["runs_per_condition"], 1);
@@ -115,7 +116,7 @@ TEST(Summary, AWallFromAFileHasNoSeed) {
   Provenance provenance;
   provenance.wall_file = "/walls/w.json";
   const ExperimentResult run =
-      single_run_result(hand_made_run(), generate_random_wall(5), std::nullopt, 11, Condition::Training);
+      single_run_result(hand_made_summary_run(), generate_random_wall(5), std::nullopt, 11, Condition::Training);
   const auto summary = summary_json(run, nullptr, ExperimentParameters{}, provenance);
   EXPECT_TRUE(summary["walls"][0]["seed"].is_null());
   EXPECT_TRUE(summary["run_facts"]["training"][0]["wall_seed"].is_null());

@@ -5,38 +5,19 @@
 #include "body/kinematics.hpp"
 #include "body/wall_penetration.hpp"
 #include "climbing/stance_check.hpp"
-#include "support/test_models.hpp"
-#include "support/test_walls.hpp"
+#include "support/jug_ladder.hpp"
 
 namespace crux {
 namespace {
 
-struct Ladder {
-  Wall wall = testing::wall_with_holds({{-0.25, 1.75}, {0.25, 1.75}, {-0.15, 0.45}, {0.15, 0.45}, {-0.25, 1.95}});
-  ReachabilityParameters reach;
-  PhysicsParameters physics;
-  Posture start, reached;
-  HoldConfiguration before;
-
-  Ladder() {
-    const BodyModel& model = testing::human_model();
-    reach.ik.wall = WallRule::Avoid;
-    physics.model = PhysicsModel::Static;
-    BodyData data(model);
-    start = solve_start(model, data, wall, reach).posture;
-    before = start_configuration(wall).with(Limb::RightHand, kFree);
-    reached =
-        solve_ik(model, data, start, reach_target(model, wall, before.with(Limb::RightHand, 4), reach.root), reach.ik)
-            .posture;
-  }
-};
+using testing::JugLadder;
 
 // The path ends on the planned stance; on the way the kept limbs stay on their holds, the
 // free hand comes off the wall by the lift at mid-path, and no segment passes through the
 // wall; the feed-forward holds each sample on the kept holds as the static model does.
 TEST(MoveReferences, ThePathLiftsTheFreeLimbOffTheWallAndKeepsTheOthersOnTheirHolds) {
   const BodyModel& model = testing::human_model();
-  const Ladder ladder;
+  const JugLadder ladder;
   MoveReferences references(model, ladder.wall, ladder.physics, ladder.reach, 16, 0.5, 0.1);
   const MoveReference move = references.move(ladder.start, ladder.reached, ladder.before, 0, 4);
   EXPECT_EQ(move.limb, Limb::RightHand);

@@ -1,0 +1,101 @@
+// crux perform, and crux plan under the dynamic model, end to end.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "support/jug_ladder.hpp"
+#include "support/repository_docs.hpp"
+#include "support/run_crux.hpp"
+#include "wall/wall_file.hpp"
+
+namespace crux {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run_crux;
+
+fs::path perform_scratch(const std::string& name) {
+  const fs::path dir = testing::test_folder() / "perform-cli";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+std::string performed_file_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// The jug ladder, climbed by the right hand's one move, as a wall file.
+std::string ladder_file() {
+  static const fs::path file = [] {
+    testing::JugLadder ladder;
+    ladder.finish_after_one_move();
+    const fs::path path = perform_scratch("jug_ladder.json");
+    save_wall(path.string(), ladder.wall);
+    return path;
+  }();
+  return file.string();
+}
+
+// The folder holds the climb, --json prints the documented keys, and the folder's
+// config.toml performs the same climb to the same bytes.
+TEST(CliPerform, TheClimbsFolderReplaysToTheSameBytesFromItsConfig) {
+  const fs::path first = perform_scratch("first");
+  const auto outcome = run_crux("perform --wall-file " + ladder_file() + " --json -o " + first.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const auto json = nlohmann::ordered_json::parse(outcome.out);
+  std::vector<std::string> printed;
+  for (const auto& [key, value] : json.items()) printed.push_back(key);
+  EXPECT_EQ(printed, testing::documented_keys(testing::repository_file("docs/OUTPUTS.md"), "## `crux perform`"));
+  EXPECT_TRUE(json["reached_top"]) << outcome.out;
+  EXPECT_EQ(json["physics_model"], "static");
+  EXPECT_EQ(json["moves_performed"], 1);
+  EXPECT_TRUE(json["cause"].is_null());
+  EXPECT_GT(json["wall_s"].get<double>(), 0.0);
+  const fs::path second = perform_scratch("second");
+  const auto replay = run_crux("perform --config " + (first / "config.toml").string() + " -o " + second.string());
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  for (const char* file : {"config.toml", "wall.json", "perform.json", "trajectory.csv", "climber.xml"}) {
+    EXPECT_EQ(performed_file_text(first / file), performed_file_text(second / file)) << file;
+  }
+}
+
+TEST(CliPerform, PlanUnderTheDynamicModelAnswersWithAClimbPerformed) {
+  const auto outcome = run_crux("plan --physics-model dynamic --json --wall-file " + ladder_file());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const auto json = nlohmann::ordered_json::parse(outcome.out);
+  EXPECT_EQ(json["physics_model"], "dynamic");
+  EXPECT_EQ(json["length"], 1);
+  EXPECT_EQ(json["replans"], 0);
+  EXPECT_EQ(json["moves_simulated"], 1);
+  EXPECT_TRUE(json["reached_top"]);
+  EXPECT_TRUE(json.contains("wall_s"));
+}
+
+TEST(CliPerform, BadInputIsOneLineAndExitCode2AndWritesNoFolder) {
+  const fs::path folder = perform_scratch("refused");
+  const std::string wall = " --wall-file " + ladder_file() + " -o " + folder.string();
+  for (const std::string& arguments :
+       {"perform" + wall + " --perform-joint-speed nan", "perform" + wall + " --perform-settle-time -1",
+        "perform" + wall + " --physics-grip 1",  // the start does not hold
+        "perform" + wall + " --physics-model quantum",
+        "perform -o " + folder.string(),  // no wall
+        "perform --wall-file /nonexistent/wall.json -o " + folder.string(), "train" + wall + " --physics-model dynamic",
+        std::string("stances --physics-model dynamic")}) {
+    const auto outcome = run_crux(arguments);
+    EXPECT_EQ(outcome.exit_code, 2) << arguments << "\n" << outcome.err;
+    EXPECT_EQ(testing::count_lines(outcome.err), 1) << arguments << "\n" << outcome.err;
+    EXPECT_FALSE(fs::exists(folder)) << arguments;
+  }
+  const auto dynamic = run_crux("train" + wall + " --physics-model dynamic");
+  EXPECT_NE(dynamic.err.find("dynamic is not taken by crux train"), std::string::npos) << dynamic.err;
+}
+
+}  // namespace
+}  // namespace crux
