@@ -158,7 +158,7 @@ struct PerformCommand {
   void run() {
     require_output(output);
     ExperimentConfig config = binding.resolve();
-    require_wall(config);
+    if (config.run.empty()) require_wall(config);
     PerformJob job{std::move(config), binding.config_path(), output, overwrite, {}};
     const PerformJobOutcome outcome = run_with_flags(binding, [&] {
       return run_perform_job(std::move(job), {"crux perform", {}, {}, {}});

@@ -207,6 +207,17 @@ void experiment_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
           {"experiment.checkpoint_every",
            "Iterations between checkpoints of a run (0: none); the same command started again resumes from the last",
            &c.checkpoint_every, "", closed_range(0, kMaxIterations, "an iteration of the run")},
+          {"experiment.run",
+           "crux perform: a run folder (of crux train or transfer, or runs/<condition>_<i> of crux paper's) whose "
+           "climb is performed, on the run's wall under the run's parameters, instead of a wall's plan",
+           &c.run,
+           "",
+           {},
+           true},
+          {"experiment.climb",
+           "crux perform --run: the run's climb to perform: greedy (the default: the learnt policy's climb when it "
+           "finishes, else the last), last (the last completed episode's) or an episode number N from 1",
+           &c.climb},
           {"experiment.q_grid",
            "Q_grid file (q_grid.bin of a training run) that transfer starts from",
            &c.q_grid,

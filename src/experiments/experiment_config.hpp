@@ -35,6 +35,11 @@ struct ExperimentConfig {
   std::string wall_file;
   std::optional<std::uint64_t> wall_seed;
   int checkpoint_every = 0;  // train, transfer: iterations between checkpoints (run_checkpoint.hpp)
+  // crux perform: a run folder whose climb (greedy, last or an episode N; empty: greedy)
+  // is performed instead of a wall's plan; empty: the plan. Unset, neither is written to
+  // config.toml.
+  std::string run;
+  std::string climb;
   // N walls with one seed each, the paper's design, when given: finalize_config turns it
   // into walls = N, seeds_per_wall = 1 and clears it.
   std::optional<int> runs;

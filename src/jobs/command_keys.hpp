@@ -21,8 +21,8 @@ inline const ParameterSet kTransferKeys{
 // The paper's experiment (crux paper): its walls are drawn from the experiment seed.
 inline const ParameterSet kPaperKeys{
     {"experiment", "learning", "reward", "ik", "physics", "filter", "grid", "wall", "training_wall"},
-    {"experiment.q_grid", "experiment.checkpoint_every", "experiment.plan_max_replans", "wall.file", "wall.seed",
-     "wall.name", "wall.count"}};
+    {"experiment.q_grid", "experiment.checkpoint_every", "experiment.plan_max_replans", "experiment.run",
+     "experiment.climb", "wall.file", "wall.seed", "wall.name", "wall.count"}};
 
 // An exact plan (crux plan), and a climb performed in MuJoCo (crux perform): under
 // physics.model = dynamic, the plan repaired by performing it.
@@ -30,7 +30,11 @@ inline const ParameterSet kPlanKeys{{"experiment.urdf", "experiment.plan_max_sol
                                      "experiment.plan_max_replans", "ik", "physics", "perform", "filter", "wall"},
                                     {"wall.name", "wall.count", "physics.fall_when_stuck"},
                                     true};
-inline const ParameterSet kPerformKeys = kPlanKeys;
+inline const ParameterSet kPerformKeys{
+    {"experiment.urdf", "experiment.plan_max_solves", "experiment.plan_check_moves", "experiment.plan_max_replans",
+     "experiment.run", "experiment.climb", "ik", "physics", "perform", "filter", "wall"},
+    {"wall.name", "wall.count", "physics.fall_when_stuck"},
+    true};
 
 // The IK's own keys (crux.solve_ik, crux.root_target); crux ik adds experiment.urdf,
 // the body that Python takes as a model object instead.

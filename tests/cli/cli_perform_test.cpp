@@ -12,6 +12,7 @@
 #include "support/jug_ladder.hpp"
 #include "support/repository_docs.hpp"
 #include "support/run_crux.hpp"
+#include "support/trained_run.hpp"
 #include "wall/wall_file.hpp"
 
 namespace crux {
@@ -95,6 +96,49 @@ TEST(CliPerform, BadInputIsOneLineAndExitCode2AndWritesNoFolder) {
   }
   const auto dynamic = run_crux("train" + wall + " --physics-model dynamic");
   EXPECT_NE(dynamic.err.find("dynamic is not taken by crux train"), std::string::npos) << dynamic.err;
+}
+
+// A learnt run's greedy climb, performed from its start on the run's wall under the run's
+// (kinematic) parameters; its folder replays from its config.toml.
+TEST(CliPerform, ARunsClimbIsPerformedUnderTheRunsParameters) {
+  const std::string run = testing::trained_run_folder().string();
+  const fs::path first = perform_scratch("run-first");
+  const auto outcome = run_crux("perform --run " + run + " --climb greedy --json -o " + first.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const auto json = nlohmann::ordered_json::parse(outcome.out);
+  EXPECT_EQ(json["physics_model"], "kinematic") << "the run's";
+  EXPECT_EQ(json["climb"], "the greedy policy's climb after learning");
+  EXPECT_GE(json["length"].get<int>(), 1);
+  // Every move until the first that failed; none when the start did not hold still.
+  const auto& failed = json["first_failed_move"];
+  const std::size_t attempted = !json["start"]["performed"] ? 0
+                                : failed.is_null()          ? json["length"].get<std::size_t>()
+                                                            : failed.get<std::size_t>() + 1;
+  EXPECT_EQ(json["moves"].size(), attempted) << outcome.out;
+  const fs::path second = perform_scratch("run-second");
+  ASSERT_EQ(run_crux("perform --config " + (first / "config.toml").string() + " -o " + second.string()).exit_code, 0);
+  EXPECT_EQ(performed_file_text(first / "perform.json"), performed_file_text(second / "perform.json"));
+  EXPECT_EQ(performed_file_text(first / "trajectory.csv"), performed_file_text(second / "trajectory.csv"));
+}
+
+TEST(CliPerform, ABadRunOrClimbIsOneLineAndExitCode2AndWritesNoFolder) {
+  const std::string run = testing::trained_run_folder().string();
+  const fs::path short_run = perform_scratch("short-run");
+  ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 3 -o " + short_run.string()).exit_code, 0);
+  const fs::path folder = perform_scratch("refused-run");
+  const std::string out = " -o " + folder.string();
+  for (const std::string& arguments : {"perform --run " + run + " --climb bogus" + out,
+                                       "perform --run " + run + " --climb 100000" + out,  // no such episode
+                                       "perform --run " + run + " --wall-seed 3" + out,
+                                       "perform --run " + run + " --physics-model static" + out,  // not the run's
+                                       "perform --run " + short_run.string() + out,  // a run without a climb
+                                       "perform --run " + perform_scratch("nothing").string() + out,
+                                       "perform --wall-file " + ladder_file() + " --climb last" + out}) {
+    const auto outcome = run_crux(arguments);
+    EXPECT_EQ(outcome.exit_code, 2) << arguments << "\n" << outcome.err;
+    EXPECT_EQ(testing::count_lines(outcome.err), 1) << arguments << "\n" << outcome.err;
+    EXPECT_FALSE(fs::exists(folder)) << arguments;
+  }
 }
 
 }  // namespace
