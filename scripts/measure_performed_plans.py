@@ -46,6 +46,7 @@ def main():
             continue
         planned += 1
         static_s += seconds
+        plan_s = seconds
         static_length = json.loads(out)["length"]
         code, out, err, seconds = run(
             options.crux,
@@ -68,7 +69,7 @@ def main():
         length = record["length"] if record["found"] else "-"
         print(f"{seed:4d}  {static_length:6d}  {'yes' if first_ok else 'no':>5}  "
               f"{'yes' if record['reached_top'] else 'no':>8}  {length!s:>6}  {record['replans']:7d}  "
-              f"{record['moves_simulated']:9d}  {static_s:8.1f}  {seconds:9.1f}  {','.join(wall_causes)}")
+              f"{record['moves_simulated']:9d}  {plan_s:8.1f}  {seconds:9.1f}  {','.join(wall_causes)}")
     print(f"\n{planned} walls with a static plan at {options.incline:g} degrees")
     if planned:
         print(f"first plan performed as planned: {performed_first} ({100 * performed_first / planned:.1f} %)")

@@ -3,7 +3,8 @@ learnt to walls it has never seen (Libeau, Micaelli, Sigaud), as a Python module
 
 The body, IK, walls, the climbing MDP with Gymnasium's step conventions (ClimbMdp; the
 Gymnasium environment itself is crux.gym.ClimbEnv), the
-paper's agent (run_learning) and experiment (run_experiment), and Q-tables as numpy
+paper's agent (run_learning) and experiment (run_experiment), a climb performed in MuJoCo
+(perform), and Q-tables as numpy
 arrays. Bad input raises ValueError with the CLI's error line; docs/PYTHON.md has the
 tour.
 """
@@ -26,6 +27,7 @@ from ._crux import (
     grid_state_space,
     hold_in_tile,
     passes_filter,
+    perform,
     place_grid,
     possible_actions,
     root_target,
@@ -53,6 +55,7 @@ __all__ = [
     "grid_state_space",
     "hold_in_tile",
     "passes_filter",
+    "perform",
     "place_grid",
     "possible_actions",
     "root_target",

@@ -15,6 +15,7 @@
 #include "jobs/command_keys.hpp"
 #include "jobs/learning_job.hpp"
 #include "jobs/paper_job.hpp"
+#include "jobs/perform_job.hpp"
 #include "python_config.hpp"
 
 namespace crux::python {
@@ -141,6 +142,40 @@ py::object run_experiment_py(const py::handle& config_handle, const py::handle& 
   return json_to_python(summary);
 }
 
+py::object perform_py(const py::handle& wall_handle, const py::handle& config_handle, const py::handle& output,
+                      bool overwrite) {
+  ExperimentConfig defaults;
+  defaults.settings.learning.climbing.physics.model = PhysicsModel::Static;  // crux perform's
+  PerformJob job{config_from_python(config_handle, kPerformKeys, "perform", defaults), {}, {}, false, {}};
+  ExperimentConfig& config = job.config;
+  if (!wall_handle.is_none()) {
+    if (!config.wall_file.empty() || config.wall_seed || !config.run.empty()) {
+      throw InputError("wall",
+                       "give the wall as wall, or as config's wall.file, wall.seed or experiment.run, not both");
+    }
+    for (const std::string& key : config.given) {
+      if (is_wall_generator_key(key)) {
+        throw InputError(key, "shapes a random wall, and the wall argument gives the wall itself: drop one of them");
+      }
+    }
+    job.wall = wall_handle.cast<Wall>();
+  } else if (config.wall_file.empty() && !config.wall_seed && config.run.empty()) {
+    throw InputError("wall", "give a wall (a Wall, or config's wall.file or wall.seed) or a run (experiment.run)");
+  }
+  if (config_is_file(config_handle)) job.config_path = path_from(config_handle);
+  job.output = output_from(output);
+  job.overwrite = overwrite;
+  InterruptGuard guard;
+  nlohmann::ordered_json record;
+  {
+    py::gil_scoped_release release;
+    PerformJobOutcome outcome = run_perform_job(std::move(job), {"crux.perform", {}, [&guard] { guard.poll(); }, {}});
+    record = std::move(outcome.record);
+    record["wall_s"] = outcome.wall_s;
+  }
+  return json_to_python(record);
+}
+
 }  // namespace
 
 namespace {
@@ -195,6 +230,12 @@ void bind_experiment(py::module_& m) {
         "transferred Q_grid (a QTable or a q_grid.bin path): crux train, or crux transfer. config takes their keys; "
         "seed overrides experiment.seed. Writes their run folder to `output` when given (with checkpoints when "
         "experiment.checkpoint_every is set, resuming from one found there).");
+  m.def("perform", &perform_py, py::arg("wall") = py::none(), py::arg("config") = py::none(),
+        py::arg("output") = py::none(), py::arg("overwrite") = false,
+        "A wall's exact plan (a Wall, or config's wall.file or wall.seed), or a run's climb (config's experiment.run "
+        "and experiment.climb), performed in MuJoCo from its start (crux perform; physics.model static by default, "
+        "dynamic repairs the plan): returns the record crux perform --json prints; writes its folder to `output` when "
+        "given.");
   m.def("run_experiment", &run_experiment_py, py::arg("config") = py::none(), py::arg("output") = py::none(),
         py::arg("overwrite") = false,
         "The paper's experiment (crux paper): returns summary.json's contents; writes crux paper's folder to "

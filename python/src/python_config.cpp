@@ -87,8 +87,9 @@ void assign(const ConfigField& field, const py::handle& value) {
 
 }  // namespace
 
-ExperimentConfig config_from_python(const py::handle& config, const ParameterSet& accepted, const std::string& caller) {
-  ExperimentConfig out;
+ExperimentConfig config_from_python(const py::handle& config, const ParameterSet& accepted, const std::string& caller,
+                                    const ExperimentConfig& defaults) {
+  ExperimentConfig out = defaults;
   if (config.is_none()) {
     // the defaults
   } else if (py::isinstance<py::str>(config) || py::isinstance(config, py::module_::import("os").attr("PathLike"))) {

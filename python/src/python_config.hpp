@@ -19,8 +19,8 @@ inline const ParameterSet kFilterKeys{{"filter"}, {}};
 inline const ParameterSet kClimbMdpKeys{{"experiment.urdf", "reward", "ik", "physics", "filter", "grid"}, {}};
 
 // `caller` names the Python function in errors: "ClimbMdp" gives "crux.ClimbMdp does
-// not take wall.seed".
+// not take wall.seed". `defaults`: the function's own defaults, which the config overrides.
 ExperimentConfig config_from_python(const pybind11::handle& config, const ParameterSet& accepted,
-                                    const std::string& caller);
+                                    const std::string& caller, const ExperimentConfig& defaults = {});
 
 }  // namespace crux::python

@@ -316,3 +316,26 @@ def test_config_keys_are_the_declarations_flags_and_files_use():
     # A bound declared there is the one a dict meets.
     with pytest.raises(ValueError, match=r"^ik.grasp_radius: must be in \(0, 100\]$"):
         crux.run_learning(config={"wall.seed": 3, "experiment.iterations": 5, "ik.grasp_radius": 0.0})
+
+
+def test_perform_equals_crux_perform(run_cli, tmp_path):
+    wall = ["--wall-seed", 10, "--wall-finish-height", 1.4]
+    code, out, err = run_cli("perform", *wall, "--json", "-o", tmp_path / "perform")
+    assert code == 0, err
+    cli = json.loads(out)
+    record = crux.perform(config={"wall.seed": 10, "wall.finish_height": 1.4})
+    assert record["wall_s"] > 0
+    for key in ("wall_s",):
+        del cli[key], record[key]
+    assert record == cli
+    assert record["physics_model"] == "static" and record["climb"] == "the wall's exact plan"
+    assert record["moves_performed"] == sum(move["performed"] for move in record["moves"])
+
+
+def test_perform_refuses_what_it_cannot_do():
+    with pytest.raises(ValueError, match="wall"):
+        crux.perform()
+    with pytest.raises(ValueError, match="experiment.climb"):
+        crux.perform(config={"wall.seed": 10, "experiment.climb": "last"})
+    with pytest.raises(ValueError, match="physics.model: dynamic is not taken by crux.run_learning"):
+        crux.run_learning(config={"wall.seed": 3, "physics.model": "dynamic", "experiment.iterations": 5})
