@@ -12,6 +12,7 @@ back (crux report, crux figures). A key that sizes the work is checked at its ma
 ValueError naming the key, or a finite run.
 """
 
+import atexit
 import concurrent.futures
 import csv
 import json
@@ -28,6 +29,21 @@ import pytest
 import crux
 
 WALL_FILE = pathlib.Path(__file__).resolve().parents[2] / "walls" / "home_12.json"
+# A wall that one move climbs, for crux perform's keys (tests/support/jug_ladder.hpp): feet
+# at knee height, hands above the shoulders, a jug 20 cm above the right hand. The finish
+# lies between the centres of mass of the right hand's two stances as the planner reaches
+# them, back on its hold (1.437 m) and on the jug (1.445 to 1.45 m), so that the exact
+# plan is the one move up to the jug; test_the_ladder_is_climbed_by_one_move checks it.
+LADDER = {
+    "format": "crux-wall", "version": 1, "name": "jug ladder", "finish_height": 1.444,
+    "start": {"right_hand": 1, "left_hand": 2, "right_foot": 3, "left_foot": 4},
+    "holds": [{"id": i + 1, "position": [0.0, y, z], "radius": 0.04}
+              for i, (y, z) in enumerate([(-0.25, 1.75), (0.25, 1.75), (-0.15, 0.45), (0.15, 0.45), (-0.25, 1.95)])],
+}
+LADDER_FOLDER = pathlib.Path(tempfile.mkdtemp(prefix="crux-key-walk-"))
+atexit.register(shutil.rmtree, LADDER_FOLDER, True)
+LADDER_FILE = LADDER_FOLDER / "jug_ladder.json"
+LADDER_FILE.write_text(json.dumps(LADDER))
 # Each command's small run (a second or less) and how its output folder is read back.
 # Plan gets a solve budget, since an exact plan can take seconds.
 COMMANDS = {
@@ -45,6 +61,7 @@ COMMANDS = {
     "stances": {"base": ["--wall-count", "1", "--stances-moves", "10"]},
     "ik-compare": {"base": ["--compare-queries", "5"]},
     "filter-stats": {"base": ["--wall-count", "1"]},
+    "perform": {"base": ["--wall-file", str(LADDER_FILE)], "output": True},
 }
 RUN_SECONDS = 60  # a small run's allowance; every one takes well under a second
 
@@ -71,10 +88,12 @@ def walked_keys(command, train_keys):
     learning's, the wall's and the physics' keys; paper (read back by figures) what train
     does not take (the experiment's design, the training walls) and the figures' keys
     (grid.*); plan, stances, ik-compare and filter-stats the keys of a stance, a plan and
-    a reaching query."""
+    a reaching query; perform the keys of a climb performed in MuJoCo."""
     keys = declared_keys(command)
     if command == "paper":
         return [k for k in keys if k["key"] not in train_keys or k["key"].startswith("grid.")]
+    if command == "perform":
+        return [k for k in keys if k["key"].startswith(("perform.", "experiment.plan_max_replans"))]
     if command in ("plan", "stances", "ik-compare", "filter-stats"):
         sections = ("ik.", "physics.", "filter.", "compare.", "stances.", "wall.count", "experiment.plan_max_solves")
         return [k for k in keys if k["key"].startswith(sections)]
@@ -337,3 +356,9 @@ def test_the_regression_tests_reliability_names_exist():
             suite, case = name.split(".")
             assert re.search(rf"TEST(_P|_F)?\({suite},\s*{case}\)", sources), name
     assert named >= 10
+
+
+def test_the_ladder_is_climbed_by_one_move():
+    code, out, err = run(["plan", "--wall-file", LADDER_FILE, "--physics-model", "static", "--json"])
+    assert code == 0, err
+    assert json.loads(out)["holds"] == [5], "the finish no longer lies between the two stances: see LADDER"
