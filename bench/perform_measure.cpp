@@ -3,6 +3,11 @@
 // simulated state the last one left, and each move performed alone from its planned
 // stance, so that one failure does not hide the moves after it.
 //   crux-perform-measure [last wall, 30] [incline, 0] [servo saturation angle, rad]
+// With `agreement` as the first argument, the static model's verdict against MuJoCo
+// instead: each stance of each wall's kinematic plan (solved with ik.wall = avoid, so that
+// no stance starts in the wall), on its four holds and on the three left when the next limb
+// lets go, held for 2 s in MuJoCo with its feed-forward; a confusion table of the two.
+//   crux-perform-measure agreement [last wall, 30] [incline, 0]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -12,6 +17,7 @@
 #include <vector>
 
 #include "body/urdf_loader.hpp"
+#include "climbing/stance_check.hpp"
 #include "common/input_error.hpp"
 #include "experiments/shortest_plan.hpp"
 #include "simulation/mjcf_model.hpp"
@@ -50,9 +56,70 @@ struct Tally {
   }
 };
 
+// Static verdict (holds, refused) x MuJoCo (held still for 2 s, not), and the causes of
+// the disagreements.
+int measure_agreement(int last_wall, double incline) {
+  const BodyModel model = load_body_model(default_body_model_path());
+  const StrengthProfile limits =
+      motor_limits(model, published_strength_profile(model, model.total_mass, model.stature));
+  ClimbingParameters kinematic;
+  kinematic.reachability.ik.wall = WallRule::Avoid;
+  PhysicsParameters physics;
+  physics.model = PhysicsModel::Static;
+  MoveParameters move;
+  move.grasp_radius = kinematic.reachability.ik.tolerances.grasp_radius;
+  std::map<std::pair<bool, bool>, int> table;
+  std::map<std::string, int> held_causes;
+  int walls = 0;
+  for (int seed = 1; seed <= last_wall; ++seed) {
+    Wall wall = generate_random_wall(seed);
+    wall.incline_deg = incline;
+    Plan plan;
+    try {
+      plan = shortest_plan(model, wall, kinematic);
+    } catch (const InputError&) {
+      continue;
+    }
+    if (!plan.found) continue;
+    ++walls;
+    StanceCheck check(model, wall, physics);
+    MoveReferences references(model, wall, physics, kinematic.reachability, 16);
+    SimulatedClimber climber(model, wall, physics, limits, plan.postures[0], ServoParameters{});
+    HoldConfiguration held = start_configuration(wall);
+    for (int k = 0; k <= plan.length; ++k) {
+      if (k > 0) held = held.with(plan.limbs[k - 1], wall.index_of(plan.hold_ids[k - 1]));
+      const Limb next = k < plan.length ? plan.limbs[k] : next_free_limb(plan.limbs[k - 1]);
+      for (const HoldConfiguration& holds : {held, held.with(next, kFree)}) {
+        const Posture& posture = plan.postures[k];
+        const bool holds_statically = check.solve(posture, holds).feasible;
+        climber.place(posture, holds);
+        const MoveOutcome outcome =
+            hold_still(climber, posture, holds, references.holding(posture, holds).torques, 2.0, move);
+        ++table[{holds_statically, outcome.performed()}];
+        if (holds_statically != outcome.performed()) {
+          ++held_causes[(holds_statically ? "static holds, MuJoCo: " : "static refuses, MuJoCo holds still: ") +
+                        std::string(enum_name(outcome.failure))];
+        }
+      }
+    }
+    std::printf("wall %d: %d stances\n", seed, plan.length + 1);
+  }
+  std::printf("\n%d walls with a kinematic plan (ik.wall = avoid) at %.0f degrees; each stance on 4 and on 3 holds, "
+              "held for 2 s\n",
+              walls, incline);
+  std::printf("                 MuJoCo holds still   does not\n");
+  std::printf("static holds     %18d   %8d\n", table[{true, true}], table[{true, false}]);
+  std::printf("static refuses   %18d   %8d\n", table[{false, true}], table[{false, false}]);
+  for (const auto& [cause, count] : held_causes) std::printf("  %s: %d\n", cause.c_str(), count);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "agreement") {
+    return measure_agreement(argc > 2 ? std::atoi(argv[2]) : 30, argc > 3 ? std::atof(argv[3]) : 0.0);
+  }
   const int last_wall = argc > 1 ? std::atoi(argv[1]) : 30;
   const double incline = argc > 2 ? std::atof(argv[2]) : 0.0;
   ServoParameters servo;
