@@ -34,17 +34,33 @@ struct Tally {
   std::map<std::string, int> causes;
   std::map<std::string, std::vector<double>> turns;  // each move's largest root turn, rad, by cause
   double simulated_s = 0.0, max_torque_ratio = 0.0;
+  std::vector<double> grasp_errors, joint_errors;  // of the performed moves, at their end
   void add(const MoveOutcome& outcome) {
     ++moves;
     performed += outcome.performed() ? 1 : 0;
     ++causes[std::string(enum_name(outcome.failure))];
     turns[std::string(enum_name(outcome.failure))].push_back(outcome.max_root_turn_rad);
     simulated_s += outcome.seconds;
-    if (outcome.performed()) max_torque_ratio = std::max(max_torque_ratio, outcome.max_torque_ratio);
+    if (outcome.performed()) {
+      max_torque_ratio = std::max(max_torque_ratio, outcome.max_torque_ratio);
+      grasp_errors.push_back(outcome.grasp_error_m);
+      joint_errors.push_back(outcome.joint_error_rad);
+    }
+  }
+  static double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+  }
+  static double largest(const std::vector<double>& values) {
+    return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
   }
   void print(const char* title) const {
     std::printf("%s: %d of %d moves performed (%.1f %%); largest torque ratio of a performed move %.2f\n", title,
                 performed, moves, 100.0 * performed / std::max(moves, 1), max_torque_ratio);
+    std::printf("  tracking at a performed move's end: grasp point to hold median %.3f m (largest %.3f), largest joint "
+                "error median %.3f rad (largest %.3f)\n",
+                median(grasp_errors), largest(grasp_errors), median(joint_errors), largest(joint_errors));
     for (const auto& [cause, count] : causes) {
       std::vector<double> turn = turns.at(cause);
       std::nth_element(turn.begin(), turn.begin() + turn.size() / 2, turn.end());

@@ -8,7 +8,7 @@ against the static plan's, the replans, the moves simulated, the causes of the f
 moves, and the wall-clock cost of each.
 
     scripts/measure_performed_plans.py [--crux build/release/crux] [--walls 1:30]
-        [--incline 0] [--max-replans 20]
+        [--incline 0] [--max-replans 20] [--check-moves]
 """
 
 import argparse
@@ -31,9 +31,13 @@ def main():
     parser.add_argument("--walls", default="1:30", help="first:last wall seed")
     parser.add_argument("--incline", type=float, default=0.0)
     parser.add_argument("--max-replans", type=int, default=20)
+    parser.add_argument("--check-moves", action="store_true",
+                        help="both plans with experiment.plan_check_moves: each move's IK path must hold still too")
     options = parser.parse_args()
     first, last = map(int, options.walls.split(":"))
     wall_flags = ["--wall-incline", str(options.incline)]
+    if options.check_moves:
+        wall_flags += ["--plan-check-moves", "true"]
     planned = performed_first = repaired = 0
     causes = collections.Counter()
     extra_moves, replans, static_s, dynamic_s = [], [], 0.0, 0.0
