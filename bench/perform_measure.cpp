@@ -58,13 +58,12 @@ struct Tally {
   void print(const char* title) const {
     std::printf("%s: %d of %d moves performed (%.1f %%); largest torque ratio of a performed move %.2f\n", title,
                 performed, moves, 100.0 * performed / std::max(moves, 1), max_torque_ratio);
-    std::printf("  tracking at a performed move's end: grasp point to hold median %.3f m (largest %.3f), largest joint "
-                "error median %.3f rad (largest %.3f)\n",
-                median(grasp_errors), largest(grasp_errors), median(joint_errors), largest(joint_errors));
+    std::printf(
+        "  tracking at a performed move's end: grasp point to hold median %.3f m (largest %.3f), largest joint "
+        "error median %.3f rad (largest %.3f)\n",
+        median(grasp_errors), largest(grasp_errors), median(joint_errors), largest(joint_errors));
     for (const auto& [cause, count] : causes) {
-      std::vector<double> turn = turns.at(cause);
-      std::nth_element(turn.begin(), turn.begin() + turn.size() / 2, turn.end());
-      std::printf("  %-18s %d (median root turn %.3f rad)\n", cause.c_str(), count, turn[turn.size() / 2]);
+      std::printf("  %-18s %d (median root turn %.3f rad)\n", cause.c_str(), count, median(turns.at(cause)));
     }
     for (const auto& [cause, count] : unsettled) {
       std::printf("  a planned stance did not hold still (%s): %d\n", cause.c_str(), count);
@@ -104,7 +103,7 @@ int measure_agreement(int last_wall, double incline) {
     HoldConfiguration held = start_configuration(wall);
     for (int k = 0; k <= plan.length; ++k) {
       if (k > 0) held = held.with(plan.limbs[k - 1], wall.index_of(plan.hold_ids[k - 1]));
-      const Limb next = k < plan.length ? plan.limbs[k] : next_free_limb(plan.limbs[k - 1]);
+      const Limb next = k < plan.length ? plan.limbs[k] : k > 0 ? next_free_limb(plan.limbs[k - 1]) : Limb::RightHand;
       for (const HoldConfiguration& holds : {held, held.with(next, kFree)}) {
         const Posture& posture = plan.postures[k];
         const bool holds_statically = check.solve(posture, holds).feasible;
@@ -120,9 +119,10 @@ int measure_agreement(int last_wall, double incline) {
     }
     std::printf("wall %d: %d stances\n", seed, plan.length + 1);
   }
-  std::printf("\n%d walls with a kinematic plan (ik.wall = avoid) at %.0f degrees; each stance on 4 and on 3 holds, "
-              "held for 2 s\n",
-              walls, incline);
+  std::printf(
+      "\n%d walls with a kinematic plan (ik.wall = avoid) at %.0f degrees; each stance on 4 and on 3 holds, "
+      "held for 2 s\n",
+      walls, incline);
   std::printf("                 MuJoCo holds still   does not\n");
   std::printf("static holds     %18d   %8d\n", table[{true, true}], table[{true, false}]);
   std::printf("static refuses   %18d   %8d\n", table[{false, true}], table[{false, false}]);

@@ -64,9 +64,8 @@ def main():
         performed_first += first_ok
         repaired += record["reached_top"]
         replans.append(record["replans"])
+        # Under the dynamic model every failed move, the last one included, is in failed_moves.
         wall_causes = [move["cause"] for move in record["failed_moves"]]
-        if not record["reached_top"] and record["cause"]:
-            wall_causes.append(record["cause"])
         causes.update(wall_causes)
         if record["reached_top"]:
             extra_moves.append(record["length"] - static_length)

@@ -73,6 +73,15 @@ py::dict iterations_dict(const RunResult& run) {
   return out;
 }
 
+// A wall given as an object leaves the random wall's keys nothing to shape.
+void refuse_wall_generator_keys(const ExperimentConfig& config) {
+  for (const std::string& key : config.given) {
+    if (is_wall_generator_key(key)) {
+      throw InputError(key, "shapes a random wall, and the wall argument gives the wall itself: drop one of them");
+    }
+  }
+}
+
 // A config given as a file replays a folder: its recorded digests must match the inputs.
 bool config_is_file(const py::handle& config) { return !config.is_none() && !py::isinstance<py::dict>(config); }
 
@@ -86,11 +95,7 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
     if (!config.wall_file.empty() || config.wall_seed) {
       throw InputError("wall", "give the wall as wall or as config's wall.file or wall.seed, not both");
     }
-    for (const std::string& key : config.given) {
-      if (is_wall_generator_key(key)) {
-        throw InputError(key, "shapes a random wall, and the wall argument gives the wall itself: drop one of them");
-      }
-    }
+    refuse_wall_generator_keys(config);
     job.wall = wall_handle.cast<Wall>();
   }
   if (!seed_handle.is_none()) config.settings.seed = uint64_from(seed_handle, "seed");
@@ -144,20 +149,14 @@ py::object run_experiment_py(const py::handle& config_handle, const py::handle& 
 
 py::object perform_py(const py::handle& wall_handle, const py::handle& config_handle, const py::handle& output,
                       bool overwrite) {
-  ExperimentConfig defaults;
-  defaults.settings.learning.climbing.physics.model = PhysicsModel::Static;  // crux perform's
-  PerformJob job{config_from_python(config_handle, kPerformKeys, "perform", defaults), {}, {}, false, {}};
+  PerformJob job{config_from_python(config_handle, kPerformKeys, "perform", perform_defaults()), {}, {}, false, {}};
   ExperimentConfig& config = job.config;
   if (!wall_handle.is_none()) {
     if (!config.wall_file.empty() || config.wall_seed || !config.run.empty()) {
       throw InputError("wall",
                        "give the wall as wall, or as config's wall.file, wall.seed or experiment.run, not both");
     }
-    for (const std::string& key : config.given) {
-      if (is_wall_generator_key(key)) {
-        throw InputError(key, "shapes a random wall, and the wall argument gives the wall itself: drop one of them");
-      }
-    }
+    refuse_wall_generator_keys(config);
     job.wall = wall_handle.cast<Wall>();
   } else if (config.wall_file.empty() && !config.wall_seed && config.run.empty()) {
     throw InputError("wall", "give a wall (a Wall, or config's wall.file or wall.seed) or a run (experiment.run)");

@@ -127,7 +127,15 @@ struct PlanCommand {
   void run() {
     ExperimentConfig config = binding.resolve();
     require_wall(config);
-    if (config.settings.learning.climbing.physics.model == PhysicsModel::Dynamic) {
+    if (config.settings.learning.climbing.physics.model != PhysicsModel::Dynamic) {
+      for (const ConstConfigField& field : config_fields(std::as_const(config))) {
+        if (field.key.starts_with("perform.") && binding.is_set(field.key)) {
+          throw InputError(binding.where(field.key),
+                           "needs physics.model = dynamic: crux plan performs nothing under "
+                           "the other models (crux perform performs their plans)");
+        }
+      }
+    } else {
       PerformJob job{config, binding.config_path(), {}, false, {}};
       print_performed(run_with_flags(binding,
                                      [&] {
@@ -142,12 +150,6 @@ struct PlanCommand {
     std::cout << (json ? plan_json(wall, plan).dump(2) + "\n" : plan_text(wall, plan));
   }
 };
-
-ExperimentConfig perform_defaults() {
-  ExperimentConfig defaults;
-  defaults.settings.learning.climbing.physics.model = PhysicsModel::Static;
-  return defaults;
-}
 
 struct PerformCommand {
   ParameterBinding binding{"perform", kPerformKeys, perform_defaults()};

@@ -839,6 +839,9 @@ void require_consistent_keys(const ExperimentConfig& config) {
   const bool is_static = checks_stances(s.learning.climbing.physics.model);
   require(s.learning.climbing.rewards.effort == 0.0 || is_static, "reward.effort",
           "needs physics.model = static: the kinematic model has no effort");
+  require(s.plan_search.max_replans == PlanParameters{}.max_replans ||
+              s.learning.climbing.physics.model == PhysicsModel::Dynamic,
+          "experiment.plan_max_replans", "needs physics.model = dynamic: only the dynamic model plans again");
   require(!s.plan_search.check_moves || is_static, "experiment.plan_check_moves",
           "needs physics.model = static or dynamic: the kinematic model checks no stance");
   // The static model's stances are solved with the body kept out of the wall.

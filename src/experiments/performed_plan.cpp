@@ -8,12 +8,29 @@ ClimbToPerform climb_to_perform(const Wall& wall, const Plan& plan) {
   return climb;
 }
 
+Plan plan_of_climb(const Wall& wall, const RecordedClimb& climb, PhysicsModel physics_model) {
+  Plan plan;
+  plan.physics_model = physics_model;
+  plan.found = true;
+  plan.postures = climb.postures;
+  const std::vector<HoldConfiguration> configurations = climb_configurations(wall, climb);
+  for (std::size_t k = 0; k + 1 < configurations.size(); ++k) {
+    const Limb limb = static_cast<Limb>(k % kLimbCount);
+    plan.limbs.push_back(limb);
+    plan.hold_ids.push_back(wall.holds[configurations[k + 1].hold(limb)].id);
+  }
+  plan.length = static_cast<int>(plan.limbs.size());
+  return plan;
+}
+
 PerformedPlan performed_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
-                             const PlanParameters& search, const PerformParameters& perform) {
+                             const PlanParameters& search, const PerformParameters& perform,
+                             const std::function<void()>& between_attempts) {
   const bool repairs = parameters.physics.model == PhysicsModel::Dynamic;
   PerformedPlan result;
   RefusedMoves refused;
   for (int attempt = 0;; ++attempt) {
+    if (between_attempts) between_attempts();
     result.plan = shortest_plan(model, wall, parameters, search, refused);
     result.climb.reset();
     if (!result.plan.found) return result;

@@ -6,9 +6,11 @@
 // from the start, until a plan is performed to the top, no plan remains, or the cap on
 // replans is reached.
 
+#include <functional>
 #include <optional>
 #include <vector>
 
+#include "experiments/episode_replay.hpp"
 #include "experiments/shortest_plan.hpp"
 #include "simulation/performed_climb.hpp"
 
@@ -24,7 +26,7 @@ struct FailedMove {
 };
 
 struct PerformedPlan {
-  Plan plan;                            // the last plan found: the one performed to the top, if any
+  Plan plan;                            // the last search's: the plan performed to the top, if any; none found
   std::optional<PerformedClimb> climb;  // that plan performed (none when no plan was found)
   int replans = 0;                      // plans searched after the first
   int moves_simulated = 0;              // over every attempt
@@ -36,9 +38,15 @@ struct PerformedPlan {
 // The plan's stances, limbs and holds as MuJoCo performs them.
 ClimbToPerform climb_to_perform(const Wall& wall, const Plan& plan);
 
+// A run's recorded climb as the plan of its moves (climb_configurations): posture k + 1
+// reached by move k of the round robin from the right hand, under `physics_model`.
+Plan plan_of_climb(const Wall& wall, const RecordedClimb& climb, PhysicsModel physics_model);
+
 // The plan of `parameters` performed. Under the dynamic model it is repaired, with at most
 // search.max_replans plans after the first; under the others it is performed as planned.
+// `between_attempts`, when given, is called before each search (it may throw to stop).
 PerformedPlan performed_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
-                             const PlanParameters& search, const PerformParameters& perform);
+                             const PlanParameters& search, const PerformParameters& perform,
+                             const std::function<void()>& between_attempts = {});
 
 }  // namespace crux

@@ -1,6 +1,9 @@
 #include "jobs/perform_job.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <initializer_list>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -17,21 +20,20 @@ namespace crux {
 
 namespace {
 
-// A recorded climb as the plan of its moves: the limbs move in the round robin from the
-// right hand, posture k + 1 reached by move k.
-Plan plan_of(const Wall& wall, const RecordedClimb& climb, PhysicsModel physics_model) {
-  Plan plan;
-  plan.physics_model = physics_model;
-  plan.found = true;
-  plan.postures = climb.postures;
-  const std::vector<HoldConfiguration> configurations = climb_configurations(wall, climb);
-  for (std::size_t k = 0; k + 1 < configurations.size(); ++k) {
-    const Limb limb = static_cast<Limb>(k % kLimbCount);
-    plan.limbs.push_back(limb);
-    plan.hold_ids.push_back(wall.holds[configurations[k + 1].hold(limb)].id);
+// Refuses each key of `config` in `keys` (a key, or a section "wall.") that is not at its
+// default: a key this mode does not use. A config.toml written in this mode records them
+// at their defaults, so that it replays.
+void refuse_unused_keys(const ExperimentConfig& config, std::initializer_list<std::string_view> keys,
+                        std::string_view why) {
+  static const ExperimentConfig defaults;
+  const std::vector<ConstConfigField> given = config_fields(config);
+  const std::vector<ConstConfigField> unset = config_fields(defaults);
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    const std::string& key = given[i].key;
+    const bool listed = std::any_of(
+        keys.begin(), keys.end(), [&](std::string_view k) { return k.ends_with('.') ? key.starts_with(k) : key == k; });
+    if (listed && field_value_text(given[i]) != field_value_text(unset[i])) throw InputError(key, std::string(why));
   }
-  plan.length = static_cast<int>(plan.limbs.size());
-  return plan;
 }
 
 // The climb of the run folder config.run that config.climb names, on the run's wall and
@@ -42,10 +44,11 @@ struct RunClimb {
   RecordedClimb climb;
 };
 RunClimb run_climb(ExperimentConfig& config, std::optional<BodyModel>& model) {
-  if (!config.wall_file.empty() || config.wall_seed) {
-    throw InputError(config.wall_file.empty() ? "wall.seed" : "wall.file",
-                     "crux perform --run performs the run's climb on the run's own wall: drop the wall");
-  }
+  refuse_unused_keys(config, {"wall."},
+                     "crux perform --run performs the run's climb on the run's own wall: drop this key");
+  refuse_unused_keys(config,
+                     {"experiment.plan_max_solves", "experiment.plan_check_moves", "experiment.plan_max_replans"},
+                     "crux perform --run performs the run's climb, not a plan: drop this key");
   RunFolder folder = locate_run_folder(config.run);
   const ExperimentConfig recorded = read_run_config(folder.config_file);
   const std::vector<ConstConfigField> given = config_fields(std::as_const(config));
@@ -62,6 +65,12 @@ RunClimb run_climb(ExperimentConfig& config, std::optional<BodyModel>& model) {
   }
   config.settings.learning.climbing = recorded.settings.learning.climbing;
   config.physics_strength = recorded.physics_strength;
+  if (!config.urdf.empty() && !folder.urdf.empty() &&
+      std::filesystem::absolute(config.urdf) != std::filesystem::absolute(folder.urdf)) {
+    throw InputError(
+        "experiment.urdf",
+        fmt::format("the run's climb is performed on the run's own body ({}): drop this key", folder.urdf));
+  }
   if (config.urdf.empty()) config.urdf = folder.urdf;
   model.emplace(load_configured_body(config));
   read_run_climb(folder, *model);
@@ -75,6 +84,12 @@ RunClimb run_climb(ExperimentConfig& config, std::optional<BodyModel>& model) {
 }
 
 }  // namespace
+
+ExperimentConfig perform_defaults() {
+  ExperimentConfig defaults;
+  defaults.settings.learning.climbing.physics.model = PhysicsModel::Static;
+  return defaults;
+}
 
 PerformJobOutcome run_perform_job(PerformJob job, const JobHooks& hooks) {
   ExperimentConfig& config = job.config;
@@ -106,13 +121,14 @@ PerformJobOutcome run_perform_job(PerformJob job, const JobHooks& hooks) {
   const ExperimentParameters& s = config.settings;
   const auto started = std::chrono::steady_clock::now();
   if (recorded_climb) {
-    outcome.performed.plan = plan_of(outcome.wall, *recorded_climb, s.learning.climbing.physics.model);
+    outcome.performed.plan = plan_of_climb(outcome.wall, *recorded_climb, s.learning.climbing.physics.model);
     outcome.performed.climb =
         perform_climb(*model, outcome.wall, s.learning.climbing.physics, s.learning.climbing.reachability,
                       climb_to_perform(outcome.wall, outcome.performed.plan), s.perform);
     outcome.performed.moves_simulated = static_cast<int>(outcome.performed.climb->moves.size());
   } else {
-    outcome.performed = performed_plan(*model, outcome.wall, s.learning.climbing, s.plan_search, s.perform);
+    outcome.performed =
+        performed_plan(*model, outcome.wall, s.learning.climbing, s.plan_search, s.perform, hooks.interruption_point);
   }
   outcome.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   outcome.record = performed_plan_json(outcome.wall, outcome.performed);

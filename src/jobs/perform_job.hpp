@@ -33,6 +33,9 @@ struct PerformJobOutcome {
   double wall_s = 0.0;            // wall-clock time of the planning and the simulation
 };
 
+// crux perform's defaults (the CLI's and Python's): the static model.
+ExperimentConfig perform_defaults();
+
 // InputError naming the input for a bad one (a wall whose start does not hold among them),
 // before the folder is touched.
 PerformJobOutcome run_perform_job(PerformJob job, const JobHooks& hooks);

@@ -55,7 +55,7 @@ nlohmann::ordered_json performed_plan_json(const Wall& wall, const PerformedPlan
   out["cause"] = first_failed ? nlohmann::ordered_json(enum_name(climb.cause())) : nlohmann::ordered_json();
   out["max_torque_ratio"] = climb.max_torque_ratio();
   out["simulated_s"] = climb.simulated_s();
-  out["start"] = outcome_json(climb.start);
+  out["start"] = performed.climb ? outcome_json(climb.start) : nlohmann::ordered_json();
   nlohmann::ordered_json moves = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < climb.moves.size(); ++k) {
     nlohmann::ordered_json move{{"limb", enum_name(performed.plan.limbs[k])}, {"hold", performed.plan.hold_ids[k]}};
@@ -68,11 +68,12 @@ nlohmann::ordered_json performed_plan_json(const Wall& wall, const PerformedPlan
 
 std::string performed_plan_text(const Wall& wall, const PerformedPlan& performed) {
   std::string out = plan_text(wall, performed.plan);
-  if (!performed.climb) return out;
-  const PerformedClimb& climb = *performed.climb;
-  out += fmt::format("performed in MuJoCo: {} of {} performed, {}; {:.1f} s simulated, largest torque ratio {:.2f}\n",
-                     climb.moves_performed(), counted(climb.planned_moves, "move"), cause_text(climb),
-                     climb.simulated_s(), climb.max_torque_ratio());
+  if (performed.climb) {
+    const PerformedClimb& climb = *performed.climb;
+    out += fmt::format("performed in MuJoCo: {} of {} performed, {}; {:.1f} s simulated, largest torque ratio {:.2f}\n",
+                       climb.moves_performed(), counted(climb.planned_moves, "move"), cause_text(climb),
+                       climb.simulated_s(), climb.max_torque_ratio());
+  }
   if (!performed.failed_moves.empty()) {
     out += fmt::format("{} after moves failed in MuJoCo ({} simulated):\n", counted(performed.replans, "replan"),
                        counted(performed.moves_simulated, "move"));

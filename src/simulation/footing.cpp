@@ -11,17 +11,17 @@ namespace crux {
 
 namespace {
 
-int mocap_of(const mjModel_* model, Limb foot) {
+int body_of(const mjModel_* model, Limb foot) {
   const int body = mj_name2id(model, mjOBJ_BODY, mjcf_footing_name(foot).c_str());
   if (body < 0 || model->body_mocapid[body] < 0) {
     throw std::invalid_argument("the MuJoCo model has no footing '" + mjcf_footing_name(foot) + "'");
   }
-  return model->body_mocapid[body];
+  return body;
 }
 
 }  // namespace
 
-Footing::Footing(const mjModel_* model, Limb foot) : mocap_(mocap_of(model, foot)) {}
+Footing::Footing(const mjModel_* model, Limb foot) : body_(body_of(model, foot)), mocap_(model->body_mocapid[body_]) {}
 
 void Footing::take(mjData_* data, const Eigen::Vector3d& grasp_point, const Eigen::Vector3d& support) const {
   const Eigen::Vector3d top = grasp_point - kFootContactRadius * support;

@@ -27,8 +27,10 @@ class Footing {
   // Parked out of reach (simulation/mjcf_model's kParkedFooting).
   void release(mjData_* data) const;
   bool taken(const mjData_* data) const;
+  int body() const { return body_; }  // the footing's MuJoCo body
 
  private:
+  int body_;
   int mocap_;
 };
 

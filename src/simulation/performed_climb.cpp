@@ -45,19 +45,22 @@ PerformedClimb perform_climb(const BodyModel& model, const Wall& wall, const Phy
   MoveReferences references(model, wall, physics, reach, parameters.path_samples, parameters.force_margin,
                             parameters.lift);
   TrajectoryRecorder recorder(parameters.record_interval_s);
+  // A limb is on its hold as the IK's termination test has it.
+  MoveParameters move = parameters.move;
+  move.grasp_radius = reach.ik.tolerances.grasp_radius;
   PerformedClimb performed;
   performed.planned_moves = static_cast<int>(climb.limbs.size());
   HoldConfiguration held = start_configuration(wall);
   climber.place(climb.stances.front(), held);
   performed.start =
       hold_still(climber, climb.stances.front(), held, references.holding(climb.stances.front(), held).torques,
-                 parameters.start_time_s, parameters.move, &recorder);
+                 parameters.start_time_s, move, &recorder);
   for (int k = 0; k < performed.planned_moves && performed.start.performed(); ++k) {
     const Limb limb = climb.limbs[k];
     const MoveReference reference = references.move(climb.stances[k], climb.stances[k + 1], held.with(limb, kFree),
                                                     held.hold(limb), climb.holds[k]);
     recorder.start_move(k);
-    performed.moves.push_back(perform_move(climber, reference, parameters.move, &recorder));
+    performed.moves.push_back(perform_move(climber, reference, move, &recorder));
     if (!performed.moves.back().performed()) break;
     held = held.with(limb, climb.holds[k]);
   }

@@ -46,7 +46,8 @@ struct PerformedClimb {
   double simulated_s() const;
 };
 
-// Performs `climb` on `wall` (its stances must lie on it: a plan's, a run's climb).
+// Performs `climb` on `wall` (its stances must lie on it: a plan's, a run's climb), a limb
+// on its hold within reach.ik's grasp radius, as the IK has it (parameters.move's aside).
 PerformedClimb perform_climb(const BodyModel& model, const Wall& wall, const PhysicsParameters& physics,
                              const ReachabilityParameters& reach, const ClimbToPerform& climb,
                              const PerformParameters& parameters);

@@ -60,11 +60,14 @@ void SimulatedClimber::release(Limb limb) {
 Eigen::Vector3d SimulatedClimber::hold_force(Limb limb) const {
   const mjModel* model = mujoco_.get();
   if (is_hand(limb)) return grasp(limb).force(model, data_);
+  // A foot's contacts with its footing, not with the wall.
   Eigen::Vector3d total = Eigen::Vector3d::Zero();
   const int body = layout_.limb_body[static_cast<int>(limb)];
+  const int footing_body = footing(limb).body();
   for (int c = 0; c < data_->ncon; ++c) {
     const mjContact& contact = data_->contact[c];
-    if (model->geom_bodyid[contact.geom1] != body && model->geom_bodyid[contact.geom2] != body) continue;
+    const int body1 = model->geom_bodyid[contact.geom1], body2 = model->geom_bodyid[contact.geom2];
+    if (!((body1 == body && body2 == footing_body) || (body2 == body && body1 == footing_body))) continue;
     mjtNum local[6];
     mj_contactForce(model, data_, c, local);
     // The contact frame's rows are its normal and tangents; the force acts on geom2.

@@ -50,7 +50,7 @@ class SimulatedClimber {
   void take(Limb limb, int hold);
   void release(Limb limb);
   // The force its hold exerts on `limb`, MuJoCo's world coordinates: a hand's grasp, a
-  // foot's contacts (zero when it holds nothing).
+  // foot's contacts with its footing (zero when it holds nothing).
   Eigen::Vector3d hold_force(Limb limb) const;
   int wall_geom() const { return wall_geom_; }
 

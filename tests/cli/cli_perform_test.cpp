@@ -10,6 +10,7 @@
 #include <string>
 
 #include "support/jug_ladder.hpp"
+#include "support/output_text.hpp"
 #include "support/repository_docs.hpp"
 #include "support/run_crux.hpp"
 #include "support/trained_run.hpp"
@@ -25,11 +26,6 @@ fs::path perform_scratch(const std::string& name) {
   const fs::path dir = testing::test_folder() / "perform-cli";
   fs::create_directories(dir);
   return dir / name;
-}
-
-std::string performed_file_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 // The jug ladder, climbed by the right hand's one move, as a wall file.
@@ -63,7 +59,7 @@ TEST(CliPerform, TheClimbsFolderReplaysToTheSameBytesFromItsConfig) {
   const auto replay = run_crux("perform --config " + (first / "config.toml").string() + " -o " + second.string());
   ASSERT_EQ(replay.exit_code, 0) << replay.err;
   for (const char* file : {"config.toml", "wall.json", "perform.json", "trajectory.csv", "climber.xml"}) {
-    EXPECT_EQ(performed_file_text(first / file), performed_file_text(second / file)) << file;
+    EXPECT_EQ(testing::read_output_text(first / file), testing::read_output_text(second / file)) << file;
   }
 }
 
@@ -81,14 +77,20 @@ TEST(CliPerform, PlanUnderTheDynamicModelAnswersWithAClimbPerformed) {
 
 TEST(CliPerform, BadInputIsOneLineAndExitCode2AndWritesNoFolder) {
   const fs::path folder = perform_scratch("refused");
-  const std::string wall = " --wall-file " + ladder_file() + " -o " + folder.string();
-  for (const std::string& arguments :
-       {"perform" + wall + " --perform-joint-speed nan", "perform" + wall + " --perform-settle-time -1",
-        "perform" + wall + " --physics-grip 1",  // the start does not hold
-        "perform" + wall + " --physics-model quantum",
-        "perform -o " + folder.string(),  // no wall
-        "perform --wall-file /nonexistent/wall.json -o " + folder.string(), "train" + wall + " --physics-model dynamic",
-        std::string("stances --physics-model dynamic")}) {
+  const std::string out = " -o " + folder.string();
+  const std::string wall = " --wall-file " + ladder_file() + out;
+  for (const std::string& arguments : {
+           "perform" + wall + " --perform-joint-speed nan",
+           "perform" + wall + " --perform-settle-time -1",
+           "perform" + wall + " --physics-grip 1",  // the start does not hold
+           "perform" + wall + " --physics-model quantum",
+           "perform" + wall + " --plan-max-replans 5",  // the static model plans once
+           "plan" + wall + " --perform-joint-speed 1",  // the static model performs nothing
+           "perform" + out,                             // no wall
+           "perform --wall-file /nonexistent/wall.json" + out,
+           "train" + wall + " --physics-model dynamic",
+           "paper --walls 1 --iterations 5 --plan false --physics-model dynamic" + out,
+       }) {
     const auto outcome = run_crux(arguments);
     EXPECT_EQ(outcome.exit_code, 2) << arguments << "\n" << outcome.err;
     EXPECT_EQ(testing::count_lines(outcome.err), 1) << arguments << "\n" << outcome.err;
@@ -117,8 +119,8 @@ TEST(CliPerform, ARunsClimbIsPerformedUnderTheRunsParameters) {
   EXPECT_EQ(json["moves"].size(), attempted) << outcome.out;
   const fs::path second = perform_scratch("run-second");
   ASSERT_EQ(run_crux("perform --config " + (first / "config.toml").string() + " -o " + second.string()).exit_code, 0);
-  EXPECT_EQ(performed_file_text(first / "perform.json"), performed_file_text(second / "perform.json"));
-  EXPECT_EQ(performed_file_text(first / "trajectory.csv"), performed_file_text(second / "trajectory.csv"));
+  EXPECT_EQ(testing::read_output_text(first / "perform.json"), testing::read_output_text(second / "perform.json"));
+  EXPECT_EQ(testing::read_output_text(first / "trajectory.csv"), testing::read_output_text(second / "trajectory.csv"));
 }
 
 TEST(CliPerform, ABadRunOrClimbIsOneLineAndExitCode2AndWritesNoFolder) {
@@ -126,10 +128,15 @@ TEST(CliPerform, ABadRunOrClimbIsOneLineAndExitCode2AndWritesNoFolder) {
   const fs::path short_run = perform_scratch("short-run");
   ASSERT_EQ(run_crux("train --wall-seed 3 --iterations 3 -o " + short_run.string()).exit_code, 0);
   const fs::path folder = perform_scratch("refused-run");
+  const std::string other_body = perform_scratch("other_body.urdf").string();
+  fs::copy_file(std::string(CRUX_SOURCE_DIR) + "/models/crux_human.urdf", other_body,
+                fs::copy_options::overwrite_existing);
   const std::string out = " -o " + folder.string();
   for (const std::string& arguments : {"perform --run " + run + " --climb bogus" + out,
                                        "perform --run " + run + " --climb 100000" + out,  // no such episode
                                        "perform --run " + run + " --wall-seed 3" + out,
+                                       "perform --run " + run + " --wall-incline 20" + out,       // the run's wall
+                                       "perform --run " + run + " --urdf " + other_body + out,    // the run's body
                                        "perform --run " + run + " --physics-model static" + out,  // not the run's
                                        "perform --run " + short_run.string() + out,  // a run without a climb
                                        "perform --run " + perform_scratch("nothing").string() + out,

@@ -6,17 +6,13 @@
 
 #include "common/input_error.hpp"
 #include "support/jug_ladder.hpp"
+#include "support/output_text.hpp"
 #include "wall/wall_file.hpp"
 
 namespace crux {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string performed_file_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
 
 // The jug ladder climbed by its one move, as a wall file, under the static model.
 PerformJob ladder_job(std::optional<fs::path> output) {
@@ -44,11 +40,11 @@ TEST(PerformJob, WritesTheClimbsFolderTheSameBytesEachTime) {
   EXPECT_TRUE(outcome.performed.performed()) << outcome.record.dump(2);
   for (const char* file : {"config.toml", "wall.json", "perform.json", "trajectory.csv", "climber.xml"}) {
     ASSERT_TRUE(fs::exists(first / file)) << file;
-    EXPECT_EQ(performed_file_text(first / file), performed_file_text(second / file)) << file;
+    EXPECT_EQ(testing::read_output_text(first / file), testing::read_output_text(second / file)) << file;
   }
   EXPECT_FALSE(fs::exists(first / "INCOMPLETE"));
-  EXPECT_EQ(performed_file_text(first / "perform.json"), outcome.record.dump(2) + "\n");
-  EXPECT_NE(performed_file_text(first / "config.toml").find("[perform]"), std::string::npos);
+  EXPECT_EQ(testing::read_output_text(first / "perform.json"), outcome.record.dump(2) + "\n");
+  EXPECT_NE(testing::read_output_text(first / "config.toml").find("[perform]"), std::string::npos);
 }
 
 // Hands whose grip is 1 N cannot hold the start: refused before the folder is touched.

@@ -79,6 +79,20 @@ TEST(PerformDescription, NoPlanPerformsNothing) {
   EXPECT_EQ(json["moves_performed"], 0);
   EXPECT_TRUE(json["moves"].empty());
   EXPECT_TRUE(json["cause"].is_null());
+  EXPECT_TRUE(json["start"].is_null()) << "nothing was placed, so nothing held still";
+}
+
+// A repair that ended with no plan still says which moves failed.
+TEST(PerformDescription, ARepairThatLeftNoPlanListsTheMovesThatFailed) {
+  PerformedPlan exhausted = second_move_failed();
+  exhausted.plan = Plan{};
+  exhausted.plan.physics_model = PhysicsModel::Dynamic;
+  exhausted.climb.reset();
+  const std::string text = performed_plan_text(perform_wall(), exhausted);
+  EXPECT_NE(text.find("no climb exists on 'w' under the dynamic model"), std::string::npos) << text;
+  EXPECT_NE(text.find("1 replan after moves failed in MuJoCo (3 moves simulated)"), std::string::npos) << text;
+  EXPECT_NE(text.find("plan 1, move 1: right_hand -> hold 4 failed (foot_slipped)"), std::string::npos) << text;
+  EXPECT_EQ(text.find("performed in MuJoCo:"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -28,11 +28,14 @@ struct JugLadder {
     reach.ik.wall = WallRule::Avoid;
     physics.model = PhysicsModel::Static;
     BodyData data(model);
-    start = solve_start(model, data, wall, reach).posture;
+    const IkResult started = solve_start(model, data, wall, reach);
+    EXPECT_TRUE(started.reached) << "the ladder's start";
+    start = started.posture;
     before = start_configuration(wall).with(Limb::RightHand, kFree);
-    reached =
-        solve_ik(model, data, start, reach_target(model, wall, before.with(Limb::RightHand, 4), reach.root), reach.ik)
-            .posture;
+    const IkResult up =
+        solve_ik(model, data, start, reach_target(model, wall, before.with(Limb::RightHand, 4), reach.root), reach.ik);
+    EXPECT_TRUE(up.reached) << "the right hand on the jug";
+    reached = up.posture;
   }
 
   // A finish that the right hand's move up to the jug passes and its move back to the hold
