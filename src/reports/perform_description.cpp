@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "common/counted.hpp"
+#include "common/printable.hpp"
 #include "reports/plan_description.hpp"
 
 namespace crux {
@@ -67,7 +68,15 @@ nlohmann::ordered_json performed_plan_json(const Wall& wall, const PerformedPlan
 }
 
 std::string performed_plan_text(const Wall& wall, const PerformedPlan& performed) {
-  std::string out = plan_text(wall, performed.plan);
+  const Plan& plan = performed.plan;
+  // A search that found nothing once moves were refused says so, not that no climb exists.
+  const bool none_left = !plan.found && !plan.stopped_at_limit && !performed.failed_moves.empty();
+  std::string out = none_left ? fmt::format(
+                                    "no climb is left on '{}' under the {} model once the moves that failed in "
+                                    "MuJoCo are refused ({} explored, {})\n",
+                                    printable(wall.name), enum_name(plan.physics_model),
+                                    counted(plan.expanded_states, "state"), counted(plan.ik_solves, "IK solve"))
+                              : plan_text(wall, plan);
   if (performed.climb) {
     const PerformedClimb& climb = *performed.climb;
     out += fmt::format("performed in MuJoCo: {} of {} performed, {}; {:.1f} s simulated, largest torque ratio {:.2f}\n",
