@@ -70,6 +70,21 @@ TEST(ShortestPlan, AnExhaustedSearchIsNotALimit) {
   EXPECT_LT(plan.ik_solves, static_cast<std::size_t>(PlanParameters{}.max_ik_solves));
 }
 
+// Random wall 10 with its finish at 1.4 m, which a few moves reach, and the static
+// model's rules.
+Wall low_finish_wall() {
+  Wall wall = generate_random_wall(10);
+  wall.finish_height = 1.4;
+  return wall;
+}
+
+ClimbingParameters static_rules() {
+  ClimbingParameters parameters;
+  parameters.physics.model = PhysicsModel::Static;
+  parameters.reachability.ik.wall = WallRule::Avoid;
+  return parameters;
+}
+
 // Under the static model a move may reach a stance that holds while a posture on the way
 // does not; checking the way (the replay's samples, on the three holds kept) refuses such
 // moves, so the search can only find longer climbs, and on this wall it does (4 moves
@@ -77,11 +92,8 @@ TEST(ShortestPlan, AnExhaustedSearchIsNotALimit) {
 // 1.2, 1.4 or 1.5 m, since the check costs ten times the search under the sanitizers).
 TEST(ShortestPlan, CheckingTheMovesOnTheWayRefusesSomeAndLengthensTheClimb) {
   const BodyModel& model = testing::human_model();
-  Wall wall = generate_random_wall(10);
-  wall.finish_height = 1.4;
-  ClimbingParameters parameters;
-  parameters.physics.model = PhysicsModel::Static;
-  parameters.reachability.ik.wall = WallRule::Avoid;
+  const Wall wall = low_finish_wall();
+  const ClimbingParameters parameters = static_rules();
   const Plan stances_only = shortest_plan(model, wall, parameters);
   PlanParameters checked;
   checked.check_moves = true;
@@ -99,11 +111,8 @@ TEST(ShortestPlan, CheckingTheMovesOnTheWayRefusesSomeAndLengthensTheClimb) {
 // it again, and finds the next shortest climb without it.
 TEST(ShortestPlan, ARefusedMoveIsNeverTaken) {
   const BodyModel& model = testing::human_model();
-  Wall wall = generate_random_wall(10);
-  wall.finish_height = 1.4;
-  ClimbingParameters parameters;
-  parameters.physics.model = PhysicsModel::Static;
-  parameters.reachability.ik.wall = WallRule::Avoid;
+  const Wall wall = low_finish_wall();
+  const ClimbingParameters parameters = static_rules();
   const Plan first = shortest_plan(model, wall, parameters);
   ASSERT_TRUE(first.found);
   const HoldConfiguration start = start_configuration(wall).with(Limb::RightHand, kFree);
