@@ -13,6 +13,7 @@
 #include "experiments/run_inputs.hpp"
 #include "jobs/report_job.hpp"
 #include "outputs/output_folder.hpp"
+#include "outputs/perform_folder.hpp"
 #include "outputs/run_config_file.hpp"
 #include "reports/report_figures.hpp"
 #include "reports/web_assets.hpp"
@@ -32,7 +33,9 @@ struct ReportCommand {
   std::string run_name = "training_0";
   std::string climb_choice = "greedy";
   int replay_moves = kDefaultReplayMoves;
+  std::string performed;  // a crux perform folder shown beside the run's replay
   bool json = false;
+  CLI::App* command = nullptr;
 
   void run() {
     const auto started = std::chrono::steady_clock::now();
@@ -41,21 +44,67 @@ struct ReportCommand {
                                                      kMaxReplayMoves, replay_moves));
     }
     ExperimentConfig config = binding.resolve();
+    if (is_perform_folder(folder)) {
+      for (const char* flag : {"--run", "--climb", "--replay-moves", "--performed"}) {
+        if (command->count(flag) > 0) {
+          throw InputError(flag,
+                           fmt::format("{} is a crux perform folder, which holds one climb: drop {}", folder, flag));
+        }
+      }
+      write(perform_page(config), folder_name(folder), started);
+      return;
+    }
     const ReportedRun reported = locate_reported_run(folder, run_name, "--run");
     RunFolder run = locate_run_folder(reported.run_directory);
     const ExperimentConfig recorded = read_run_config(run.config_file);
     if (config.urdf.empty()) config.urdf = run.urdf;
-    check_output_file(output, {folder, binding.config_path(), configured_urdf_path(config)});
+    check_output_file(output, {folder, performed, binding.config_path(), configured_urdf_path(config)});
     const BodyModel model = load_configured_body(config);
+    std::optional<PerformedSection> section;
+    if (!performed.empty()) section = performed_beside(model);
     read_run_climb(run, model);
     ReportPage page = report_page(folder, reported, run, model, recorded, climb_choice, replay_moves);
+    page.performed = std::move(section);
+    write(std::move(page), run.name, started);
+  }
+
+  // The page of a crux perform folder, read with its own config.toml and body.
+  ReportPage perform_page(ExperimentConfig& config) const {
+    const ExperimentConfig recorded = read_perform_config(std::filesystem::path(folder) / "config.toml");
+    if (config.urdf.empty()) config.urdf = recorded.urdf;
+    check_output_file(output, {folder, binding.config_path(), configured_urdf_path(config)});
+    const BodyModel model = load_configured_body(config);
+    return perform_report_page(read_perform_folder(folder, model), model, grasp_radius(recorded));
+  }
+
+  // --performed: a crux perform folder on the same body, shown after the run's replay.
+  PerformedSection performed_beside(const BodyModel& model) const {
+    if (!is_perform_folder(performed)) {
+      throw InputError("--performed",
+                       fmt::format("{} is not a crux perform folder (it has no perform.json)", performed));
+    }
+    const ExperimentConfig recorded = read_perform_config(std::filesystem::path(performed) / "config.toml");
+    return performed_section(read_perform_folder(performed, model), model, grasp_radius(recorded));
+  }
+
+  static double grasp_radius(const ExperimentConfig& recorded) {
+    return recorded.settings.learning.climbing.reachability.ik.tolerances.grasp_radius;
+  }
+
+  static std::string folder_name(const std::string& path) {
+    std::filesystem::path normal = std::filesystem::absolute(path).lexically_normal();
+    if (normal.filename().empty()) normal = normal.parent_path();  // "out/perform/"
+    return normal.filename().string();
+  }
+
+  void write(ReportPage page, const std::string& name, std::chrono::steady_clock::time_point started) const {
     page.style = report_style();
     page.script = replay_script();
     const std::string html = html_report(page);
     write_file_atomically(output, html);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    std::cout << (json ? written_report_json(page, run.name, output, html.size(), seconds).dump(2) + "\n"
-                       : written_report_text(page, run.name, output, html.size(), seconds));
+    std::cout << (json ? written_report_json(page, name, output, html.size(), seconds).dump(2) + "\n"
+                       : written_report_text(page, name, output, html.size(), seconds));
   }
 };
 
@@ -85,8 +134,9 @@ void add_report_commands(CLI::App& app) {
   auto* r = app.add_subcommand(
       "report",
       "Write one self-contained HTML page for an output folder of crux paper, train or transfer: Table I\n"
-      "beside the paper's, the statistics, the figures and a 3D replay of a climb (works offline); the\n"
-      "folder is read with its own config.toml");
+      "beside the paper's, the statistics, the figures and a 3D replay of a climb (works offline); or for a\n"
+      "crux perform folder: the climb performed in MuJoCo, replayed as simulated. The folder is read with its\n"
+      "own config.toml");
   r->add_option("folder", report->folder, "The output folder")->required();
   r->add_option("-o,--output", report->output, "The HTML file to write")->required();
   r->add_option("--run", report->run_name, "For a crux paper folder: the run whose climb is replayed, <condition>_<i>")
@@ -97,7 +147,11 @@ void add_report_commands(CLI::App& app) {
                             "page); the page says when the climb has more",
                             kMaxReplayMoves))
       ->capture_default_str();
+  r->add_option("--performed", report->performed,
+                "A crux perform folder (on the same body) whose climb performed in MuJoCo the page shows after the "
+                "run's replay");
   r->add_flag("--json", report->json, "Print JSON instead of text");
+  report->command = r;
   report->binding.bind(r);
   r->callback([report] { report->run(); });
 }

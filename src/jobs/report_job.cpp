@@ -1,11 +1,17 @@
 #include "jobs/report_job.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "body/kinematics.hpp"
 #include "body/wall_penetration.hpp"
+#include "common/counted.hpp"
+#include "common/printable.hpp"
 #include "experiments/climb_stances.hpp"
+#include "experiments/performed_replay.hpp"
 #include "outputs/run_folder.hpp"
+#include "reports/perform_description.hpp"
 #include "reports/replay_data.hpp"
 #include "reports/report_figures.hpp"
 #include "reports/view_description.hpp"
@@ -60,6 +66,55 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
         replay_climb(model, run.wall, climb, climbing.reachability, run.directory.string(), options);
     page.replay = replay_data(model, run.wall, replay, stances ? &*stances : nullptr, page.replay_title);
   }
+  return page;
+}
+
+namespace {
+
+std::string performed_outcome(const PerformFolder& folder) {
+  if (!folder.found) return "No plan was found, so nothing was performed.";
+  if (!folder.start_held) {
+    return fmt::format("The start stance did not hold still: {}.", failure_words(folder.start_cause));
+  }
+  const auto performed =
+      std::count_if(folder.moves.begin(), folder.moves.end(), [](const AttemptedMove& move) { return move.performed; });
+  const std::string effort = fmt::format("largest torque {:.2f} of its limit, {:.1f} s simulated",
+                                         folder.max_torque_ratio, folder.simulated_s);
+  if (folder.reached_top) {
+    return fmt::format("All {} performed, to the top; {}.", counted(folder.planned_moves, "move"), effort);
+  }
+  const AttemptedMove& failed = folder.moves.back();
+  return fmt::format("{} of {} performed; move {} ({} to hold {}) failed: {}; {}.", performed,
+                     counted(folder.planned_moves, "move"), folder.moves.size(), enum_name(failed.limb),
+                     folder.wall.holds[failed.hold].id, failure_words(failed.cause), effort);
+}
+
+}  // namespace
+
+PerformedSection performed_section(const PerformFolder& folder, const BodyModel& model, double grasp_radius) {
+  PerformedSection section;
+  section.title =
+      fmt::format("{} under the {} model on '{}'", folder.climb, folder.physics, printable(folder.wall.name));
+  section.outcome = performed_outcome(folder);
+  section.folder = folder.directory.string();
+  for (const AttemptedMove& move : folder.moves) {
+    section.moves.push_back({enum_name(move.limb), folder.wall.holds[move.hold].id, move.performed,
+                             failure_words(move.cause), move.max_torque_ratio});
+  }
+  if (!folder.trajectory.empty()) {
+    const PerformedReplay replay = replay_performed_climb(model, folder.wall, folder.moves, folder.trajectory,
+                                                          (folder.directory / "trajectory.csv").string());
+    section.replay =
+        performed_replay_data(model, folder.wall, replay, folder.planned_moves, grasp_radius, section.title);
+  }
+  return section;
+}
+
+ReportPage perform_report_page(const PerformFolder& folder, const BodyModel& model, double grasp_radius) {
+  ReportPage page;
+  page.title = fmt::format("crux report: {}",
+                           std::filesystem::absolute(folder.directory).lexically_normal().filename().string());
+  page.performed = performed_section(folder, model, grasp_radius);
   return page;
 }
 

@@ -9,6 +9,7 @@
 
 #include "experiments/climb_replay.hpp"
 #include "experiments/experiment_config.hpp"
+#include "outputs/perform_folder.hpp"
 #include "outputs/run_folder.hpp"
 #include "reports/html_report.hpp"
 
@@ -22,5 +23,12 @@ namespace crux {
 ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& reported, RunFolder& run,
                        const BodyModel& model, const ExperimentConfig& recorded, const std::string& climb_choice,
                        int replay_moves = kDefaultReplayMoves);
+
+// The climb performed in a crux perform folder read with `model`, as a page shows it, its
+// replay drawing grasp spheres of `grasp_radius` (the folder's ik.grasp_radius).
+PerformedSection performed_section(const PerformFolder& folder, const BodyModel& model, double grasp_radius);
+
+// A page of its own for a crux perform folder.
+ReportPage perform_report_page(const PerformFolder& folder, const BodyModel& model, double grasp_radius);
 
 }  // namespace crux

@@ -1,6 +1,7 @@
 #include "outputs/run_config_file.hpp"
 
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -8,15 +9,18 @@
 
 namespace crux {
 
-ExperimentConfig read_run_config(const std::filesystem::path& path) {
-  static const ParameterSet kEveryKey{
-      {"experiment", "learning", "reward", "ik", "physics", "compare", "filter", "grid", "wall", "training_wall"}, {}};
+namespace {
+
+const std::vector<std::string> kRecordedSections{"experiment", "learning", "reward", "ik",   "physics",
+                                                 "compare",    "filter",   "grid",   "wall", "training_wall"};
+
+ExperimentConfig read_recorded_config(const std::filesystem::path& path, const ParameterSet& keys, bool grid) {
   const std::string file = path.string();
   ExperimentConfig config;
-  const ConfigLines lines = apply_config_file(file, config, kEveryKey, "the run's config");
+  const ConfigLines lines = apply_config_file(file, config, keys, "the run's config");
   for (const ConfigField& field : config_fields(config)) {
     // Folders written before the reach agent space have no grid.agent_space: the grid's.
-    if (field.key.starts_with("grid.") && field.key != "grid.agent_space" && !lines.contains(field.key)) {
+    if (grid && field.key.starts_with("grid.") && field.key != "grid.agent_space" && !lines.contains(field.key)) {
       throw InputError(file, fmt::format("{} is missing (crux writes every grid key)", field.key));
     }
   }
@@ -34,6 +38,22 @@ ExperimentConfig read_run_config(const std::filesystem::path& path) {
                      e.problem());
   }
   return config;
+}
+
+}  // namespace
+
+ExperimentConfig read_run_config(const std::filesystem::path& path) {
+  static const ParameterSet kEveryKey{kRecordedSections, {}};
+  return read_recorded_config(path, kEveryKey, true);
+}
+
+ExperimentConfig read_perform_config(const std::filesystem::path& path) {
+  static const ParameterSet kPerformFolderKeys = [] {
+    std::vector<std::string> sections = kRecordedSections;
+    sections.push_back("perform");
+    return ParameterSet{sections, {}, true};
+  }();
+  return read_recorded_config(path, kPerformFolderKeys, false);
 }
 
 }  // namespace crux

@@ -1,5 +1,5 @@
 #pragma once
-// The config.toml that `crux paper`, `train` and `transfer` write into their output
+// The config.toml that `crux paper`, `train`, `transfer` and `perform` write into their output
 // folder, read back: the one reader of it, through the parameter table's own rules
 // (experiment_config), for the reports (a run's parameters) and the views (the grid).
 
@@ -15,5 +15,9 @@ namespace crux {
 // InputError(file, problem), or InputError("<file>: line N: <key>", problem) for a
 // value that finalize_config refuses.
 ExperimentConfig read_run_config(const std::filesystem::path& file);
+
+// The config.toml of a `crux perform` folder, read as read_run_config reads a run's, with
+// the perform.* keys it also records and no grid.
+ExperimentConfig read_perform_config(const std::filesystem::path& file);
 
 }  // namespace crux

@@ -62,32 +62,43 @@ class Page {
     out_ += "<link rel=\"icon\" href=\"data:,\">\n";  // or the browser asks the server for /favicon.ico
     append_format(out_, "<title>{}</title>\n<style>\n{}\n</style>\n</head>\n<body>\n<main>\n", xml_escaped(page_.title),
                   page_.style);
-    write_header();
-    const bool experiment = at(page_.summary, {"kind"}) == "experiment";
-    if (experiment) {
-      write_table_one();
-      write_statistics();
-    } else {
-      write_run_facts();
-    }
-    write_figures();
-    write_replay();
-    out_ += "</main>\n";
-    if (!page_.replay.is_null()) {
-      std::string data = page_.replay.dump();
-      // Inside <script>, "</script" would end the element and "<!--" change how it is read;
-      // JSON reads the escape \u003c as "<".
-      for (std::size_t at = data.find('<'); at != std::string::npos; at = data.find('<', at + 6)) {
-        data.replace(at, 1, "\\u003c");
+    // A crux perform folder's page has no run: only the performed climb.
+    const bool performed_only = page_.summary.is_null() && page_.performed;
+    if (!performed_only) {
+      write_header();
+      const bool experiment = at(page_.summary, {"kind"}) == "experiment";
+      if (experiment) {
+        write_table_one();
+        write_statistics();
+      } else {
+        write_run_facts();
       }
-      append_format(out_, "<script type=\"application/json\" id=\"crux-replay-data\">{}</script>\n", data);
-      append_format(out_, "<script>\n{}\n</script>\n", page_.script);
+      write_figures();
+      write_replay();
+    } else {
+      append_format(out_, "<h1>{}</h1>\n", xml_escaped(page_.title));
     }
+    write_performed();
+    out_ += "</main>\n";
+    const bool performed_replay = page_.performed && !page_.performed->replay.is_null();
+    if (!page_.replay.is_null()) write_data("crux-replay-data", page_.replay);
+    if (performed_replay) write_data("crux-performed-data", page_.performed->replay);
+    if (!page_.replay.is_null() || performed_replay) append_format(out_, "<script>\n{}\n</script>\n", page_.script);
     out_ += "</body>\n</html>\n";
     return std::move(out_);
   }
 
  private:
+  void write_data(std::string_view id, const nlohmann::ordered_json& replay) {
+    std::string data = replay.dump();
+    // Inside <script>, "</script" would end the element and "<!--" change how it is read;
+    // JSON reads the escape \u003c as "<".
+    for (std::size_t at = data.find('<'); at != std::string::npos; at = data.find('<', at + 6)) {
+      data.replace(at, 1, "\\u003c");
+    }
+    append_format(out_, "<script type=\"application/json\" id=\"{}\">{}</script>\n", id, data);
+  }
+
   void write_header() {
     const Json& s = page_.summary;
     append_format(out_, "<h1>{}</h1>\n<dl class=\"facts\">\n", xml_escaped(page_.title));
@@ -271,7 +282,43 @@ class Page {
     out_ +=
         "<p>The climb move by move. Between two recorded postures the body follows the path of the paper's "
         "gradient-descent IK (Algorithm 1). Drag to orbit, scroll to zoom; space plays and pauses, the arrow keys "
-        "step.</p>\n<div id=\"crux-replay\"></div>\n</section>\n";
+        "step.</p>\n";
+    if (page_.performed) {
+      out_ +=
+          "<p>This replay draws the learnt climb as the paper's model has it: postures from the IK, nothing "
+          "simulated. The section after it shows a climb performed in MuJoCo.</p>\n";
+    }
+    out_ += "<div id=\"crux-replay\"></div>\n</section>\n";
+  }
+
+  // A climb performed in MuJoCo: what was performed, how far it went, each move's outcome,
+  // and the simulated motion (not the IK's drawing).
+  void write_performed() {
+    if (!page_.performed) return;
+    const PerformedSection& p = *page_.performed;
+    append_format(out_, "<section id=\"performed\">\n<h2>Performed in MuJoCo: {}</h2>\n<p>{}</p>\n",
+                  xml_escaped(p.title), xml_escaped(p.outcome));
+    append_format(out_,
+                  "<p>Read from <code>{}</code>. Not the IK's drawing: the motion MuJoCo simulated, the body on a "
+                  "free root, held by its grasps and footholds and moved by motors within their torque limits "
+                  "(docs/PHYSICS.md, &ldquo;Performed in MuJoCo&rdquo;). The arrows are the forces from the holds; "
+                  "a red ball marks where a failed move&apos;s limb was when it failed.</p>\n",
+                  xml_escaped(p.folder));
+    if (!p.moves.empty()) {
+      out_ +=
+          "<table class=\"numbers\">\n<thead><tr><th>move</th><th>limb</th><th>hold</th><th>outcome</th>"
+          "<th>largest torque / limit</th></tr></thead>\n<tbody>\n";
+      for (std::size_t k = 0; k < p.moves.size(); ++k) {
+        const PerformedMoveRow& move = p.moves[k];
+        append_format(out_, "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.2f}</td></tr>\n", k + 1,
+                      xml_escaped(move.limb), move.hold_id,
+                      move.performed ? std::string("performed") : "failed: " + xml_escaped(move.cause),
+                      move.max_torque_ratio);
+      }
+      out_ += "</tbody>\n</table>\n";
+    }
+    if (!p.replay.is_null()) out_ += "<div id=\"crux-performed\"></div>\n";
+    out_ += "</section>\n";
   }
 
   const ReportPage& page_;

@@ -4,6 +4,7 @@
 // style is inlined and a Content-Security-Policy forbids the page any request.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,6 +17,23 @@ struct ReportFigure {
   std::string title;
   std::string caption;
   std::string svg;  // a standalone SVG document; its XML declaration is dropped when inlined
+};
+
+// A climb performed in MuJoCo (a crux perform folder), shown on a page of its own or beside
+// a run's replay (README's main job: the paper's kinematic replay and a performed plan).
+struct PerformedMoveRow {
+  std::string limb;
+  int hold_id = 0;
+  bool performed = false;
+  std::string cause;  // why it failed ("" when performed), in words
+  double max_torque_ratio = 0.0;
+};
+struct PerformedSection {
+  std::string title;    // what was performed, on which wall
+  std::string outcome;  // how far it went and why it stopped, in words
+  std::string folder;   // the crux perform folder it was read from
+  std::vector<PerformedMoveRow> moves;
+  nlohmann::ordered_json replay;  // performed_replay_data(); null when nothing was performed
 };
 
 struct ReportPage {
@@ -38,6 +56,7 @@ struct ReportPage {
   // Under the static model, each stance's effort on four and on three holds (the effort
   // figure's); empty otherwise.
   std::vector<double> stance_effort_four, stance_effort_three;
+  std::optional<PerformedSection> performed;
   std::string_view style;   // the page's CSS
   std::string_view script;  // the replay's script (three.js bundled in)
 };

@@ -67,6 +67,28 @@ nlohmann::ordered_json performed_plan_json(const Wall& wall, const PerformedPlan
   return out;
 }
 
+std::string failure_words(MoveFailure failure) {
+  switch (failure) {
+    case MoveFailure::None:
+      return "";
+    case MoveFailure::GripExceeded:
+      return "a hand's grip was exceeded";
+    case MoveFailure::HandSlipped:
+      return "a hand slipped off its hold";
+    case MoveFailure::FootSlipped:
+      return "a foot slipped off its hold";
+    case MoveFailure::TorqueSaturated:
+      return "a torque saturated, so the limb could not follow";
+    case MoveFailure::HitWall:
+      return "the body hit the wall";
+    case MoveFailure::TimedOut:
+      return "the hold was not reached in time";
+    case MoveFailure::Unstable:
+      return "the simulation became unstable";
+  }
+  return "";
+}
+
 std::string performed_plan_text(const Wall& wall, const PerformedPlan& performed) {
   const Plan& plan = performed.plan;
   // A search that found nothing once moves were refused says so, not that no climb exists.

@@ -14,4 +14,7 @@ namespace crux {
 nlohmann::ordered_json performed_plan_json(const Wall& wall, const PerformedPlan& performed);
 std::string performed_plan_text(const Wall& wall, const PerformedPlan& performed);
 
+// Why a move failed, in words ("the body hit the wall"); "" for none.
+std::string failure_words(MoveFailure failure);
+
 }  // namespace crux

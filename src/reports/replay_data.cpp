@@ -8,6 +8,7 @@
 
 #include "common/json_field.hpp"
 #include "configurations/hold_configuration.hpp"
+#include "reports/perform_description.hpp"
 
 namespace crux {
 namespace {
@@ -83,15 +84,17 @@ nlohmann::ordered_json body_model_json(const BodyModel& model) {
   return body;
 }
 
-nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, const ClimbReplay& replay,
-                                   const ClimbStances* stances, const std::string& title) {
+namespace {
+
+nlohmann::ordered_json replay_head(const BodyModel& model, const Wall& wall, double grasp_radius,
+                                   const std::string& title, const std::string& climb) {
   nlohmann::ordered_json out;
   out["format"] = "crux-replay";
   out["version"] = 1;
   out["title"] = title;
-  out["climb"] = replay.climb_kind;
+  out["climb"] = climb;
   out["model"] = body_model_json(model);
-  out["grasp_radius"] = replay.grasp_radius;
+  out["grasp_radius"] = grasp_radius;
   nlohmann::ordered_json holds = nlohmann::ordered_json::array();
   for (const Hold& hold : wall.holds) {
     holds.push_back({{"id", hold.id}, {"position", vector_json(hold.position)}, {"radius", hold.radius}});
@@ -102,6 +105,20 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
                  {"start", configuration_json(wall, start_configuration(wall))}};
   // Only an inclined wall says so, so that a vertical wall's replay keeps its bytes.
   if (wall.incline_deg != 0.0) out["wall"]["incline"] = wall.incline_deg;
+  return out;
+}
+
+nlohmann::ordered_json check_json(int frame, const std::array<Eigen::Vector3d, kLimbCount>& grasp_points) {
+  nlohmann::ordered_json points = nlohmann::ordered_json::array();
+  for (const Eigen::Vector3d& point : grasp_points) points.push_back(vector_json(point));
+  return {{"frame", frame}, {"grasp_points", points}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, const ClimbReplay& replay,
+                                   const ClimbStances* stances, const std::string& title) {
+  nlohmann::ordered_json out = replay_head(model, wall, replay.grasp_radius, title, replay.climb_kind);
   if (stances && !stances->loads.empty()) out["start_stance"] = stance_json(stances->loads.front());
   nlohmann::ordered_json moves = nlohmann::ordered_json::array();
   for (const ReplayMove& move : replay.moves) {
@@ -121,11 +138,37 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
   out["climb_moves"] = replay.climb_moves;
   out["frames"] = {{"count", replay.frame_count}, {"postures", replay.frames}};
   out["moves"] = std::move(moves);
-  if (replay.check_frame >= 0) {
-    nlohmann::ordered_json points = nlohmann::ordered_json::array();
-    for (const Eigen::Vector3d& point : replay.check_grasp_points) points.push_back(vector_json(point));
-    out["check"] = {{"frame", replay.check_frame}, {"grasp_points", points}};
+  if (replay.check_frame >= 0) out["check"] = check_json(replay.check_frame, replay.check_grasp_points);
+  return out;
+}
+
+nlohmann::ordered_json performed_replay_data(const BodyModel& model, const Wall& wall, const PerformedReplay& replay,
+                                             int planned_moves, double grasp_radius, const std::string& title) {
+  nlohmann::ordered_json out = replay_head(model, wall, grasp_radius, title, "performed");
+  out["performed"] = true;
+  nlohmann::ordered_json moves = nlohmann::ordered_json::array();
+  for (const PerformedReplayMove& move : replay.moves) {
+    const AttemptedMove& attempted = move.move;
+    moves.push_back(
+        {{"limb", enum_name(attempted.limb)},
+         {"hold", wall.holds[attempted.hold].id},
+         {"success", attempted.performed},
+         {"cause", attempted.performed ? nlohmann::ordered_json() : nlohmann::ordered_json(enum_name(attempted.cause))},
+         {"cause_text",
+          attempted.performed ? nlohmann::ordered_json() : nlohmann::ordered_json(failure_words(attempted.cause))},
+         {"max_torque_ratio", std::round(attempted.max_torque_ratio * 1000) / 1000},
+         {"configuration", configuration_json(wall, move.configuration)},
+         {"first_frame", move.first_frame},
+         {"last_frame", move.last_frame}});
   }
+  out["climb_moves"] = planned_moves;
+  out["frames"] = {{"count", replay.frame_count},
+                   {"postures", replay.postures},
+                   {"root_rotations", replay.root_rotations},
+                   {"hold_forces", replay.hold_forces},
+                   {"times", replay.times}};
+  out["moves"] = std::move(moves);
+  if (replay.check_frame >= 0) out["check"] = check_json(replay.check_frame, replay.check_grasp_points);
   return out;
 }
 

@@ -20,6 +20,21 @@ std::size_t climb_moves(const ReportPage& page) {
   return page.replay.is_null() ? 0 : page.replay.value("climb_moves", replay_moves(page));
 }
 
+nlohmann::ordered_json performed_json(const ReportPage& page) {
+  if (!page.performed) return nullptr;
+  const PerformedSection& p = *page.performed;
+  return {{"folder", p.folder},
+          {"outcome", p.outcome},
+          {"moves", p.moves.size()},
+          {"frames", p.replay.is_null() ? 0 : p.replay["frames"]["count"].get<int>()}};
+}
+
+std::string performed_text(const ReportPage& page) {
+  if (!page.performed) return "";
+  const PerformedSection& p = *page.performed;
+  return fmt::format("performed in MuJoCo ({}): {}\n", p.folder, p.outcome);
+}
+
 }  // namespace
 
 nlohmann::ordered_json written_report_json(const ReportPage& page, const std::string& run_name, const std::string& file,
@@ -52,6 +67,7 @@ nlohmann::ordered_json written_report_json(const ReportPage& page, const std::st
     out["stance_effort"] = {{"on_four_holds", series(page.stance_effort_four)},
                             {"on_three_holds", series(page.stance_effort_three)}};
   }
+  out["performed"] = performed_json(page);
   out["seconds"] = seconds;
   return out;
 }
@@ -60,14 +76,18 @@ std::string written_report_text(const ReportPage& page, const std::string& run_n
                                 std::size_t bytes, double seconds) {
   const std::string written = fmt::format("wrote {} ({:.1f} MB, {}", file, static_cast<double>(bytes) / 1e6,
                                           counted(page.figures.size(), "figure"));
+  if (page.replay.is_null() && page.replay_reason.empty() && page.performed) {
+    return fmt::format("{}) in {:.2f} s\n{}", written, seconds, performed_text(page));
+  }
   if (page.replay.is_null()) {
-    return fmt::format("{}, no replay) in {:.2f} s\nno replay: {}\n", written, seconds, page.replay_reason);
+    return fmt::format("{}, no replay) in {:.2f} s\nno replay: {}\n{}", written, seconds, page.replay_reason,
+                       performed_text(page));
   }
   const std::string moves = replay_moves(page) < climb_moves(page)
                                 ? fmt::format("the first {} of {} moves", replay_moves(page), climb_moves(page))
                                 : counted(replay_moves(page), "move");
-  return fmt::format("{}, a replay of {} with {}) in {:.2f} s\nreplayed: {}\n", written, run_name, moves, seconds,
-                     page.replay_reason);
+  return fmt::format("{}, a replay of {} with {}) in {:.2f} s\nreplayed: {}\n{}", written, run_name, moves, seconds,
+                     page.replay_reason, performed_text(page));
 }
 
 }  // namespace crux

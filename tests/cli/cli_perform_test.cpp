@@ -148,5 +148,44 @@ TEST(CliPerform, ABadRunOrClimbIsOneLineAndExitCode2AndWritesNoFolder) {
   }
 }
 
+// crux report on a crux perform folder: a page of its own that plays the simulated climb;
+// beside a run's replay with --performed. Bad combinations are one line, exit 2, no page.
+TEST(CliPerform, TheReportShowsAPerformedClimbAloneOrBesideARunsReplay) {
+  const fs::path performed = perform_scratch("reported");
+  ASSERT_EQ(run_crux("perform --wall-file " + ladder_file() + " -o " + performed.string()).exit_code, 0);
+  const fs::path page = perform_scratch("performed.html");
+  const auto alone = run_crux("report " + performed.string() + " --json -o " + page.string());
+  ASSERT_EQ(alone.exit_code, 0) << alone.err;
+  const auto json = nlohmann::ordered_json::parse(alone.out);
+  EXPECT_EQ(json["performed"]["moves"], 1);
+  EXPECT_GT(json["performed"]["frames"].get<int>(), 10);
+  EXPECT_EQ(json["performed"]["outcome"].get<std::string>().rfind("All 1 move performed, to the top", 0), 0u)
+      << alone.out;
+  const std::string html = testing::read_output_text(page);
+  EXPECT_NE(html.find("id=\"crux-performed-data\""), std::string::npos);
+  EXPECT_EQ(html.find("id=\"crux-replay-data\""), std::string::npos);
+
+  const std::string run = testing::trained_run_folder().string();
+  const fs::path beside = perform_scratch("beside.html");
+  const auto both = run_crux("report " + run + " --performed " + performed.string() + " -o " + beside.string());
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  EXPECT_NE(both.out.find("performed in MuJoCo (" + performed.string() + "): All 1 move performed"), std::string::npos)
+      << both.out;
+  const std::string two = testing::read_output_text(beside);
+  EXPECT_NE(two.find("id=\"crux-replay-data\""), std::string::npos);
+  EXPECT_NE(two.find("id=\"crux-performed-data\""), std::string::npos);
+
+  const fs::path refused = perform_scratch("refused.html");
+  for (const std::string& arguments :
+       {"report " + performed.string() + " --run training_1 -o " + refused.string(),
+        "report " + performed.string() + " --performed " + performed.string() + " -o " + refused.string(),
+        "report " + run + " --performed " + run + " -o " + refused.string()}) {
+    const auto outcome = run_crux(arguments);
+    EXPECT_EQ(outcome.exit_code, 2) << arguments << "\n" << outcome.err;
+    EXPECT_EQ(testing::count_lines(outcome.err), 1) << arguments << "\n" << outcome.err;
+    EXPECT_FALSE(fs::exists(refused)) << arguments;
+  }
+}
+
 }  // namespace
 }  // namespace crux

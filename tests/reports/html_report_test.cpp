@@ -148,3 +148,56 @@ TEST(HtmlReport, TheDesignCountsAgreeWithTheirNouns) {
 
 }  // namespace
 }  // namespace crux
+
+namespace crux {
+namespace {
+
+PerformedSection performed_section_of(nlohmann::ordered_json replay) {
+  return {"the wall's exact plan under the static model on 'w'",
+          "1 of 2 moves performed; move 2 (left_hand to hold 3) failed: the body hit the wall.",
+          "out/perform",
+          {{"right_hand", 5, true, "", 0.5}, {"left_hand", 3, false, "the body hit the wall", 0.9}},
+          std::move(replay)};
+}
+
+// A crux perform folder's page: the performed climb alone, its moves in a table and its
+// replay's data under its own id.
+TEST(HtmlReport, APerformFolderPageShowsThePerformedClimbAlone) {
+  ReportPage page;
+  page.title = "crux report: perform";
+  page.performed = performed_section_of({{"performed", true}});
+  page.script = "window.loaded = true;";
+  const std::string html = html_report(page);
+  EXPECT_EQ(html.find("id=\"table-one\""), std::string::npos);
+  EXPECT_EQ(html.find("id=\"crux-replay\""), std::string::npos);
+  EXPECT_NE(
+      html.find("<h2>Performed in MuJoCo: the wall&apos;s exact plan under the static model on &apos;w&apos;</h2>"),
+      std::string::npos);
+  EXPECT_NE(html.find("<td>2</td><td>left_hand</td><td>3</td><td>failed: the body hit the wall</td><td>0.90</td>"),
+            std::string::npos);
+  EXPECT_EQ(count_of(html, "<div id=\"crux-performed\"></div>"), 1);
+  EXPECT_EQ(count_of(html, "id=\"crux-performed-data\""), 1);
+  EXPECT_EQ(count_of(html, "window.loaded = true;"), 1);
+}
+
+// README's main job: the paper's kinematic replay, then the climb performed in MuJoCo,
+// each saying which it is; the script is inlined once for both.
+TEST(HtmlReport, APerformedClimbBesideTheReplaySaysWhichIsWhich) {
+  ReportPage page = experiment_page();
+  page.performed = performed_section_of({{"performed", true}});
+  const std::string html = html_report(page);
+  const std::size_t replay = html.find("<section id=\"replay\">"), performed = html.find("<section id=\"performed\">");
+  ASSERT_NE(replay, std::string::npos);
+  ASSERT_NE(performed, std::string::npos);
+  EXPECT_LT(replay, performed);
+  EXPECT_NE(html.find("postures from the IK, nothing simulated"), std::string::npos);
+  EXPECT_NE(html.find("Not the IK's drawing: the motion MuJoCo simulated"), std::string::npos);
+  EXPECT_EQ(count_of(html, "id=\"crux-replay-data\""), 1);
+  EXPECT_EQ(count_of(html, "id=\"crux-performed-data\""), 1);
+  EXPECT_EQ(count_of(html, "window.loaded = true;"), 1);
+  page.performed->replay = nullptr;
+  EXPECT_EQ(html_report(page).find("crux-performed"), std::string::npos) << "nothing performed, nothing to play";
+}
+
+}  // namespace
+}  // namespace crux

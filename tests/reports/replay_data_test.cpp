@@ -15,6 +15,7 @@
 #include "configurations/reachability.hpp"
 #include "outputs/run_folder.hpp"
 #include "support/test_models.hpp"
+#include "support/test_walls.hpp"
 #include "support/trained_run.hpp"
 
 namespace crux {
@@ -152,6 +153,47 @@ TEST(ReplayData, TheCheckPointsAreTheForwardKinematicsOfTheirFrame) {
   }
   EXPECT_EQ(replay["model"]["joints"].size(), static_cast<std::size_t>(kConfigurationDof));
   EXPECT_EQ(replay["model"]["visuals"].size(), model.visuals.size());
+}
+
+}  // namespace
+}  // namespace crux
+
+namespace crux {
+namespace {
+
+// A performed climb's data: the replay's format with "performed", each frame's rotation,
+// hold forces and time, and each move's outcome and cause, in words too.
+TEST(ReplayData, APerformedClimbCarriesItsRotationsForcesAndOutcomes) {
+  const BodyModel& model = testing::human_model();
+  const Wall wall = testing::wall_with_holds({{-0.25, 1.75}, {0.25, 1.75}, {-0.15, 0.45}, {0.15, 0.45}, {-0.25, 1.95}});
+  const std::vector<AttemptedMove> moves{{Limb::RightHand, 4, true, MoveFailure::None, 0.51234},
+                                         {Limb::LeftHand, 1, false, MoveFailure::HitWall, 0.9}};
+  std::vector<TrajectorySample> samples(4);
+  for (int i = 0; i < 4; ++i) {
+    samples[i].time = 0.02 * i;
+    samples[i].move = i < 2 ? i - 1 : i - 2;
+    samples[i].posture = standing_posture({-0.3, 0.0, 1.0});
+  }
+  const PerformedReplay replay = replay_performed_climb(model, wall, moves, samples, "test");
+  const nlohmann::ordered_json data = performed_replay_data(model, wall, replay, 7, 0.04, "performed");
+  EXPECT_EQ(data["format"], "crux-replay");
+  EXPECT_EQ(data["performed"], true);
+  EXPECT_EQ(data["climb_moves"], 7);
+  EXPECT_EQ(data["grasp_radius"], 0.04);
+  EXPECT_EQ(data["frames"]["count"], 4);
+  EXPECT_EQ(data["frames"]["root_rotations"].size(), 16u);
+  EXPECT_EQ(data["frames"]["hold_forces"].size(), 48u);
+  EXPECT_EQ(data["frames"]["times"].size(), 4u);
+  ASSERT_EQ(data["moves"].size(), 2u);
+  EXPECT_EQ(data["moves"][0]["hold"], 5) << "holds by id";
+  EXPECT_EQ(data["moves"][0]["success"], true);
+  EXPECT_TRUE(data["moves"][0]["cause"].is_null());
+  EXPECT_EQ(data["moves"][0]["max_torque_ratio"], 0.512);
+  EXPECT_EQ(data["moves"][1]["cause"], "hit_wall");
+  EXPECT_EQ(data["moves"][1]["cause_text"], "the body hit the wall");
+  EXPECT_EQ(data["moves"][1]["first_frame"], 3);
+  EXPECT_EQ(data["moves"][1]["last_frame"], 3);
+  EXPECT_EQ(data["check"]["frame"], 2);
 }
 
 }  // namespace

@@ -86,6 +86,15 @@ export class Body {
   }
 
   /**
+   * Turns the body about its root's frame (after the root's translations, the free joint's body in
+   * MuJoCo) by the quaternion r[offset .. offset + 4) = (x, y, z, w), from its orientation on the wall.
+   */
+  applyRootRotation(r, offset = 0) {
+    const last = this.joints.findIndex((j) => !j.prismatic) - 1;
+    this.moving[Math.max(last, 0)].quaternion.set(r[offset], r[offset + 1], r[offset + 2], r[offset + 3]).normalize();
+  }
+
+  /**
    * Paints each segment whose carrying joint has a torque ratio in `ratios` (joint -> ratio)
    * with colour(ratio), and gives the others their own colours back (ratios null: all).
    */

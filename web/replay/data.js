@@ -10,7 +10,10 @@ function isVec(v, n) {
   return Array.isArray(v) && v.length === n && v.every((x) => typeof x === 'number' && Number.isFinite(x));
 }
 
-/** Validates `raw` and returns it with derived lookups (postures as Float64Array, move of each frame, hold index). */
+/**
+ * Validates `raw` and returns it with derived lookups (postures as Float64Array, move of each frame, hold index;
+ * for a performed climb the root's rotations and the hold forces of each frame).
+ */
 export function prepareReplayData(raw) {
   if (!raw || raw.format !== 'crux-replay') fail('format is not "crux-replay"');
   if (raw.version !== 1) fail(`unsupported version ${raw.version}`);
@@ -70,6 +73,33 @@ export function prepareReplayData(raw) {
     if (moves.length > 0) stances.fill(current, moves[moves.length - 1].last_frame + 1);
   }
 
+  // A climb performed in MuJoCo: each frame also has the root's rotation, each limb's force
+  // from its hold (drawn as the static model's are) and its simulated time.
+  const performed = raw.performed === true;
+  let rootRotations = null;
+  let frameSeconds = null;
+  if (performed) {
+    const perFrame = (name, n) => {
+      const values = frames[name];
+      if (!Array.isArray(values) || values.length !== frames.count * n || !values.every(Number.isFinite)) {
+        fail(`frames.${name} must hold ${n} numbers per frame`);
+      }
+      return Float64Array.from(values);
+    };
+    rootRotations = perFrame('root_rotations', 4);
+    const forces = perFrame('hold_forces', 12);
+    const times = perFrame('times', 1);
+    for (let f = 0; f < frames.count; ++f) {
+      const limbForces = [0, 1, 2, 3].map((i) => {
+        const v = Array.from(forces.subarray(12 * f + 3 * i, 12 * f + 3 * i + 3));
+        return v.some((x) => x !== 0) ? v : null;
+      });
+      stances[f] = { forces: limbForces, joint_ratios: [], effort: undefined };
+    }
+    frameSeconds = frames.count > 1 ? (times[frames.count - 1] - times[0]) / (frames.count - 1) : null;
+    moves.forEach((m, k) => { if (typeof m.success !== 'boolean') fail(`moves[${k}].success missing`); });
+  }
+
   const wall = raw.wall || { holds: [], start: {} };
   const holdIndex = new Map();
   (wall.holds || []).forEach((h, i) => holdIndex.set(h.id, i));
@@ -88,6 +118,10 @@ export function prepareReplayData(raw) {
     moveAt,
     stances,
     hasStances: raw.start_stance !== undefined,
+    performed,
+    rootRotations,
+    frameSeconds,
+    hasForces: performed || raw.start_stance !== undefined,
     check: raw.check || null,
   };
 }

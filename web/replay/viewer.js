@@ -82,7 +82,7 @@ export class ReplayViewer {
     this.prevButton = el('button', { type: 'button', title: 'Previous move (←)', text: '◀ Move' });
     this.nextButton = el('button', { type: 'button', title: 'Next move (→)', text: 'Move ▶' });
     this.slider = el('input', { type: 'range', class: 'crux-replay-slider', min: 0, max: this.data.frameCount - 1, step: 1, value: 0, 'aria-label': 'Frame' });
-    this.speedSelect = el('select', { class: 'crux-replay-speed', title: 'Playback speed (1x = 30 frames per second)', 'aria-label': 'Speed' },
+    this.speedSelect = el('select', { class: 'crux-replay-speed', title: this.data.performed ? 'Playback speed (1x = the simulated time)' : 'Playback speed (1x = 30 frames per second)', 'aria-label': 'Speed' },
       SPEEDS.map((s) => el('option', { value: String(s), text: `${s}x`, selected: s === 1 })));
     this.frameLabel = el('span', { class: 'crux-replay-frame' });
     this.followBox = el('input', { type: 'checkbox', checked: true });
@@ -96,10 +96,14 @@ export class ReplayViewer {
     ]);
     const legend = el('div', { class: 'crux-replay-legend' }, [
       swatch(COLORS.hold, 'hold'), swatch(COLORS.start, 'start hold', 'ring'), swatch(COLORS.held, 'held'),
-      swatch(COLORS.reached, 'tried, reached'), swatch(COLORS.unreachable, 'tried, unreachable'),
+      swatch(COLORS.reached, this.data.performed ? 'performed' : 'tried, reached'),
+      swatch(COLORS.unreachable, this.data.performed ? 'failed' : 'tried, unreachable'),
       swatch(COLORS.grasp[0], 'grasp zone', 'ring'), swatch(COLORS.finish, 'finish height', 'line'),
     ]);
-    if (this.data.hasStances) {
+    if (this.data.performed) {
+      legend.append(swatch(FORCE_COLOUR, 'force from the hold in MuJoCo, 0.1 m per 100 N', 'line'),
+        swatch(COLORS.unreachable, 'where the move failed'));
+    } else if (this.data.hasStances) {
       legend.append(swatch(FORCE_COLOUR, 'contact force, 0.1 m per 100 N', 'line'),
         swatch(parseInt(torqueRatioColour(0).slice(1), 16), 'joint torque 0'),
         swatch(parseInt(torqueRatioColour(0.5).slice(1), 16), '0.5'),
@@ -149,7 +153,7 @@ export class ReplayViewer {
     });
 
     // The static model's contact forces, in the wall's frame, shown at the stances.
-    this.forceArrows = data.hasStances ? LIMBS.map((limb) => {
+    this.forceArrows = data.hasForces ? LIMBS.map((limb) => {
       const arrow = new ArrowHelper(new Vector3(0, 0, 1), new Vector3(), 0.1, FORCE_COLOUR, 0.04, 0.025);
       arrow.name = `force:${limb}`;
       arrow.visible = false;
@@ -161,6 +165,9 @@ export class ReplayViewer {
       this.tilted.add(arrow);
       return arrow;
     }) : [];
+
+    // A performed climb's failed move: a red ball where its free limb was when it failed.
+    this.failure = data.performed ? this.failureMarker() : null;
 
     const hemi = new HemisphereLight(0xffffff, 0x8c8a86, 1.6);
     hemi.position.set(0, 0, 1); // z is up
@@ -181,6 +188,25 @@ export class ReplayViewer {
     this.controls.enableDamping = false;
     this.controls.update();
     this.lastRoot = start.clone();
+  }
+
+  failureMarker() {
+    const data = this.data;
+    const k = data.moves.findIndex((m) => !m.success);
+    if (k < 0) return null;
+    const move = data.moves[k];
+    this.body.apply(data.postures, move.last_frame * data.dof);
+    this.body.applyRootRotation(data.rootRotations, move.last_frame * 4);
+    this.tilted.updateMatrixWorld(true);
+    const p = this.body.graspWorld()[LIMBS.indexOf(move.limb)];
+    const marker = new Mesh(new SphereGeometry(0.06, 20, 14),
+      new MeshBasicMaterial({ color: COLORS.unreachable, transparent: true, opacity: 0.8, depthTest: false }));
+    marker.name = 'failure';
+    marker.renderOrder = 12;
+    marker.position.copy(this.tilted.worldToLocal(new Vector3(p[0], p[1], p[2])));
+    marker.visible = false;
+    this.tilted.add(marker);
+    return { marker, frame: move.last_frame };
   }
 
   rootPosition() {
@@ -289,7 +315,9 @@ export class ReplayViewer {
     const f = Math.max(0, Math.min(data.frameCount - 1, Math.round(Number(i)) || 0));
     this.frame = f;
     this.body.apply(data.postures, f * data.dof);
+    if (data.performed) this.body.applyRootRotation(data.rootRotations, f * 4);
     this.body.root.updateMatrixWorld(true);
+    if (this.failure) this.failure.marker.visible = f >= this.failure.frame;
     if (this.follow) {
       const root = this.rootPosition();
       const delta = new Vector3(0, root.y - this.lastRoot.y, root.z - this.lastRoot.z);
@@ -312,7 +340,7 @@ export class ReplayViewer {
 
   /** The stance's forces as arrows from the grasp points, its torque ratios on the segments. */
   showStance(stance) {
-    if (!this.data.hasStances) return;
+    if (!this.data.hasForces) return;
     const grasp = this.body.graspWorld();
     this.forceArrows.forEach((arrow, i) => {
       const force = stance ? stance.forces[i] : null;
@@ -324,7 +352,7 @@ export class ReplayViewer {
       const length = newtons * METRES_PER_NEWTON;
       arrow.setLength(length, Math.min(0.04, 0.5 * length), Math.min(0.025, 0.3 * length));
     });
-    this.body.paintByJoint(stance ? new Map(stance.joint_ratios) : null, torqueRatioColour);
+    if (this.data.hasStances) this.body.paintByJoint(stance ? new Map(stance.joint_ratios) : null, torqueRatioColour);
     this.stance = stance;
   }
 
@@ -341,7 +369,9 @@ export class ReplayViewer {
     const data = this.data;
     const M = data.moves.length;
     let text;
-    if (!move) {
+    if (data.performed) {
+      text = this.performedInfo(f, k, move);
+    } else if (!move) {
       text = `No moves · frame ${f} of ${data.frameCount - 1}`;
     } else {
       const rise = move.root_rise_cm;
@@ -360,7 +390,7 @@ export class ReplayViewer {
     if (text !== this.infoText) {
       this.infoText = text;
       this.info.textContent = text;
-      this.info.classList.toggle('crux-replay-failed', Boolean(move) && !move.success);
+      this.info.classList.toggle('crux-replay-failed', Boolean(move) && !move.success && f >= move.first_frame);
     }
     // While playing, the slider and frame counter follow at 10 Hz: repainting them every frame
     // costs more than the 3D view in a software-composited browser.
@@ -369,6 +399,19 @@ export class ReplayViewer {
       this.lastUiUpdate = now;
       this.updateControls(f);
     }
+  }
+
+  /** The info line of a performed climb: the move under way, its outcome once it has one, the time. */
+  performedInfo(f, k, move) {
+    const data = this.data;
+    const time = `t ${fmt(data.raw.frames.times[f], 2)} s`;
+    if (!move) return `No moves performed · ${time}`;
+    if (f < move.first_frame) return `The start stance settles on its four holds · ${time}`;
+    const parts = [`Move ${k + 1} of ${data.raw.climb_moves}`, `${LIMB_NAMES[move.limb] || move.limb} to hold ${move.hold}`];
+    if (f < move.last_frame) parts.push('under way');
+    else parts.push(move.success ? 'performed' : `failed: ${move.cause_text || move.cause}`);
+    parts.push(`peak torque ${fmt(move.max_torque_ratio, 2)} of its limit`, time);
+    return parts.join(' · ');
   }
 
   updateControls(f) {
@@ -390,7 +433,9 @@ export class ReplayViewer {
         advance = 1;
       } else {
         const dt = this.lastTime === null ? 0 : Math.min(0.25, (time - this.lastTime) / 1000);
-        this.accumulator += dt * BASE_FPS * this.speed;
+        // 1x plays a performed climb in real time, any other at BASE_FPS.
+        const fps = this.data.frameSeconds ? 1 / this.data.frameSeconds : BASE_FPS;
+        this.accumulator += dt * fps * this.speed;
         advance = Math.floor(this.accumulator);
         this.accumulator -= advance;
       }
