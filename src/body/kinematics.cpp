@@ -138,6 +138,18 @@ void operational_jacobians(const BodyModel& model, BodyData& data) {
   }
 }
 
+void turn_about_root(BodyData& data, const Eigen::Quaterniond& rotation) {
+  const Eigen::Matrix3d turn = rotation.normalized().toRotationMatrix();
+  const Eigen::Vector3d pivot = data.placements[kRootDof - 1].origin;
+  for (std::size_t i = kRootDof - 1; i < data.placements.size(); ++i) {
+    JointPlacement& placement = data.placements[i];
+    placement.origin = pivot + turn * (placement.origin - pivot);
+    placement.rotation = turn * placement.rotation;
+    placement.axis = turn * placement.axis;
+  }
+  for (Eigen::Vector3d& point : data.points) point = pivot + turn * (point - pivot);
+}
+
 const Eigen::Vector3d& centre_of_mass(const BodyModel& model, BodyData& data) {
   Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
   const int n = static_cast<int>(model.joints.size());

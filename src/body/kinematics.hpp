@@ -2,6 +2,8 @@
 // Forward kinematics, operational-point Jacobians and the centre of mass, as free
 // functions over (model, data): none allocates.
 
+#include <Eigen/Geometry>
+
 #include "body/body_data.hpp"
 #include "body/body_model.hpp"
 
@@ -25,6 +27,11 @@ void remaining_forward_kinematics(const BodyModel& model, BodyData& data, const 
 
 // The five 3 x 35 Jacobians d e_i / d G at the posture of the last forward_kinematics.
 void operational_jacobians(const BodyModel& model, BodyData& data);
+
+// After forward_kinematics, the body turned by `rotation` about its root's frame (the
+// frame after the root's translations): crux's root does not turn, but a free root in
+// MuJoCo does. Every placement and operational point turns; the Jacobians do not.
+void turn_about_root(BodyData& data, const Eigen::Quaterniond& rotation);
 
 // Whole-body centre of mass at the posture of the last forward_kinematics; also stored
 // in data.centre_of_mass.

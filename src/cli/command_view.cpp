@@ -15,6 +15,7 @@
 #include "experiments/episode_replay.hpp"
 #include "experiments/run_inputs.hpp"
 #include "outputs/output_folder.hpp"
+#include "outputs/perform_folder.hpp"
 #include "outputs/run_config_file.hpp"
 #include "outputs/run_folder.hpp"
 #include "reports/view_description.hpp"
@@ -36,6 +37,7 @@ struct ViewCommand {
   std::string climb_choice = "greedy";
   std::string output;
   bool json = false;
+  CLI::App* command = nullptr;
 
   void run_command() {
     ExperimentConfig config = binding.resolve();
@@ -52,7 +54,11 @@ struct ViewCommand {
           throw InputError(binding.where(field.key), "not used with --run: a run is drawn with its own config.toml");
         }
       }
-      draw_run(config);
+      if (is_perform_folder(run)) {
+        draw_performed(config);
+      } else {
+        draw_run(config);
+      }
       return;
     }
     check_output(config);
@@ -81,6 +87,35 @@ struct ViewCommand {
     }
     write(model, climb.postures[step], folder.wall, run_view_caption(folder, climb, step, output),
           climbing.reachability, climbing.physics, climb_configurations(folder.wall, climb)[step]);
+  }
+
+  // A crux perform folder: step K is the simulated posture at the end of move K, the body
+  // turned by its free root, the forces from its holds drawn as MuJoCo gave them.
+  void draw_performed(ExperimentConfig& config) {
+    if (command->count("--climb") > 0) {
+      throw InputError("--climb", fmt::format("{} is a crux perform folder, which holds one climb: drop --climb", run));
+    }
+    const ExperimentConfig recorded = read_perform_config(std::filesystem::path(run) / "config.toml");
+    if (config.urdf.empty()) config.urdf = recorded.urdf;
+    check_output(config);
+    const BodyModel model = load_configured_body(config);
+    const PerformFolder folder = read_perform_folder(run, model);
+    if (folder.trajectory.empty()) throw InputError(run, "nothing was performed, so there is no posture to show");
+    const int steps = static_cast<int>(folder.moves.size());
+    if (step < 0 || step > steps) {
+      throw InputError(
+          "--step", fmt::format("must be from 0 (the start) to {}, the moves performed or tried, got {}", steps, step));
+    }
+    const TrajectorySample& sample = folder.step_sample(step);
+    const ViewCaption caption = performed_view_caption(folder, step, output);
+    BodySvgOptions options;
+    options.grasp_radius = recorded.settings.learning.climbing.reachability.ik.tolerances.grasp_radius;
+    options.title = caption.title;
+    options.subtitle = caption.subtitle;
+    options.root_rotation = sample.root_orientation;
+    options.hold_forces = &sample.hold_forces;
+    write_file_atomically(output, render_body_svg(model, sample.posture, folder.wall, options));
+    std::cout << (json ? performed_view_json(model, sample, caption).dump(2) + "\n" : view_text(caption));
   }
 
   void check_output(const ExperimentConfig& config) const {
@@ -117,13 +152,15 @@ void add_view_command(CLI::App& app) {
       "Draw the climber on the wall at one posture, front and side (paper Fig. 1), as SVG: step K of a run's\n"
       "climb (--run DIR --step K), or the start posture of a wall file (--wall-file FILE)");
   v->add_option("--run", view->run,
-                "A run folder: that of crux train or transfer, or runs/<condition>_<i> of a crux paper folder; it is "
-                "drawn with its own body and config.toml");
+                "A run folder: that of crux train or transfer, or runs/<condition>_<i> of a crux paper folder; or a "
+                "crux perform folder, whose step K is the posture MuJoCo simulated at the end of move K; it is drawn "
+                "with its own body and config.toml");
   v->add_option("--step", view->step, "The posture of the climb to draw: 0 is the start")->capture_default_str();
   add_climb_option(v, view->climb_choice);
   v->add_option("-o,--output", view->output, "The SVG file to write");
   v->add_flag("--json", view->json, "Print JSON instead of text");
   view->binding.bind(v);
+  view->command = v;
   v->callback([view] { view->run_command(); });
 }
 

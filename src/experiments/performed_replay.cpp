@@ -34,13 +34,11 @@ void add_check(PerformedReplay& replay, const BodyModel& model) {
   const auto f = static_cast<std::size_t>(replay.check_frame);
   const Posture posture = Eigen::Map<const Posture>(replay.postures.data() + f * kConfigurationDof);
   const double* r = replay.root_rotations.data() + 4 * f;
-  const Eigen::Matrix3d rotation = Eigen::Quaterniond(r[3], r[0], r[1], r[2]).normalized().toRotationMatrix();
   BodyData data(model);
   forward_kinematics(model, data, posture);
-  const Eigen::Vector3d pivot = data.placements[kRootDof - 1].origin;
+  turn_about_root(data, Eigen::Quaterniond(r[3], r[0], r[1], r[2]));
   for (int limb = 0; limb < kLimbCount; ++limb) {
-    const Eigen::Vector3d point = data.points[operational_point(static_cast<Limb>(limb))];
-    replay.check_grasp_points[limb] = pivot + rotation * (point - pivot);
+    replay.check_grasp_points[limb] = data.points[operational_point(static_cast<Limb>(limb))];
   }
 }
 

@@ -78,6 +78,12 @@ void read_record(PerformFolder& folder) {
 
 }  // namespace
 
+const TrajectorySample& PerformFolder::step_sample(int step) const {
+  std::size_t found = 0;
+  for (std::size_t i = 0; i < trajectory.size() && trajectory[i].move < step; ++i) found = i;
+  return trajectory.at(found);
+}
+
 bool is_perform_folder(const fs::path& directory) {
   std::error_code error;
   return fs::is_regular_file(directory / "perform.json", error);

@@ -26,6 +26,10 @@ struct PerformFolder {
   double max_torque_ratio = 0.0;
   double simulated_s = 0.0;
   std::vector<TrajectorySample> trajectory;  // trajectory.csv
+
+  // The sample step `step` ends on: the start come to rest (0), or the end of move `step`
+  // (from 1 to the moves attempted); the last sample before it when the move has none.
+  const TrajectorySample& step_sample(int step) const;
 };
 
 // Whether `directory` is a `crux perform` folder (it holds perform.json).

@@ -4,6 +4,9 @@
 
 #include "body/kinematics.hpp"
 #include "common/counted.hpp"
+#include "common/json_field.hpp"
+#include "common/printable.hpp"
+#include "reports/perform_description.hpp"
 
 namespace crux {
 
@@ -11,6 +14,18 @@ ViewCaption run_view_caption(const RunFolder& folder, const RecordedClimb& climb
   return {svg, fmt::format("{} on '{}'", folder.name, folder.wall.name),
           fmt::format("step {} of {} ({}, the start is step 0)", step, climb_description(climb),
                       counted(climb.postures.size(), "posture"))};
+}
+
+ViewCaption performed_view_caption(const PerformFolder& folder, int step, const std::string& svg) {
+  const std::string title = fmt::format("{} on '{}', performed in MuJoCo", folder.climb, printable(folder.wall.name));
+  const double time = folder.step_sample(step).time;
+  const std::size_t steps = folder.moves.size();
+  if (step == 0) return {svg, title, fmt::format("step 0 of {}: the start at rest, t = {:.2f} s", steps, time)};
+  const AttemptedMove& move = folder.moves[step - 1];
+  return {svg, title,
+          fmt::format("step {} of {}: move {}, {} to hold {}, {}, t = {:.2f} s", step, steps, step,
+                      enum_name(move.limb), folder.wall.holds[move.hold].id,
+                      move.performed ? "performed" : "failed: " + failure_words(move.cause), time)};
 }
 
 ViewCaption wall_view_caption(const Wall& wall, const std::string& svg) {
@@ -56,10 +71,11 @@ ViewCaption with_stance_note(ViewCaption caption, const BodyModel& model, const 
   return caption;
 }
 
-nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption,
-                                 const StanceLoads* loads) {
-  BodyData data(model);
-  forward_kinematics(model, data, posture);
+namespace {
+
+// Where the body placed in `data` (at `posture`) is.
+nlohmann::ordered_json placed_body_json(const BodyModel& model, BodyData& data, const Posture& posture,
+                                        const ViewCaption& caption) {
   const WallPenetration penetration = wall_penetration(model, data);
   const Eigen::Vector3d& com = centre_of_mass(model, data);
   nlohmann::ordered_json out;
@@ -79,6 +95,16 @@ nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture,
       {"depth_m", penetration.depth_m},
       {"link", penetration.visual < 0 ? nlohmann::ordered_json()
                                       : nlohmann::ordered_json(model.visuals[penetration.visual].link)}};
+  return out;
+}
+
+}  // namespace
+
+nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption,
+                                 const StanceLoads* loads) {
+  BodyData data(model);
+  forward_kinematics(model, data, posture);
+  nlohmann::ordered_json out = placed_body_json(model, data, posture, caption);
   if (loads == nullptr) return out;
   nlohmann::ordered_json forces = nlohmann::ordered_json::object();
   for (int limb = 0; limb < kLimbCount; ++limb) {
@@ -93,6 +119,24 @@ nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture,
                    {"effort", loads->balanced ? nlohmann::ordered_json(loads->effort) : nlohmann::ordered_json()},
                    {"contact_forces_n", forces},
                    {"torque_to_limit", ratios}};
+  return out;
+}
+
+nlohmann::ordered_json performed_view_json(const BodyModel& model, const TrajectorySample& sample,
+                                           const ViewCaption& caption) {
+  BodyData data(model);
+  forward_kinematics(model, data, sample.posture);
+  turn_about_root(data, sample.root_orientation);
+  nlohmann::ordered_json out = placed_body_json(model, data, sample.posture, caption);
+  const Eigen::Quaterniond& q = sample.root_orientation;
+  out["root_rotation"] = {q.w(), q.x(), q.y(), q.z()};
+  out["time_s"] = sample.time;
+  nlohmann::ordered_json forces = nlohmann::ordered_json::object();
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    if (!sample.hold_forces[limb].isZero())
+      forces[enum_name(static_cast<Limb>(limb))] = vector_json(sample.hold_forces[limb]);
+  }
+  out["hold_forces_n"] = forces;
   return out;
 }
 

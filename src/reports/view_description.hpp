@@ -9,6 +9,7 @@
 #include "body/body_model.hpp"
 #include "body/wall_penetration.hpp"
 #include "climbing/stance_check.hpp"
+#include "outputs/perform_folder.hpp"
 #include "outputs/run_folder.hpp"
 
 namespace crux {
@@ -22,6 +23,8 @@ struct ViewCaption {
 // Step `step` of a run's climb, or a wall's start posture.
 ViewCaption run_view_caption(const RunFolder& folder, const RecordedClimb& climb, int step, const std::string& svg);
 ViewCaption wall_view_caption(const Wall& wall, const std::string& svg);
+// Step `step` of a climb performed in MuJoCo: the start at rest, or the end of a move.
+ViewCaption performed_view_caption(const PerformFolder& folder, int step, const std::string& svg);
 
 // The caption with, when the body at `posture` passes through the wall (body/wall_penetration),
 // a note of how far and which part: the kinematic model ignores the wall, as the paper's
@@ -39,5 +42,10 @@ std::string wall_penetration_note(const BodyModel& model, const WallPenetration&
 nlohmann::ordered_json view_json(const BodyModel& model, const Posture& posture, const ViewCaption& caption,
                                  const StanceLoads* loads = nullptr);
 std::string view_text(const ViewCaption& caption);
+
+// A posture simulated in MuJoCo, `sample` of a performed climb: view_json's keys (the
+// body turned by the root's rotation) with the rotation, the time and the hold forces.
+nlohmann::ordered_json performed_view_json(const BodyModel& model, const TrajectorySample& sample,
+                                           const ViewCaption& caption);
 
 }  // namespace crux

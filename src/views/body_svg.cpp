@@ -125,6 +125,10 @@ class BodyFigure {
   BodyFigure(const BodyModel& model, const Posture& posture, const Wall& wall, const BodySvgOptions& options)
       : model_(model), wall_(wall), options_(options), data_(model) {
     forward_kinematics(model, data_, posture);
+    // Only a turned root moves the frames, so that an unturned drawing keeps its bytes.
+    if (options.root_rotation.coeffs() != Eigen::Quaterniond::Identity().coeffs()) {
+      turn_about_root(data_, options.root_rotation);
+    }
     visuals_ = place_visuals(model, data_);
     holds_ = wall.holds;
     // An inclined wall is drawn as it stands, gravity down: every point turns from wall
@@ -281,6 +285,7 @@ class BodyFigure {
     write_body(view);
     write_grasp_spheres(view);
     if (options_.loads != nullptr) write_loads(view, *options_.loads);
+    if (options_.hold_forces != nullptr) write_hold_forces(view, *options_.hold_forces);
     out_ += "</g>\n";
   }
 
@@ -357,6 +362,17 @@ class BodyFigure {
     out_ += "</g>\n";
   }
 
+  void write_hold_forces(const View& view, const std::array<Eigen::Vector3d, kLimbCount>& forces) {
+    out_ += "<g class=\"hold-forces\">\n";
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      if (forces[limb].isZero()) continue;
+      const Eigen::Vector3d from = grasp_point(limb);
+      const Eigen::Vector3d to = from + tilt_ * forces[limb] * kMetresPerNewton;
+      write_arrow(view.project(from), view.project(to), kLimbStyles[limb].code, forces[limb].norm());
+    }
+    out_ += "</g>\n";
+  }
+
   // A line and its head (6 pixels long), the line naming the limb and the force for tools.
   void write_arrow(const Point& from, const Point& to, const char* limb, double newtons) {
     append_format(out_,
@@ -369,6 +385,13 @@ class BodyFigure {
     append_format(out_, "<polygon fill=\"{}\" points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\"/>\n", kForceColour,
                   to[0], to[1], to[0] - 6 * ux - 3 * uy, to[1] - 6 * uy + 3 * ux, to[0] - 6 * ux + 3 * uy,
                   to[1] - 6 * uy - 3 * ux);
+  }
+
+  // A force arrow's legend key.
+  static void draw_force_key(std::string& svg, double x, double y) {
+    append_format(svg,
+                  "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"2\"/>\n",
+                  x, y, x + 24, y, kForceColour);
   }
 
   // A hold, each limb's grasp sphere, the finishing height.
@@ -387,12 +410,7 @@ class BodyFigure {
                        }});
     }
     if (options_.loads != nullptr) {
-      items.push_back({"contact force, 0.1 m per 100 N", [](std::string& svg, double x, double y) {
-                         append_format(svg,
-                                       "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" "
-                                       "stroke-width=\"2\"/>\n",
-                                       x, y, x + 24, y, kForceColour);
-                       }});
+      items.push_back({"contact force, 0.1 m per 100 N", draw_force_key});
       for (const double ratio : {0.0, 0.5, 1.0}) {
         items.push_back(
             {fmt::format("joint torque {:g} x its limit", ratio), [ratio](std::string& svg, double x, double y) {
@@ -402,6 +420,9 @@ class BodyFigure {
                              x + 12, y, torque_ratio_colour(ratio));
              }});
       }
+    }
+    if (options_.hold_forces != nullptr) {
+      items.push_back({"force from the hold in MuJoCo, 0.1 m per 100 N", draw_force_key});
     }
     items.push_back({fmt::format("finish height, {:.2f} m{}", wall_.finish_height,
                                  wall_.incline_deg != 0.0 ? " along the wall" : ""),

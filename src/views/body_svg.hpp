@@ -4,7 +4,10 @@
 // right), the body drawn from the URDF's primitive visuals, with the holds, the grasp
 // spheres and the finishing height.
 
+#include <array>
 #include <string>
+
+#include <Eigen/Geometry>
 
 #include "body/body_model.hpp"
 #include "climbing/stance_check.hpp"
@@ -22,6 +25,11 @@ struct BodySvgOptions {
   // ratio, a dot at the joint coloured from green (0) through yellow to red (1 and over).
   // Null: neither is drawn.
   const StanceLoads* loads = nullptr;
+  // A posture simulated in MuJoCo: the root's rotation from its orientation on the wall
+  // (the body turns about its root's frame), and each limb's force from its hold, an
+  // arrow as the static model's (zero: none). Null: none drawn.
+  Eigen::Quaterniond root_rotation = Eigen::Quaterniond::Identity();
+  const std::array<Eigen::Vector3d, kLimbCount>* hold_forces = nullptr;
 };
 
 // The contact force arrows' scale: 100 N is drawn 0.1 m long.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,25 @@ TEST(Kinematics, JacobiansMatchCentralFiniteDifferences) {
       }
     }
   }
+}
+
+// A quarter turn about z takes each point's offset from the root's frame (dx, dy, dz) to
+// (-dy, dx, dz), and turns the frames with it; the root's frame stays where it is.
+TEST(Kinematics, TurningAboutTheRootTurnsEveryPointAboutTheRootsFrame) {
+  const BodyModel& model = human_model();
+  BodyData data(model), turned(model);
+  const Posture g = standing_posture({-0.3, 0.2, 1.0});
+  forward_kinematics(model, data, g);
+  forward_kinematics(model, turned, g);
+  turn_about_root(turned, Eigen::Quaterniond(Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitZ())));
+  const Eigen::Vector3d pivot = g.head<kRootDof>();
+  EXPECT_LT((turned.placements[kRootDof - 1].origin - pivot).norm(), 1e-15);
+  for (int point = 0; point < kOperationalPointCount; ++point) {
+    const Eigen::Vector3d d = data.points[point] - pivot;
+    EXPECT_LT((turned.points[point] - pivot - Eigen::Vector3d(-d.y(), d.x(), d.z())).norm(), 1e-12) << point;
+  }
+  const Eigen::Vector3d axis = data.placements.back().axis;
+  EXPECT_LT((turned.placements.back().axis - Eigen::Vector3d(-axis.y(), axis.x(), axis.z())).norm(), 1e-12);
 }
 
 TEST(Kinematics, StandingPostureIsUprightWithFeetBelowRoot) {

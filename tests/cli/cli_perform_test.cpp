@@ -149,8 +149,9 @@ TEST(CliPerform, ABadRunOrClimbIsOneLineAndExitCode2AndWritesNoFolder) {
 }
 
 // crux report on a crux perform folder: a page of its own that plays the simulated climb;
-// beside a run's replay with --performed. Bad combinations are one line, exit 2, no page.
-TEST(CliPerform, TheReportShowsAPerformedClimbAloneOrBesideARunsReplay) {
+// beside a run's replay with --performed. crux view draws its steps as simulated. Bad
+// combinations are one line, exit 2, no file.
+TEST(CliPerform, TheReportAndTheViewShowAPerformedClimb) {
   const fs::path performed = perform_scratch("reported");
   ASSERT_EQ(run_crux("perform --wall-file " + ladder_file() + " -o " + performed.string()).exit_code, 0);
   const fs::path page = perform_scratch("performed.html");
@@ -175,9 +176,22 @@ TEST(CliPerform, TheReportShowsAPerformedClimbAloneOrBesideARunsReplay) {
   EXPECT_NE(two.find("id=\"crux-replay-data\""), std::string::npos);
   EXPECT_NE(two.find("id=\"crux-performed-data\""), std::string::npos);
 
+  const fs::path svg = perform_scratch("performed.svg");
+  const auto view = run_crux("view --run " + performed.string() + " --step 1 --json -o " + svg.string());
+  ASSERT_EQ(view.exit_code, 0) << view.err;
+  const auto drawn = nlohmann::ordered_json::parse(view.out);
+  EXPECT_NE(drawn["subtitle"].get<std::string>().find("step 1 of 1: move 1, right_hand to hold 5, performed"),
+            std::string::npos)
+      << view.out;
+  EXPECT_EQ(drawn["root_rotation"].size(), 4u);
+  EXPECT_EQ(drawn["hold_forces_n"].size(), 4u) << "all four limbs on their holds at the end";
+  EXPECT_NE(testing::read_output_text(svg).find("class=\"hold-forces\""), std::string::npos);
+
   const fs::path refused = perform_scratch("refused.html");
   for (const std::string& arguments :
-       {"report " + performed.string() + " --run training_1 -o " + refused.string(),
+       {"view --run " + performed.string() + " --step 2 -o " + refused.string(),
+        "view --run " + performed.string() + " --climb last -o " + refused.string(),
+        "report " + performed.string() + " --run training_1 -o " + refused.string(),
         "report " + performed.string() + " --performed " + performed.string() + " -o " + refused.string(),
         "report " + run + " --performed " + run + " -o " + refused.string()}) {
     const auto outcome = run_crux(arguments);

@@ -4,6 +4,7 @@
 
 #include "body/kinematics.hpp"
 #include "support/test_models.hpp"
+#include "support/test_walls.hpp"
 
 namespace crux {
 namespace {
@@ -72,6 +73,45 @@ TEST(ViewDescription, CaptionsNameTheRunItsClimbAndStep) {
   const ViewCaption wall = wall_view_caption(folder.wall, "b.svg");
   EXPECT_EQ(wall.title, "'w'");
   EXPECT_EQ(wall.svg, "b.svg");
+}
+
+}  // namespace
+}  // namespace crux
+
+namespace crux {
+namespace {
+
+// A performed climb's step: its caption names the move and its outcome, and the JSON
+// places the body turned by the root's rotation, with the forces from the holds.
+TEST(ViewDescription, APerformedStepIsCaptionedAndPlacedTurned) {
+  const BodyModel& model = testing::human_model();
+  PerformFolder folder;
+  folder.climb = "the wall's exact plan";
+  folder.wall = testing::wall_with_holds({{-0.25, 1.75}, {0.25, 1.75}, {-0.15, 0.45}, {0.15, 0.45}, {-0.25, 1.95}});
+  folder.wall.name = "w";
+  folder.moves = {{Limb::RightHand, 4, false, MoveFailure::HandSlipped, 0.8}};
+  folder.trajectory.resize(3);
+  for (int i = 0; i < 3; ++i) {
+    folder.trajectory[i].time = 0.5 * i;
+    folder.trajectory[i].move = i == 0 ? -1 : 0;
+    folder.trajectory[i].posture = standing_posture({-0.3, 0.0, 1.0});
+  }
+  folder.trajectory[2].root_orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitX()));
+  folder.trajectory[2].hold_forces[1] = Eigen::Vector3d(0, 0, 250);
+  EXPECT_EQ(performed_view_caption(folder, 0, "a.svg").subtitle, "step 0 of 1: the start at rest, t = 0.00 s");
+  const ViewCaption caption = performed_view_caption(folder, 1, "a.svg");
+  EXPECT_EQ(caption.title, "the wall's exact plan on 'w', performed in MuJoCo");
+  EXPECT_EQ(caption.subtitle,
+            "step 1 of 1: move 1, right_hand to hold 5, failed: a hand slipped off its hold, t = 1.00 s");
+  const nlohmann::ordered_json json = performed_view_json(model, folder.step_sample(1), caption);
+  EXPECT_EQ(json["time_s"], 1.0);
+  EXPECT_EQ(json["hold_forces_n"].size(), 1u);
+  EXPECT_EQ(json["hold_forces_n"]["left_hand"][2], 250.0);
+  BodyData data(model);
+  forward_kinematics(model, data, folder.trajectory[2].posture);
+  turn_about_root(data, folder.trajectory[2].root_orientation);
+  const Eigen::Vector3d hand = data.points[operational_point(Limb::RightHand)];
+  EXPECT_EQ(json["grasp_points"]["right_hand"], nlohmann::ordered_json({hand.x(), hand.y(), hand.z()}));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <numbers>
 
+#include "body/kinematics.hpp"
 #include "support/svg_check.hpp"
 #include "support/test_models.hpp"
 #include "support/test_walls.hpp"
@@ -157,6 +158,40 @@ TEST(BodySvg, LoadsAreArrowsAtTheGraspPointsAndColouredJoints) {
   const std::string plain = render_body_svg(model, posture, four_hold_wall());
   EXPECT_EQ(plain.find("contact-forces"), std::string::npos) << "no loads, nothing drawn";
   EXPECT_EQ(plain.find("contact force"), std::string::npos);
+}
+
+// A posture simulated in MuJoCo: the body turned about its root (a half turn about z puts
+// the right hand where the standing body's right hand mirrors through the root, so the
+// front view's right hand moves to the other side), and the forces from the holds as
+// arrows, none for a zero force; an unturned body keeps its bytes.
+TEST(BodySvg, ASimulatedPostureTurnsAboutItsRootAndDrawsItsHoldForces) {
+  const BodyModel& model = testing::human_model();
+  const Posture posture = standing_posture({-0.35, 0.6, 1.0});
+  const std::string plain = render_body_svg(model, posture, four_hold_wall());
+  BodySvgOptions options;
+  EXPECT_EQ(render_body_svg(model, posture, four_hold_wall(), options), plain);
+  const std::array<Eigen::Vector3d, kLimbCount> forces{Eigen::Vector3d(0, 0, 200), Eigen::Vector3d::Zero(),
+                                                       Eigen::Vector3d(0, 0, 100), Eigen::Vector3d(0, 0, 100)};
+  options.hold_forces = &forces;
+  const std::string with_forces = render_body_svg(model, posture, four_hold_wall(), options);
+  EXPECT_EQ(count_of(panel_group(with_forces, 0, "hold-forces"), "<line"), 3) << "no arrow for a zero force";
+  EXPECT_NE(with_forces.find("force from the hold in MuJoCo, 0.1 m per 100 N"), std::string::npos);
+  // The right hand's x in the front view, from the first hold's (the panel's extent may change).
+  const auto right_hand_x = [](const std::string& svg) {
+    const std::string front = panel_group(svg, 0, "grasp-spheres");
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(front, m, std::regex("<circle data-limb=\"RH\" cx=\"([-0-9.]+)\"")));
+    return std::stod(m[1]) - circle_centres(panel_group(svg, 0, "holds"), "cx").front();
+  };
+  options.hold_forces = nullptr;
+  options.root_rotation = Eigen::Quaterniond(Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitZ()));
+  const std::string turned = render_body_svg(model, posture, four_hold_wall(), options);
+  check_well_formed(turned);
+  BodyData data(model);
+  forward_kinematics(model, data, posture);
+  const double right_hand_y = data.points[operational_point(Limb::RightHand)].y();
+  // The front view draws -y left to right: the hand at y moves to 2 * 0.6 - y.
+  EXPECT_NEAR(right_hand_x(turned) - right_hand_x(plain), 160 * (right_hand_y - (2 * 0.6 - right_hand_y)), 0.02);
 }
 
 // Green at 0, yellow at 0.5, red from 1 on (ColorBrewer's RdYlGn ends and middle).
