@@ -87,3 +87,21 @@ def test_the_tours_static_model_lines_show_a_climb(tmp_path):
             episodes = int(re.search(r": (\d+) episodes? in ", done.stdout).group(1))
             assert episodes > 0, f"{line}\n{done.stdout}"
             assert "greedy climb: does not finish" not in done.stdout, done.stdout
+
+
+def test_the_tours_performed_climb_is_reported_and_viewed(tmp_path):
+    """The tour's static plan performed in MuJoCo, then its report and its view, run as written."""
+    binary = os.environ.get("CRUX_BINARY")
+    if not binary:
+        pytest.skip("CRUX_BINARY names the crux binary (ctest sets it)")
+    (tmp_path / "bin").mkdir()
+    (tmp_path / "bin" / "crux").symlink_to(binary)
+    lines = [line for line in quick_tour() if line.startswith(
+        ("crux perform --wall-seed", "crux report out/perform ", "crux view --run out/perform "))]
+    assert len(lines) == 3, lines
+    path = f"{tmp_path / 'bin'}{os.pathsep}{os.environ['PATH']}"
+    for line in lines:
+        done = run_shell(line, tmp_path, PATH=path)
+        assert done.returncode == 0, f"{line}\n{done.stderr}"
+    assert 'id="crux-performed-data"' in (tmp_path / "perform.html").read_text()
+    assert 'class="hold-forces"' in (tmp_path / "performed.svg").read_text()

@@ -22,6 +22,7 @@ TEST(WebAssets, TheBundleAndStyleCanBeInlined) {
   EXPECT_TRUE(ascii(script));
   EXPECT_TRUE(ascii(style));
   EXPECT_NE(script.find("crux-replay-data"), std::string_view::npos) << "it reads the page's replay data";
+  EXPECT_NE(script.find("crux-performed-data"), std::string_view::npos) << "and a performed climb's";
 }
 
 }  // namespace

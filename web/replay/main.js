@@ -1,13 +1,13 @@
-// Entry point of replay.bundle.js: builds each replay the page holds, a
-// <script type="application/json" id="X-data"> beside a <div id="X">: the climb's replay (X = crux-replay,
-// as window.cruxReplay) and, beside it, a climb performed in MuJoCo (X = crux-performed, as
-// window.cruxPerformed); a page without them is left alone.
+// Entry point of replay.bundle.js: builds each replay the page holds, a <script type="application/json">
+// of its data beside its <div>: the climb's replay (crux-replay-data, crux-replay; window.cruxReplay) and,
+// beside it, a climb performed in MuJoCo (crux-performed-data, crux-performed; window.cruxPerformed). A page
+// without them is left alone.
 import { prepareReplayData } from './data.js';
 import { ReplayViewer } from './viewer.js';
 
-function mount(id) {
-  const dataElement = document.getElementById(`${id}-data`);
-  const container = document.getElementById(id);
+function mount(containerId, dataId) {
+  const dataElement = document.getElementById(dataId);
+  const container = document.getElementById(containerId);
   if (!dataElement || !container) return null;
   const data = prepareReplayData(JSON.parse(dataElement.textContent));
   const viewer = new ReplayViewer(container, data);
@@ -31,9 +31,9 @@ function mount(id) {
 }
 
 function start() {
-  const replay = mount('crux-replay');
+  const replay = mount('crux-replay', 'crux-replay-data');
   if (replay) window.cruxReplay = replay;
-  const performed = mount('crux-performed');
+  const performed = mount('crux-performed', 'crux-performed-data');
   if (performed) window.cruxPerformed = performed;
 }
 
