@@ -337,5 +337,13 @@ def test_perform_refuses_what_it_cannot_do():
         crux.perform()
     with pytest.raises(ValueError, match="experiment.climb"):
         crux.perform(config={"wall.seed": 10, "experiment.climb": "last"})
-    with pytest.raises(ValueError, match="physics.model: dynamic is not taken by crux.run_learning"):
-        crux.run_learning(config={"wall.seed": 3, "physics.model": "dynamic", "experiment.iterations": 5})
+    with pytest.raises(ValueError, match="physics.model: dynamic is not taken by crux.run_experiment"):
+        crux.run_experiment({"experiment.walls": 1, "physics.model": "dynamic", "experiment.iterations": 5})
+
+
+def test_run_learning_under_the_dynamic_model_performs_its_moves_in_mujoco():
+    """A run of the dynamic model, as crux train runs it, says how many moves MuJoCo performed."""
+    run = crux.run_learning(config={"wall.seed": 3, "physics.model": "dynamic", "experiment.iterations": 20}, seed=5)
+    facts = run.summary["run_facts"]["training"][0]
+    assert 1 <= facts["moves_simulated"] <= 20
+    assert 0 <= facts["moves_performed"] <= facts["moves_simulated"]

@@ -22,6 +22,10 @@ ClimbingMdp::ClimbingMdp(const BodyModel& model, const Wall& wall, const Climbin
       tile_representative_(parameters.grid.tile_count()),
       tile_best_distance_(parameters.grid.tile_count()),
       stuck_possible_(wall.hold_count()) {
+  if (parameters.physics.model == PhysicsModel::Dynamic) {
+    trials_ =
+        std::make_unique<MoveTrials>(model, wall, parameters.physics, parameters.reachability, parameters.perform);
+  }
   limb_bases_ = model.reach_envelope.chain_base;
   start_posture_ = reacher_.require_start(wall_.name);
   reset();
@@ -102,6 +106,7 @@ StepOutcome ClimbingMdp::unshaped_step(ActionCode hold) {
   const HoldConfiguration complete = configuration_.with(free, hold);
   StepOutcome outcome;
   const Posture* reached = reacher_.reach(posture_, complete, next_free_limb(free));
+  if (reached != nullptr && trials_ && !performed(complete, hold, *reached)) reached = nullptr;
   if (reached == nullptr) {
     outcome.reward = parameters_.rewards.unreachable;
     if (at_dead_end() || (parameters_.fall_when_stuck && stuck_in_stance())) {
@@ -130,11 +135,29 @@ StepOutcome ClimbingMdp::unshaped_step(ActionCode hold) {
   return outcome;
 }
 
+bool ClimbingMdp::known_unreachable(const HoldConfiguration& complete, Limb next_to_move) const {
+  if (reacher_.known_unreachable(complete, next_to_move)) return true;
+  const auto found = performed_.find(reacher_.cache_key(complete, next_to_move));
+  return found != performed_.end() && !found->second;
+}
+
+bool ClimbingMdp::performed(const HoldConfiguration& complete, int hold, const Posture& reached) {
+  const Limb free = configuration_.free_limb();
+  const auto [entry, added] = performed_.try_emplace(reacher_.cache_key(complete, next_free_limb(free)), false);
+  if (added) entry->second = trials_->perform(posture_, reached, configuration_, left_hold_, hold).performed();
+  return entry->second;
+}
+
+std::size_t ClimbingMdp::moves_performed() const {
+  return static_cast<std::size_t>(
+      std::count_if(performed_.begin(), performed_.end(), [](const auto& entry) { return entry.second; }));
+}
+
 bool ClimbingMdp::at_dead_end() const {
   const Limb free = configuration_.free_limb();
   const Limb next = next_free_limb(free);
   for (const ActionCandidate& candidate : candidates()) {
-    if (!reacher_.known_unreachable(configuration_.with(free, candidate.wall), next)) return false;
+    if (!known_unreachable(configuration_.with(free, candidate.wall), next)) return false;
   }
   return true;
 }
@@ -148,7 +171,7 @@ bool ClimbingMdp::stuck_in_stance() {
     for (int i = 0; i < count; ++i) {
       const int hold = stuck_possible_[static_cast<std::size_t>(i)];
       if (hold == stance.hold(limb)) continue;
-      if (!reacher_.known_unreachable(three.with(limb, hold), next_free_limb(limb))) return false;
+      if (!known_unreachable(three.with(limb, hold), next_free_limb(limb))) return false;
     }
   }
   return true;
@@ -159,6 +182,14 @@ void ClimbingMdp::save_state(CheckpointWriter& out) const {
   out.value(configuration_.holds);
   out.value<std::int64_t>(left_hold_);
   save_posture(out, posture_);
+  // The dynamic model's verdicts, so that a resumed run performs no move twice (the other
+  // models' checkpoints keep their bytes).
+  if (!trials_) return;
+  out.value<std::uint64_t>(performed_.size());
+  for (const auto& [key, performed] : performed_) {
+    out.value(key);
+    out.value<std::uint8_t>(performed ? 1 : 0);
+  }
 }
 
 void ClimbingMdp::load_state(CheckpointReader& in) {
@@ -176,6 +207,15 @@ void ClimbingMdp::load_state(CheckpointReader& in) {
   if (left != kFree && (left < 0 || left >= wall_.hold_count())) in.fail();
   left_hold_ = static_cast<int>(left);
   posture_ = load_posture(in);
+  if (trials_) {
+    performed_.clear();
+    const auto count = in.value<std::uint64_t>();
+    for (std::uint64_t i = 0; i < count; ++i) {
+      const auto key = in.value<std::uint64_t>();
+      const auto performed = in.value<std::uint8_t>();
+      if (performed > 1 || !performed_.emplace(key, performed == 1).second) in.fail();
+    }
+  }
   // A step describes the state with the body placed at the posture it moved to.
   describe(reacher_.place(posture_));
   if (candidate_count_ == 0) in.fail();  // every state a run reaches offers a hold

@@ -4,6 +4,8 @@
 // A step runs IK from the current posture to the new 4-configuration with the root
 // target H(C4); only this class touches the kinematics, the learner sees codes.
 
+#include <map>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -13,6 +15,7 @@
 #include "configurations/reachability.hpp"
 #include "learning/action_selection.hpp"
 #include "learning/q_learning.hpp"
+#include "simulation/move_trial.hpp"
 
 namespace crux {
 
@@ -40,6 +43,9 @@ struct ClimbingParameters {
   // 4-configuration no limb can move to any other hold, every such move known
   // unreachable (docs/MODEL.md, choice C31). Off by default: only C27's dead ends fall.
   bool fall_when_stuck = false;
+  // physics.model = dynamic: a move the static model reaches is reached only when MuJoCo
+  // performs it, alone from its planned stance (simulation/move_trial), with these settings.
+  PerformParameters perform;
 };
 
 struct StepOutcome {
@@ -89,6 +95,12 @@ class ClimbingMdp {
   const Posture& posture() const { return posture_; }
   const Posture& start_posture() const { return start_posture_; }
   const ConfigurationReacher& reacher() const { return reacher_; }
+  // Under physics.model = dynamic, each move the static model reaches is performed in
+  // MuJoCo once (its verdict cached as the reacher's are).
+  bool simulates() const { return trials_ != nullptr; }
+  // The distinct moves performed in MuJoCo (each once), and how many of them were performed.
+  std::size_t moves_simulated() const { return performed_.size(); }
+  std::size_t moves_performed() const;
   const Wall& wall() const { return wall_; }
   int wall_action_count() const { return wall_.hold_count(); }
   int grid_action_count() const { return parameters_.grid.tile_count(); }
@@ -103,6 +115,12 @@ class ClimbingMdp {
   void describe(const BodyData& body);
   // Whether every candidate of the state is known unreachable.
   bool at_dead_end() const;
+  // The reacher's verdict, or a move that failed in MuJoCo (physics.model = dynamic).
+  bool known_unreachable(const HoldConfiguration& complete, Limb next_to_move) const;
+  // Under physics.model = dynamic, whether MuJoCo performs the move to `hold` from the
+  // present stance, arriving at `reached` (the reacher's posture), performed once per
+  // verdict key.
+  bool performed(const HoldConfiguration& complete, int hold, const Posture& reached);
   // Whether, in the last 4-configuration, every move of every limb to another hold than
   // its own is known unreachable: only letting go and grasping the same hold again is left.
   bool stuck_in_stance();
@@ -115,6 +133,8 @@ class ClimbingMdp {
   ClimbingParameters parameters_;
   double discount_;
   ConfigurationReacher reacher_;
+  std::unique_ptr<MoveTrials> trials_;
+  std::map<std::uint64_t, bool> performed_;  // by the reacher's verdict key: ordered, for checkpoints
   Posture start_posture_, posture_;
   HoldConfiguration configuration_;  // a 3-configuration
   GridPlacement placement_;

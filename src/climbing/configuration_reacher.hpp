@@ -56,12 +56,14 @@ class ConfigurationReacher {
   const PostureCache& cache() const { return cache_; }
   std::size_t solves() const { return solves_; }
 
+  // The key of the verdict for `complete` with `next_to_move` to let go next.
+  std::uint64_t cache_key(const HoldConfiguration& complete, Limb next_to_move) const;
+
   // The cache and the solve count, for a run's checkpoint (the question must be Effort).
   void save_state(CheckpointWriter& out) const;
   void load_state(CheckpointReader& in);
 
  private:
-  std::uint64_t cache_key(const HoldConfiguration& complete, Limb next_to_move) const;
   // The IK's solve for `complete` from `from` (or from standing, as ik.guess says).
   IkResult solve(const Posture& from, const HoldConfiguration& complete);
 

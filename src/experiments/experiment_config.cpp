@@ -371,7 +371,7 @@ void physics_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
 // measured 8 to 10 times real time.
 template <typename Config>
 void perform_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
-  auto& p = c.settings.perform;
+  auto& p = c.settings.learning.climbing.perform;
   constexpr Bounds kSimulatedTime = closed_range(0, 60, "a minute of simulated time, seconds of wall-clock time");
   keys.insert(
       keys.end(),

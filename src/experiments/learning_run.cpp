@@ -193,6 +193,9 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
   result.unreachable_configurations = mdp.reacher().cache().unreachable_count();
   result.ik_solves = mdp.reacher().solves();
   greedy_climb(mdp, agent.q_wall(), parameters.greedy_cap, result);
+  result.simulates = mdp.simulates();
+  result.moves_simulated = mdp.moves_simulated();
+  result.moves_performed = mdp.moves_performed();
   result.q_grid = agent.q_grid();
   result.explored_pairs = agent.model().size();
   result.planning_updates = agent.planning_updates();

@@ -54,6 +54,9 @@ struct RunResult {
   // finishing move's included.
   std::vector<Posture> last_climb;
   std::size_t reached_configurations = 0, unreachable_configurations = 0, ik_solves = 0;
+  // physics.model = dynamic: the distinct moves performed in MuJoCo, and those performed.
+  bool simulates = false;
+  std::size_t moves_simulated = 0, moves_performed = 0;
   std::size_t explored_pairs = 0;      // distinct problem-space (state, action) pairs taken
   std::uint64_t planning_updates = 0;  // Dyna's model updates, over the run
   // Length of one climb by the learnt greedy policy (best Q_wall action, ties to the

@@ -54,7 +54,6 @@ struct ExperimentParameters {
   int threads = 0;   // 0: all cores
   bool plan = true;  // compute each wall's exact shortest climb
   PlanParameters plan_search;
-  PerformParameters perform;  // climbs performed in MuJoCo (physics.model = dynamic, crux perform)
 
   int runs() const { return wall_pairs * seeds_per_wall; }  // per condition
   // What shapes the training walls, preceding ones included.

@@ -8,16 +8,19 @@
 namespace crux {
 
 // One learning run on one wall (crux train); transfer adds the Q_grid it starts from.
+// Under physics.model = dynamic each move is performed in MuJoCo (the perform.* keys).
 inline const ParameterSet kTrainKeys{
     {"experiment.urdf", "experiment.seed", "experiment.iterations", "experiment.beginning",
      "experiment.threshold_length", "experiment.greedy_cap", "experiment.checkpoint_every", "experiment.transfer",
-     "learning", "reward", "ik", "physics", "filter", "grid", "wall"},
-    {"wall.name", "wall.count"}};
+     "learning", "reward", "ik", "physics", "perform", "filter", "grid", "wall"},
+    {"wall.name", "wall.count"},
+    true};
 inline const ParameterSet kTransferKeys{
     {"experiment.urdf", "experiment.seed", "experiment.iterations", "experiment.beginning",
      "experiment.threshold_length", "experiment.greedy_cap", "experiment.checkpoint_every", "experiment.q_grid",
-     "experiment.transfer", "learning", "reward", "ik", "physics", "filter", "grid", "wall"},
-    {"wall.name", "wall.count"}};
+     "experiment.transfer", "learning", "reward", "ik", "physics", "perform", "filter", "grid", "wall"},
+    {"wall.name", "wall.count"},
+    true};
 // The paper's experiment (crux paper): its walls are drawn from the experiment seed.
 inline const ParameterSet kPaperKeys{
     {"experiment", "learning", "reward", "ik", "physics", "filter", "grid", "wall", "training_wall"},

@@ -124,11 +124,11 @@ PerformJobOutcome run_perform_job(PerformJob job, const JobHooks& hooks) {
     outcome.performed.plan = plan_of_climb(outcome.wall, *recorded_climb, s.learning.climbing.physics.model);
     outcome.performed.climb =
         perform_climb(*model, outcome.wall, s.learning.climbing.physics, s.learning.climbing.reachability,
-                      climb_to_perform(outcome.wall, outcome.performed.plan), s.perform);
+                      climb_to_perform(outcome.wall, outcome.performed.plan), s.learning.climbing.perform);
     outcome.performed.moves_simulated = static_cast<int>(outcome.performed.climb->moves.size());
   } else {
-    outcome.performed =
-        performed_plan(*model, outcome.wall, s.learning.climbing, s.plan_search, s.perform, hooks.interruption_point);
+    outcome.performed = performed_plan(*model, outcome.wall, s.learning.climbing, s.plan_search,
+                                       s.learning.climbing.perform, hooks.interruption_point);
   }
   outcome.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   outcome.record = performed_plan_json(outcome.wall, outcome.performed);

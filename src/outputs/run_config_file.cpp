@@ -11,7 +11,8 @@ namespace crux {
 
 namespace {
 
-const std::vector<std::string> kRecordedSections{"experiment", "learning", "reward", "ik",   "physics",
+// A run written under physics.model = dynamic records the perform.* keys too.
+const std::vector<std::string> kRecordedSections{"experiment", "learning", "reward", "ik",   "physics",      "perform",
                                                  "compare",    "filter",   "grid",   "wall", "training_wall"};
 
 ExperimentConfig read_recorded_config(const std::filesystem::path& path, const ParameterSet& keys, bool grid) {
@@ -43,17 +44,13 @@ ExperimentConfig read_recorded_config(const std::filesystem::path& path, const P
 }  // namespace
 
 ExperimentConfig read_run_config(const std::filesystem::path& path) {
-  static const ParameterSet kEveryKey{kRecordedSections, {}};
+  static const ParameterSet kEveryKey{kRecordedSections, {}, true};
   return read_recorded_config(path, kEveryKey, true);
 }
 
 ExperimentConfig read_perform_config(const std::filesystem::path& path) {
-  static const ParameterSet kPerformFolderKeys = [] {
-    std::vector<std::string> sections = kRecordedSections;
-    sections.push_back("perform");
-    return ParameterSet{sections, {}, true};
-  }();
-  return read_recorded_config(path, kPerformFolderKeys, false);
+  static const ParameterSet kEveryKey{kRecordedSections, {}, true};
+  return read_recorded_config(path, kEveryKey, false);
 }
 
 }  // namespace crux

@@ -17,7 +17,7 @@ namespace crux {
 ExperimentConfig read_run_config(const std::filesystem::path& file);
 
 // The config.toml of a `crux perform` folder, read as read_run_config reads a run's, with
-// the perform.* keys it also records and no grid.
+// no grid.
 ExperimentConfig read_perform_config(const std::filesystem::path& file);
 
 }  // namespace crux

@@ -197,10 +197,10 @@ nlohmann::json summary_wall_seed(const ExperimentWall& wall, bool seeded) {
   return seeded ? nlohmann::json(wall.seed) : nlohmann::json(nullptr);
 }
 
-// One run's entry of run_facts: its wall, its seeds and what it learnt at what cost.
-nlohmann::ordered_json run_facts_json(const RunResult& run, const ExperimentWall& wall, std::size_t wall_pair,
-                                      std::uint64_t learning_seed, const ExperimentParameters& parameters,
-                                      bool seeded) {
+// What every run's entry of run_facts holds: its wall, its seeds and what it learnt at what cost.
+nlohmann::ordered_json run_facts_common(const RunResult& run, const ExperimentWall& wall, std::size_t wall_pair,
+                                        std::uint64_t learning_seed, const ExperimentParameters& parameters,
+                                        bool seeded) {
   return {{"wall", wall.wall.name},
           {"wall_pair", wall_pair},
           {"wall_seed", summary_wall_seed(wall, seeded)},
@@ -218,6 +218,19 @@ nlohmann::ordered_json run_facts_json(const RunResult& run, const ExperimentWall
           {"ik_solves", run.ik_solves},
           {"reached_configurations", run.reached_configurations},
           {"unreachable_configurations", run.unreachable_configurations}};
+}
+
+// One run's entry of run_facts.
+nlohmann::ordered_json run_facts_json(const RunResult& run, const ExperimentWall& wall, std::size_t wall_pair,
+                                      std::uint64_t learning_seed, const ExperimentParameters& parameters,
+                                      bool seeded) {
+  nlohmann::ordered_json facts = run_facts_common(run, wall, wall_pair, learning_seed, parameters, seeded);
+  // Only a run of the dynamic model simulates, so that the others' summaries keep their bytes.
+  if (run.simulates) {
+    facts["moves_simulated"] = run.moves_simulated;
+    facts["moves_performed"] = run.moves_performed;
+  }
+  return facts;
 }
 
 nlohmann::ordered_json summary_walls_json(const ExperimentResult& result, bool seeded) {

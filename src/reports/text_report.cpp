@@ -155,11 +155,15 @@ std::string run_text(const ExperimentResult& result, int iterations, const std::
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];
     if (c.runs.empty()) continue;
     const RunResult& run = c.runs.front();
-    return fmt::format("{} on '{}': {} in {}; greedy climb: {}; wrote {}\n",
-                       condition == Condition::Transfer ? "transfer" : "training",
-                       printable(result.walls.front().wall.name), counted(run.episode_lengths.size(), "episode"),
-                       counted(iterations, "iteration"),
-                       run.greedy_length > 0 ? counted(run.greedy_length, "action") : "does not finish", output);
+    // Under the dynamic model, what the verdicts cost: the moves performed in MuJoCo.
+    const std::string simulated = run.simulates ? fmt::format("; {} simulated in MuJoCo, {} performed",
+                                                              counted(run.moves_simulated, "move"), run.moves_performed)
+                                                : "";
+    return fmt::format(
+        "{} on '{}': {} in {}; greedy climb: {}{}; wrote {}\n",
+        condition == Condition::Transfer ? "transfer" : "training", printable(result.walls.front().wall.name),
+        counted(run.episode_lengths.size(), "episode"), counted(iterations, "iteration"),
+        run.greedy_length > 0 ? counted(run.greedy_length, "action") : "does not finish", simulated, output);
   }
   return {};
 }

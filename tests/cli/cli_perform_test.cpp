@@ -88,7 +88,7 @@ TEST(CliPerform, BadInputIsOneLineAndExitCode2AndWritesNoFolder) {
            "plan" + wall + " --perform-joint-speed 1",  // the static model performs nothing
            "perform" + out,                             // no wall
            "perform --wall-file /nonexistent/wall.json" + out,
-           "train" + wall + " --physics-model dynamic",
+           "train" + wall + " --perform-lift 0.2",  // the static model performs nothing
            "paper --walls 1 --iterations 5 --plan false --physics-model dynamic" + out,
        }) {
     const auto outcome = run_crux(arguments);
@@ -96,8 +96,8 @@ TEST(CliPerform, BadInputIsOneLineAndExitCode2AndWritesNoFolder) {
     EXPECT_EQ(testing::count_lines(outcome.err), 1) << arguments << "\n" << outcome.err;
     EXPECT_FALSE(fs::exists(folder)) << arguments;
   }
-  const auto dynamic = run_crux("train" + wall + " --physics-model dynamic");
-  EXPECT_NE(dynamic.err.find("dynamic is not taken by crux train"), std::string::npos) << dynamic.err;
+  const auto dynamic = run_crux("paper --walls 1 --iterations 5 --plan false --physics-model dynamic" + out);
+  EXPECT_NE(dynamic.err.find("dynamic is not taken by crux paper"), std::string::npos) << dynamic.err;
 }
 
 // A learnt run's greedy climb, performed from its start on the run's wall under the run's

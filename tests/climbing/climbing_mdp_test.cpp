@@ -10,6 +10,7 @@
 
 #include "body/urdf_loader.hpp"
 #include "common/random.hpp"
+#include "support/jug_ladder.hpp"
 #include "support/kdl_reference.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
@@ -448,6 +449,48 @@ TEST(ClimbingMdp, OnlyTheReturnToTheHoldJustLeftIsMarkedAsSuch) {
     ++checked;
   }
   EXPECT_EQ(checked, 5);
+}
+
+}  // namespace
+}  // namespace crux
+
+namespace crux {
+namespace {
+
+// physics.model = dynamic: the static model's reached move is reached only when MuJoCo
+// performs it, once per verdict (the repeat is the cache's), and the verdicts survive a
+// checkpoint; a move MuJoCo cannot perform (no time left to settle) is not reached.
+TEST(ClimbingMdp, UnderTheDynamicModelAMoveIsReachedWhenMujocoPerformsIt) {
+  testing::JugLadder ladder;
+  ladder.finish_after_one_move();
+  ClimbingParameters parameters;
+  parameters.reachability = ladder.reach;
+  parameters.physics = ladder.physics;
+  parameters.physics.model = PhysicsModel::Dynamic;
+  constexpr int kJug = 4;
+  ClimbingMdp mdp(testing::human_model(), ladder.wall, parameters);
+  ASSERT_TRUE(mdp.simulates());
+  ASSERT_TRUE(mdp.offers(kJug));
+  EXPECT_TRUE(mdp.step(kJug).finished);
+  EXPECT_TRUE(mdp.step(kJug).finished) << "the same move again, from the start";
+  EXPECT_EQ(mdp.moves_simulated(), 1u);
+  EXPECT_EQ(mdp.moves_performed(), 1u);
+  CheckpointWriter out;
+  mdp.save_state(out);
+  const std::string bytes = out.take();
+  ClimbingMdp restored(testing::human_model(), ladder.wall, parameters);
+  CheckpointReader in(bytes, "test");
+  restored.load_state(in);
+  EXPECT_TRUE(in.at_end());
+  EXPECT_EQ(restored.moves_simulated(), 1u);
+
+  parameters.perform.move.settle_time_s = 0.0;
+  ClimbingMdp hurried(testing::human_model(), ladder.wall, parameters);
+  const StepOutcome outcome = hurried.step(kJug);
+  EXPECT_FALSE(outcome.reached);
+  EXPECT_EQ(outcome.reward, parameters.rewards.unreachable);
+  EXPECT_EQ(hurried.moves_simulated(), 1u);
+  EXPECT_EQ(hurried.moves_performed(), 0u);
 }
 
 }  // namespace
