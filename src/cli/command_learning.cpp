@@ -43,26 +43,6 @@ auto run_with_flags(const ParameterBinding& binding, Call call) {
   }
 }
 
-// The perform.* keys set the moves performed in MuJoCo, which only physics.model = dynamic
-// performs in `command`: given another value than their default under another model they
-// are refused, not ignored (a config.toml records them at their defaults, and replays).
-void refuse_perform_keys_unless_dynamic(const ExperimentConfig& config, const ParameterBinding& binding,
-                                        std::string_view command) {
-  if (config.settings.learning.climbing.physics.model == PhysicsModel::Dynamic) return;
-  static const ExperimentConfig defaults;
-  const std::vector<ConstConfigField> given = config_fields(config), unset = config_fields(defaults);
-  for (std::size_t i = 0; i < given.size(); ++i) {
-    const ConstConfigField& field = given[i];
-    if (field.key.starts_with("perform.") && binding.is_set(field.key) &&
-        field_value_text(field) != field_value_text(unset[i])) {
-      throw InputError(binding.where(field.key),
-                       fmt::format("needs physics.model = dynamic: {} performs nothing in MuJoCo under the other "
-                                   "models (crux perform performs their plans)",
-                                   command));
-    }
-  }
-}
-
 // A job without a folder writes nothing: the command always writes one.
 void require_output(const std::string& output) {
   if (output.empty()) throw InputError("--output", "the output folder name is empty");
@@ -106,14 +86,13 @@ struct SingleRunCommand {
     LearningJob job;
     job.config = binding.resolve();
     require_wall(job.config);
-    const std::string caller = condition == Condition::Transfer ? "crux transfer" : "crux train";
-    refuse_perform_keys_unless_dynamic(job.config, binding, caller);
     job.condition = condition;
     job.config_path = binding.config_path();
     job.output = output;
     job.overwrite = overwrite;
     const int iterations = job.config.settings.learning.iterations;
     ProgressBar progress(condition_name(condition), iterations, job.config.progress);
+    const std::string caller = condition == Condition::Transfer ? "crux transfer" : "crux train";
     const JobHooks hooks{caller,
                          [&](int done) { progress.update(done); },
                          {},
@@ -148,7 +127,7 @@ struct PlanCommand {
   void run() {
     ExperimentConfig config = binding.resolve();
     require_wall(config);
-    refuse_perform_keys_unless_dynamic(config, binding, "crux plan");
+    run_with_flags(binding, [&] { require_perform_keys_used(config, "crux plan"); });
     if (config.settings.learning.climbing.physics.model == PhysicsModel::Dynamic) {
       PerformJob job{config, binding.config_path(), {}, false, {}};
       print_performed(run_with_flags(binding,

@@ -61,7 +61,7 @@ struct ReportCommand {
     check_output_file(output, {folder, performed, binding.config_path(), configured_urdf_path(config)});
     const BodyModel model = load_configured_body(config);
     std::optional<PerformedSection> section;
-    if (!performed.empty()) section = performed_beside(model);
+    if (!performed.empty()) section = performed_beside(model, config);
     read_run_climb(run, model);
     ReportPage page = report_page(folder, reported, run, model, recorded, climb_choice, replay_moves);
     page.performed = std::move(section);
@@ -78,23 +78,22 @@ struct ReportCommand {
   }
 
   // --performed: a crux perform folder on the same body, shown after the run's replay.
-  PerformedSection performed_beside(const BodyModel& model) const {
+  PerformedSection performed_beside(const BodyModel& model, const ExperimentConfig& config) const {
     if (!is_perform_folder(performed)) {
       throw InputError("--performed",
                        fmt::format("{} is not a crux perform folder (it has no perform.json)", performed));
     }
     const ExperimentConfig recorded = read_perform_config(std::filesystem::path(performed) / "config.toml");
+    namespace fs = std::filesystem;
+    if (fs::absolute(configured_urdf_path(recorded)) != fs::absolute(configured_urdf_path(config))) {
+      throw InputError("--performed", fmt::format("{} was performed with the body {}, not the report's {}", performed,
+                                                  configured_urdf_path(recorded), configured_urdf_path(config)));
+    }
     return performed_section(read_perform_folder(performed, model), model, grasp_radius(recorded));
   }
 
   static double grasp_radius(const ExperimentConfig& recorded) {
     return recorded.settings.learning.climbing.reachability.ik.tolerances.grasp_radius;
-  }
-
-  static std::string folder_name(const std::string& path) {
-    std::filesystem::path normal = std::filesystem::absolute(path).lexically_normal();
-    if (normal.filename().empty()) normal = normal.parent_path();  // "out/perform/"
-    return normal.filename().string();
   }
 
   void write(ReportPage page, const std::string& name, std::chrono::steady_clock::time_point started) const {

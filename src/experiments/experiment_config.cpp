@@ -882,6 +882,21 @@ void require_physics_model_taken(const ExperimentConfig& config, const Parameter
                       caller));
 }
 
+void require_perform_keys_used(const ExperimentConfig& config, const std::string& caller) {
+  if (config.settings.learning.climbing.physics.model == PhysicsModel::Dynamic) return;
+  static const ExperimentConfig defaults;
+  const std::vector<ConstConfigField> given = config_fields(config), unset = config_fields(defaults);
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    const std::string& key = given[i].key;
+    if (key.starts_with("perform.") && config.given.contains(key) &&
+        field_value_text(given[i]) != field_value_text(unset[i])) {
+      throw InputError(key, fmt::format("needs physics.model = dynamic: {} performs nothing in MuJoCo under the "
+                                        "other models (crux perform performs their plans)",
+                                        caller));
+    }
+  }
+}
+
 void finalize_config(ExperimentConfig& config) {
   ExperimentParameters& s = config.settings;
   if (!config.wall_file.empty()) {

@@ -188,8 +188,8 @@ std::string flag_for_key(const std::string& key);
 struct ParameterSet {
   std::vector<std::string> include;
   std::vector<std::string> exclude;
-  // physics.model = dynamic performs each plan in MuJoCo: the commands that plan take it;
-  // those that learn do not yet.
+  // physics.model = dynamic performs moves in MuJoCo: the commands that plan and single
+  // learning runs take it; those that run many do not.
   bool takes_dynamic_physics = false;
   bool accepts(const std::string& key) const;
 };
@@ -198,6 +198,12 @@ struct ParameterSet {
 // (a command's name, or crux.<function> in Python) does not take.
 void require_physics_model_taken(const ExperimentConfig& config, const ParameterSet& accepted,
                                  const std::string& caller);
+
+// InputError(key, ...) for a perform.* key given another value than its default while
+// physics.model is not dynamic: under the other models `caller` performs nothing in
+// MuJoCo, so the key is refused rather than ignored (a config.toml records the keys at
+// their defaults, and replays).
+void require_perform_keys_used(const ExperimentConfig& config, const std::string& caller);
 
 // A config file's TOML, parsed once: a sweep applies it once per cell, so that expanding
 // a sweep costs one parse and grows linearly with its cells.

@@ -24,8 +24,7 @@ Plan plan_of_climb(const Wall& wall, const RecordedClimb& climb, PhysicsModel ph
 }
 
 PerformedPlan performed_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
-                             const PlanParameters& search, const PerformParameters& perform,
-                             const std::function<void()>& between_attempts) {
+                             const PlanParameters& search, const std::function<void()>& between_attempts) {
   const bool repairs = parameters.physics.model == PhysicsModel::Dynamic;
   PerformedPlan result;
   RefusedMoves refused;
@@ -35,7 +34,7 @@ PerformedPlan performed_plan(const BodyModel& model, const Wall& wall, const Cli
     result.climb.reset();
     if (!result.plan.found) return result;
     const ClimbToPerform climb = climb_to_perform(wall, result.plan);
-    result.climb = perform_climb(model, wall, parameters.physics, parameters.reachability, climb, perform);
+    result.climb = perform_climb(model, wall, parameters.physics, parameters.reachability, climb, parameters.perform);
     result.moves_simulated += static_cast<int>(result.climb->moves.size());
     const std::optional<int> failed = result.climb->first_failed_move();
     // A start that does not hold still leaves no move to refuse: no plan can do better.

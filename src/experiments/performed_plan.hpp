@@ -42,11 +42,11 @@ ClimbToPerform climb_to_perform(const Wall& wall, const Plan& plan);
 // reached by move k of the round robin from the right hand, under `physics_model`.
 Plan plan_of_climb(const Wall& wall, const RecordedClimb& climb, PhysicsModel physics_model);
 
-// The plan of `parameters` performed. Under the dynamic model it is repaired, with at most
-// search.max_replans plans after the first; under the others it is performed as planned.
+// The plan of `parameters` performed with its perform settings. Under the dynamic model it
+// is repaired, with at most search.max_replans plans after the first; under the others it
+// is performed as planned.
 // `between_attempts`, when given, is called before each search (it may throw to stop).
 PerformedPlan performed_plan(const BodyModel& model, const Wall& wall, const ClimbingParameters& parameters,
-                             const PlanParameters& search, const PerformParameters& perform,
-                             const std::function<void()>& between_attempts = {});
+                             const PlanParameters& search, const std::function<void()>& between_attempts = {});
 
 }  // namespace crux

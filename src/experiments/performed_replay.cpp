@@ -1,5 +1,6 @@
 #include "experiments/performed_replay.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -55,13 +56,14 @@ PerformedReplay replay_performed_climb(const BodyModel& model, const Wall& wall,
     if (move.performed) configuration = configuration.with(move.limb, move.hold);
     replay.moves.push_back({move, configuration, -1, -1});
   }
-  int previous = -1;
+  int previous = -1, start_frames = 0;
   for (const TrajectorySample& sample : trajectory) {
     if (sample.move < previous || sample.move >= static_cast<int>(moves.size())) {
       throw InputError(source, fmt::format("sample {} belongs to move {}, after move {} and with {} attempted",
                                            replay.frame_count, sample.move, previous, moves.size()));
     }
     previous = sample.move;
+    if (sample.move < 0) ++start_frames;
     if (sample.move >= 0) {
       PerformedReplayMove& move = replay.moves[sample.move];
       if (move.first_frame < 0) move.first_frame = replay.frame_count;
@@ -70,7 +72,7 @@ PerformedReplay replay_performed_climb(const BodyModel& model, const Wall& wall,
     add_frame(replay, sample);
   }
   // A move without a sample (shorter than the recording interval) sits on the frame before.
-  int last = 0;
+  int last = std::max(start_frames - 1, 0);
   for (PerformedReplayMove& move : replay.moves) {
     if (move.first_frame < 0) move.first_frame = move.last_frame = last;
     last = move.last_frame;

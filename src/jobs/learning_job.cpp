@@ -28,6 +28,7 @@ LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
   if (config.checkpoint_every != 0 && !writes_folder) {
     throw InputError("experiment.checkpoint_every", "a run that writes no folder keeps no checkpoint; leave it 0");
   }
+  require_perform_keys_used(config, hooks.caller);
   std::optional<BodyModel> loaded_model;
   if (job.model == nullptr) loaded_model = load_configured_body(config);
   const BodyModel& model = job.model != nullptr ? *job.model : *loaded_model;

@@ -127,8 +127,8 @@ PerformJobOutcome run_perform_job(PerformJob job, const JobHooks& hooks) {
                       climb_to_perform(outcome.wall, outcome.performed.plan), s.learning.climbing.perform);
     outcome.performed.moves_simulated = static_cast<int>(outcome.performed.climb->moves.size());
   } else {
-    outcome.performed = performed_plan(*model, outcome.wall, s.learning.climbing, s.plan_search,
-                                       s.learning.climbing.perform, hooks.interruption_point);
+    outcome.performed =
+        performed_plan(*model, outcome.wall, s.learning.climbing, s.plan_search, hooks.interruption_point);
   }
   outcome.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   outcome.record = performed_plan_json(outcome.wall, outcome.performed);

@@ -26,7 +26,7 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
   const ClimbingParameters& climbing = recorded.settings.learning.climbing;
   ReportPage page;
   page.summary = std::move(run.summary);
-  page.title = fmt::format("crux report: {}", fs::absolute(folder).lexically_normal().filename().string());
+  page.title = fmt::format("crux report: {}", folder_name(folder));
   page.figures = report_figures(reported.experiment ? folder : fs::path(), model, run, climbing.reachability);
   const RecordedClimb climb = climb_to_show(run, model, climbing, climb_choice, "--climb");
   page.replay_title = fmt::format("{} on '{}': {}", run.name, run.wall.name, climb_description(climb));
@@ -69,6 +69,12 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
   return page;
 }
 
+std::string folder_name(const std::filesystem::path& folder) {
+  std::filesystem::path normal = std::filesystem::absolute(folder).lexically_normal();
+  if (normal.filename().empty()) normal = normal.parent_path();
+  return normal.filename().string();
+}
+
 namespace {
 
 std::string performed_outcome(const PerformFolder& folder) {
@@ -83,6 +89,7 @@ std::string performed_outcome(const PerformFolder& folder) {
   if (folder.reached_top) {
     return fmt::format("All {} performed, to the top; {}.", counted(folder.planned_moves, "move"), effort);
   }
+  if (folder.moves.empty()) return "No move was performed.";
   const AttemptedMove& failed = folder.moves.back();
   return fmt::format("{} of {} performed; move {} ({} to hold {}) failed: {}; {}.", performed,
                      counted(folder.planned_moves, "move"), folder.moves.size(), enum_name(failed.limb),
@@ -112,8 +119,7 @@ PerformedSection performed_section(const PerformFolder& folder, const BodyModel&
 
 ReportPage perform_report_page(const PerformFolder& folder, const BodyModel& model, double grasp_radius) {
   ReportPage page;
-  page.title = fmt::format("crux report: {}",
-                           std::filesystem::absolute(folder.directory).lexically_normal().filename().string());
+  page.title = fmt::format("crux report: {}", folder_name(folder.directory));
   page.performed = performed_section(folder, model, grasp_radius);
   return page;
 }

@@ -28,6 +28,9 @@ ReportPage report_page(const std::filesystem::path& folder, const ReportedRun& r
 // replay drawing grasp spheres of `grasp_radius` (the folder's ik.grasp_radius).
 PerformedSection performed_section(const PerformFolder& folder, const BodyModel& model, double grasp_radius);
 
+// A folder's name as a page names it: "perform" for out/perform and out/perform/.
+std::string folder_name(const std::filesystem::path& folder);
+
 // A page of its own for a crux perform folder.
 ReportPage perform_report_page(const PerformFolder& folder, const BodyModel& model, double grasp_radius);
 

@@ -1,5 +1,7 @@
 #include "outputs/perform_folder.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
@@ -56,8 +58,13 @@ void read_record(PerformFolder& folder) {
   folder.climb = record["climb"].string();
   folder.physics = record["physics_model"].string();
   folder.found = record["found"].boolean();
-  folder.planned_moves = record["length"].integer(0);
-  if (const JsonField start = record["start"]; !start.is_null()) {
+  // Without a plan nothing was performed: no length (-1), no start, no moves.
+  const int length = record["length"].integer(-1);
+  if ((length >= 0) != folder.found) record.fail("length must be -1 exactly when found is false");
+  folder.planned_moves = std::max(length, 0);
+  const JsonField start = record["start"];
+  if (start.is_null() == folder.found) record.fail("start must be null exactly when found is false");
+  if (!start.is_null()) {
     folder.start_held = start["performed"].boolean();
     folder.start_cause = cause(start["cause"]);
   }
@@ -72,6 +79,15 @@ void read_record(PerformFolder& folder) {
     moves.fail(fmt::format("moves has {} moves, more than the climb's length {}", moves.size(), folder.planned_moves));
   }
   folder.reached_top = record["reached_top"].boolean();
+  // Once the start held, the moves go on until one fails or the last is performed.
+  const bool all_performed = folder.start_held &&
+                             folder.moves.size() == static_cast<std::size_t>(folder.planned_moves) &&
+                             (folder.moves.empty() || folder.moves.back().performed);
+  const bool one_failed = folder.start_held && !folder.moves.empty() && !folder.moves.back().performed;
+  if (folder.reached_top != (folder.found && all_performed) ||
+      (folder.start_held && !folder.reached_top && !one_failed) || (!folder.start_held && !folder.moves.empty())) {
+    record.fail("reached_top, start and moves disagree: the moves go on from a start that held until one fails");
+  }
   folder.max_torque_ratio = record["max_torque_ratio"].number();
   folder.simulated_s = record["simulated_s"].number();
 }
@@ -92,7 +108,6 @@ bool is_perform_folder(const fs::path& directory) {
 PerformFolder read_perform_folder(const fs::path& directory, const BodyModel& model) {
   PerformFolder folder;
   folder.directory = directory;
-  folder.config_file = directory / "config.toml";
   folder.wall = load_wall((directory / "wall.json").string());
   read_record(folder);
   folder.trajectory = read_trajectory_csv(model, directory / "trajectory.csv");

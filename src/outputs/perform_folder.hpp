@@ -13,7 +13,6 @@ namespace crux {
 
 struct PerformFolder {
   std::filesystem::path directory;
-  std::filesystem::path config_file;  // the config.toml it was written with
   Wall wall;
   std::string climb;    // what was performed: "the wall's exact plan", a run's climb
   std::string physics;  // the physics model it was planned under (perform.json's physics_model)

@@ -14,6 +14,7 @@ namespace {
 // A run written under physics.model = dynamic records the perform.* keys too.
 const std::vector<std::string> kRecordedSections{"experiment", "learning", "reward", "ik",   "physics",      "perform",
                                                  "compare",    "filter",   "grid",   "wall", "training_wall"};
+const ParameterSet kEveryRecordedKey{kRecordedSections, {}, true};
 
 ExperimentConfig read_recorded_config(const std::filesystem::path& path, const ParameterSet& keys, bool grid) {
   const std::string file = path.string();
@@ -44,13 +45,11 @@ ExperimentConfig read_recorded_config(const std::filesystem::path& path, const P
 }  // namespace
 
 ExperimentConfig read_run_config(const std::filesystem::path& path) {
-  static const ParameterSet kEveryKey{kRecordedSections, {}, true};
-  return read_recorded_config(path, kEveryKey, true);
+  return read_recorded_config(path, kEveryRecordedKey, true);
 }
 
 ExperimentConfig read_perform_config(const std::filesystem::path& path) {
-  static const ParameterSet kEveryKey{kRecordedSections, {}, true};
-  return read_recorded_config(path, kEveryKey, false);
+  return read_recorded_config(path, kEveryRecordedKey, false);
 }
 
 }  // namespace crux

@@ -78,6 +78,9 @@ class StaticEquilibrium {
   // last bits, so a resumed run restores it to continue bit for bit.
   void save_basis(CheckpointWriter& out) const;
   void load_basis(CheckpointReader& in);
+  // The next solve starts cold, as the first one did: a degenerate program's optimal
+  // vertex, and so its torques, then do not depend on the solves before.
+  void forget_basis() { has_basis_ = false; }
 
  private:
   struct JointRow {

@@ -23,6 +23,10 @@ class MoveReferences {
   MoveReferences(const BodyModel& model, const Wall& wall, const PhysicsParameters& physics,
                  const ReachabilityParameters& reach, int samples, double force_margin = 0.5, double lift = 0.1);
 
+  // The next holding torques as the first were found, whatever was solved before: a move
+  // tried from rest then does not depend on the moves tried before it.
+  void forget_warm_start() { equilibrium_.forget_basis(); }
+
   // `posture` held on the holds of `holds`.
   HoldingTorques holding(const Posture& posture, const HoldConfiguration& holds);
 

@@ -20,17 +20,14 @@ MoveTrials::MoveTrials(const BodyModel& model, const Wall& wall, const PhysicsPa
 MoveOutcome MoveTrials::perform(const Posture& from, const Posture& to, const HoldConfiguration& kept, int left_hold,
                                 int hold) {
   if (!climber_) climber_.emplace(model_, wall_, physics_, limits_, from, parameters_.servo);
-  ++trials_;
   const Limb limb = kept.free_limb();
   const HoldConfiguration held = kept.with(limb, left_hold);
   climber_->place(from, held);
+  references_.forget_warm_start();
   const MoveOutcome settled =
       hold_still(*climber_, from, held, references_.holding(from, held).torques, parameters_.start_time_s, move_);
-  simulated_s_ += settled.seconds;
   if (!settled.performed()) return settled;
-  const MoveOutcome moved = perform_move(*climber_, references_.move(from, to, kept, left_hold, hold), move_);
-  simulated_s_ += moved.seconds;
-  return moved;
+  return perform_move(*climber_, references_.move(from, to, kept, left_hold, hold), move_);
 }
 
 }  // namespace crux

@@ -23,9 +23,6 @@ class MoveTrials {
   // still is the move's failure.
   MoveOutcome perform(const Posture& from, const Posture& to, const HoldConfiguration& kept, int left_hold, int hold);
 
-  int trials() const { return trials_; }
-  double simulated_s() const { return simulated_s_; }
-
  private:
   const BodyModel& model_;
   const Wall& wall_;
@@ -35,8 +32,6 @@ class MoveTrials {
   StrengthProfile limits_;
   MoveReferences references_;
   std::optional<SimulatedClimber> climber_;  // made at the first trial, at its stance
-  int trials_ = 0;
-  double simulated_s_ = 0.0;
 };
 
 }  // namespace crux

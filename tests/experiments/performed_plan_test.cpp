@@ -29,8 +29,7 @@ PlanParameters replans(int cap) {
 
 TEST(PerformedPlan, APlanPerformedToTheTopNeedsNoReplan) {
   const OneMoveLadder one;
-  const PerformedPlan performed =
-      performed_plan(testing::human_model(), one.ladder.wall, one.parameters, replans(5), PerformParameters{});
+  const PerformedPlan performed = performed_plan(testing::human_model(), one.ladder.wall, one.parameters, replans(5));
   ASSERT_TRUE(performed.plan.found);
   EXPECT_EQ(performed.plan.hold_ids, std::vector<int>{5}) << "the jug (id 5, index 4)";
   EXPECT_EQ(performed.plan.physics_model, PhysicsModel::Dynamic);
@@ -42,10 +41,9 @@ TEST(PerformedPlan, APlanPerformedToTheTopNeedsNoReplan) {
 
 // No time to settle after a move's path: every move times out in MuJoCo, whatever the
 // static model says of its stances.
-PerformParameters no_settling() {
-  PerformParameters perform;
-  perform.move.settle_time_s = 0.0;
-  return perform;
+ClimbingParameters no_settling(ClimbingParameters parameters) {
+  parameters.perform.move.settle_time_s = 0.0;
+  return parameters;
 }
 
 // Each move that fails is refused, and the wall planned again without it, until no plan
@@ -53,7 +51,7 @@ PerformParameters no_settling() {
 TEST(PerformedPlan, AMoveThatFailsIsRefusedAndTheWallPlannedAgain) {
   const OneMoveLadder one;
   const PerformedPlan performed =
-      performed_plan(testing::human_model(), one.ladder.wall, one.parameters, replans(5), no_settling());
+      performed_plan(testing::human_model(), one.ladder.wall, no_settling(one.parameters), replans(5));
   ASSERT_GE(performed.failed_moves.size(), 1u);
   const FailedMove& first = performed.failed_moves[0];
   EXPECT_EQ(first.plan, 0);
@@ -80,7 +78,7 @@ TEST(PerformedPlan, AMoveThatFailsIsRefusedAndTheWallPlannedAgain) {
 TEST(PerformedPlan, TheCapOnReplansStopsTheRepair) {
   const OneMoveLadder one;
   const PerformedPlan performed =
-      performed_plan(testing::human_model(), one.ladder.wall, one.parameters, replans(0), no_settling());
+      performed_plan(testing::human_model(), one.ladder.wall, no_settling(one.parameters), replans(0));
   EXPECT_TRUE(performed.replan_cap_reached);
   EXPECT_EQ(performed.replans, 0);
   EXPECT_EQ(performed.failed_moves.size(), 1u);
@@ -94,7 +92,7 @@ TEST(PerformedPlan, UnderTheStaticModelThePlanIsPerformedOnce) {
   OneMoveLadder one;
   one.parameters.physics.model = PhysicsModel::Static;
   const PerformedPlan performed =
-      performed_plan(testing::human_model(), one.ladder.wall, one.parameters, replans(5), no_settling());
+      performed_plan(testing::human_model(), one.ladder.wall, no_settling(one.parameters), replans(5));
   ASSERT_TRUE(performed.climb.has_value());
   EXPECT_FALSE(performed.performed());
   EXPECT_EQ(performed.replans, 0);

@@ -67,6 +67,19 @@ TEST_F(PerformFolderFixture, ReadsTheClimbItsMovesAndItsTrajectory) {
   EXPECT_FALSE(is_perform_folder(folder / "nothing"));
 }
 
+// A search that found no plan performed nothing, and its folder reads back so.
+TEST_F(PerformFolderFixture, AFolderWithoutAPlanReadsAsNothingPerformed) {
+  const nlohmann::ordered_json record = nlohmann::ordered_json::parse(R"({
+    "wall": "w", "physics_model": "dynamic", "found": false, "length": -1,
+    "reached_top": false, "max_torque_ratio": 0.0, "simulated_s": 0.0, "start": null, "moves": [],
+    "climb": "the wall's exact plan"})");
+  const PerformFolder read = read_perform_folder(write("perform-none", record), model);
+  EXPECT_FALSE(read.found);
+  EXPECT_EQ(read.planned_moves, 0);
+  EXPECT_FALSE(read.start_held);
+  EXPECT_TRUE(read.moves.empty());
+}
+
 TEST_F(PerformFolderFixture, ABadRecordIsOneErrorNamingPerformJson) {
   const auto problem = [&](const std::string& name, const nlohmann::ordered_json& record) {
     const fs::path folder = write(name, record);
@@ -96,6 +109,13 @@ TEST_F(PerformFolderFixture, ABadRecordIsOneErrorNamingPerformJson) {
   record = perform_record();
   record.erase("climb");
   EXPECT_EQ(problem("perform-missing", record), "climb is missing");
+  record = perform_record();
+  record["moves"].erase(1);
+  EXPECT_EQ(problem("perform-stopped", record),
+            "reached_top, start and moves disagree: the moves go on from a start that held until one fails");
+  record = perform_record();
+  record["found"] = false;
+  EXPECT_EQ(problem("perform-found", record), "length must be -1 exactly when found is false");
   const fs::path folder = write("perform-text", perform_record());
   std::ofstream(folder / "perform.json") << "{ not json";
   EXPECT_THROW(read_perform_folder(folder, model), InputError);

@@ -351,5 +351,25 @@ TEST(StaticEquilibrium, WarmStartsGiveTheColdSolvesEffort) {
   EXPECT_GT(balanced, 0);
 }
 
+// After forget_basis a solve is the cold one, bit for bit, torques included: a warm start
+// may end on another optimal vertex of a degenerate program, with the same effort.
+TEST(StaticEquilibrium, AForgottenBasisSolvesAsTheFirstSolveDid) {
+  const BodyModel& model = testing::human_model();
+  const StrengthProfile strength = published_strength_profile(model, 68.0, 1.70);
+  StaticEquilibrium equilibrium(model, strength);
+  BodyData data(model);
+  const unsigned seed = 2027;
+  Random random(seed);
+  const std::vector<PointContact> four = climbing_contacts();
+  const Posture first = testing::random_posture(model, random);
+  const StaticEquilibriumResult cold = equilibrium.solve(data, first, four);
+  for (int sample = 0; sample < 20; ++sample) equilibrium.solve(data, testing::random_posture(model, random), four);
+  equilibrium.forget_basis();
+  const StaticEquilibriumResult& again = equilibrium.solve(data, first, four);
+  EXPECT_EQ(again.balanced, cold.balanced) << "seed " << seed;
+  EXPECT_EQ(again.effort, cold.effort) << "seed " << seed;
+  EXPECT_EQ(again.joint_torques, cold.joint_torques) << "seed " << seed;
+}
+
 }  // namespace
 }  // namespace crux

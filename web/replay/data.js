@@ -96,8 +96,13 @@ export function prepareReplayData(raw) {
       });
       stances[f] = { forces: limbForces, joint_ratios: [], effort: undefined };
     }
-    frameSeconds = frames.count > 1 ? (times[frames.count - 1] - times[0]) / (frames.count - 1) : null;
-    moves.forEach((m, k) => { if (typeof m.success !== 'boolean') fail(`moves[${k}].success missing`); });
+    for (let f = 1; f < frames.count; ++f) if (times[f] < times[f - 1]) fail(`frames.times decreases at frame ${f}`);
+    frameSeconds = frames.count > 1 && times[frames.count - 1] > times[0] ? (times[frames.count - 1] - times[0]) / (frames.count - 1) : null;
+    if (!Number.isInteger(raw.climb_moves) || raw.climb_moves < moves.length) fail('climb_moves must count the moves at least');
+    moves.forEach((m, k) => {
+      if (typeof m.success !== 'boolean') fail(`moves[${k}].success missing`);
+      if (!LIMBS.includes(m.limb)) fail(`moves[${k}].limb is not a limb`);
+    });
   }
 
   const wall = raw.wall || { holds: [], start: {} };

@@ -390,7 +390,9 @@ export class ReplayViewer {
     if (text !== this.infoText) {
       this.infoText = text;
       this.info.textContent = text;
-      this.info.classList.toggle('crux-replay-failed', Boolean(move) && !move.success && f >= move.first_frame);
+      // A performed move has failed at its last frame; a learnt one is unreachable throughout.
+      const failedFrom = move ? (data.performed ? move.last_frame : move.first_frame) : 0;
+      this.info.classList.toggle('crux-replay-failed', Boolean(move) && !move.success && f >= failedFrom);
     }
     // While playing, the slider and frame counter follow at 10 Hz: repainting them every frame
     // costs more than the 3D view in a software-composited browser.
