@@ -2,6 +2,7 @@
 README cannot drift from the module. Of its two ways to get Gymnasium, the test takes the
 source on the path (the tests' own Gymnasium); pip needs PyPI, which CI does not reach."""
 
+import json
 import os
 import pathlib
 import re
@@ -90,18 +91,22 @@ def test_the_tours_static_model_lines_show_a_climb(tmp_path):
 
 
 def test_the_tours_performed_climb_is_reported_and_viewed(tmp_path):
-    """The tour's static plan performed in MuJoCo, then its report and its view, run as written."""
+    """The tour's static plan performed in MuJoCo, then its report and its view, and its learning
+    run under the dynamic model, run as written."""
     binary = os.environ.get("CRUX_BINARY")
     if not binary:
         pytest.skip("CRUX_BINARY names the crux binary (ctest sets it)")
     (tmp_path / "bin").mkdir()
     (tmp_path / "bin" / "crux").symlink_to(binary)
     lines = [line for line in quick_tour() if line.startswith(
-        ("crux perform --wall-seed", "crux report out/perform ", "crux view --run out/perform "))]
-    assert len(lines) == 3, lines
+        ("crux perform --wall-seed", "crux report out/perform ", "crux view --run out/perform ",
+         "crux train --wall-seed 3 --physics-model dynamic"))]
+    assert len(lines) == 4, lines
     path = f"{tmp_path / 'bin'}{os.pathsep}{os.environ['PATH']}"
     for line in lines:
         done = run_shell(line, tmp_path, PATH=path)
         assert done.returncode == 0, f"{line}\n{done.stderr}"
     assert 'id="crux-performed-data"' in (tmp_path / "perform.html").read_text()
     assert 'class="hold-forces"' in (tmp_path / "performed.svg").read_text()
+    facts = json.loads((tmp_path / "out" / "dynamic" / "summary.json").read_text())["run_facts"]["training"][0]
+    assert facts["moves_simulated"] > 0
