@@ -139,7 +139,7 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
   DynaQAgent agent(mdp.wall_action_count(), mdp.grid_action_count(), parameters.dyna, seed);
   if (initial_q_grid != nullptr) agent.set_q_grid(*initial_q_grid);
   RunResult result;
-  result.can_fall = parameters.climbing.physics.model == PhysicsModel::Static;
+  result.can_fall = checks_stances(parameters.climbing.physics.model);
   result.iterations.reserve(parameters.iterations);
   std::vector<Posture> climb{mdp.posture()};
   LoopState loop;

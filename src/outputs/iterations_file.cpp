@@ -26,8 +26,8 @@ std::vector<RunStep> read_iterations_file(const std::filesystem::path& path, int
                                           PhysicsModel model) {
   const std::string file = path.string();
   const std::string text = read_input_file(file, "iterations file");
-  // The run's config says which header: a static run's falls are what its replays show.
-  const bool with_falls = model == PhysicsModel::Static;
+  // The run's config says which header: a static or dynamic run's falls are what its replays show.
+  const bool with_falls = checks_stances(model);
   const std::vector<std::string_view> rows =
       csv_rows(text, file, with_falls ? kIterationsHeaderWithFalls : kIterationsHeader);
   std::vector<RunStep> steps;

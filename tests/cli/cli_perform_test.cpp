@@ -201,5 +201,21 @@ TEST(CliPerform, TheReportAndTheViewShowAPerformedClimb) {
   }
 }
 
+// crux train under the dynamic model: its moves performed in MuJoCo are counted, its falls
+// recorded in iterations.csv as a static run's are, and its folder reported.
+TEST(CliPerform, ALearningRunUnderTheDynamicModelRecordsItsFallsAndItsMoves) {
+  const fs::path run = perform_scratch("dynamic-run");
+  const auto trained = run_crux("train --wall-file " + ladder_file() +
+                                " --physics-model dynamic --iterations 6 --json -o " + run.string());
+  ASSERT_EQ(trained.exit_code, 0) << trained.err;
+  const auto summary = nlohmann::ordered_json::parse(trained.out);
+  EXPECT_GE(summary["run_facts"]["training"][0]["moves_simulated"].get<int>(), 1) << trained.out;
+  const std::string iterations = testing::read_output_text(run / "iterations.csv");
+  EXPECT_EQ(iterations.substr(0, iterations.find('\n')).rfind(",fell"), iterations.find('\n') - 5)
+      << "the header ends with fell";
+  const auto reported = run_crux("report " + run.string() + " -o " + perform_scratch("dynamic-run.html").string());
+  EXPECT_EQ(reported.exit_code, 0) << reported.err;
+}
+
 }  // namespace
 }  // namespace crux
