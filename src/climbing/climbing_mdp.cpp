@@ -137,6 +137,7 @@ StepOutcome ClimbingMdp::unshaped_step(ActionCode hold) {
 
 bool ClimbingMdp::known_unreachable(const HoldConfiguration& complete, Limb next_to_move) const {
   if (reacher_.known_unreachable(complete, next_to_move)) return true;
+  if (!trials_) return false;  // only the dynamic model keeps verdicts of its own
   const auto found = performed_.find(reacher_.cache_key(complete, next_to_move));
   return found != performed_.end() && !found->second;
 }

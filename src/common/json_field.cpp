@@ -3,11 +3,22 @@
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
+#include "common/input_file.hpp"
+#include "common/printable.hpp"
 
 namespace crux {
 
 std::string json_value_description(const OrderedJson& value) {
   return value.is_number() || value.is_boolean() ? value.dump() : value.type_name();
+}
+
+OrderedJson read_json_file(const std::string& file, std::string_view kind) {
+  const std::string text = read_input_file(file, kind);
+  try {
+    return OrderedJson::parse(text);
+  } catch (const OrderedJson::exception& e) {
+    throw InputError(file, "not JSON: " + printable(e.what()));
+  }
 }
 
 std::string json_child_path(const std::string& parent, std::string_view key) {

@@ -20,6 +20,10 @@ using OrderedJson = nlohmann::ordered_json;
 // What a value is, as a message names it: numbers and booleans by value, the rest by type.
 std::string json_value_description(const OrderedJson& value);
 
+// The JSON document in `file`, read as read_input_file reads a `kind` of file:
+// InputError(file, "not JSON: ...") when it does not parse.
+OrderedJson read_json_file(const std::string& file, std::string_view kind);
+
 // A 3-vector (Eigen's, or any with x(), y() and z()) as the JSON array [x, y, z].
 template <typename Vector3>
 OrderedJson vector_json(const Vector3& v) {

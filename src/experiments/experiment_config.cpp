@@ -882,19 +882,24 @@ void require_physics_model_taken(const ExperimentConfig& config, const Parameter
                       caller));
 }
 
-void require_perform_keys_used(const ExperimentConfig& config, const std::string& caller) {
-  if (config.settings.learning.climbing.physics.model == PhysicsModel::Dynamic) return;
+void refuse_keys_off_default(const ExperimentConfig& config, std::initializer_list<std::string_view> keys,
+                             std::string_view why) {
   static const ExperimentConfig defaults;
   const std::vector<ConstConfigField> given = config_fields(config), unset = config_fields(defaults);
   for (std::size_t i = 0; i < given.size(); ++i) {
     const std::string& key = given[i].key;
-    if (key.starts_with("perform.") && config.given.contains(key) &&
-        field_value_text(given[i]) != field_value_text(unset[i])) {
-      throw InputError(key, fmt::format("needs physics.model = dynamic: {} performs nothing in MuJoCo under the "
-                                        "other models (crux perform performs their plans)",
-                                        caller));
-    }
+    const bool listed = std::any_of(
+        keys.begin(), keys.end(), [&](std::string_view k) { return k.ends_with('.') ? key.starts_with(k) : key == k; });
+    if (listed && field_value_text(given[i]) != field_value_text(unset[i])) throw InputError(key, std::string(why));
   }
+}
+
+void require_perform_keys_used(const ExperimentConfig& config, const std::string& caller) {
+  if (config.settings.learning.climbing.physics.model == PhysicsModel::Dynamic) return;
+  refuse_keys_off_default(config, {"perform."},
+                          fmt::format("needs physics.model = dynamic: {} performs nothing in MuJoCo under the other "
+                                      "models (crux perform performs their plans)",
+                                      caller));
 }
 
 void finalize_config(ExperimentConfig& config) {

@@ -10,6 +10,7 @@
 // other is refused.
 
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <memory>
@@ -198,6 +199,13 @@ struct ParameterSet {
 // (a command's name, or crux.<function> in Python) does not take.
 void require_physics_model_taken(const ExperimentConfig& config, const ParameterSet& accepted,
                                  const std::string& caller);
+
+// InputError(key, why) for the first key of `config` in `keys` (a key, or a section such as
+// "wall.") that is not at its default: a key the caller would not use, refused rather
+// than ignored. A config.toml written without using them records them at their defaults,
+// so that it replays.
+void refuse_keys_off_default(const ExperimentConfig& config, std::initializer_list<std::string_view> keys,
+                             std::string_view why);
 
 // InputError(key, ...) for a perform.* key given another value than its default while
 // physics.model is not dynamic: under the other models `caller` performs nothing in

@@ -20,22 +20,6 @@ namespace crux {
 
 namespace {
 
-// Refuses each key of `config` in `keys` (a key, or a section "wall.") that is not at its
-// default: a key this mode does not use. A config.toml written in this mode records them
-// at their defaults, so that it replays.
-void refuse_unused_keys(const ExperimentConfig& config, std::initializer_list<std::string_view> keys,
-                        std::string_view why) {
-  static const ExperimentConfig defaults;
-  const std::vector<ConstConfigField> given = config_fields(config);
-  const std::vector<ConstConfigField> unset = config_fields(defaults);
-  for (std::size_t i = 0; i < given.size(); ++i) {
-    const std::string& key = given[i].key;
-    const bool listed = std::any_of(
-        keys.begin(), keys.end(), [&](std::string_view k) { return k.ends_with('.') ? key.starts_with(k) : key == k; });
-    if (listed && field_value_text(given[i]) != field_value_text(unset[i])) throw InputError(key, std::string(why));
-  }
-}
-
 // The climb of the run folder config.run that config.climb names, on the run's wall and
 // under the run's climbing parameters, which `config` then records: a key given with
 // another value is refused rather than ignored.
@@ -44,11 +28,11 @@ struct RunClimb {
   RecordedClimb climb;
 };
 RunClimb run_climb(ExperimentConfig& config, std::optional<BodyModel>& model) {
-  refuse_unused_keys(config, {"wall."},
-                     "crux perform --run performs the run's climb on the run's own wall: drop this key");
-  refuse_unused_keys(config,
-                     {"experiment.plan_max_solves", "experiment.plan_check_moves", "experiment.plan_max_replans"},
-                     "crux perform --run performs the run's climb, not a plan: drop this key");
+  refuse_keys_off_default(config, {"wall."},
+                          "crux perform --run performs the run's climb on the run's own wall: drop this key");
+  refuse_keys_off_default(config,
+                          {"experiment.plan_max_solves", "experiment.plan_check_moves", "experiment.plan_max_replans"},
+                          "crux perform --run performs the run's climb, not a plan: drop this key");
   RunFolder folder = locate_run_folder(config.run);
   const ExperimentConfig recorded = read_run_config(folder.config_file);
   const std::vector<ConstConfigField> given = config_fields(std::as_const(config));

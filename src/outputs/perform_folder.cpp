@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
-#include "common/input_file.hpp"
 #include "common/json_field.hpp"
 #include "common/printable.hpp"
 #include "outputs/trajectory_csv.hpp"
@@ -46,13 +45,7 @@ AttemptedMove attempted_move(const JsonField& field, const Wall& wall) {
 
 void read_record(PerformFolder& folder) {
   const std::string file = (folder.directory / "perform.json").string();
-  const std::string text = read_input_file(file, "perform file");
-  OrderedJson json;
-  try {
-    json = OrderedJson::parse(text);
-  } catch (const OrderedJson::exception& e) {
-    throw InputError(file, "not JSON: " + printable(e.what()));
-  }
+  const OrderedJson json = read_json_file(file, "perform file");
   const JsonField record(file, json);
   record.expect_object();
   folder.climb = record["climb"].string();

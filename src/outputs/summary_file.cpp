@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include "common/input_error.hpp"
-#include "common/input_file.hpp"
 #include "common/printable.hpp"
 
 namespace crux {
@@ -18,13 +17,7 @@ constexpr int kOldestSummaryVersion = 3, kSummaryVersion = 4;
 
 OrderedJson read_summary(const std::filesystem::path& folder) {
   const std::string file = (folder / "summary.json").string();
-  const std::string text = read_input_file(file, "summary file");
-  OrderedJson json;
-  try {
-    json = OrderedJson::parse(text);
-  } catch (const OrderedJson::exception& e) {
-    throw InputError(file, "not JSON: " + printable(e.what()));
-  }
+  OrderedJson json = read_json_file(file, "summary file");
   const JsonField summary(file, json);
   summary.expect_object();
   if (!summary.contains("format") || json["format"] != kSummaryFormat) {
