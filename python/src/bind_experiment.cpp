@@ -61,7 +61,7 @@ py::dict iterations_dict(const RunResult& run) {
     success.mutable_at(i) = r.success;
     reward.mutable_at(i) = r.reward;
     root_rise.mutable_at(i) = r.root_rise_m;
-    regime.append(regime_name(r.regime));
+    regime.append(enum_name(r.regime));
   }
   py::dict out;
   out["episode"] = episode;

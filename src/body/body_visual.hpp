@@ -7,11 +7,17 @@
 
 #include <Eigen/Core>
 
+#include "common/enum_names.hpp"
+
 namespace crux {
 
 enum class VisualShape { Box, Cylinder, Sphere };
 
-const char* visual_shape_name(VisualShape shape);
+template <>
+struct EnumNames<VisualShape> {
+  static constexpr std::array<EnumName<VisualShape>, 3> entries{
+      {{VisualShape::Box, "box"}, {VisualShape::Cylinder, "cylinder"}, {VisualShape::Sphere, "sphere"}}};
+};
 
 struct BodyVisual {
   std::string link;

@@ -91,7 +91,7 @@ struct SingleRunCommand {
     job.output = output;
     job.overwrite = overwrite;
     const int iterations = job.config.settings.learning.iterations;
-    ProgressBar progress(condition_name(condition), iterations, job.config.progress);
+    ProgressBar progress(enum_name(condition), iterations, job.config.progress);
     const std::string caller = condition == Condition::Transfer ? "crux transfer" : "crux train";
     const JobHooks hooks{caller,
                          [&](int done) { progress.update(done); },

@@ -17,18 +17,6 @@
 
 namespace crux {
 
-const char* condition_name(Condition condition) {
-  switch (condition) {
-    case Condition::Training:
-      return "training";
-    case Condition::Transfer:
-      return "transfer";
-    case Condition::Control:
-      return "control";
-  }
-  return "?";
-}
-
 namespace {
 
 // Candidates per wall before the parameters are refused. Under the static model on a

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "common/enum_names.hpp"
 #include "experiments/learning_run.hpp"
 #include "experiments/shortest_plan.hpp"
 #include "simulation/performed_climb.hpp"
@@ -30,7 +31,11 @@ namespace crux {
 
 enum class Condition { Training = 0, Transfer = 1, Control = 2 };
 inline constexpr std::array<Condition, 3> kConditions{Condition::Training, Condition::Transfer, Condition::Control};
-const char* condition_name(Condition condition);
+template <>
+struct EnumNames<Condition> {
+  static constexpr std::array<EnumName<Condition>, 3> entries{
+      {{Condition::Training, "training"}, {Condition::Transfer, "transfer"}, {Condition::Control, "control"}}};
+};
 
 // How runs are analysed (docs/OUTPUTS.md): Table I's beginning window, the episode
 // length that counts as climbing well, and the cluster bootstrap's size.

@@ -4,8 +4,6 @@
 
 namespace crux {
 
-const char* window_name(Window window) { return window == Window::Beginning ? "beginning" : "overall"; }
-
 RegimeStats regime_stats(std::span<const RunResult> runs, Regime regime, int iterations) {
   RegimeStats stats;
   double rise_m = 0.0;

@@ -8,12 +8,17 @@
 #include <span>
 #include <vector>
 
+#include "common/enum_names.hpp"
 #include "experiments/learning_run.hpp"
 
 namespace crux {
 
 enum class Window { Beginning = 0, Overall = 1 };
-const char* window_name(Window window);
+template <>
+struct EnumNames<Window> {
+  static constexpr std::array<EnumName<Window>, 2> entries{
+      {{Window::Beginning, "beginning"}, {Window::Overall, "overall"}}};
+};
 
 struct RegimeStats {
   double actions_per_run = 0.0;  // mean over runs

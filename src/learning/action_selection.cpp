@@ -4,18 +4,6 @@
 
 namespace crux {
 
-const char* regime_name(Regime regime) {
-  switch (regime) {
-    case Regime::WGreedy:
-      return "w_greedy";
-    case Regime::GGreedy:
-      return "g_greedy";
-    case Regime::Random:
-      return "random";
-  }
-  return "?";
-}
-
 namespace {
 
 // Tie-break draws of the two tables are told apart by the low bit of the draw number.

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <span>
 
+#include "common/enum_names.hpp"
 #include "common/random_stream.hpp"
 #include "learning/q_table.hpp"
 
@@ -15,7 +16,11 @@ namespace crux {
 
 enum class Regime : std::uint8_t { WGreedy = 0, GGreedy = 1, Random = 2 };
 inline constexpr int kRegimeCount = 3;
-const char* regime_name(Regime regime);
+template <>
+struct EnumNames<Regime> {
+  static constexpr std::array<EnumName<Regime>, kRegimeCount> entries{
+      {{Regime::WGreedy, "w_greedy"}, {Regime::GGreedy, "g_greedy"}, {Regime::Random, "random"}}};
+};
 
 // A possible action in both representations. `represents_grid_action` marks, for each
 // grid action, the one candidate that the grid action maps back to (the hold nearest

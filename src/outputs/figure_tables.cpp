@@ -35,7 +35,7 @@ std::string fig2b_csv(const ExperimentResult& result, const GridParameters& grid
     const auto maps = mean_q_grid_maps(c, grid);
     for (int l = 0; l < kLimbCount; ++l) {
       for (int t = 0; t < grid.tile_count(); ++t) {
-        csv += fmt::format("{},{},{},{},{},{}\n", condition_name(condition), enum_name(static_cast<Limb>(l)), t,
+        csv += fmt::format("{},{},{},{},{},{}\n", enum_name(condition), enum_name(static_cast<Limb>(l)), t,
                            t % grid.columns, t / grid.columns, maps[t][l]);
       }
     }
@@ -57,7 +57,7 @@ std::string fig3_csv(const ExperimentResult& result, int iterations) {
       }
     }
     for (int i = 0; i < iterations; ++i) {
-      csv += fmt::format("{},{},{},{},{}\n", condition_name(condition), i + 1, cumulative[i][0], cumulative[i][1],
+      csv += fmt::format("{},{},{},{},{}\n", enum_name(condition), i + 1, cumulative[i][0], cumulative[i][1],
                          cumulative[i][2]);
     }
   }
@@ -70,7 +70,7 @@ std::string fig4_csv(const ExperimentResult& result) {
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];
     for (std::size_t i = 0; i < c.runs.size(); ++i) {
       for (std::size_t e = 0; e < c.runs[i].episode_lengths.size(); ++e) {
-        csv += fmt::format("{},{},{},{}\n", condition_name(condition), i, e, c.runs[i].episode_lengths[e]);
+        csv += fmt::format("{},{},{},{}\n", enum_name(condition), i, e, c.runs[i].episode_lengths[e]);
       }
     }
   }

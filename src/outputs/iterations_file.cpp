@@ -14,9 +14,7 @@ namespace crux {
 namespace {
 
 Regime iteration_regime(std::string_view name, const std::string& file, std::size_t line) {
-  for (int r = 0; r < kRegimeCount; ++r) {
-    if (name == regime_name(static_cast<Regime>(r))) return static_cast<Regime>(r);
-  }
+  if (const auto regime = parse_enum<Regime>(name)) return *regime;
   throw InputError(file, fmt::format("line {}: unknown regime '{}'", line, printable(name.substr(0, 40))));
 }
 

@@ -159,7 +159,7 @@ void write_experiment_folder(const fs::path& directory, const ExperimentResult& 
   for (const Condition condition : kConditions) {
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];
     for (std::size_t i = 0; i < c.runs.size(); ++i) {
-      write_run_files(directory / "runs" / fmt::format("{}_{}", condition_name(condition), i), c.runs[i], model,
+      write_run_files(directory / "runs" / fmt::format("{}_{}", enum_name(condition), i), c.runs[i], model,
                       parameters.learning.climbing.grid);
     }
   }

@@ -39,7 +39,7 @@ void read_paper_summary(const std::filesystem::path& folder, PaperFigureData& da
   const JsonField lengths = summary["episode_lengths"];
   lengths.expect_object();
   for (const Condition condition : kConditions) {
-    const std::string name = condition_name(condition);
+    const std::string name = enum_name(condition);
     if (!lengths.contains(name)) continue;
     PaperConditionData c;
     c.condition = condition;
@@ -78,7 +78,7 @@ PaperFigureData read_paper_figure_data(const std::filesystem::path& folder) {
   for (PaperConditionData& condition : data.conditions) {
     for (std::size_t i = 0; i < condition.runs.size(); ++i) {
       const std::filesystem::path file =
-          folder / "runs" / fmt::format("{}_{}", condition_name(condition.condition), i) / "iterations.csv";
+          folder / "runs" / fmt::format("{}_{}", enum_name(condition.condition), i) / "iterations.csv";
       for (const RunStep& step :
            read_iterations_file(file, data.iterations, config.settings.learning.climbing.physics.model))
         condition.runs[i].regimes.push_back(step.regime);

@@ -16,7 +16,7 @@ void write_run_files(const std::filesystem::path& directory, const RunResult& ru
   iterations += '\n';
   for (std::size_t i = 0; i < run.iterations.size(); ++i) {
     const IterationRecord& r = run.iterations[i];
-    iterations += fmt::format("{},{},{},{},{},{},{}", i + 1, r.episode, regime_name(r.regime), r.hold_id,
+    iterations += fmt::format("{},{},{},{},{},{},{}", i + 1, r.episode, enum_name(r.regime), r.hold_id,
                               r.success ? 1 : 0, 100.0 * r.root_rise_m, r.reward);
     iterations += run.can_fall ? (r.fell ? ",1\n" : ",0\n") : "\n";
   }

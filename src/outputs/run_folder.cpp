@@ -16,6 +16,7 @@
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
 #include "common/printable.hpp"
+#include "experiments/paper_experiment.hpp"
 #include "outputs/run_config_file.hpp"
 #include "outputs/summary_file.hpp"
 #include "wall/wall_file.hpp"
@@ -44,7 +45,8 @@ std::string paper_run_names(const fs::path& folder) {
     }
   }
   std::vector<std::string> ranges;
-  for (const char* condition : {"training", "transfer", "control"}) {
+  for (const Condition c : kConditions) {
+    const char* condition = enum_name(c);
     const std::set<int>& indices = runs[condition];
     for (auto first = indices.begin(); first != indices.end();) {
       auto last = first;

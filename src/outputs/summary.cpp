@@ -53,7 +53,7 @@ nlohmann::ordered_json table_one_json(const ExperimentResult& result, int beginn
     for (const Window window : {Window::Beginning, Window::Overall}) {
       for (int r = 0; r < kRegimeCount; ++r) {
         const RegimeStats& s = cells[static_cast<int>(window)][r];
-        table[condition_name(condition)][window_name(window)][regime_name(static_cast<Regime>(r))] = {
+        table[enum_name(condition)][enum_name(window)][enum_name(static_cast<Regime>(r))] = {
             {"actions", s.actions_per_run}, {"success_rate", s.success_rate}, {"vertical_cm", s.vertical_cm}};
       }
     }
@@ -89,7 +89,7 @@ nlohmann::ordered_json table_one_over_runs_json(const ExperimentResult& result, 
           cell[name] = {
               {"mean", m.mean}, {"ci95_over_walls", interval_json(m)}, {"runs", v.values.size()}, {"walls", m.n}};
         }
-        intervals[condition_name(condition)][window_name(window)][regime_name(static_cast<Regime>(r))] = cell;
+        intervals[enum_name(condition)][enum_name(window)][enum_name(static_cast<Regime>(r))] = cell;
       }
     }
   }
@@ -100,7 +100,7 @@ nlohmann::ordered_json transfer_choices_json(const ExperimentAnalysis& analysis)
   nlohmann::ordered_json choices;
   for (int r = 0; r < kRegimeCount; ++r) {
     const ChoiceProfile& p = analysis.transfer_choices[r];
-    choices[regime_name(static_cast<Regime>(r))] = {
+    choices[enum_name(static_cast<Regime>(r))] = {
         {"actions", p.actions},
         {"successes", p.successes},
         {"mean_root_rise_cm", p.mean_root_rise_cm},
@@ -130,7 +130,7 @@ nlohmann::ordered_json transfer_vs_control_json(const ExperimentAnalysis& analys
     entry["higher_is_better"] = m.metric.higher_is_better;
     for (const Condition c : kConditions) {
       const MeanInterval& v = m.per_condition[static_cast<int>(c)];
-      entry[condition_name(c)] = {{"mean", v.mean}, {"ci95_over_walls", interval_json(v)}};
+      entry[enum_name(c)] = {{"mean", v.mean}, {"ci95_over_walls", interval_json(v)}};
     }
     const ClusteredDifference& d = m.transfer_minus_control;
     entry["transfer_minus_control"] = {{"mean", d.mean},
@@ -160,11 +160,10 @@ nlohmann::ordered_json take_off_json(const ExperimentAnalysis& analysis) {
   nlohmann::ordered_json take_off;
   for (const Condition c : kConditions) {
     const ExperimentAnalysis::TakeOff& t = analysis.take_off[static_cast<int>(c)];
-    take_off[condition_name(c)] = {
-        {"runs", t.runs},
-        {"taken_off", t.taken_off},
-        {"share", t.runs > 0 ? static_cast<double>(t.taken_off) / t.runs : 0.0},
-        {"median_iteration", t.taken_off > 0 ? nlohmann::json(t.median_iteration) : nullptr}};
+    take_off[enum_name(c)] = {{"runs", t.runs},
+                              {"taken_off", t.taken_off},
+                              {"share", t.runs > 0 ? static_cast<double>(t.taken_off) / t.runs : 0.0},
+                              {"median_iteration", t.taken_off > 0 ? nlohmann::json(t.median_iteration) : nullptr}};
   }
   return take_off;
 }
@@ -279,7 +278,7 @@ nlohmann::ordered_json summary_json(const ExperimentResult& result, const Experi
   const GridParameters& grid = parameters.learning.climbing.grid;
   for (const Condition condition : present_conditions(result)) {
     const ConditionResult& c = result.conditions[static_cast<int>(condition)];
-    const char* name = condition_name(condition);
+    const char* name = enum_name(condition);
     lengths[name] = nlohmann::json::array();
     runs[name] = nlohmann::json::array();
     for (std::size_t i = 0; i < c.runs.size(); ++i) {

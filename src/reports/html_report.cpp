@@ -5,7 +5,9 @@
 #include <fmt/format.h>
 
 #include "common/counted.hpp"
+#include "experiments/paper_experiment.hpp"
 #include "experiments/stratified_bootstrap.hpp"
+#include "experiments/table_one.hpp"
 #include "learning/action_selection.hpp"
 #include "reports/paper_reference.hpp"
 #include "reports/replay_data.hpp"
@@ -15,9 +17,6 @@ namespace crux {
 namespace {
 
 using Json = nlohmann::json;
-
-constexpr std::array<const char*, 3> kConditionNames{"training", "transfer", "control"};
-constexpr std::array<const char*, 2> kWindowNames{"beginning", "overall"};
 
 // A JSON value from the summary, or null when the path does not exist.
 const Json& at(const Json& json, std::initializer_list<std::string_view> path) {
@@ -132,17 +131,18 @@ class Page {
     static const char* const metrics[3] = {"vertical rise of e0 (cm)", "success rate (%)", "actions per run"};
     for (int w = 0; w < 2; ++w) {
       append_format(out_, "<table class=\"numbers\">\n<caption>{}</caption>\n<thead><tr><th></th><th></th>",
-                    kWindowNames[w]);
-      for (const char* condition : kConditionNames) append_format(out_, "<th>{}</th>", condition);
+                    enum_name(static_cast<Window>(w)));
+      for (const Condition condition : kConditions) append_format(out_, "<th>{}</th>", enum_name(condition));
       out_ += "</tr></thead>\n<tbody>\n";
       for (int metric = 0; metric < 3; ++metric) {
         for (int r = 0; r < kRegimeCount; ++r) {
           out_ += "<tr>";
           if (r == 0) append_format(out_, "<th rowspan=\"3\">{}</th>", metrics[metric]);
-          append_format(out_, "<th>{}</th>", regime_name(static_cast<Regime>(r)));
+          append_format(out_, "<th>{}</th>", enum_name(static_cast<Regime>(r)));
           for (int c = 0; c < 3; ++c) {
             const Json& stats =
-                at(page_.summary, {"table1", kConditionNames[c], kWindowNames[w], regime_name(static_cast<Regime>(r))});
+                at(page_.summary, {"table1", enum_name(kConditions[c]), enum_name(static_cast<Window>(w)),
+                                   enum_name(static_cast<Regime>(r))});
             std::string value;
             if (metric == 0) value = number(at(stats, {"vertical_cm"}), "{:.1f}");
             if (metric == 1) {
@@ -226,7 +226,8 @@ class Page {
 
   void write_run_facts() {
     out_ += "<section id=\"run\">\n<h2>The run</h2>\n<table class=\"numbers\">\n<tbody>\n";
-    for (const char* condition : kConditionNames) {
+    for (const Condition c : kConditions) {
+      const char* condition = enum_name(c);
       const Json& facts = at(page_.summary, {"run_facts", condition});
       if (!facts.is_array() || facts.empty()) continue;
       const Json& run = facts[0];

@@ -73,7 +73,7 @@ nlohmann::ordered_json body_model_json(const BodyModel& model) {
                                {"joint", visual.joint},
                                {"xyz", vector_json(visual.translation)},
                                {"quat", quaternion_json(visual.rotation)},
-                               {"shape", visual_shape_name(visual.shape)},
+                               {"shape", enum_name(visual.shape)},
                                {"size", size},
                                {"rgba", visual.rgba}});
   }
@@ -124,7 +124,7 @@ nlohmann::ordered_json replay_data(const BodyModel& model, const Wall& wall, con
   for (const ReplayMove& move : replay.moves) {
     const RunStep& step = move.step;
     moves.push_back({{"iteration", step.iteration > 0 ? nlohmann::ordered_json(step.iteration) : nullptr},
-                     {"regime", regime_name(step.regime)},
+                     {"regime", enum_name(step.regime)},
                      {"limb", enum_name(move.limb)},
                      {"hold", step.hold_id},
                      {"success", step.success},

@@ -18,12 +18,13 @@ std::string table_one_text(const ExperimentResult& result, const ExperimentParam
       fmt::format("\nTable I: ours (paper's in brackets), over {} per condition; beginning = first {}\n",
                   counted(parameters.runs(), "run"), counted(parameters.analysis.beginning, "iteration"));
   for (const Window w : {Window::Beginning, Window::Overall}) {
-    text += fmt::format("\n{:<26}{:>16}{:>16}{:>10}\n", window_name(w), "training", "transfer", "control");
+    text += fmt::format("\n{:<26}{:>16}{:>16}{:>10}\n", enum_name(w), enum_name(Condition::Training),
+                        enum_name(Condition::Transfer), enum_name(Condition::Control));
     for (int metric = 0; metric < 3; ++metric) {
       static const char* const names[3] = {"vertical e0 (cm)", "success rate (%)", "actions per run"};
       text += fmt::format("  {}\n", names[metric]);
       for (int r = 0; r < kRegimeCount; ++r) {
-        text += fmt::format("    {:<22}", regime_name(static_cast<Regime>(r)));
+        text += fmt::format("    {:<22}", enum_name(static_cast<Regime>(r)));
         for (int c = 0; c < 3; ++c) {
           const RegimeStats& s = ours[c][static_cast<int>(w)][r];
           // No rate without actions, no displacement without successes.

@@ -25,7 +25,7 @@ std::string episode_text(const ExperimentResult& result, const ExperimentParamet
       episodes += static_cast<double>(r.episode_lengths.size()) / total;
       if (r.greedy_length > 0) greedy += r.greedy_length, ++greedy_ok;
     }
-    text += fmt::format("  {:<9} {:6.1f} episodes per run; greedy climb finishes in {} of {}{}\n", condition_name(c),
+    text += fmt::format("  {:<9} {:6.1f} episodes per run; greedy climb finishes in {} of {}{}\n", enum_name(c),
                         episodes, greedy_ok, counted(total, "run"),
                         greedy_ok ? fmt::format(", in {:.1f} actions on average", greedy / greedy_ok) : "");
   }
@@ -113,7 +113,7 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentPa
                       counted(parameters.analysis.threshold_length, "iteration"));
   for (const Condition c : kConditions) {
     const ExperimentAnalysis::TakeOff& t = analysis.take_off[static_cast<int>(c)];
-    text += fmt::format("  {:<9} {} of {} take off{}\n", condition_name(c), t.taken_off, counted(t.runs, "run"),
+    text += fmt::format("  {:<9} {} of {} take off{}\n", enum_name(c), t.taken_off, counted(t.runs, "run"),
                         t.taken_off > 0 ? fmt::format("; median iteration {:.0f}", t.median_iteration) : "");
   }
   text += fmt::format("Transfer and control runs first differ at iteration {:.1f} (median over pairs)\n",
@@ -131,10 +131,9 @@ std::string transfer_text(const ExperimentAnalysis& analysis, const ExperimentPa
         "  {:<9} {:6d} {}, {} reachable; back to the hold just left {} (reachable {}); the hold that failed "
         "just before {} (reachable {}); of the others, with evidence {} "
         "(which succeeded {}); far {} (reachable {}), near {} (reachable {}); median distance {}\n",
-        regime_name(static_cast<Regime>(r)), p.actions, counted_noun(p.actions, "action"),
-        share(p.successes, p.actions), share(p.back_to_left_hold, p.actions),
-        share(p.back_to_left_hold_successes, p.back_to_left_hold), share(p.repeats_of_failure, p.actions),
-        share(p.repeats_of_failure_successes, p.repeats_of_failure),
+        enum_name(static_cast<Regime>(r)), p.actions, counted_noun(p.actions, "action"), share(p.successes, p.actions),
+        share(p.back_to_left_hold, p.actions), share(p.back_to_left_hold_successes, p.back_to_left_hold),
+        share(p.repeats_of_failure, p.actions), share(p.repeats_of_failure_successes, p.repeats_of_failure),
         share(p.with_evidence, p.actions - p.repeats_of_failure),
         fmt::format("{:.0f} %", 100 * p.evidence_success_rate), share(p.far, p.with_evidence),
         share(p.far_successes, p.far), share(p.near, p.with_evidence), share(p.near_successes, p.near),

@@ -68,7 +68,7 @@ SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells
       for (std::size_t w = 0; w < group_walls[g]; ++w) {
         plan.tasks.push_back(
             {SweepTaskKind::Wall, first_cell[g], role, static_cast<int>(w), -1,
-             std::filesystem::path("walls") / fmt::format("g{}", g) / fmt::format("{}_{}", condition_name(role), w)});
+             std::filesystem::path("walls") / fmt::format("g{}", g) / fmt::format("{}_{}", enum_name(role), w)});
       }
     }
     for (std::size_t w = 0; w < group_walls[g]; ++w) {
@@ -87,9 +87,9 @@ SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells
     for (const Condition condition : kConditions) {
       for (int r = 0; r < runs; ++r) {
         const int training = condition == Condition::Transfer ? static_cast<int>(first) + r : -1;
-        plan.tasks.push_back({SweepTaskKind::Run, c, condition, r, training,
-                              std::filesystem::path("runs") / fmt::format("c{}", c) /
-                                  fmt::format("{}_{}", condition_name(condition), r)});
+        plan.tasks.push_back(
+            {SweepTaskKind::Run, c, condition, r, training,
+             std::filesystem::path("runs") / fmt::format("c{}", c) / fmt::format("{}_{}", enum_name(condition), r)});
       }
     }
   }

@@ -133,7 +133,7 @@ ExperimentResult read_sweep_cell(const SweepPlan& plan, const fs::path& folder, 
       const int pair = r / settings.seeds_per_wall;
       runs.cluster_of_run.push_back(static_cast<std::size_t>(pair));
       runs.wall_of_run.push_back(static_cast<std::size_t>(pair));
-      const std::string name = condition_name(condition);
+      const std::string name = enum_name(condition);
       const JsonField facts = JsonField(summary_file, summary)["run_facts"][name][0];
       runs.learning_seeds.push_back(facts["learning_seed"].unsigned_integer());
       const fs::path wall_folder =

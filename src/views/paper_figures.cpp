@@ -279,7 +279,7 @@ std::string fig2b_svg(const PaperFigureData& data) {
   const double rows_top = y;
   for (const PaperConditionData& c : data.conditions) {
     draw_text(svg, layout.maps_left - 30, y + 13,
-              fmt::format("{} (mean over {})", condition_name(c.condition),
+              fmt::format("{} (mean over {})", enum_name(c.condition),
                           runs_phrase(static_cast<int>(c.runs.size()), wall_count(c))),
               {.colour = condition_colour(c.condition), .bold = true});
     y += 22;
@@ -341,10 +341,10 @@ std::string fig3_svg(const PaperFigureData& data) {
     for (int r = 0; r < kRegimeCount; ++r) {
       draw_polyline(svg, panel, series[r].x, series[r].mean, {kRegimeStyles[r].colour, 2, kRegimeStyles[r].dash});
     }
-    draw_text(svg, left, top - 8,
-              fmt::format("{} ({})", condition_name(c.condition),
-                          runs_phrase(static_cast<int>(c.runs.size()), wall_count(c))),
-              {.colour = condition_colour(c.condition), .bold = true});
+    draw_text(
+        svg, left, top - 8,
+        fmt::format("{} ({})", enum_name(c.condition), runs_phrase(static_cast<int>(c.runs.size()), wall_count(c))),
+        {.colour = condition_colour(c.condition), .bold = true});
     left += kPanelWidth + kPanelGap + y_axis_room(y_untitled);
   }
   std::vector<LegendEntry> legend;
@@ -396,9 +396,9 @@ void draw_fig4_conditions(std::string& svg, const Panel& panel, const PaperFigur
         std::any_of(series[k].low.begin(), series[k].low.end(), [](double v) { return std::isfinite(v); });
     // Fainter than Fig. 3's: three conditions' bands overlap here.
     draw_band(svg, panel, series[k].x, series[k].low, series[k].high, condition_colour(c.condition), 0.15);
-    legend.push_back({band ? LegendMark::LineWithBand : LegendMark::Line, condition_colour(c.condition), "",
-                      fmt::format("{} ({})", condition_name(c.condition),
-                                  runs_phrase(static_cast<int>(c.runs.size()), wall_count(c)))});
+    legend.push_back(
+        {band ? LegendMark::LineWithBand : LegendMark::Line, condition_colour(c.condition), "",
+         fmt::format("{} ({})", enum_name(c.condition), runs_phrase(static_cast<int>(c.runs.size()), wall_count(c)))});
   }
   for (std::size_t k = 0; k < series.size(); ++k) {
     draw_polyline(svg, panel, series[k].x, series[k].mean, {condition_colour(data.conditions[k].condition), 1.6, ""});
@@ -415,7 +415,7 @@ void draw_fig4_shortest_climbs(std::string& svg, const Panel& panel, const Fig4S
     const auto& [text, conditions] = *it;
     const char* colour = conditions.size() == 1 ? condition_colour(conditions.front()) : kDarkGrey;
     std::string names;
-    for (const Condition c : conditions) names += fmt::format("{}{}", names.empty() ? "" : ", ", condition_name(c));
+    for (const Condition c : conditions) names += fmt::format("{}{}", names.empty() ? "" : ", ", enum_name(c));
     const double value = climbs.values.at(text);
     draw_reference_line(svg, panel, Direction::Horizontal, value, {colour, 1.6, "7 4"});
     double label_y = std::max(panel.y_pixel(value) + 15, label_floor + 15);

@@ -6,9 +6,9 @@ namespace crux {
 namespace {
 
 TEST(BodyVisual, ShapesAreNamedAsInUrdf) {
-  EXPECT_STREQ(visual_shape_name(VisualShape::Box), "box");
-  EXPECT_STREQ(visual_shape_name(VisualShape::Cylinder), "cylinder");
-  EXPECT_STREQ(visual_shape_name(VisualShape::Sphere), "sphere");
+  EXPECT_STREQ(enum_name(VisualShape::Box), "box");
+  EXPECT_STREQ(enum_name(VisualShape::Cylinder), "cylinder");
+  EXPECT_STREQ(enum_name(VisualShape::Sphere), "sphere");
 }
 
 TEST(BodyVisual, AnUncolouredVisualIsUrdfsDefaultGrey) {

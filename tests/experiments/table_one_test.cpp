@@ -134,8 +134,8 @@ TEST(TableOne, TableHoldsBothWindowsForEveryRegime) {
   EXPECT_NEAR(overall[static_cast<int>(W)].vertical_cm, 28.0 / 3.0, 1e-12);
   EXPECT_DOUBLE_EQ(overall[static_cast<int>(R)].success_rate, 0.4);
   EXPECT_NEAR(overall[static_cast<int>(R)].vertical_cm, 3.0, 1e-12);
-  EXPECT_STREQ(window_name(Window::Beginning), "beginning");
-  EXPECT_STREQ(window_name(Window::Overall), "overall");
+  EXPECT_STREQ(enum_name(Window::Beginning), "beginning");
+  EXPECT_STREQ(enum_name(Window::Overall), "overall");
 }
 
 }  // namespace

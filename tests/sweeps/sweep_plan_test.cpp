@@ -32,7 +32,7 @@ TEST(SweepPlan, WallsFirstThenEachCellsRunsWithTransferAfterItsTraining) {
         EXPECT_EQ(task.cell, c);
         EXPECT_EQ(task.condition, condition);
         EXPECT_EQ(task.index, r);
-        EXPECT_EQ(task.folder.string(), fmt::format("runs/c{}/{}_{}", c, condition_name(condition), r));
+        EXPECT_EQ(task.folder.string(), fmt::format("runs/c{}/{}_{}", c, enum_name(condition), r));
         const int training = static_cast<int>(run_task_index(plan, c, Condition::Training, r));
         EXPECT_EQ(task.depends_on, condition == Condition::Transfer ? training : -1);
       }

@@ -129,12 +129,12 @@ TEST(SweepResults, ACellOverThreeTrainingWallsIsCruxPapersExperiment) {
           run / "iterations.csv", config.settings.learning.iterations, config.settings.learning.climbing.physics.model);
       ASSERT_EQ(steps.size(), expected.runs[r].iterations.size());
       for (std::size_t i = 0; i < steps.size(); ++i) {
-        ASSERT_EQ(steps[i].hold_id, expected.runs[r].iterations[i].hold_id) << condition_name(condition) << r;
-        ASSERT_EQ(steps[i].success, expected.runs[r].iterations[i].success) << condition_name(condition) << r;
+        ASSERT_EQ(steps[i].hold_id, expected.runs[r].iterations[i].hold_id) << enum_name(condition) << r;
+        ASSERT_EQ(steps[i].success, expected.runs[r].iterations[i].success) << enum_name(condition) << r;
       }
-      const fs::path paper_q_grid = job.folder / fmt::format("paper_{}_{}.bin", condition_name(condition), r);
+      const fs::path paper_q_grid = job.folder / fmt::format("paper_{}_{}.bin", enum_name(condition), r);
       save_q_table(paper_q_grid.string(), expected.runs[r].q_grid, grid);
-      EXPECT_EQ(read_bytes(run / "q_grid.bin"), read_bytes(paper_q_grid)) << condition_name(condition) << r;
+      EXPECT_EQ(read_bytes(run / "q_grid.bin"), read_bytes(paper_q_grid)) << enum_name(condition) << r;
     }
   }
   // The walls are crux paper's, pair w's preceding wall j at w (K - 1) + j.
