@@ -12,12 +12,19 @@
 #include <fmt/ranges.h>
 #include <toml++/toml.h>
 
+#include "agent_space/grid_keys.hpp"
+#include "climbing/climbing_keys.hpp"
 #include "common/input_error.hpp"
 #include "common/input_file.hpp"
 #include "common/printable.hpp"
+#include "configurations/configuration_keys.hpp"
 #include "experiments/stance_survey.hpp"
+#include "ik/ik_keys.hpp"
+#include "learning/learning_keys.hpp"
+#include "physics/physics_keys.hpp"
 #include "physics/strength_profile.hpp"
-#include "wall/incline.hpp"
+#include "simulation/perform_keys.hpp"
+#include "wall/random_wall_keys.hpp"
 
 namespace crux {
 
@@ -27,130 +34,7 @@ namespace {
 constexpr int kMaxRunsPerCondition = 1000000;
 // Each training run learns K times its iterations: beyond this a typo, not an experiment.
 constexpr int kMaxTrainingWalls = 1000;
-// Dyna's updates per real step: a run of kMaxIterations then makes 1e11 updates, hours;
-// the docs use 200.
-constexpr int kMaxPlanningSteps = 10000;
-// Iterations of one IK solve (the fast solver's cap, the paper's Delta_t / time step):
-// 36 times the paper's 2750, so that one solve stays well under a second.
-constexpr double kMaxIkIterations = 100000;
-// A reward's magnitude: 5000 times the paper's finish reward, so that a run's sums of
-// rewards and Q-values (at most |reward| / (1 - gamma)) stay finite; 1e308 overflowed.
-constexpr double kMaxReward = 1e9;
-// A length on the wall or the body: beyond 100 m no limb (0.8 m) or wall of holds
-// (kMaxHoldCount holds) means anything, and the views scale what they draw to it.
-constexpr double kMaxLengthM = 100;
 
-std::string bound_text(double value) { return fmt::format("{}", value); }
-
-}  // namespace
-
-bool Bounds::contains(double value) const {
-  return (min_open ? value > min : value >= min) && (max_open ? value < max : value <= max);
-}
-
-std::string Bounds::summary(bool integer) const {
-  const bool has_min = std::isfinite(min), has_max = std::isfinite(max);
-  if (has_min && has_max) {
-    if (integer && !min_open && !max_open) return fmt::format("{} to {}", bound_text(min), bound_text(max));
-    return fmt::format("{}{}, {}{}", min_open ? '(' : '[', bound_text(min), bound_text(max), max_open ? ')' : ']');
-  }
-  if (has_min) return fmt::format("{} {}", min_open ? ">" : ">=", bound_text(min));
-  if (has_max) return fmt::format("{} {}", max_open ? "<" : "<=", bound_text(max));
-  return {};
-}
-
-std::string Bounds::problem(bool integer) const {
-  const bool has_min = std::isfinite(min), has_max = std::isfinite(max);
-  std::string text;
-  if (has_min && !has_max && min == 0) {
-    text = min_open ? "must be positive" : "must be 0 or positive";
-  } else if (has_min && has_max && integer && !min_open && !max_open) {
-    text = fmt::format("must be from {} to {}", bound_text(min), bound_text(max));
-  } else if (has_min && has_max) {
-    text = "must be in " + summary(integer);
-  } else if (has_min || has_max) {
-    text = "must be " + summary(integer);
-  }
-  return why == nullptr ? text : fmt::format("{} ({})", text, why);
-}
-
-template <bool Const>
-const char* ConfigFieldOf<Const>::type_name() const {
-  static constexpr const char* kNames[] = {"number", "number",  "integer", "integer", "seed",
-                                           "seed",   "boolean", "text",    "choice"};
-  if (is_path) return "path";
-  return kNames[target.index()];
-}
-
-template <bool Const>
-bool ConfigFieldOf<Const>::is_integer() const {
-  return std::holds_alternative<Ref<int>>(target) || std::holds_alternative<Ref<std::optional<int>>>(target);
-}
-
-template <bool Const>
-std::string ConfigFieldOf<Const>::described_help() const {
-  std::vector<std::string> notes;
-  if (!unit.empty()) notes.push_back(unit);
-  if (const std::string range = bounds.summary(is_integer()); !range.empty()) notes.push_back(range);
-  if (const auto* choice = std::get_if<ChoiceTarget<Const>>(&target)) notes.push_back(choice->type->choices());
-  return notes.empty() ? help : fmt::format("{} ({})", help, fmt::join(notes, "; "));
-}
-
-template struct ConfigFieldOf<false>;
-template struct ConfigFieldOf<true>;
-
-namespace {
-
-template <typename Enum>
-ChoiceTarget<false> choice(Enum* target) {
-  return choice_of(target);
-}
-template <typename Enum>
-ChoiceTarget<true> choice(const Enum* target) {
-  return {target, &enum_choice_type<Enum>()};
-}
-
-// physics.strength: a climbing level's name, or empty (unset).
-const ChoiceType kClimbingLevelChoice{[](const void* target) { return *static_cast<const std::string*>(target); },
-                                      [](void* target, std::string_view text) {
-                                        if (!find_climbing_level(text)) return false;
-                                        *static_cast<std::string*>(target) = std::string(text);
-                                        return true;
-                                      },
-                                      [] { return climbing_level_descriptions(); }};
-ChoiceTarget<false> level_choice(std::string* target) { return {target, &kClimbingLevelChoice}; }
-ChoiceTarget<true> level_choice(const std::string* target) { return {target, &kClimbingLevelChoice}; }
-
-constexpr Bounds kAboveZeroToOne{.min = 0, .max = 1, .min_open = true};
-constexpr Bounds kZeroToBelowOne{.min = 0, .max = 1, .max_open = true};
-constexpr Bounds kUnitInterval{.min = 0, .max = 1};
-constexpr Bounds kOpenRightAngle{.min = -kMaxInclineDeg, .max = kMaxInclineDeg, .min_open = true, .max_open = true};
-constexpr Bounds kRewardRange = closed_range(-kMaxReward, kMaxReward, "a run's sums of rewards must stay finite");
-constexpr Bounds kRewardWeight = closed_range(0, kMaxReward, "a run's sums of rewards must stay finite");
-constexpr Bounds kLength{.min = 0, .max = kMaxLengthM, .min_open = true};
-constexpr Bounds kShareOfOne = closed_range(0, 1, "a share");
-// A height on the wall: a random wall is at most kMaxHoldCount holds of at most 10 m tiles
-// tall, but a finish higher than this is never reached by a body that climbs 0.5 m a move
-// within the longest run's greedy climb.
-constexpr Bounds kWallHeight = closed_range(-1000, 1000);
-// A hold's radius: from a crimp to a 1 m ledge.
-constexpr Bounds kHoldRadius{.min = 0, .max = 1, .min_open = true};
-// The holds' displacement: four times the body's span moves a hold anywhere on the wall.
-constexpr Bounds kHoldScatter = closed_range(0, 10);
-// A tile of the agent space or of a random wall: from 1 cm (a hold's size) to 10 m (four
-// times the body's span). Fig. 2b draws the grid to scale: a tile of 1e20 m beside one
-// of 0.3 m left sub-pixel cells whose label spacing overflowed and hung the drawing.
-constexpr Bounds kTileSize = closed_range(0.01, 10, "from a hold's size to four times the body's span");
-// Tiles of the agent space: 1000 x 1000 cells hold far more than 32-bit agent-state
-// codes allow (checked with the other keys), so the count itself never overflows.
-constexpr Bounds kGridTiles = work_size(1, 1000);
-// Tiles of a random wall: its holds, (columns + 1) x (rows + 1), are at most kMaxHoldCount.
-constexpr Bounds kWallTiles = work_size(1, kMaxHoldCount);
-// A tile of the agent space: an anchor is one (checked against columns and rows for the grid).
-constexpr Bounds kAnchorTile = closed_range(0, 999, "a tile of the grid");
-
-// The one declaration of every key, for a config or a const one. Units and bounds go in
-// their columns, not in the help, which says what the key means.
 // The one declaration of every key, for a config or a const one, section by section in
 // config.toml's order. Units and bounds go in their columns, not in the help, which says
 // what the key means.
@@ -224,236 +108,8 @@ void experiment_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
            "",
            {},
            true},
-          {"experiment.transfer",
-           "How transfer uses its Q_grid (docs/TRANSFER.md): paper is Algorithm 3; control follows the same rule from "
-           "an "
-           "empty Q_grid",
-           choice(&l.dyna.transfer)},
       });
-}
-
-// The [learning] and [reward] keys: Dyna-Q and the MDP's rewards.
-template <typename Config>
-void learning_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
-  auto& l = c.settings.learning;
-  auto& m = c.settings.learning.climbing;
-  keys.insert(
-      keys.end(),
-      {
-          {"learning.alpha", "Q-learning step size alpha", &l.dyna.rates.alpha, "", kAboveZeroToOne},
-          {"learning.gamma", "Discount factor gamma", &l.dyna.rates.gamma, "", kZeroToBelowOne},
-          {"learning.epsilon", "Exploration rate of Algorithm 3", &l.dyna.epsilon, "", kUnitInterval},
-          {"learning.planning_steps", "Dyna planning updates per real step", &l.dyna.planning_steps, "",
-           work_size(0, kMaxPlanningSteps)},
-          {"learning.planner",
-           "Dyna planning: uniform (Algorithm 2) or prioritized (prioritized sweeping, same number of updates)",
-           choice(&l.dyna.planner)},
-          {"learning.priority_threshold", "Prioritized sweeping queues pairs whose |TD error| exceeds this",
-           &l.dyna.priority_threshold, "", closed_range(0, kMaxReward, "a TD error is on the rewards' scale")},
-          {"reward.unreachable", "Reward of an unreachable 4-configuration", &m.rewards.unreachable, "", kRewardRange},
-          {"reward.step", "Reward of a reachable 4-configuration", &m.rewards.step, "", kRewardRange},
-          {"reward.finish", "Reward when the centre of mass passes the finishing height", &m.rewards.finish, "",
-           kRewardRange},
-          {"reward.effort",
-           "Static model: subtracted from a reached move's reward per unit of its stance's effort (0: the paper's "
-           "rewards)",
-           &m.rewards.effort, "", kRewardWeight},
-          {"reward.height",
-           "Potential-based height shaping: weight per metre of the mean height of the held holds (0: the paper's "
-           "rewards)",
-           &m.rewards.height, "per m", kRewardWeight},
-      });
-}
-
-// The [ik] keys: the solvers, their tolerances, the root target and the wall rule.
-template <typename Config>
-void ik_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
-  auto& m = c.settings.learning.climbing;
-  auto& ik = c.settings.learning.climbing.reachability.ik;
-  keys.insert(
-      keys.end(),
-      {
-          {"ik.solver", "IK solver: fast, or paper (Algorithm 1)", choice(&ik.solver)},
-          {"ik.alpha",
-           "Step size of the paper's gradient descent",
-           &ik.paper.step_size,
-           "",
-           {.min = 0, .max = 1000, .min_open = true}},
-          // The paper's solver iterates timeout / time_step times (at most kMaxIkIterations,
-          // checked with both keys).
-          {"ik.time_step",
-           "Simulated seconds per IK iteration (both solvers)",
-           &ik.time_step_s,
-           "s",
-           {.min = 0, .max = 1, .min_open = true}},
-          {"ik.timeout",
-           "Delta_t: simulated seconds before the paper's solver gives up",
-           &ik.paper.timeout_s,
-           "s",
-           {.min = 0, .max = 3600, .min_open = true, .sizes_work = true}},
-          {"ik.paper_stall_iterations",
-           "Steps over which the paper's solver looks for a stall (0: it never gives up before Delta_t, as Algorithm "
-           "1)",
-           &ik.paper.stall_iterations, "", closed_range(0, 64)},
-          {"ik.paper_stall_decrease", "It has stalled when f fell by less than this share of f over those steps...",
-           &ik.paper.stall_decrease, "", kShareOfOne},
-          {"ik.paper_stall_margin", "...while a point is more than this outside its sphere; it then gives up",
-           &ik.paper.stall_margin_m, "m", closed_range(0, kMaxLengthM)},
-          {"ik.rule_out_beyond_reach",
-           "Both solvers give up before iterating when a hold lies beyond its limb's reach (the verdict cannot change)",
-           &ik.rule_out_beyond_reach},
-          {"ik.fast_max_iterations", "Iteration cap of the fast solver", &ik.fast.max_iterations, "",
-           work_size(1, kMaxIkIterations)},
-          {"ik.fast_stall_decrease", "The fast solver gives up when f drops by less than this share per step...",
-           &ik.fast.stall_relative_decrease, "", kShareOfOne},
-          {"ik.fast_stall_iterations", "...this many steps in a row", &ik.fast.stall_iterations, "",
-           closed_range(1, kMaxIkIterations)},
-          {"ik.fast_aim", "The fast solver aims at this share of each tolerance radius", &ik.fast.aim_fraction, "",
-           kZeroToBelowOne},
-          {"ik.grasp_radius", "Radius of the grasp spheres", &ik.tolerances.grasp_radius, "m", kLength},
-          {"ik.root_tolerance", "Radius of the root tolerance sphere", &ik.tolerances.root_radius, "m", kLength},
-          {"ik.wall_distance", "Distance of the root target H(C4) from the wall, on the climber's side",
-           &m.reachability.root.distance_from_wall, "m", closed_range(-kMaxLengthM, kMaxLengthM)},
-          {"ik.cache_unreachable", "Cache unreachable verdicts", &m.reachability.cache_unreachable},
-          {"ik.wall",
-           "The body and the wall: ignore it (the paper's kinematic model), reject a solved posture that passes "
-           "through "
-           "it, or avoid it (keep the body out while solving; the static model's, and its default)",
-           choice(&ik.wall)},
-          {"ik.guess",
-           "Where the IK starts a configuration's solve: previous (the posture the climber holds, the paper's) or "
-           "standing (the standing posture at the configuration's root target, so that a verdict does not depend on "
-           "the climb)",
-           choice(&m.reachability.guess)},
-      });
-}
-
-// The [physics] keys: the physics model and the static model's contacts and strength.
-template <typename Config>
-void physics_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
-  auto& m = c.settings.learning.climbing;
-  keys.insert(
-      keys.end(),
-      {
-          {"physics.model",
-           "kinematic (the paper's: IK alone decides), static (the body kept out of the wall and each stance held "
-           "still on its holds, within friction, grip and joint torque limits; docs/PHYSICS.md) or dynamic (crux plan "
-           "and crux perform: static stances, and each move of the plan performed in MuJoCo)",
-           choice(&m.physics.model)},
-          // Rubber on rock measures about 1. CLP's least efforts stay right up to 1e6 and go
-          // wrong from 1e7 (larger than at 10, which more friction cannot make them); from
-          // 1e10 fewer stances hold than at 10, and from about 1e14 CLP gives up or runs for
-          // minutes (docs/RELIABILITY.md).
-          {"physics.friction", "Static model: Coulomb friction coefficient of every contact", &m.physics.friction, "",
-           closed_range(0, 10, "ten times rubber on rock; the equilibrium program stays well conditioned")},
-          {"physics.strength",
-           "Static model: a climbing level whose published grip sets physics.grip (docs/MODEL.md); an explicit "
-           "physics.grip overrides it",
-           level_choice(&c.physics_strength)},
-          {"physics.grip",
-           "Static model: largest normal force of a hand on a hold",
-           &m.physics.grip,
-           "N",
-           {.min = 0, .max = 10000, .min_open = true, .why = "17 times elite climbers' mean finger force"}},
-          {"physics.support_angle",
-           "Static model: a hold without a support direction pushes a hand up and this far into the wall (a jug's "
-           "incut lip)",
-           &m.physics.support_angle_deg, "degrees", closed_range(-90, 90)},
-          {"physics.fall_when_stuck",
-           "A failed move also falls when no limb can move to another hold of the stance, every such move known "
-           "unreachable (a trap that C27's dead ends miss)",
-           &m.fall_when_stuck},
-      });
-}
-
-// The [perform] keys: climbs performed in MuJoCo (docs/PHYSICS.md, "A move performed").
-// Each time's bound keeps a move's simulation within minutes of wall-clock time at the
-// measured 8 to 10 times real time.
-template <typename Config>
-void perform_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
-  auto& p = c.settings.learning.climbing.perform;
-  constexpr Bounds kSimulatedTime = closed_range(0, 60, "a minute of simulated time, seconds of wall-clock time");
-  keys.insert(
-      keys.end(),
-      {
-          {"perform.joint_speed",
-           "A move's pace: its duration is its path's largest joint excursion over this speed (docs/PHYSICS.md)",
-           &p.move.joint_speed, "rad/s", closed_range(0.05, 20, "at least a minute for the longest path's excursion")},
-          {"perform.min_duration", "A move's shortest duration", &p.move.min_duration_s, "s", kSimulatedTime},
-          {"perform.settle_time", "Time allowed after a move's path to arrive and hold still", &p.move.settle_time_s,
-           "s", kSimulatedTime},
-          {"perform.start_time", "Time allowed to the start stance to hold still before the first move",
-           &p.start_time_s, "s", kSimulatedTime},
-          {"perform.unweight_time",
-           "Time over which a limb's hold is unweighted before it lets go, and the next weighted",
-           &p.move.unweight_time_s, "s", closed_range(0.002, 10, "from one simulation step")},
-          {"perform.slip_time", "A hand lets go when its force stays beyond the grip or the friction pyramid this long",
-           &p.move.slip_time_s, "s", closed_range(0.002, 10, "from one simulation step")},
-          {"perform.grasp_tolerance", "A hand's force within this of its limits is held", &p.move.grasp_tolerance_n,
-           "N", closed_range(0, 1000, "the body's weight")},
-          {"perform.still_speed",
-           "Held still: every velocity below this (rad/s, m/s for the root)",
-           &p.move.still_speed,
-           "",
-           {.min = 0, .max = 10, .min_open = true}},
-          {"perform.still_time", "Held still: for this long", &p.move.still_time_s, "s", kSimulatedTime},
-          {"perform.wall_push_share",
-           "The body hit the wall when the wall pushes it with more than this share of its weight",
-           &p.move.wall_push_share,
-           "",
-           {.min = 0, .max = 100, .min_open = true}},
-          {"perform.saturated_share",
-           "A move that timed out failed for its torques when a motor was at its limit in this share of its steps",
-           &p.move.saturated_share, "", kShareOfOne},
-          {"perform.path_samples", "IK postures along a move's path", &p.path_samples, "",
-           work_size(2, 1000, "one IK solve each")},
-          {"perform.force_margin",
-           "The share of friction and grip the feed-forward leaves unused where it can",
-           &p.force_margin,
-           "",
-           {.min = 0, .max = 1, .max_open = true}},
-          {"perform.lift", "How far a free limb's path bows away from the wall", &p.lift, "m", closed_range(0, 1)},
-          {"perform.servo_saturation_angle",
-           "A servo's angle error at which its feedback alone reaches the torque limit", &p.servo.saturation_angle,
-           "rad", closed_range(0.001, 3.14159)},
-          {"perform.servo_damping_time", "A servo's damping over its stiffness", &p.servo.damping_time, "s",
-           closed_range(0, 1)},
-          {"perform.record_interval", "The trajectory's sampling interval", &p.record_interval_s, "s",
-           closed_range(0.002, 10, "from one simulation step")},
-      });
-}
-
-// The [filter] and [grid] keys: the geometric filter and the agent space.
-template <typename Config>
-void configuration_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
-  auto& m = c.settings.learning.climbing;
-  auto& grid = c.settings.learning.climbing.grid;
-  keys.insert(
-      keys.end(),
-      {
-          {"filter.max_span", "Largest distance between two holds of a configuration", &m.filter.max_span_m, "m",
-           kLength},
-          {"filter.reading", "Reading of 'both feet above the hands' (docs/MODEL.md, choice C13)",
-           choice(&m.filter.feet_above_hands)},
-          {"grid.agent_space",
-           "Agent space (docs/TRANSFER.md): grid (the paper's moving grid) or reach (direction sectors = columns and "
-           "distance rings of tile_height m = rows around the free limb's shoulder or hip)",
-           choice(&grid.space)},
-          {"grid.columns", "Columns of the moving grid", &grid.columns, "", kGridTiles},
-          {"grid.rows", "Rows of the moving grid", &grid.rows, "", kGridTiles},
-          {"grid.tile_width", "Tile width of the moving grid", &grid.tile_width, "m", kTileSize},
-          {"grid.tile_height", "Tile height of the moving grid", &grid.tile_height, "m", kTileSize},
-          {"grid.right_hand_anchor_column", "Right hand's anchor tile P_1: column", &grid.anchors[0][0], "",
-           kAnchorTile},
-          {"grid.right_hand_anchor_row", "Right hand's anchor tile P_1: row", &grid.anchors[0][1], "", kAnchorTile},
-          {"grid.left_hand_anchor_column", "Left hand's anchor tile P_2: column", &grid.anchors[1][0], "", kAnchorTile},
-          {"grid.left_hand_anchor_row", "Left hand's anchor tile P_2: row", &grid.anchors[1][1], "", kAnchorTile},
-          {"grid.right_foot_anchor_column", "Right foot's anchor tile P_3: column", &grid.anchors[2][0], "",
-           kAnchorTile},
-          {"grid.right_foot_anchor_row", "Right foot's anchor tile P_3: row", &grid.anchors[2][1], "", kAnchorTile},
-          {"grid.left_foot_anchor_column", "Left foot's anchor tile P_4: column", &grid.anchors[3][0], "", kAnchorTile},
-          {"grid.left_foot_anchor_row", "Left foot's anchor tile P_4: row", &grid.anchors[3][1], "", kAnchorTile},
-      });
+  transfer_keys(keys, l.dyna);
 }
 
 // The [wall] and [training_wall] keys: the wall and the random walls' generator.
@@ -461,21 +117,14 @@ template <typename Config>
 void wall_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
   auto& s = c.settings;
   auto& tw = c.training_wall;
+  keys.insert(keys.end(), {
+                              {"wall.file", "Wall file (JSON)", &c.wall_file, "", {}, true},
+                              {"wall.seed", "Seed of a random wall", &c.wall_seed},
+                          });
+  random_wall_keys(keys, s.walls);
   keys.insert(
       keys.end(),
       {
-          {"wall.file", "Wall file (JSON)", &c.wall_file, "", {}, true},
-          {"wall.seed", "Seed of a random wall", &c.wall_seed},
-          {"wall.columns", "Tiles across a random wall", &s.walls.columns, "", kWallTiles},
-          {"wall.rows", "Tiles up a random wall", &s.walls.rows, "", kWallTiles},
-          {"wall.tile_width", "Tile width of a random wall", &s.walls.tile_width, "m", kTileSize},
-          {"wall.tile_height", "Tile height of a random wall", &s.walls.tile_height, "m", kTileSize},
-          {"wall.sigma", "Standard deviation of hold displacement", &s.walls.sigma, "m", kHoldScatter},
-          {"wall.hold_radius", "Hold radius", &s.walls.hold_radius, "m", kHoldRadius},
-          {"wall.finish_height", "Finishing height of the centre of mass, measured along the wall",
-           &s.walls.finish_height, "m", kWallHeight},
-          {"wall.incline", "Incline of a random wall from vertical (> 0 overhanging, < 0 slab)", &s.walls.incline_deg,
-           "degrees", kOpenRightAngle},
           {"training_wall.columns", "Tiles across a training wall (unset: wall.columns)", &tw.columns, "", kWallTiles},
           {"training_wall.rows", "Tiles up a training wall (unset: wall.rows)", &tw.rows, "", kWallTiles},
           {"training_wall.tile_width", "Tile width of a training wall (unset: wall.tile_width)", &tw.tile_width, "m",
@@ -503,7 +152,7 @@ void output_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
           {"output.progress",
            "Progress of long work on stderr: bar (on a terminal; otherwise as the command did before), lines (a plain "
            "line every 10 %) or none",
-           choice(&c.progress),
+           choice_of(&c.progress),
            "",
            {},
            false,
@@ -514,12 +163,16 @@ void output_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
 template <typename Config>
 std::vector<FieldOf<Config>> fields_of(Config& c) {
   std::vector<FieldOf<Config>> keys;
+  auto& climbing = c.settings.learning.climbing;
   experiment_keys(keys, c);
-  learning_keys(keys, c);
-  ik_keys(keys, c);
-  physics_keys(keys, c);
-  perform_keys(keys, c);
-  configuration_keys(keys, c);
+  dyna_keys(keys, c.settings.learning.dyna);
+  reward_keys(keys, climbing.rewards);
+  reachability_keys(keys, climbing.reachability);
+  physics_keys(keys, climbing.physics, c.physics_strength);
+  fall_when_stuck_keys(keys, climbing);
+  perform_keys(keys, climbing.perform);
+  filter_keys(keys, climbing.filter);
+  grid_keys(keys, climbing.grid);
   wall_keys(keys, c);
   output_keys(keys, c);
   return keys;

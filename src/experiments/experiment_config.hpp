@@ -1,13 +1,13 @@
 #pragma once
 // Every parameter of a crux command, settable by command-line flag, TOML config file
 // (flags win) or Python dict, and written back as the effective config.toml. Each key is
-// declared once (config_fields): its type (an enum is parsed into the parameter struct's
-// own enum where the flag, file or dict gives it), its unit, its bounds and its help. The
-// flags with their --help, the TOML reader and writer with config.toml's comments,
-// Python's dicts and crux.config_keys() all come from that declaration. The key
-// "section.name" is the flag "--section-name" ("--name" for the section experiment),
-// underscores becoming dashes. A command takes a subset of the keys (ParameterSet); any
-// other is refused.
+// declared once, by the layer whose parameter struct it sets (ik/ik_keys, ...; the
+// experiment's own keys here), and config_fields gathers them: its type (an enum is
+// parsed into the parameter struct's own enum where the flag, file or dict gives it), its
+// unit, its bounds and its help (common/config_field). The flags with their --help, the TOML reader and writer with
+// config.toml's comments, Python's dicts and crux.config_keys() all come from that declaration. The key "section.name"
+// is the flag "--section-name" ("--name" for the section experiment), underscores becoming dashes. A command takes a
+// subset of the keys (ParameterSet); any other is refused.
 
 #include <cstdint>
 #include <initializer_list>
@@ -23,7 +23,7 @@
 #include <variant>
 #include <vector>
 
-#include "common/enum_names.hpp"
+#include "common/config_field.hpp"
 #include "common/progress_display.hpp"
 #include "experiments/paper_experiment.hpp"
 
@@ -70,87 +70,6 @@ struct ExperimentConfig {
 // gives its holds and finishing height itself, so none applies to it.
 bool is_wall_generator_key(const std::string& key);
 
-// The values a number key takes. An integer key's bounds are integers. Each bound keeps
-// every computation that uses the key finite and its time bounded; `why` says what the
-// bound comes from.
-struct Bounds {
-  double min = -std::numeric_limits<double>::infinity();
-  double max = std::numeric_limits<double>::infinity();
-  bool min_open = false;  // min itself excluded
-  bool max_open = false;
-  const char* why = nullptr;  // appended to the refusal, in parentheses
-  // The key sizes the work (iterations, walls, threads, resamples, cells): its maximum is
-  // accepted but may take hours, so a test of the bounds checks it without running it.
-  bool sizes_work = false;
-
-  bool contains(double value) const;
-  // "> 0", ">= 0", "0 to 1", "[0, 1)": for --help and config.toml's comments.
-  std::string summary(bool integer) const;
-  // "must be positive", "must be from 1 to 64", "must be in [0, 1)".
-  std::string problem(bool integer) const;
-};
-inline constexpr Bounds kAnyNumber{};
-inline constexpr Bounds kPositive{.min = 0, .min_open = true};
-inline constexpr Bounds kNonNegative{.min = 0};
-constexpr Bounds closed_range(double min, double max, const char* why = nullptr) {
-  return {.min = min, .max = max, .why = why};
-}
-// A count that sizes the work, from `min` to `max`.
-constexpr Bounds work_size(double min, double max, const char* why = nullptr) {
-  return {.min = min, .max = max, .why = why, .sizes_work = true};
-}
-
-// How a choice key's text and its enum meet: the enum's EnumNames, or a list of its own
-// (physics.strength's climbing levels, whose empty text means unset).
-struct ChoiceType {
-  std::string (*text)(const void* target);             // "" when unset
-  bool (*parse)(void* target, std::string_view text);  // false: not a choice
-  std::string (*choices)();                            // "a, b or c"
-};
-template <typename Enum>
-const ChoiceType& enum_choice_type() {
-  static constexpr ChoiceType type{
-      [](const void* target) { return std::string(enum_name(*static_cast<const Enum*>(target))); },
-      [](void* target, std::string_view text) {
-        const auto value = parse_enum<Enum>(text);
-        if (value) *static_cast<Enum*>(target) = *value;
-        return value.has_value();
-      },
-      [] { return enum_choices<Enum>(); }};
-  return type;
-}
-template <bool Const>
-struct ChoiceTarget {
-  std::conditional_t<Const, const void*, void*> target;
-  const ChoiceType* type;
-};
-
-template <bool Const>
-struct ConfigFieldOf {
-  template <typename T>
-  using Ref = std::conditional_t<Const, const T*, T*>;
-  using Target =
-      std::variant<Ref<double>, Ref<std::optional<double>>, Ref<int>, Ref<std::optional<int>>, Ref<std::uint64_t>,
-                   Ref<std::optional<std::uint64_t>>, Ref<bool>, Ref<std::string>, ChoiceTarget<Const>>;
-  std::string key;  // TOML "section.name"
-  std::string help;
-  Target target;
-  std::string unit = {};  // "m", "N", "degrees", "s"; empty for a count or a ratio
-  Bounds bounds = {};     // numbers only
-  bool is_path = false;   // a file, written absolute so that the config replays from anywhere
-  // Written to config.toml: false for presentation only (output.*), which changes no
-  // result, so that an output folder's bytes do not depend on how its run was shown.
-  bool recorded = true;
-
-  // "number", "integer", "seed", "boolean", "text", "path" or "choice".
-  const char* type_name() const;
-  bool is_integer() const;
-  // The help with the unit, bounds or choices: what --help and config.toml show.
-  std::string described_help() const;
-};
-using ConfigField = ConfigFieldOf<false>;
-using ConstConfigField = ConfigFieldOf<true>;
-
 // The fields of `config`, in a fixed order (the same for every config object): the one
 // declaration of every key.
 std::vector<ConfigField> config_fields(ExperimentConfig& config);
@@ -165,12 +84,6 @@ std::string field_value_text(const ConstConfigField& field, bool toml = true);
 
 // `key`'s field, or null.
 const ConfigField* find_field(const std::vector<ConfigField>& fields, std::string_view key);
-
-// A choice field over `target`, an enum with EnumNames.
-template <typename Enum>
-ChoiceTarget<false> choice_of(Enum* target) {
-  return {target, &enum_choice_type<Enum>()};
-}
 
 // Every number of `fields` within its declared bounds (and finite); unset optional numbers
 // are not checked. InputError(key, problem) otherwise.
