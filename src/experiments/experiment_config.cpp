@@ -150,8 +150,8 @@ void output_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
       keys.end(),
       {
           {"output.progress",
-           "Progress of long work on stderr: bar (on a terminal; otherwise as the command did before), lines (a plain "
-           "line every 10 %) or none",
+           "Progress of long work on stderr: bar (redrawn on a terminal; elsewhere a line every ten seconds, none for "
+           "shorter work), lines (a plain line every 10 %) or none",
            choice_of(&c.progress),
            "",
            {},
