@@ -156,14 +156,14 @@ def train_classifier(x, y, epochs, seed, hidden=128, batch=4096, lr=1e-3):
 def best_candidate_reaches(scores, labels, wall, state):
     """Over the states with a reachable candidate: the share whose highest-scored candidate
     reaches (what a greedy policy needs), beside a uniform choice's expected share."""
-    keys = wall * 1_000_000 + state
-    order = np.lexsort((-scores, keys))
+    _, state_of = np.unique(wall * 1_000_000 + state, return_inverse=True)
+    order = np.lexsort((-scores, state_of))
     first = np.ones(len(order), dtype=bool)
-    first[1:] = keys[order][1:] != keys[order][:-1]
+    first[1:] = state_of[order][1:] != state_of[order][:-1]
     best = labels[order][first]
-    state_keys = keys[order][first]
-    any_reachable = np.array([labels[keys == k].any() for k in state_keys])
-    uniform = np.array([labels[keys == k].mean() for k in state_keys])
+    reachable = np.bincount(state_of, weights=labels)
+    uniform = reachable / np.bincount(state_of)
+    any_reachable = reachable > 0
     return {"states": int(any_reachable.sum()), "best": float(best[any_reachable].mean()),
             "uniform": float(uniform[any_reachable].mean())}
 
