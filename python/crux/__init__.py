@@ -3,8 +3,8 @@ learnt to walls it has never seen (Libeau, Micaelli, Sigaud), as a Python module
 
 The body, IK, walls, the climbing MDP with Gymnasium's step conventions (ClimbMdp; the
 Gymnasium environment itself is crux.gym.ClimbEnv), the
-paper's agent (run_learning) and experiment (run_experiment), a climb performed in MuJoCo
-(perform), and Q-tables as numpy
+paper's agent (run_learning) and experiment (run_experiment), a wall's exact shortest
+climb (plan) and a climb performed in MuJoCo (perform), and Q-tables as numpy
 arrays. Bad input raises ValueError with the CLI's error line; docs/PYTHON.md has the
 tour.
 """
@@ -29,6 +29,7 @@ from ._crux import (
     passes_filter,
     perform,
     place_grid,
+    plan,
     possible_actions,
     root_target,
     run_experiment,
@@ -57,6 +58,7 @@ __all__ = [
     "passes_filter",
     "perform",
     "place_grid",
+    "plan",
     "possible_actions",
     "root_target",
     "run_experiment",

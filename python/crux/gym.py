@@ -25,7 +25,7 @@ from . import _crux
 ENV_ID = "crux/Climb-v0"
 # What TimeLimit allows an episode, the old crux.ClimbMdp's default max_steps.
 MAX_EPISODE_STEPS = 1000
-OBSERVATION_FORMS = ("numeric", "paper")
+OBSERVATION_FORMS = ("numeric", "reach", "paper")
 WALL_ORDERS = ("cycle", "sample")
 RESET_OPTIONS = ("wall",)
 # 40,000 random steps on the paper's random walls (4 x 8 tiles) met at most 27
@@ -33,6 +33,9 @@ RESET_OPTIONS = ("wall",)
 DEFAULT_MAX_CANDIDATES = 32
 # The most holds crux takes on a wall (kMaxHoldCount, src/wall/wall.hpp).
 _MAX_HOLDS = 10000
+# Random walls whose start cannot be taken, skipped in a row before the wall_config is
+# refused: under the defaults about 1 in 1000 is, so this many means the config makes none.
+_MAX_SKIPPED_WALLS = 1000
 
 # The integer arguments of ClimbEnv and VectorClimbEnv and the range each is checked
 # against where Python receives it, from what it feeds: (lowest, highest).
@@ -186,18 +189,29 @@ class _FixedWalls:
 
 
 class _RandomWalls:
-    """A new random wall at each reset, its seed drawn from the environment's np_random."""
+    """A new random wall at each reset, its seed drawn from the environment's np_random. A
+    wall whose start the climber cannot take (about 1 in 1000 under the defaults) is
+    skipped, the next seed drawn, so that an episode never fails to start; start_holds
+    tells, by building the wall's MDP as the episode will."""
 
-    def __init__(self, wall_config):
+    def __init__(self, wall_config, start_holds):
         self.wall_config = wall_config
+        self.start_holds = start_holds
         self.example = _crux.Wall.random(0, wall_config)
 
     def restart(self):
         pass
 
     def draw(self, rng):
-        seed = int(rng.integers(2**63))
-        return seed, _crux.Wall.random(seed, self.wall_config)
+        for _ in range(_MAX_SKIPPED_WALLS):
+            seed = int(rng.integers(2**63))
+            wall = _crux.Wall.random(seed, self.wall_config)
+            if self.start_holds(wall):
+                return seed, wall
+        raise ValueError(
+            f"wall_config: {_MAX_SKIPPED_WALLS} random walls in a row have a start the climber cannot take "
+            f"(the last: {wall.name})"
+        )
 
     def hold_counts(self):
         return {self.example.hold_count}
@@ -266,8 +280,10 @@ class ClimbEnv(gymnasium.Env):
 
     wall: a crux.Wall, a wall file, a list of them (or of random walls' seeds), or None for
         a new random wall at every reset, drawn from the reset's seed with wall_config.
-    observation: "numeric" (features relative to the free limb, any wall) or "paper"
-        (the paper's state codes; the action is then a hold index).
+    observation: "numeric" (features relative to the free limb, any wall), "reach" (numeric
+        and, per candidate, where it lies from the free limb's shoulder or hip and the held
+        holds, and whether its move failed from this state) or "paper" (the paper's state
+        codes; the action is then a hold index).
     wall_config: the wall.* keys of the random walls (None, wall, wall seeds) as crux.Wall.random takes them.
     wall_order: "cycle" or "sample", how a list of walls is taken at each reset.
     wall_split: {"train": walls, "evaluation": walls}, two lists that must not share a
@@ -298,7 +314,7 @@ class ClimbEnv(gymnasium.Env):
         render_mode=None,
     ):
         if observation not in OBSERVATION_FORMS:
-            raise ValueError(f"observation: unknown form {observation!r} (numeric, paper)")
+            raise ValueError(f"observation: unknown form {observation!r} (numeric, reach, paper)")
         if wall_order not in WALL_ORDERS:
             raise ValueError(f"wall_order: unknown order {wall_order!r} (cycle, sample)")
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
@@ -315,7 +331,7 @@ class ClimbEnv(gymnasium.Env):
                 raise ValueError("wall_split: give either wall or wall_split")
             self._walls = _FixedWalls(_split_side(wall_split, evaluation, wall_config), wall_order)
         elif wall is None:
-            self._walls = _RandomWalls(wall_config)
+            self._walls = _RandomWalls(wall_config, self._start_holds)
         else:
             self._walls = _FixedWalls(_wall_list(wall, wall_config, "wall"), wall_order)
         self._envs = {}  # per wall of a list: its crux.ClimbMdp, built once
@@ -362,6 +378,19 @@ class ClimbEnv(gymnasium.Env):
 
         lower = np.concatenate([np.full(3, -2 * span), self._model.lower_limits[3:]]).astype(np.float32)
         upper = np.concatenate([np.full(3, 2 * span), self._model.upper_limits[3:]]).astype(np.float32)
+        reach = {}
+        if self.observation_form == "reach":
+            # The shoulder or hip lies within s of the root, so within 3s of the grasp point,
+            # and a candidate within 3s: 6s apart on each axis. A held hold lies within 2s:
+            # 5s from a candidate on each axis. The norms follow.
+            reach_lower = np.concatenate([np.full(3, -6 * span), np.zeros(4)]).astype(np.float32)
+            reach_upper = np.concatenate([np.full(3, 6 * span), [6 * np.sqrt(3) * span], np.full(3, 5 * np.sqrt(3) * span)])
+            reach = {
+                "candidate_reach": spaces.Box(
+                    np.tile(reach_lower, (k, 1)), np.tile(reach_upper.astype(np.float32), (k, 1)), dtype=np.float32
+                ),
+                "candidate_failed": spaces.Box(0.0, 1.0, (k,), dtype=np.float32),
+            }
         return spaces.Dict(
             {
                 "free_limb": spaces.Box(0.0, 1.0, (4,), dtype=np.float32),
@@ -371,6 +400,7 @@ class ClimbEnv(gymnasium.Env):
                 "posture": spaces.Box(lower, upper, dtype=np.float32),
                 "centre_of_mass": box(2 * span, (3,)),
                 "to_finish": box(2 * span, (1,)),
+                **reach,
             }
         )
 
@@ -387,6 +417,15 @@ class ClimbEnv(gymnasium.Env):
 
     def _climb_env(self, wall):
         return _crux.ClimbMdp(wall, config=self._config, max_steps=None, model=self._model_argument)
+
+    def _start_holds(self, wall):
+        try:
+            self._climb_env(wall)
+        except ValueError as error:
+            if "the start configuration" not in str(error):
+                raise  # the config, not the wall
+            return False
+        return True
 
     @property
     @_open_only
@@ -422,7 +461,7 @@ class ClimbEnv(gymnasium.Env):
             raise ValueError(message) from None
         if not 0 <= action < self.action_space.n or not self._mask[action]:
             raise ValueError(f"action: {action} is not a possible action of this state (see info['action_mask'])")
-        hold = int(self._candidates[action]) if self.observation_form == "numeric" else action
+        hold = int(self._candidates[action]) if self.observation_form != "paper" else action
         raw, reward, terminated, _, info = self._env.step(hold)
         obs, info = self._observe(raw, info)
         # Truncation is Gymnasium's TimeLimit's (the registered max_episode_steps).
@@ -463,7 +502,7 @@ class ClimbEnv(gymnasium.Env):
             }
         else:
             # The features are computed in C++, as the vector environment computes them.
-            obs = self._env.numeric_observation(self.max_candidates)
+            obs = self._env.numeric_observation(self.max_candidates, reach=self.observation_form == "reach")
             mask = np.zeros(self.max_candidates, dtype=np.int8)
             mask[: len(holds)] = 1
             self._candidates = holds
@@ -471,7 +510,7 @@ class ClimbEnv(gymnasium.Env):
         self.action_space.offered = mask
         info = dict(info)
         info["action_mask"] = mask.copy()
-        if self.observation_form == "numeric":
+        if self.observation_form != "paper":
             # The hold index of each slot, -1 for padding (a fixed shape, as vector envs batch it).
             slots = np.full(self.max_candidates, -1, dtype=np.int64)
             slots[: len(holds)] = holds
@@ -596,7 +635,7 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
             max_candidates=max_candidates,
             model=model,
         )
-        if observation == "numeric" and num_envs * single.max_candidates > _MAX_BATCH_SLOTS:
+        if observation != "paper" and num_envs * single.max_candidates > _MAX_BATCH_SLOTS:
             raise ValueError(
                 f"num_envs: must be an integer from 1 to {_MAX_BATCH_SLOTS // single.max_candidates} with "
                 f"max_candidates={single.max_candidates} (at most {_MAX_BATCH_SLOTS} candidate slots a batch), "
@@ -618,7 +657,7 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
         self._vector = _crux.VectorClimbEnv(
             self.num_envs,
             listed,
-            observation == "numeric",
+            observation,
             single.action_space.n,
             max_episode_steps,
             config=config,
@@ -693,7 +732,7 @@ class VectorClimbEnv(gymnasium.vector.VectorEnv):
                 add(key, parts[key], stepped)
         add("centre_of_mass", parts["centre_of_mass"], everyone)
         add("action_mask", parts["action_mask"], everyone)
-        if self.observation_form == "numeric":
+        if self.observation_form != "paper":
             add("candidate_holds", parts["candidate_holds"], everyone)
         add("wall_name", self._wall_names.copy(), everyone)
         if self._seeded.any():

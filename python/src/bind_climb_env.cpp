@@ -110,10 +110,10 @@ class ClimbMdp {
     return obs;
   }
 
-  py::dict numeric_observation(const py::handle& max_candidates_handle) {
+  py::dict numeric_observation(const py::handle& max_candidates_handle, bool reach) {
     const auto max_candidates =
         static_cast<int>(integer_from(max_candidates_handle, 1, std::numeric_limits<int>::max(), "max_candidates"));
-    const NumericObservationArrays arrays(-1, max_candidates);
+    const NumericObservationArrays arrays(-1, max_candidates, reach);
     episode_->write_numeric_observation(max_candidates, arrays.rows(0));
     return arrays.dict();
   }
@@ -156,9 +156,9 @@ void bind_climb_env(py::module_& m) {
       .def("step", &ClimbMdp::step, py::arg("action"), "(obs, reward, terminated, truncated, info)")
       .def("action_mask", &ClimbMdp::action_mask, "bool array over hold indices: the possible actions of the state")
       .def("observation", &ClimbMdp::observation)
-      .def("numeric_observation", &ClimbMdp::numeric_observation, py::arg("max_candidates"),
+      .def("numeric_observation", &ClimbMdp::numeric_observation, py::arg("max_candidates"), py::arg("reach") = false,
            "crux.gym's numeric observation of the state, its candidates in max_candidates slots: a dict of float32 "
-           "arrays (docs/PYTHON.md)")
+           "arrays (docs/PYTHON.md); reach: the reach form's, with candidate_reach and candidate_failed")
       .def("replay_actions", &ClimbMdp::replay_actions, py::arg("actions"),
            "Steps through possible actions in C++, returning the summed reward and nothing else (the baseline of "
            "bench/python_step_overhead.py); leaves steps and the episode's end as they were")

@@ -17,6 +17,7 @@
 #include "jobs/paper_job.hpp"
 #include "jobs/perform_job.hpp"
 #include "python_config.hpp"
+#include "reports/plan_description.hpp"
 
 namespace crux::python {
 
@@ -175,6 +176,24 @@ py::object perform_py(const py::handle& wall_handle, const py::handle& config_ha
   return json_to_python(record);
 }
 
+// What crux.plan takes: crux plan's keys but the wall's, which the wall argument gives,
+// and the dynamic model's repairs, which need MuJoCo (crux.perform does them).
+const ParameterSet kPythonPlanKeys{
+    {"experiment.urdf", "experiment.plan_max_solves", "experiment.plan_check_moves", "ik", "physics", "filter"},
+    {"physics.fall_when_stuck"}};
+
+py::object plan_py(const Wall& wall, const py::handle& config_handle, const py::handle& model_handle) {
+  const ExperimentConfig config = config_from_python(config_handle, kPythonPlanKeys, "plan");
+  const BodyModelPtr model = body_from(model_handle, config.urdf);
+  nlohmann::ordered_json record;
+  {
+    py::gil_scoped_release release;
+    record =
+        plan_json(wall, shortest_plan(*model, wall, config.settings.learning.climbing, config.settings.plan_search));
+  }
+  return json_to_python(record);
+}
+
 }  // namespace
 
 namespace {
@@ -235,6 +254,9 @@ void bind_experiment(py::module_& m) {
         "and experiment.climb), performed in MuJoCo from its start (crux perform; physics.model static by default, "
         "dynamic repairs the plan): returns the record crux perform --json prints; writes its folder to `output` when "
         "given.");
+  m.def("plan", &plan_py, py::arg("wall"), py::arg("config") = py::none(), py::arg("model") = py::none(),
+        "A wall's exact shortest climb under the learning's rules (crux plan): returns the record crux plan --json "
+        "prints. config takes the keys of [ik], [physics] and [filter], experiment.urdf and experiment.plan_*.");
   m.def("run_experiment", &run_experiment_py, py::arg("config") = py::none(), py::arg("output") = py::none(),
         py::arg("overwrite") = false,
         "The paper's experiment (crux paper): returns summary.json's contents; writes crux paper's folder to "

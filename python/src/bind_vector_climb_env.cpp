@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -28,7 +29,8 @@ namespace {
 // What one call writes, as numpy arrays with one row per environment, and the raw
 // pointers the threads write through (taken with the GIL held).
 struct VectorBatch {
-  VectorBatch(py::ssize_t envs, int action_count, std::optional<int> max_candidates)
+  // max_candidates: the numeric or reach form's slots, none for the paper's codes.
+  VectorBatch(py::ssize_t envs, int action_count, std::optional<int> max_candidates, bool reach)
       : wall_state(envs),
         grid_state(envs),
         free_limb(envs),
@@ -43,7 +45,7 @@ struct VectorBatch {
         centre_of_mass({envs, py::ssize_t{3}}),
         action_mask({envs, py::ssize_t{action_count}}) {
     if (max_candidates) {
-      numeric.emplace(envs, *max_candidates);
+      numeric.emplace(envs, *max_candidates, reach);
       candidate_holds = py::array_t<std::int64_t>({envs, py::ssize_t{*max_candidates}});
     }
   }
@@ -87,9 +89,13 @@ struct BatchRows {
 
 class VectorClimbEnv {
  public:
-  VectorClimbEnv(const py::handle& num_envs, const py::list& walls, bool numeric, const py::handle& action_count,
-                 const py::handle& max_episode_steps, const py::handle& config, const py::handle& model)
-      : numeric_(numeric) {
+  VectorClimbEnv(const py::handle& num_envs, const py::list& walls, const std::string& observation,
+                 const py::handle& action_count, const py::handle& max_episode_steps, const py::handle& config,
+                 const py::handle& model)
+      : numeric_(observation != "paper"), reach_(observation == "reach") {
+    if (observation != "paper" && observation != "numeric" && observation != "reach") {
+      throw py::value_error("observation: unknown form '" + observation + "' (numeric, reach, paper)");
+    }
     for (const py::handle wall : walls) walls_.push_back(wall.cast<Wall>());
     const auto envs = integer_from(num_envs, 1, 1 << 20, "num_envs");
     action_count_ = static_cast<int>(integer_from(action_count, 1, std::numeric_limits<int>::max(), "action_count"));
@@ -195,7 +201,7 @@ class VectorClimbEnv {
 
   // Resets the environments that need it, steps the others by `actions` (null: none).
   py::tuple run(const int* actions) {
-    VectorBatch batch(num_envs(), action_count_, numeric_ ? std::optional<int>(action_count_) : std::nullopt);
+    VectorBatch batch(num_envs(), action_count_, numeric_ ? std::optional<int>(action_count_) : std::nullopt, reach_);
     const BatchRows rows(batch);
     {
       py::gil_scoped_release release;
@@ -273,7 +279,8 @@ class VectorClimbEnv {
   }
 
   std::vector<Wall> walls_;
-  bool numeric_;
+  bool numeric_;  // the numeric or the reach form: candidate slots, not hold indices
+  bool reach_;
   int action_count_ = 0;  // the numeric form's max_candidates, or the paper's hold count
   std::optional<int> max_steps_;
   ClimbingParameters parameters_;
@@ -287,12 +294,12 @@ void bind_vector_climb_env(py::module_& m) {
   py::class_<VectorClimbEnv>(m, "VectorClimbEnv",
                              "num_envs climbing environments stepped in one call across threads; "
                              "crux.gym.VectorClimbEnv makes it a gymnasium.vector.VectorEnv")
-      .def(py::init<const py::handle&, const py::list&, bool, const py::handle&, const py::handle&, const py::handle&,
-                    const py::handle&>(),
-           py::arg("num_envs"), py::arg("walls"), py::arg("numeric"), py::arg("action_count"),
+      .def(py::init<const py::handle&, const py::list&, const std::string&, const py::handle&, const py::handle&,
+                    const py::handle&, const py::handle&>(),
+           py::arg("num_envs"), py::arg("walls"), py::arg("observation"), py::arg("action_count"),
            py::arg("max_episode_steps"), py::arg("config") = py::none(), py::arg("model") = py::none(),
-           "walls: the walls set_next_wall's indices name; numeric: the numeric observation form, whose "
-           "action_count is max_candidates (else the paper's codes and a hold index as the action); "
+           "walls: the walls set_next_wall's indices name; observation: 'numeric' or 'reach' (candidate slots, "
+           "action_count being max_candidates) or 'paper' (the paper's codes and a hold index as the action); "
            "max_episode_steps: the truncation, None for none")
       .def_property_readonly("num_envs", &VectorClimbEnv::num_envs)
       .def("set_next_wall", &VectorClimbEnv::set_next_wall, py::arg("env"), py::arg("wall"),

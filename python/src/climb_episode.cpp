@@ -21,6 +21,7 @@ ClimbEpisode::ClimbEpisode(BodyModelPtr model, Wall wall, const ClimbingParamete
 void ClimbEpisode::reset() {
   mdp_->reset();
   finish_.reset();
+  failed_.clear();
   centre_of_mass_ = start_centre_of_mass_;
   list_offered_holds();
 }
@@ -30,7 +31,12 @@ EpisodeStep ClimbEpisode::step(int hold) {
   const Posture before_posture = mdp_->posture();
   const StateCouple before_codes = mdp_->state();
   const StepOutcome outcome = mdp_->step(hold);
-  if (outcome.reached) centre_of_mass_ = outcome.centre_of_mass;
+  if (outcome.reached) {
+    centre_of_mass_ = outcome.centre_of_mass;
+    failed_.clear();
+  } else {
+    failed_.push_back(hold);
+  }
   if (outcome.finished) {
     enter_finishing_state(before, hold, *outcome.posture);
   } else if (outcome.fell) {
@@ -72,7 +78,8 @@ void ClimbEpisode::list_offered_holds() {
 
 void ClimbEpisode::write_numeric_observation(int max_candidates, const NumericObservationRows& out) {
   crux::write_numeric_observation(
-      *model_, data_, {wall_, configuration(), posture(), centre_of_mass_, offered_, parameters_.filter.max_span_m},
+      *model_, data_,
+      {wall_, configuration(), posture(), centre_of_mass_, offered_, parameters_.filter.max_span_m, failed_},
       max_candidates, out);
 }
 
@@ -85,7 +92,7 @@ py::array_t<float> observation_array(py::ssize_t envs, std::vector<py::ssize_t> 
 
 }  // namespace
 
-NumericObservationArrays::NumericObservationArrays(py::ssize_t envs, int max_candidates)
+NumericObservationArrays::NumericObservationArrays(py::ssize_t envs, int max_candidates, bool reach)
     : free_limb_(observation_array(envs, {kLimbCount})),
       held_(observation_array(envs, {kLimbCount, 3})),
       candidates_(observation_array(envs, {max_candidates, 3})),
@@ -96,7 +103,14 @@ NumericObservationArrays::NumericObservationArrays(py::ssize_t envs, int max_can
       first_{free_limb_.mutable_data(),      held_.mutable_data(),    candidates_.mutable_data(),
              candidate_mask_.mutable_data(), posture_.mutable_data(), centre_of_mass_.mutable_data(),
              to_finish_.mutable_data()},
-      max_candidates_(max_candidates) {}
+      max_candidates_(max_candidates) {
+  if (reach) {
+    candidate_reach_ = observation_array(envs, {max_candidates, kReachFeatures});
+    candidate_failed_ = observation_array(envs, {max_candidates});
+    first_.candidate_reach = candidate_reach_->mutable_data();
+    first_.candidate_failed = candidate_failed_->mutable_data();
+  }
+}
 
 NumericObservationRows NumericObservationArrays::rows(py::ssize_t env) const {
   const py::ssize_t k = max_candidates_;
@@ -106,7 +120,9 @@ NumericObservationRows NumericObservationArrays::rows(py::ssize_t env) const {
           first_.candidate_mask + env * k,
           first_.posture + env * kConfigurationDof,
           first_.centre_of_mass + env * 3,
-          first_.to_finish + env};
+          first_.to_finish + env,
+          first_.candidate_reach ? first_.candidate_reach + env * kReachFeatures * k : nullptr,
+          first_.candidate_failed ? first_.candidate_failed + env * k : nullptr};
 }
 
 py::dict NumericObservationArrays::dict() const {
@@ -118,6 +134,10 @@ py::dict NumericObservationArrays::dict() const {
   out["posture"] = posture_;
   out["centre_of_mass"] = centre_of_mass_;
   out["to_finish"] = to_finish_;
+  if (candidate_reach_) {
+    out["candidate_reach"] = *candidate_reach_;
+    out["candidate_failed"] = *candidate_failed_;
+  }
   return out;
 }
 

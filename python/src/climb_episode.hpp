@@ -48,6 +48,8 @@ class ClimbEpisode {
   const Eigen::Vector3d& centre_of_mass() const { return centre_of_mass_; }
   // The holds the observed state offers, ascending.
   std::span<const int> offered_holds() const { return offered_; }
+  // The holds whose move failed since the climber entered the observed state.
+  std::span<const int> failed_holds() const { return failed_; }
 
   void write_numeric_observation(int max_candidates, const NumericObservationRows& out);
 
@@ -80,20 +82,22 @@ class ClimbEpisode {
   std::optional<FinishingState> finish_;  // set by the finishing step until reset()
   Eigen::Vector3d start_centre_of_mass_, centre_of_mass_;
   std::vector<int> offered_;
+  std::vector<int> failed_;
 };
 
-// crux.gym's numeric observation as numpy float32 arrays, with a leading axis of one row
+// crux.gym's numeric (or reach) observation as numpy float32 arrays, with a leading axis of one row
 // per environment (or none for the single environment). Built with the GIL held; rows()
 // takes none, so the vector env's threads write into them.
 class NumericObservationArrays {
  public:
-  // envs < 0: no leading axis, one observation.
-  NumericObservationArrays(py::ssize_t envs, int max_candidates);
+  // envs < 0: no leading axis, one observation. reach: the reach form's two more arrays.
+  NumericObservationArrays(py::ssize_t envs, int max_candidates, bool reach);
   NumericObservationRows rows(py::ssize_t env) const;
   py::dict dict() const;
 
  private:
   py::array_t<float> free_limb_, held_, candidates_, candidate_mask_, posture_, centre_of_mass_, to_finish_;
+  std::optional<py::array_t<float>> candidate_reach_, candidate_failed_;
   NumericObservationRows first_;
   int max_candidates_;
 };

@@ -25,7 +25,7 @@ from gym_extremes import (  # noqa: E402
     start_holds_alone,
 )
 
-FORMS = ("numeric", "paper")
+FORMS = ("numeric", "reach", "paper")
 REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
 
 
@@ -158,6 +158,48 @@ def test_numeric_slots_name_the_candidate_holds():
     assert env.step(slot)[4]["hold_id"] == wall.hold_ids[holds[slot]]
 
 
+def test_reach_features_measure_from_the_free_limbs_shoulder_and_the_held_holds():
+    wall = crux.Wall.random(7)
+    env = crux.gym.ClimbEnv(wall, "reach")
+    obs, info = env.reset(seed=0)
+    mdp = crux.ClimbMdp(wall)
+    raw = mdp.observation()
+    joints = list(mdp.model.joint_names)
+    origins = crux.forward_kinematics(None, raw["posture"], joints=True)["joint_origins"]
+    shoulder = origins[joints.index("right_shoulder_flexion")]  # the start frees the right hand
+    holds = info["candidate_holds"][info["candidate_holds"] >= 0]
+    candidates = wall.positions[holds]
+    reach = obs["candidate_reach"]
+    assert np.allclose(reach[: len(holds), :3], candidates - shoulder, atol=1e-5)
+    assert np.allclose(reach[: len(holds), 3], np.linalg.norm(candidates - shoulder, axis=1), atol=1e-5)
+    held = [wall.positions[h] for h in raw["configuration"] if h >= 0]
+    assert len(held) == 3
+    for column, position in enumerate(held):
+        assert np.allclose(reach[: len(holds), 4 + column], np.linalg.norm(candidates - position, axis=1), atol=1e-5)
+    assert not reach[len(holds):].any() and not obs["candidate_failed"].any()
+
+
+def test_reach_marks_the_moves_that_failed_until_the_climber_moves():
+    env = crux.gym.ClimbEnv(crux.Wall.random(7), "reach")
+    obs, info = env.reset(seed=0)
+    failed, reached = [], None
+    for slot in range(int(obs["candidate_mask"].sum())):
+        env.reset(seed=0)
+        for earlier in failed:
+            env.step(earlier)
+        obs, _, _, _, step_info = env.step(slot)
+        if step_info["reached"]:
+            reached = slot
+            break
+        failed.append(slot)
+        expected = np.zeros(env.max_candidates, dtype=np.float32)
+        expected[failed] = 1.0
+        assert np.array_equal(obs["candidate_failed"], expected)  # every failed move, and no other
+    assert len(failed) >= 1 and reached is not None
+    assert not obs["candidate_failed"].any()  # a new state: nothing has failed from it yet
+    assert not env.reset(seed=0)[0]["candidate_failed"].any()
+
+
 @pytest.mark.parametrize("form", FORMS)
 def test_termination_returns_the_finishing_state(form):
     env = crux.gym.ClimbEnv(crux.Wall.random(7), form)
@@ -167,7 +209,7 @@ def test_termination_returns_the_finishing_state(form):
         if terminated:
             finishes += 1
             assert reward == 200000.0 and info["centre_of_mass"][2] >= env.wall.finish_height
-            if form == "numeric":
+            if form != "paper":
                 assert obs["to_finish"][0] <= 0.0
             start, _ = crux.gym.ClimbEnv(crux.Wall.random(7), form).reset()
             assert not same(obs, start)
@@ -197,6 +239,25 @@ def test_walls_drawn_per_episode_differ_and_follow_the_seed():
     fixed = crux.gym.ClimbEnv(crux.Wall.random(7))
     assert fixed.reset(options={"wall": 3})[1]["wall_name"] == "random wall, seed 3"
     assert fixed.reset()[1]["wall_name"] == "random wall, seed 7"  # the option named one episode's wall
+
+
+def test_a_random_wall_whose_start_cannot_be_taken_is_skipped():
+    # At 40 degrees the static model holds few starts (docs/PHYSICS.md): reset(seed=3)'s
+    # first draw is one it cannot take, and the episode climbs the next draw that it can.
+    steep, static = {"wall": {"incline": 40}}, {"physics.model": "static"}
+    env = crux.gym.ClimbEnv(None, wall_config=steep, config=static)
+    _, info = env.reset(seed=3)
+    draws = np.random.default_rng(3)
+    seeds = [int(draws.integers(2**63)) for _ in range(50)]
+    assert info["wall_seed"] in seeds
+    taken = seeds.index(info["wall_seed"])
+    assert taken >= 1
+    for skipped in seeds[:taken]:
+        with pytest.raises(ValueError, match="the start configuration"):
+            crux.ClimbMdp(crux.Wall.random(skipped, steep), config=static)
+    crux.ClimbMdp(crux.Wall.random(info["wall_seed"], steep), config=static)
+    with pytest.raises(ValueError, match="^wall_config: 1000 random walls in a row have a start the climber cannot"):
+        crux.gym.ClimbEnv(None, config={"filter.max_span": 0.5})
 
 
 def test_wall_lists_cycle_or_sample():

@@ -45,6 +45,7 @@ def random_masked_actions(rng, masks):
 CASES = {
     "random walls, numeric": dict(wall=None, wall_config=LOW_FINISH),
     "random walls, paper": dict(wall=None, observation="paper", wall_config=LOW_FINISH),
+    "random walls, reach": dict(wall=None, observation="reach", wall_config=LOW_FINISH),
     "wall list, cycle": dict(wall=[crux.Wall.random(seed, LOW_FINISH) for seed in (1, 2, 3)]),
     "wall list, sample": dict(wall=[crux.Wall.random(seed, LOW_FINISH) for seed in (4, 5)], wall_order="sample"),
 }

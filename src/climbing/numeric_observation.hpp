@@ -14,6 +14,11 @@
 
 namespace crux {
 
+// The reach form's features of one candidate slot (docs/BASELINES.md, "What the observation
+// tells of reachability"): the candidate relative to the free limb's shoulder or hip (3),
+// that distance (1), and its distance to each held hold in limb order (3).
+inline constexpr int kReachFeatures = 7;
+
 // Where one observation goes; sizes in floats.
 struct NumericObservationRows {
   float* free_limb;       // 4: one-hot
@@ -23,6 +28,9 @@ struct NumericObservationRows {
   float* posture;         // kConfigurationDof: the root relative to the grasp point, then the joint angles
   float* centre_of_mass;  // 3
   float* to_finish;       // 1: the finishing height less the centre of mass's, clipped to +-2 max_span
+  // The reach form only (null for the numeric form):
+  float* candidate_reach = nullptr;   // max_candidates x kReachFeatures, 0 past the candidates
+  float* candidate_failed = nullptr;  // max_candidates: 1 for a move that failed from this state
 };
 
 struct NumericObservationInput {
@@ -32,6 +40,10 @@ struct NumericObservationInput {
   const Eigen::Vector3d& centre_of_mass;
   std::span<const int> candidate_holds;  // in the order of the slots
   double max_span_m;                     // filter.max_span, the bound of to_finish
+  // The holds whose move failed since the climber entered this state, in any order: a
+  // failed move leaves the state as it was, and this is what tells a greedy policy not to
+  // try it again.
+  std::span<const int> failed_holds = {};
 };
 
 // InputError naming max_candidates when the state offers more candidates than slots.

@@ -22,9 +22,16 @@ struct ObservationStorage {
                      candidates = std::vector<float>(3 * kSlots), mask = std::vector<float>(kSlots),
                      posture = std::vector<float>(kConfigurationDof), com = std::vector<float>(3),
                      to_finish = std::vector<float>(1);
+  std::vector<float> reach = std::vector<float>(kReachFeatures * kSlots), failed = std::vector<float>(kSlots);
   NumericObservationRows rows() {
     return {free_limb.data(), held.data(), candidates.data(), mask.data(),
             posture.data(),   com.data(),  to_finish.data()};
+  }
+  NumericObservationRows reach_rows() {
+    NumericObservationRows out = rows();
+    out.candidate_reach = reach.data();
+    out.candidate_failed = failed.data();
+    return out;
   }
 };
 
@@ -107,6 +114,59 @@ TEST(NumericObservation, RefusesMoreCandidatesThanSlotsNamingMaxCandidates) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.source(), "max_candidates");
     EXPECT_NE(e.problem().find("more than " + std::to_string(too_few)), std::string::npos) << e.problem();
+  }
+}
+
+// The shoulder or hip the reach features measure from, found independently of the reach
+// envelope: the origin of the first joint of the limb's chain past the root, after FK.
+Eigen::Vector3d limb_root_by_kinematics(const BodyModel& model, const Posture& posture, Limb limb) {
+  BodyData data(model);
+  forward_kinematics(model, data, posture);
+  for (const int joint : model.chains[operational_point(limb)]) {
+    if (joint >= kRootDof) return data.placements[joint].origin;
+  }
+  ADD_FAILURE() << "the limb's chain has no joint past the root";
+  return Eigen::Vector3d::Zero();
+}
+
+TEST(NumericObservation, ReachFeaturesPlaceEachCandidateFromTheFreeLimbsShoulderAndTheHeldHolds) {
+  StartState s;
+  ObservationStorage out;
+  BodyData data(s.model);
+  write_numeric_observation(s.model, data, s.input(s.wall), kSlots, out.reach_rows());
+
+  const Limb free = s.mdp.configuration().free_limb();
+  const Eigen::Vector3d shoulder = limb_root_by_kinematics(s.model, s.mdp.posture(), free);
+  const auto count = static_cast<int>(s.candidates.size());
+  for (int slot = 0; slot < kSlots; ++slot) {
+    const float* row = out.reach.data() + kReachFeatures * slot;
+    if (slot >= count) {
+      for (int k = 0; k < kReachFeatures; ++k) EXPECT_EQ(row[k], 0.0F) << "padding slot " << slot;
+      continue;
+    }
+    const Eigen::Vector3d candidate = s.wall.holds[s.candidates[slot]].position;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(row[k], candidate[k] - shoulder[k], 1e-6) << "slot " << slot;
+    EXPECT_NEAR(row[3], (candidate - shoulder).norm(), 1e-6);
+    int column = 4;
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      const int hold = s.mdp.configuration().holds[limb];
+      if (hold == kFree) continue;
+      EXPECT_NEAR(row[column++], (candidate - s.wall.holds[hold].position).norm(), 1e-6) << "limb " << limb;
+    }
+  }
+}
+
+TEST(NumericObservation, MarksTheMovesThatFailedFromThisStateAndNoOther) {
+  StartState s;
+  ASSERT_GE(s.candidates.size(), 3U);
+  ObservationStorage out;
+  BodyData data(s.model);
+  const std::vector<int> failed{s.candidates[2], s.candidates[0]};
+  NumericObservationInput input = s.input(s.wall);
+  input.failed_holds = failed;
+  write_numeric_observation(s.model, data, input, kSlots, out.reach_rows());
+  for (int slot = 0; slot < kSlots; ++slot) {
+    EXPECT_EQ(out.failed[slot], slot == 0 || slot == 2 ? 1.0F : 0.0F) << "slot " << slot;
   }
 }
 
