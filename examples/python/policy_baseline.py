@@ -1,0 +1,632 @@
+"""A learnt policy that climbs walls it has never seen: masked PPO on crux/Climb-v0's
+"reach" observation, trained on random walls and evaluated zero-shot on held-out ones
+(docs/BASELINES.md).
+
+    export PYTHONPATH=build/release/python:../shared/third_party/gymnasium-1.4.0
+    /usr/bin/python3 examples/python/policy_baseline.py train --steps 2000000 --seed 1 --out models/policies/ppo.json
+    /usr/bin/python3 examples/python/policy_baseline.py evaluate --policy models/policies/ppo.json --wall-seeds 20000:20029 --json
+
+train writes the policy as plain weights in JSON (the format below), with the command and
+the seed that trained it; evaluate climbs each random wall A..B once with the policy's
+greedy action (the highest-scored offered candidate; the observation marks the moves that
+failed from the current state, so a policy that learnt to can avoid them) and compares
+the climb's length, failed moves included, with the wall's exact shortest plan.
+
+Training walls are random walls whose seeds each environment draws from its own stream,
+uniform over [0, 2^63): the validation walls (seeds from 10000) and the held-out ones
+(from 20000) are never among them but with a chance of about 1e-17. One --seed fixes
+everything else; torch runs deterministically on one CPU thread.
+
+The policy file: {"format": "crux-policy", "version": 1, "observation": "reach",
+"max_candidates", "max_span", "activation": "relu", "slot_layers": [...], "value_layers":
+[...], "training": {...}}, each layer {"weight": rows of columns, "bias": [...]}, ReLU
+between layers. The slot network scores each candidate from [state (55), slot (11)]; the
+value network (training only) reads the state's 55 numbers.
+"""
+
+import argparse
+import json
+import math
+import os
+import pathlib
+import shlex
+import sys
+import time
+
+import numpy as np
+import torch
+from torch import nn
+
+import crux
+import crux.gym  # registers crux/Climb-v0
+
+POLICY_FORMAT = "crux-policy"
+POLICY_VERSION = 1
+OBSERVATION = "reach"
+MAX_CANDIDATES = crux.gym.DEFAULT_MAX_CANDIDATES
+VALIDATION_FIRST_SEED = 10000
+HELD_OUT_FIRST_SEED = 20000
+# The paper's rewards (-1000 unreachable, -1 a step, +200000 the finish) scaled so that the
+# finish is worth 2: the same optimal policy, value targets of a size a network fits.
+REWARD_SCALE = 1e-5
+# A greedy climb stops after this many actions (the plans take 7 to 20 moves).
+CLIMB_CAP = 200
+STATE_SIZE = 55  # free limb 4, held holds 12, root 3, joint angles 32, centre of mass 3, height to the finish 1
+SLOT_SIZE = 3 + 7 + 1  # the candidate, its reach features, whether its move failed here
+
+
+class OneLineParser(argparse.ArgumentParser):
+    """Bad input: one line naming the argument, exit code 2 (argparse's code, without its usage)."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: {message}\n")
+
+
+def positive(text):
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be an integer, got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
+    return value
+
+
+def non_negative(text):
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be an integer, got {text!r}") from None
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"must be at least 0, got {value}")
+    return value
+
+
+def non_negative_float(text):
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a number, got {text!r}") from None
+    if not math.isfinite(value) or value < 0:
+        raise argparse.ArgumentTypeError(f"must be a finite number >= 0, got {text!r}")
+    return value
+
+
+def positive_float(text):
+    value = non_negative_float(text)
+    if value == 0:
+        raise argparse.ArgumentTypeError(f"must be > 0, got {text!r}")
+    return value
+
+
+def unit_interval(text):
+    value = non_negative_float(text)
+    if value > 1:
+        raise argparse.ArgumentTypeError(f"must be within [0, 1], got {text!r}")
+    return value
+
+
+def wall_seed_range(text):
+    first, _, last = text.partition(":")
+    if not first.isdigit() or not last.isdigit() or int(last) < int(first):
+        raise argparse.ArgumentTypeError(f"'{text}' is not A:B with 0 <= A <= B")
+    return list(range(int(first), int(last) + 1))
+
+
+def deterministic(seed, threads=1):
+    torch.manual_seed(seed)
+    torch.set_num_threads(threads)
+    torch.use_deterministic_algorithms(True)
+
+
+def climbing_config(physics_model):
+    """The environment's config: the paper's rules, or the static model with the learner's
+    remedy of docs/PHYSICS.md (height shaping, a failed move in a stuck stance is a fall)."""
+    if physics_model == "static":
+        return {"physics.model": "static", "reward.height": 100.0, "physics.fall_when_stuck": True}
+    return {}
+
+
+# --- features and network ------------------------------------------------------------------
+
+
+def batch_features(obs, span):
+    """The reach observation, batched (leading axis: environments), as (state (E, 55),
+    slots (E, K, 11), mask (E, K) bool), lengths in max_spans."""
+    posture = obs["posture"]
+    envs = posture.shape[0]
+    state = np.concatenate(
+        [obs["free_limb"], obs["held"].reshape(envs, 12) / span, posture[:, :3] / span, posture[:, 3:],
+         obs["centre_of_mass"] / span, obs["to_finish"] / span], axis=1)
+    reach = obs["candidate_reach"] / span
+    slots = np.concatenate([obs["candidates"] / span, reach, obs["candidate_failed"][..., None]], axis=2)
+    return state.astype(np.float32), slots.astype(np.float32), obs["candidate_mask"] > 0.5
+
+
+def single_features(obs, span):
+    """batch_features of one environment's observation, with a leading axis of one."""
+    return batch_features({key: value[None] for key, value in obs.items()}, span)
+
+
+def mlp(sizes):
+    """Width-1 convolutions with ReLUs between: per-slot linear layers (Debian's torch runs
+    them through oneDNN, its linear layers through the reference BLAS, ten times slower)."""
+    layers = []
+    for i, (inputs, outputs) in enumerate(zip(sizes, sizes[1:])):
+        layers.append(nn.Conv1d(inputs, outputs, 1))
+        if i < len(sizes) - 2:
+            layers.append(nn.ReLU())
+    return nn.Sequential(*layers)
+
+
+class SlotPolicy(nn.Module):
+    """Scores each candidate slot from its features and the state's with the same weights,
+    so that a slot means "this hold" whatever the wall and the order; the value reads the
+    state alone."""
+
+    def __init__(self, hidden):
+        super().__init__()
+        self.hidden = hidden
+        self.slot_net = mlp([STATE_SIZE + SLOT_SIZE, hidden, hidden, 1])
+        self.value_net = mlp([STATE_SIZE, hidden, hidden, 1])
+
+    def logits(self, state, slots, mask):
+        # The first layer on [state, slot] is the state's part, once per state, plus the
+        # slot's: the same numbers as on the concatenation, for a fifth of the work.
+        first = self.slot_net[0]
+        weight = first.weight
+        from_state = nn.functional.conv1d(state.unsqueeze(2), weight[:, :STATE_SIZE], first.bias)
+        from_slots = nn.functional.conv1d(slots.transpose(1, 2), weight[:, STATE_SIZE:])
+        hidden = self.slot_net[2:](torch.relu(from_state + from_slots))
+        return hidden.squeeze(1).masked_fill(~mask, -1e9)
+
+    def value(self, state):
+        return self.value_net(state.unsqueeze(2)).reshape(-1)
+
+
+def greedy_slot(policy, state, slots, mask):
+    with torch.no_grad():
+        scores = policy.logits(torch.from_numpy(state), torch.from_numpy(slots), torch.from_numpy(mask))
+    return int(torch.argmax(scores[0]))
+
+
+def layers_of(sequential):
+    return [{"weight": layer.weight.detach()[:, :, 0].tolist(), "bias": layer.bias.detach().tolist()}
+            for layer in sequential if isinstance(layer, nn.Conv1d)]
+
+
+def save_policy(policy, path, span, training):
+    record = {"format": POLICY_FORMAT, "version": POLICY_VERSION, "observation": OBSERVATION,
+              "max_candidates": MAX_CANDIDATES, "max_span": span, "activation": "relu",
+              "slot_layers": layers_of(policy.slot_net), "value_layers": layers_of(policy.value_net),
+              "training": training}
+    path = pathlib.Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    temporary = path.with_name(path.name + ".partial")
+    temporary.write_text(json.dumps(record) + "\n")
+    os.replace(temporary, path)  # never a half-written policy
+
+
+def load_policy(path):
+    """The policy of a file train wrote; ValueError naming the file on anything else."""
+    try:
+        record = json.loads(pathlib.Path(path).read_text())
+    except OSError as error:
+        raise ValueError(f"{path}: cannot read the policy file ({error.strerror})") from None
+    except (json.JSONDecodeError, UnicodeDecodeError) as error:
+        raise ValueError(f"{path}: not a policy file (not JSON: {error})") from None
+    if not isinstance(record, dict) or record.get("format") != POLICY_FORMAT:
+        raise ValueError(f"{path}: not a policy file (format is not {POLICY_FORMAT!r})")
+    if record.get("version") != POLICY_VERSION or record.get("observation") != OBSERVATION:
+        raise ValueError(f"{path}: a policy for observation {record.get('observation')!r} version "
+                         f"{record.get('version')!r}; this evaluator takes {OBSERVATION!r} version {POLICY_VERSION}")
+    try:
+        hidden = len(record["slot_layers"][0]["bias"])
+        policy = SlotPolicy(hidden)
+        for sequential, layers in ((policy.slot_net, record["slot_layers"]), (policy.value_net, record["value_layers"])):
+            convolutions = [layer for layer in sequential if isinstance(layer, nn.Conv1d)]
+            if len(convolutions) != len(layers):
+                raise ValueError("a network has the wrong number of layers")
+            for convolution, layer in zip(convolutions, layers):
+                weight = torch.tensor(layer["weight"], dtype=torch.float32)[:, :, None]
+                bias = torch.tensor(layer["bias"], dtype=torch.float32)
+                if weight.shape != convolution.weight.shape or bias.shape != convolution.bias.shape:
+                    raise ValueError(f"a layer of shape {tuple(weight.shape[:2])} where "
+                                     f"{tuple(convolution.weight.shape[:2])} belongs")
+                convolution.weight.data.copy_(weight)
+                convolution.bias.data.copy_(bias)
+    except (KeyError, TypeError, IndexError, ValueError) as error:
+        raise ValueError(f"{path}: not a policy file ({error})") from None
+    return policy, record
+
+
+# --- training: masked PPO (Huang and Ontanon 2020's invalid-action masking) ----------------
+
+
+class Rollout:
+    """One rollout of T steps of E environments. A step whose environment was resetting
+    (Gymnasium's next-step autoreset) is no transition and weighs nothing."""
+
+    def __init__(self, steps, envs):
+        shape = (steps, envs)
+        self.state = np.zeros(shape + (STATE_SIZE,), np.float32)
+        self.slots = np.zeros(shape + (MAX_CANDIDATES, SLOT_SIZE), np.float32)
+        self.mask = np.zeros(shape + (MAX_CANDIDATES,), bool)
+        self.action = np.zeros(shape, np.int64)
+        self.log_prob = np.zeros(shape, np.float32)
+        self.value = np.zeros(shape, np.float32)
+        self.reward = np.zeros(shape, np.float32)
+        self.terminated = np.zeros(shape, bool)
+        self.done = np.zeros(shape, bool)  # terminated or truncated
+        self.valid = np.zeros(shape, bool)
+
+
+def advantages(rollout, last_value, gamma, lam):
+    """GAE over the rollout; the value after a step is that of the next stored observation,
+    which after an episode's end is its final observation (next-step autoreset)."""
+    steps = rollout.reward.shape[0]
+    values = np.concatenate([rollout.value, last_value[None]], axis=0)
+    advantage = np.zeros_like(rollout.reward)
+    running = np.zeros_like(last_value)
+    for t in reversed(range(steps)):
+        following = values[t + 1] * (~rollout.terminated[t])
+        delta = rollout.reward[t] + gamma * following - values[t]
+        running = delta + gamma * lam * running * (~rollout.done[t])
+        running = np.where(rollout.valid[t], running, 0.0)
+        advantage[t] = running
+    return advantage, advantage + rollout.value
+
+
+def ppo_update(policy, optimiser, rollout, advantage, returns, args, rng):
+    valid = rollout.valid.reshape(-1)
+    index = np.flatnonzero(valid)
+    flat = {name: getattr(rollout, name).reshape((-1,) + getattr(rollout, name).shape[2:])[index]
+            for name in ("state", "slots", "mask", "action", "log_prob")}
+    flat_advantage = advantage.reshape(-1)[index]
+    flat_returns = returns.reshape(-1)[index]
+    statistics = {"policy_loss": 0.0, "value_loss": 0.0, "entropy": 0.0, "updates": 0}
+    for _ in range(args.epochs):
+        order = rng.permutation(len(index))
+        for start in range(0, len(order), args.minibatch):
+            batch = order[start:start + args.minibatch]
+            mask = flat["mask"][batch]
+            count = max(1, int(mask.sum(axis=1).max()))  # the slots past every candidate only pad
+            state = torch.from_numpy(flat["state"][batch])
+            logits = policy.logits(state, torch.from_numpy(flat["slots"][batch][:, :count]),
+                                   torch.from_numpy(mask[:, :count]))
+            log_probs = torch.log_softmax(logits, dim=1)
+            action = torch.from_numpy(flat["action"][batch])
+            new_log_prob = log_probs.gather(1, action[:, None]).squeeze(1)
+            probs = log_probs.exp()
+            entropy = -(probs * log_probs.masked_fill(~torch.from_numpy(mask[:, :count]), 0.0)).sum(1).mean()
+            adv = torch.from_numpy(flat_advantage[batch])
+            adv = (adv - adv.mean()) / (adv.std() + 1e-8) if len(batch) > 1 else adv
+            ratio = torch.exp(new_log_prob - torch.from_numpy(flat["log_prob"][batch]))
+            policy_loss = -torch.min(ratio * adv, torch.clamp(ratio, 1 - args.clip, 1 + args.clip) * adv).mean()
+            value_loss = ((policy.value(state) - torch.from_numpy(flat_returns[batch])) ** 2).mean()
+            loss = policy_loss + args.value_weight * value_loss - args.entropy * entropy
+            optimiser.zero_grad()
+            loss.backward()
+            nn.utils.clip_grad_norm_(policy.parameters(), 0.5)
+            optimiser.step()
+            statistics["policy_loss"] += float(policy_loss)
+            statistics["value_loss"] += float(value_loss)
+            statistics["entropy"] += float(entropy)
+            statistics["updates"] += 1
+    updates = max(1, statistics.pop("updates"))
+    return {key: value / updates for key, value in statistics.items()}
+
+
+def sample_actions(policy, state, slots, mask, generator):
+    with torch.no_grad():
+        # A state that offers nothing (a fall's dead end, about to reset) still needs an
+        # action, which the reset ignores.
+        safe_mask = mask.copy()
+        safe_mask[~mask.any(axis=1), 0] = True
+        logits = policy.logits(torch.from_numpy(state), torch.from_numpy(slots), torch.from_numpy(safe_mask))
+        log_probs = torch.log_softmax(logits, dim=1)
+        action = torch.multinomial(log_probs.exp(), 1, generator=generator).squeeze(1)
+        value = policy.value(torch.from_numpy(state))
+    return action.numpy(), log_probs.gather(1, action[:, None]).squeeze(1).numpy(), value.numpy()
+
+
+def train(args, progress=None):
+    """Masked PPO; returns (policy, history), history a record per validation."""
+    deterministic(args.seed, args.threads)
+    config = climbing_config(args.physics_model)
+    envs = crux.gym.VectorClimbEnv(args.envs, wall=args.train_walls, observation=OBSERVATION, wall_order="sample",
+                                   config=config, max_episode_steps=args.episode_steps)
+    span = envs.single_observation_space["candidates"].high.max() / 3
+    policy = SlotPolicy(args.hidden)
+    optimiser = torch.optim.Adam(policy.parameters(), lr=args.lr, eps=1e-5)
+    generator = torch.Generator().manual_seed(args.seed)
+    rng = np.random.default_rng([args.seed, 1])
+    obs, _ = envs.reset(seed=args.seed)
+    resetting = np.zeros(args.envs, bool)
+    rollout = Rollout(args.rollout, args.envs)
+    updates = max(1, args.steps // (args.rollout * args.envs))
+    history, episodes, finished = [], 0, 0
+    validation_plans = getattr(args, "validation_plans", None)
+    if args.validation_walls and validation_plans is None:
+        validation_plans = plan_lengths(args.validation_walls, args.physics_model)
+    started = time.monotonic()
+    for update in range(updates):
+        optimiser.param_groups[0]["lr"] = args.lr * (1 - update / updates)
+        for t in range(args.rollout):
+            state, slots, mask = batch_features(obs, span)
+            action, log_prob, value = sample_actions(policy, state, slots, mask, generator)
+            obs, reward, terminated, truncated, info = envs.step(action)
+            rollout.state[t], rollout.slots[t], rollout.mask[t] = state, slots, mask
+            rollout.action[t], rollout.log_prob[t], rollout.value[t] = action, log_prob, value
+            rollout.reward[t] = reward * REWARD_SCALE
+            rollout.terminated[t], rollout.done[t] = terminated, terminated | truncated
+            rollout.valid[t] = ~resetting
+            episodes += int(np.sum((terminated | truncated) & ~resetting))
+            finished += int(np.sum(terminated & ~resetting & ~info.get("fell", np.zeros(args.envs, bool))))
+            resetting = terminated | truncated
+        with torch.no_grad():
+            last_value = policy.value(torch.from_numpy(batch_features(obs, span)[0])).numpy()
+        advantage, returns = advantages(rollout, last_value, args.gamma, args.lam)
+        losses = ppo_update(policy, optimiser, rollout, advantage, returns, args, rng)
+        steps = (update + 1) * args.rollout * args.envs
+        if args.validate_every and ((update + 1) % args.validate_every == 0 or update + 1 == updates):
+            record = {"steps": steps, "episodes": episodes, "finished_episodes": finished,
+                      "seconds": round(time.monotonic() - started, 1), **losses}
+            if args.validation_walls:
+                validation = evaluate(policy, args.validation_walls, args.physics_model, validation_plans)
+                record.update({key: validation[key] for key in VALIDATION_KEYS})
+            history.append(record)
+            if progress:
+                progress(record)
+    training = {"command": args.command, "seed": args.seed, "steps": updates * args.rollout * args.envs,
+                "settings": {key: getattr(args, key) for key in SETTINGS}}
+    return policy, history, training, span
+
+
+VALIDATION_KEYS = ("finished", "mean_length", "mean_length_ratio", "within_1_5_plans")
+SETTINGS = ("lr", "entropy", "hidden", "rollout", "envs", "epochs", "minibatch", "clip", "gamma", "lam",
+            "value_weight", "episode_steps", "physics_model")
+
+
+# --- evaluation ------------------------------------------------------------------------------
+
+
+def climb(policy, env, span, cap=CLIMB_CAP):
+    """One greedy climb: (finished, actions taken, failed moves)."""
+    obs, _ = env.reset()
+    failed = 0
+    for taken in range(1, cap + 1):
+        action = greedy_slot(policy, *single_features(obs, span))
+        obs, _, terminated, truncated, info = env.step(action)
+        failed += not info["reached"]
+        if terminated:
+            return not info.get("fell", False), taken, failed
+    return False, cap, failed
+
+
+def plan_lengths(wall_seeds, physics_model="kinematic"):
+    """{seed: its exact shortest plan's length, or None when the planner finds none}, for
+    the walls whose start the climber can take."""
+    config = climbing_config(physics_model)
+    lengths = {}
+    for seed in wall_seeds:
+        wall = crux.Wall.random(seed)
+        try:
+            crux.ClimbMdp(wall, config=config)
+        except ValueError:
+            continue  # a start that does not hold: evaluate skips the wall too
+        plan = crux.plan(wall, config=config)
+        lengths[seed] = plan["length"] if plan["found"] else None
+    return lengths
+
+
+def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None):
+    """Greedy climbs on random walls: the finished share and the finished climbs' mean
+    length; given plans (plan_lengths), the plans' mean length on the walls climbed, the
+    mean ratio and the share of climbs that finish within 1.5 times their plan's length."""
+    config = climbing_config(physics_model)
+    lengths, plan_sum, ratios, skipped, walls = [], [], [], [], []
+    for seed in wall_seeds:
+        try:
+            env = crux.gym.ClimbEnv(seed, OBSERVATION, config=config)
+        except ValueError as error:  # under the static model, a start that does not hold
+            skipped.append({"wall_seed": seed, "why": str(error)})
+            continue
+        span = env.observation_space["candidates"].high.max() / 3
+        done, length, failed = climb(policy, env, span)
+        wall = {"wall_seed": seed, "finished": done, "length": length, "failed_moves": failed}
+        if plans is not None:
+            wall["plan_length"] = plans.get(seed)
+        if done:
+            lengths.append(length)
+            if wall.get("plan_length"):
+                plan_sum.append(wall["plan_length"])
+                ratios.append(length / wall["plan_length"])
+        walls.append(wall)
+    climbs = len(walls)
+    result = {"climbs": climbs, "finished": sum(w["finished"] for w in walls) / climbs if climbs else 0.0,
+              "mean_length": float(np.mean(lengths)) if lengths else None}
+    if plans is not None:
+        result["mean_plan_length"] = float(np.mean(plan_sum)) if plan_sum else None
+        result["mean_length_ratio"] = float(np.mean(ratios)) if ratios else None
+        within = [w["finished"] and bool(w["plan_length"]) and w["length"] <= 1.5 * w["plan_length"] for w in walls]
+        result["within_1_5_plans"] = sum(within) / climbs if climbs else 0.0
+        result["walls"] = walls
+        result["skipped_walls"] = skipped
+    return result
+
+
+# --- commands --------------------------------------------------------------------------------
+
+
+def command_train(args):
+    args.command = " ".join(["examples/python/policy_baseline.py"] + [shlex.quote(a) for a in args.argv])
+
+    def progress(record):
+        print(json.dumps(record), file=sys.stderr, flush=True)
+
+    policy, history, training, span = train(args, progress)
+    training["history"] = history
+    save_policy(policy, args.out, float(span), training)
+    print(json.dumps({"policy": str(args.out), "steps": training["steps"], "last": history[-1] if history else None}))
+
+
+def command_evaluate(args):
+    try:
+        policy, _ = load_policy(args.policy)
+    except ValueError as error:
+        print(f"policy_baseline.py: --policy: {error}", file=sys.stderr)
+        sys.exit(2)
+    result = evaluate(policy, args.wall_seeds, args.physics_model, plan_lengths(args.wall_seeds, args.physics_model))
+    if args.json:
+        print(json.dumps(result, indent=2))
+        return
+    print(f"{result['climbs']} climbs, {result['finished']:.1%} finished, mean length {result['mean_length']}, "
+          f"mean plan length {result['mean_plan_length']}")
+
+
+# The search (docs/BASELINES.md): every setting of the grid for STAGES[0]'s steps, then the
+# best `keep` of the stage before for more steps, and 3 seeds of the last two; a setting's
+# score is its validation climbs' share that finish within 1.5 times the plan's length.
+SEARCH_GRID = {"lr": [3e-4, 1e-3], "entropy": [0.003, 0.01], "hidden": [64, 128], "rollout": [64, 128],
+               "gamma": [0.97, 0.99]}
+STAGES = [{"steps": 500_000, "keep": None, "seeds": [1]}, {"steps": 2_000_000, "keep": 8, "seeds": [1]},
+          {"steps": 6_000_000, "keep": 2, "seeds": [1, 2, 3]}]
+SEARCH_LOG = "search.jsonl"
+
+
+def setting_name(setting):
+    return "-".join(f"{key}{setting[key]:g}" for key in SEARCH_GRID)
+
+
+def search_records(out):
+    path = out / SEARCH_LOG
+    return [json.loads(line) for line in path.read_text().splitlines()] if path.exists() else []
+
+
+def score(record):
+    """What the search ranks by: the target's share, then the finished share, then shortness."""
+    validation = record["validation"]
+    return (validation["within_1_5_plans"], validation["finished"], -(validation["mean_length_ratio"] or math.inf))
+
+
+def stage_settings(records, stage):
+    if stage == 0:
+        keys = list(SEARCH_GRID)
+        grid = np.array(np.meshgrid(*SEARCH_GRID.values(), indexing="ij"), dtype=object).reshape(len(keys), -1).T
+        return [dict(zip(keys, values)) for values in grid]
+    before = [r for r in records if r["stage"] == stage - 1]
+    expected = len(stage_settings(records, stage - 1)) * len(STAGES[stage - 1]["seeds"])
+    if len(before) < expected:
+        raise SystemExit(f"policy_baseline.py: --stage: stage {stage - 1} has {len(before)} of its {expected} runs")
+    by_setting = {}
+    for record in before:
+        by_setting.setdefault(setting_name(record["setting"]), []).append(record)
+    ranked = sorted(by_setting.values(), key=lambda runs: np.mean([score(r) for r in runs], axis=0).tolist(),
+                    reverse=True)
+    return [runs[0]["setting"] for runs in ranked[:STAGES[stage]["keep"]]]
+
+
+def command_search(args):
+    args.out.mkdir(parents=True, exist_ok=True)
+    records = search_records(args.out)
+    plans_path = args.out / "validation_plans.json"
+    if not plans_path.exists():
+        plans = plan_lengths(args.validation_walls, args.physics_model)
+        plans_path.write_text(json.dumps({str(seed): length for seed, length in plans.items()}))
+    args.validation_plans = {int(seed): length for seed, length in json.loads(plans_path.read_text()).items()}
+    stage = STAGES[args.stage]
+    done = {(setting_name(r["setting"]), r["seed"]) for r in records if r["stage"] == args.stage}
+    runs = [(setting, seed) for setting in stage_settings(records, args.stage) for seed in stage["seeds"]]
+    runs = runs[args.part[0] - 1::args.part[1]]
+    for setting, seed in runs:
+        name = setting_name(setting)
+        if (name, seed) in done:
+            continue
+        run = argparse.Namespace(**vars(args))
+        run.__dict__.update(setting)
+        run.seed, run.steps = seed, args.steps or stage["steps"]
+        run.command = (f"examples/python/policy_baseline.py train --steps {run.steps} --seed {seed} "
+                       + " ".join(f"--{key} {value:g}" for key, value in setting.items()))
+        policy, history, training, span = train(run)
+        validation = evaluate(policy, args.validation_walls, args.physics_model, args.validation_plans)
+        path = args.out / "policies" / f"stage{args.stage}-{name}-seed{seed}.json"
+        save_policy(policy, path, float(span), dict(training, history=history))
+        record = {"stage": args.stage, "setting": setting, "seed": seed, "steps": run.steps,
+                  "seconds": history[-1]["seconds"] if history else None, "history": history,
+                  "validation": {key: validation[key] for key in VALIDATION_KEYS}, "policy": str(path)}
+        with open(args.out / SEARCH_LOG, "a") as log:
+            log.write(json.dumps(record) + "\n")
+        print(json.dumps({key: record[key] for key in ("stage", "setting", "seed", "seconds", "validation")}),
+              flush=True)
+
+
+def part(text):
+    index, _, count = text.partition("/")
+    if not index.isdigit() or not count.isdigit() or not 1 <= int(index) <= int(count):
+        raise argparse.ArgumentTypeError(f"'{text}' is not K/N with 1 <= K <= N")
+    return int(index), int(count)
+
+
+def training_options(command):
+    """The training settings, as train and search take them."""
+    command.add_argument("--lr", type=positive_float, default=3e-4, help="Adam's learning rate, decayed linearly to 0")
+    command.add_argument("--entropy", type=non_negative_float, default=0.01, help="the entropy bonus's weight")
+    command.add_argument("--hidden", type=positive, default=128, help="units in each hidden layer")
+    command.add_argument("--rollout", type=positive, default=128, help="steps per environment between updates")
+    command.add_argument("--envs", type=positive, default=64, help="environments stepped together")
+    command.add_argument("--epochs", type=positive, default=4, help="passes over a rollout")
+    command.add_argument("--minibatch", type=positive, default=2048, help="transitions per gradient step")
+    command.add_argument("--clip", type=unit_interval, default=0.2, help="PPO's ratio clip")
+    command.add_argument("--gamma", type=unit_interval, default=0.99, help="discount")
+    command.add_argument("--lam", type=unit_interval, default=0.95, help="GAE's lambda")
+    command.add_argument("--value-weight", type=non_negative_float, default=0.5, help="the value loss's weight")
+    command.add_argument("--episode-steps", type=positive, default=100, help="an episode's truncation in training")
+    command.add_argument("--train-walls", type=positive, default=None,
+                         help="train on random walls 0..N-1 (N <= 10000, sampled at each reset) instead of a new "
+                         "random wall each episode")
+    command.add_argument("--validation-walls", type=non_negative, default=30,
+                         help="greedy climbs on walls 10000.. at each validation (0: none)")
+    command.add_argument("--validate-every", type=non_negative, default=20,
+                         help="updates between validations (0: none)")
+    command.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic")
+    command.add_argument("--threads", type=positive, default=1, help="torch's CPU threads (1: deterministic)")
+
+
+def parser():
+    top = OneLineParser(prog="policy_baseline.py", description=__doc__.split("\n\n")[0])
+    commands = top.add_subparsers(dest="command_name", required=True, parser_class=OneLineParser)
+    t = commands.add_parser("train", help="Trains a policy with masked PPO and writes it")
+    t.add_argument("--out", type=pathlib.Path, required=True, help="the policy file to write (JSON)")
+    t.add_argument("--steps", type=positive, default=1_000_000, help="environment steps")
+    t.add_argument("--seed", type=int, default=1, help="fixes the walls, the network and the sampling")
+    training_options(t)
+    h = commands.add_parser("search", help="The settings' search, resumable: runs the stage's runs not yet logged")
+    h.add_argument("--out", type=pathlib.Path, required=True, help="the folder of search.jsonl and the policies")
+    h.add_argument("--stage", type=int, choices=range(len(STAGES)), required=True,
+                   help="0: the grid; 1, 2: the best of the stage before, longer")
+    h.add_argument("--part", type=part, default=(1, 1), help="K/N: this process's share of the stage's runs")
+    h.add_argument("--steps", type=positive, default=None, help="override the stage's steps (a quick pilot)")
+    training_options(h)
+    e = commands.add_parser("evaluate", help="Greedy climbs of a policy on random walls")
+    e.add_argument("--policy", type=pathlib.Path, required=True, help="a policy file train wrote")
+    e.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
+    e.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic")
+    e.add_argument("--json", action="store_true", help="print the result as JSON")
+    return top
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    args = parser().parse_args(argv)
+    args.argv = argv
+    if args.command_name in ("train", "search"):
+        if args.train_walls and args.train_walls > VALIDATION_FIRST_SEED:
+            parser().error(f"--train-walls: must be at most {VALIDATION_FIRST_SEED}, the first validation wall")
+        args.train_walls = list(range(args.train_walls)) if args.train_walls else None
+        args.validation_walls = list(range(VALIDATION_FIRST_SEED, VALIDATION_FIRST_SEED + args.validation_walls))
+    {"train": command_train, "search": command_search, "evaluate": command_evaluate}[args.command_name](args)
+
+
+if __name__ == "__main__":
+    main()
