@@ -83,6 +83,14 @@ void refuse_wall_generator_keys(const ExperimentConfig& config) {
   }
 }
 
+// crux.run_learning is crux train and crux transfer in one: crux transfer's keys, and
+// crux train's policy file of the network transfer mode.
+ParameterSet run_learning_keys() {
+  ParameterSet keys = kTransferKeys;
+  keys.include.push_back("experiment.policy");
+  return keys;
+}
+
 // A config given as a file replays a folder: its recorded digests must match the inputs.
 bool config_is_file(const py::handle& config) { return !config.is_none() && !py::isinstance<py::dict>(config); }
 
@@ -90,7 +98,8 @@ LearningRun run_learning_py(const py::handle& wall_handle, const py::handle& con
                             const py::handle& seed_handle, const py::handle& q_grid_handle,
                             const py::handle& model_handle, const py::handle& output, bool overwrite) {
   LearningJob job;
-  job.config = config_from_python(config_handle, kTransferKeys, "run_learning");
+  static const ParameterSet keys = run_learning_keys();
+  job.config = config_from_python(config_handle, keys, "run_learning");
   ExperimentConfig& config = job.config;
   if (!wall_handle.is_none()) {
     if (!config.wall_file.empty() || config.wall_seed) {

@@ -145,3 +145,28 @@ def test_a_bad_policy_file_is_one_line_and_exit_code_2(tmp_path, content, proble
 def test_bad_arguments_are_one_line_and_exit_code_2(tmp_path):
     done = run_evaluate("--policy", str(tmp_path / "p.json"), "--wall-seeds", "5:2")
     assert done.returncode == 2 and done.stderr.count("\n") == 1 and "--wall-seeds" in done.stderr
+
+
+def test_crux_trains_with_the_policy_as_its_network_prior_and_scores_as_torch_does(tmp_path):
+    # Under --transfer network with epsilon 0 the first move of a run is the candidate the
+    # C++ (Eigen) evaluation of the policy scores highest: on each wall it is torch's too.
+    baseline.deterministic(3)
+    policy = baseline.SlotPolicy(16)
+    path = tmp_path / "policy.json"
+    baseline.save_policy(policy, path, 2.8, {"seed": 3})
+    loaded, _ = baseline.load_policy(path)
+    config = {"experiment.transfer": "network", "experiment.policy": str(path), "experiment.iterations": 1,
+              "learning.epsilon": 0.0}
+    for seed in range(1, 6):
+        wall = crux.Wall.random(seed)
+        mdp = crux.ClimbMdp(wall)
+        observation = mdp.numeric_observation(32, reach=True)
+        state, slots, mask = baseline.single_features(observation, 2.8)
+        scores = policy.logits(*(torch.from_numpy(a) for a in (state, slots, mask))).detach().numpy()[0]
+        holds = np.flatnonzero(mdp.action_mask())
+        assert np.sort(scores[: len(holds)])[-1] > np.sort(scores[: len(holds)])[-2] + 1e-4  # no near tie
+        best = holds[int(np.argmax(scores[: len(holds)]))]
+        run = crux.run_learning(wall, config, seed=seed)
+        assert run.iterations["hold_id"][0] == wall.hold_ids[best], f"wall {seed}"
+    with pytest.raises(ValueError, match="only experiment.transfer = network uses a policy file"):
+        crux.run_learning(crux.Wall.random(1), {"experiment.policy": str(path), "experiment.iterations": 1})

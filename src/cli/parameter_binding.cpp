@@ -193,6 +193,7 @@ ExperimentConfig ParameterBinding::resolve(const ListChoice& choice) {
   if (given("experiment.urdf")) config.recorded_provenance.erase("urdf_sha256");
   if (given("wall.file") || given("wall.seed")) config.recorded_provenance.erase("wall_sha256");
   if (given("experiment.q_grid")) config.recorded_provenance.erase("q_grid_sha256");
+  if (given("experiment.policy")) config.recorded_provenance.erase("policy_sha256");
   if (!config.wall_file.empty() && config.wall_seed) {
     throw InputError(where("wall.seed"), "give a wall file or a wall seed, not both");
   }

@@ -108,6 +108,13 @@ void experiment_keys(std::vector<FieldOf<Config>>& keys, Config& c) {
            "",
            {},
            true},
+          {"experiment.policy",
+           "Policy file (JSON, of examples/python/policy_baseline.py train) whose scores of each state's moves order "
+           "crux train's exploration under experiment.transfer = network",
+           &c.policy,
+           "",
+           {},
+           true},
       });
   transfer_keys(keys, l.dyna);
 }

@@ -33,6 +33,7 @@ struct ExperimentConfig {
   ExperimentParameters settings;
   std::string urdf;    // empty: the default body model
   std::string q_grid;  // transfer: the Q_grid learnt by a training run
+  std::string policy;  // train under experiment.transfer = network: the policy network's file
   std::string wall_file;
   std::optional<std::uint64_t> wall_seed;
   int checkpoint_every = 0;  // train, transfer: iterations between checkpoints (run_checkpoint.hpp)

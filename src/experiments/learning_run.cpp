@@ -1,10 +1,49 @@
 #include "experiments/learning_run.hpp"
 
+#include "body/kinematics.hpp"
 #include "common/checkpoint_stream.hpp"
 
 namespace crux {
 
 namespace {
+
+// The network mode's scores of each state's candidates: the reach observation of the
+// state, whose failed moves are those the agent's model has seen fail from it.
+class CandidateScores {
+ public:
+  CandidateScores(const BodyModel& model, const PolicyNetwork& network, const Wall& wall)
+      : model_(model), network_(network), workspace_(model, network, wall.hold_count()), body_(model) {
+    holds_.reserve(wall.hold_count());
+    failed_.reserve(wall.hold_count());
+    scores_.reserve(wall.hold_count());
+  }
+
+  std::span<const double> of(const ClimbingMdp& mdp, const DeterministicModel& experience,
+                             std::span<const ActionCandidate> candidates, double max_span_m) {
+    const StateCode state = mdp.state().wall;
+    holds_.clear();
+    failed_.clear();
+    for (const ActionCandidate& c : candidates) {
+      holds_.push_back(c.wall);
+      const Experience* known = experience.find(state, c.wall);
+      if (known != nullptr && known->next_wall_state == state) failed_.push_back(c.wall);
+    }
+    forward_kinematics(model_, body_, mdp.posture());
+    const Eigen::Vector3d centre = centre_of_mass(model_, body_);
+    scores_.resize(candidates.size());
+    score_candidates(model_, network_, workspace_,
+                     {mdp.wall(), mdp.configuration(), mdp.posture(), centre, holds_, max_span_m, failed_}, scores_);
+    return scores_;
+  }
+
+ private:
+  const BodyModel& model_;
+  const PolicyNetwork& network_;
+  PolicyWorkspace workspace_;
+  BodyData body_;
+  std::vector<int> holds_, failed_;
+  std::vector<double> scores_;
+};
 
 // One climb from the start following the best Q_wall action, recorded in `result`. The
 // cache may grow, but no table is updated.
@@ -134,10 +173,12 @@ LoopState load_state(const RunCheckpoints& checkpoints, int iterations, RunResul
 
 RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningParameters& parameters,
                        std::uint64_t seed, const QTable* initial_q_grid, const std::function<void(int)>& progress,
-                       const RunCheckpoints* checkpoints) {
+                       const RunCheckpoints* checkpoints, const PolicyNetwork* policy) {
   ClimbingMdp mdp(model, wall, parameters.climbing, parameters.dyna.rates.gamma);
   DynaQAgent agent(mdp.wall_action_count(), mdp.grid_action_count(), parameters.dyna, seed);
   if (initial_q_grid != nullptr) agent.set_q_grid(*initial_q_grid);
+  std::optional<CandidateScores> scores;
+  if (policy != nullptr && parameters.dyna.transfer == TransferMode::Network) scores.emplace(model, *policy, wall);
   RunResult result;
   result.can_fall = checks_stances(parameters.climbing.physics.model);
   result.iterations.reserve(parameters.iterations);
@@ -154,7 +195,10 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
   for (int& iteration = loop.iteration; iteration < parameters.iterations;) {
     const StateCouple state = mdp.state();
     const std::span<const ActionCandidate> candidates = mdp.candidates();
-    const ActionChoice choice = agent.choose(state, candidates);
+    const ActionChoice choice =
+        agent.choose(state, candidates,
+                     scores ? scores->of(mdp, agent.model(), candidates, parameters.climbing.filter.max_span_m)
+                            : std::span<const double>());
     const ActionCandidate action = candidates[choice.candidate];
     IterationRecord record{episode, choice.regime, wall.holds[action.wall].id};
     record.grid_state = static_cast<std::uint32_t>(state.grid);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "climbing/climbing_mdp.hpp"
+#include "climbing/policy_network.hpp"
 #include "learning/dyna_q.hpp"
 
 namespace crux {
@@ -83,10 +84,11 @@ struct RunCheckpoints {
 };
 
 // Deterministic in `seed`. `initial_q_grid` starts the grid table from transferred
-// knowledge; Q_wall always starts empty.
+// knowledge; Q_wall always starts empty. `policy`: under the network transfer mode, the
+// network whose scores of each state's candidates order exploration.
 RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningParameters& parameters,
                        std::uint64_t seed, const QTable* initial_q_grid = nullptr,
                        const std::function<void(int iterations_done)>& progress = {},
-                       const RunCheckpoints* checkpoints = nullptr);
+                       const RunCheckpoints* checkpoints = nullptr, const PolicyNetwork* policy = nullptr);
 
 }  // namespace crux

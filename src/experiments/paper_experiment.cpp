@@ -139,9 +139,18 @@ void size_condition_results(int runs, ExperimentResult& result) {
 
 }  // namespace
 
+void require_experiment_transfer_mode(const ExperimentParameters& parameters) {
+  if (parameters.learning.dyna.transfer == TransferMode::Network) {
+    throw InputError("experiment.transfer",
+                     "network orders exploration by a policy file, which crux paper and crux sweep do not take: run "
+                     "crux train --transfer network --policy FILE on each wall");
+  }
+}
+
 ExperimentResult run_paper_experiment(const BodyModel& model, const ExperimentParameters& parameters,
                                       const std::function<void(int)>& progress,
                                       const std::function<void()>& interruption_point) {
+  require_experiment_transfer_mode(parameters);
   const auto started = std::chrono::steady_clock::now();
   const int walls = parameters.wall_pairs, runs = parameters.runs();
   std::optional<tbb::global_control> limit;

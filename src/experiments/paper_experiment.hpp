@@ -90,6 +90,10 @@ struct ExperimentResult {
   double seconds = 0.0;  // wall clock, informative
 };
 
+// InputError naming experiment.transfer for the network mode, whose policy file the
+// experiment (and a sweep of it) does not take: it learns each wall with crux train.
+void require_experiment_transfer_mode(const ExperimentParameters& parameters);
+
 // Progress: the number of runs finished out of learning_runs() (called under a lock).
 // `interruption_point` is called often from the worker threads (before each wall and at
 // every learning iteration); an exception it throws stops the experiment and leaves it.

@@ -1,5 +1,7 @@
 #include "experiments/run_inputs.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "agent_space/agent_descriptor.hpp"
@@ -35,6 +37,16 @@ void check_q_grid(const QTable& q_grid, const GridParameters& grid, const std::s
                        fmt::format("state code {} does not exist on a {} x {} grid", state, grid.columns, grid.rows));
     }
   });
+}
+
+PolicyNetwork load_checked_policy(const std::string& path, const FilterParameters& filter) {
+  PolicyNetwork network = load_policy_network(path);
+  if (std::abs(network.max_span_m - filter.max_span_m) > 1e-9) {
+    throw InputError(path, fmt::format("a policy trained with filter.max_span = {} m, and this run has {} m: its "
+                                       "observation would be another",
+                                       network.max_span_m, filter.max_span_m));
+  }
+  return network;
 }
 
 QTable load_q_grid(const std::string& path, const GridParameters& grid) {

@@ -2,6 +2,7 @@
 // The inputs a configured command reads, checked the same way for every caller: the
 // body model, the wall (a file or a seed) and a transferred Q_grid.
 
+#include "climbing/policy_network.hpp"
 #include "experiments/experiment_config.hpp"
 #include "learning/q_table.hpp"
 
@@ -24,5 +25,10 @@ void check_q_grid(const QTable& q_grid, const GridParameters& grid, const std::s
 // A Q_grid file for `grid`: InputError(path, ...) when its tile count or one of its
 // state codes does not belong to that grid.
 QTable load_q_grid(const std::string& path, const GridParameters& grid);
+
+// The policy network of a file (climbing/policy_network), refused with an InputError
+// naming the file when it was trained under another filter.max_span: its observation's
+// lengths and bounds would be another's.
+PolicyNetwork load_checked_policy(const std::string& path, const FilterParameters& filter);
 
 }  // namespace crux

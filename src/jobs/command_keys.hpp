@@ -12,7 +12,7 @@ namespace crux {
 inline const ParameterSet kTrainKeys{
     {"experiment.urdf", "experiment.seed", "experiment.iterations", "experiment.beginning",
      "experiment.threshold_length", "experiment.greedy_cap", "experiment.checkpoint_every", "experiment.transfer",
-     "learning", "reward", "ik", "physics", "perform", "filter", "grid", "wall"},
+     "experiment.policy", "learning", "reward", "ik", "physics", "perform", "filter", "grid", "wall"},
     {"wall.name", "wall.count"},
     true};
 inline const ParameterSet kTransferKeys{
@@ -24,8 +24,8 @@ inline const ParameterSet kTransferKeys{
 // The paper's experiment (crux paper): its walls are drawn from the experiment seed.
 inline const ParameterSet kPaperKeys{
     {"experiment", "learning", "reward", "ik", "physics", "filter", "grid", "wall", "training_wall"},
-    {"experiment.q_grid", "experiment.checkpoint_every", "experiment.plan_max_replans", "experiment.run",
-     "experiment.climb", "wall.file", "wall.seed", "wall.name", "wall.count"}};
+    {"experiment.q_grid", "experiment.policy", "experiment.checkpoint_every", "experiment.plan_max_replans",
+     "experiment.run", "experiment.climb", "wall.file", "wall.seed", "wall.name", "wall.count"}};
 
 // An exact plan (crux plan), and a climb performed in MuJoCo (crux perform): under
 // physics.model = dynamic, the plan repaired by performing it.

@@ -9,16 +9,40 @@
 
 namespace crux {
 
-LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
-  ExperimentConfig& config = job.config;
-  // Before any input is loaded: a transfer run starts from a Q_grid, the others from empty tables.
-  const bool starts_from_q_grid = job.condition == Condition::Transfer || job.continues_training;
+namespace {
+
+// Before any input is loaded: a transfer run starts from a Q_grid, the others from empty
+// tables; the network mode's run from a policy file instead.
+void check_starting_knowledge(const LearningJob& job, bool starts_from_q_grid) {
+  const ExperimentConfig& config = job.config;
   if (starts_from_q_grid && !job.q_grid && config.q_grid.empty()) {
     throw InputError("experiment.q_grid", "give the Q_grid to transfer (q_grid.bin of a training run)");
   }
   if (!starts_from_q_grid && (job.q_grid || !config.q_grid.empty())) {
     throw InputError("experiment.q_grid", "only a transfer run starts from a Q_grid");
   }
+  const bool network = config.settings.learning.dyna.transfer == TransferMode::Network;
+  if (network && starts_from_q_grid) {
+    throw InputError(
+        "experiment.transfer",
+        "network learns from a policy file, not a Q_grid: run crux train --transfer network --policy FILE");
+  }
+  if (network && config.policy.empty()) {
+    throw InputError("experiment.policy",
+                     "experiment.transfer = network orders exploration by a policy network: give its file "
+                     "(examples/python/policy_baseline.py train writes one)");
+  }
+  if (!network && !config.policy.empty()) {
+    throw InputError("experiment.policy", "only experiment.transfer = network uses a policy file");
+  }
+}
+
+}  // namespace
+
+LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
+  ExperimentConfig& config = job.config;
+  const bool starts_from_q_grid = job.condition == Condition::Transfer || job.continues_training;
+  check_starting_knowledge(job, starts_from_q_grid);
   const bool writes_folder = job.output.has_value();
   if (writes_folder && (job.wall || job.q_grid)) {
     throw InputError(job.wall ? "wall" : "q_grid",
@@ -37,6 +61,8 @@ LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
   if (!job.config_path.empty()) check_recorded_provenance(config, provenance, job.config_path);
   const Wall wall = job.wall ? std::move(*job.wall) : load_configured_wall(config);
   const GridParameters& grid = config.settings.learning.climbing.grid;
+  std::optional<PolicyNetwork> policy;
+  if (!config.policy.empty()) policy = load_checked_policy(config.policy, config.settings.learning.climbing.filter);
   std::optional<QTable> initial = std::move(job.q_grid);
   if (initial) {
     check_q_grid(*initial, grid, "q_grid");
@@ -63,7 +89,7 @@ LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
     // first checkpoint starts again.
     remove_crux_temporaries(*job.output);
     if (!job.overwrite) checkpoints.resume = read_checkpoint(checkpoint_file, identity).value_or("");
-    check_output_folder(*job.output, {config.urdf, config.wall_file, config.q_grid, job.config_path},
+    check_output_folder(*job.output, {config.urdf, config.wall_file, config.q_grid, config.policy, job.config_path},
                         job.overwrite || !checkpoints.resume.empty());
     checkpoints.save = [&job, identity](std::string state, int) {
       write_checkpoint(*job.output, checkpoint_file_bytes(identity, state));
@@ -78,7 +104,7 @@ LearningJobOutcome run_learning_job(LearningJob job, const JobHooks& hooks) {
     if (hooks.progress) hooks.progress(done);
   };
   RunResult run = run_learning(model, wall, config.settings.learning, config.settings.seed,
-                               initial ? &*initial : nullptr, progress, &checkpoints);
+                               initial ? &*initial : nullptr, progress, &checkpoints, policy ? &*policy : nullptr);
   outcome.result = single_run_result(std::move(run), wall, config.wall_seed, config.settings.seed, job.condition);
   outcome.summary = summary_json(outcome.result, nullptr, config.settings, provenance);
   if (writes_folder) write_run_folder(*job.output, outcome.result, model, grid, config_toml, outcome.summary);

@@ -46,7 +46,17 @@ ActionChoice select_action(const QTable& q_wall, const QTable& q_grid, const Sta
       candidates, [&](const ActionCandidate& c) { return q_wall.value(state.wall, c.wall); },
       [](const ActionCandidate& c) { return c.wall; }, [](const ActionCandidate&) { return true; }, streams.tie_break,
       iteration, kWallTable);
-  if (rule.wall_tie_order != nullptr) {
+  if (!rule.wall_tie_scores.empty()) {
+    if (rule.wall_tie_scores.size() != candidates.size()) {
+      throw std::invalid_argument("select_action: wall_tie_scores needs one score per candidate");
+    }
+    const double best_wall_value = q_wall.value(state.wall, candidates[w].wall);
+    w = best_candidate(
+        candidates, [&](const ActionCandidate& c) { return rule.wall_tie_scores[&c - candidates.data()]; },
+        [](const ActionCandidate& c) { return c.wall; },
+        [&](const ActionCandidate& c) { return q_wall.value(state.wall, c.wall) == best_wall_value; },
+        streams.tie_break, iteration, kWallTable);
+  } else if (rule.wall_tie_order != nullptr) {
     const QTable& order = *rule.wall_tie_order;
     const double best_wall_value = q_wall.value(state.wall, candidates[w].wall);
     const long ordered = best_candidate(

@@ -71,6 +71,9 @@ struct SelectionRule {
   // the representatives of the agent-space actions taken in this table, the largest value
   // first; the rest of the ties, or all of them if none is taken, to the random tie-break.
   const QTable* wall_tie_order = nullptr;
+  // When not empty, one score per candidate: w-greedy's ties go to the highest score,
+  // equal scores to the random tie-break (wall_tie_order is then not used).
+  std::span<const double> wall_tie_scores;
 };
 
 // Throws std::invalid_argument when there is no candidate.

@@ -41,7 +41,8 @@ void DynaQAgent::observe(const StateCouple& state, std::span<const ActionCandida
   }
 }
 
-ActionChoice DynaQAgent::choose(const StateCouple& state, std::span<const ActionCandidate> candidates) {
+ActionChoice DynaQAgent::choose(const StateCouple& state, std::span<const ActionCandidate> candidates,
+                                std::span<const double> scores) {
   SelectionRule rule;
   if (settings_.transfer == TransferMode::Informed || settings_.transfer == TransferMode::Prior) {
     grid_excluded_.assign(candidates.size(), 0);
@@ -55,11 +56,13 @@ ActionChoice DynaQAgent::choose(const StateCouple& state, std::span<const Action
     }
     rule.grid_excluded = grid_excluded_;
     rule.grid_taken_only = settings_.transfer == TransferMode::Prior;
-  } else if (settings_.transfer == TransferMode::Seeded || settings_.transfer == TransferMode::Ordered) {
+  } else if (settings_.transfer == TransferMode::Seeded || settings_.transfer == TransferMode::Ordered ||
+             settings_.transfer == TransferMode::Network) {
     rule.wall_requires_taken = false;
     rule.grid_greedy = false;
-    // Without a transferred table there is nothing to order ties by: the seeded rule.
+    // Without a transferred table or scores there is nothing to order ties by: the seeded rule.
     if (settings_.transfer == TransferMode::Ordered && transferred_) rule.wall_tie_order = &*transferred_;
+    if (settings_.transfer == TransferMode::Network) rule.wall_tie_scores = scores;
   }
   return select_action(q_wall_, q_grid_, state, candidates, settings_.epsilon, selection_streams_, steps_, rule);
 }

@@ -56,8 +56,10 @@ class DynaQAgent {
   // In the seeded mode, a state seen for the first time has its Q_wall pairs seeded.
   void observe(const StateCouple& state, std::span<const ActionCandidate> candidates);
 
-  // Algorithm 3, or the rule of the transfer mode.
-  ActionChoice choose(const StateCouple& state, std::span<const ActionCandidate> candidates);
+  // Algorithm 3, or the rule of the transfer mode. scores: the network mode's, one per
+  // candidate (none: the mode's rule without them, which is the seeded rule).
+  ActionChoice choose(const StateCouple& state, std::span<const ActionCandidate> candidates,
+                      std::span<const double> scores = {});
 
   // Algorithm 2, lines 22-29. The next state must have been observed.
   void learn(const Experience& experience);

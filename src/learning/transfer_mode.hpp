@@ -22,20 +22,24 @@
 //             optimistic), with the ties of Q_wall's best value broken by the transferred
 //             Q_grid's best taken value: it orders which untried move comes first and never
 //             raises a value (learned action priors, Rosman and Ramamoorthy 2012).
+//   network:  ordered, with the ties broken by a score of each candidate given from
+//             outside (the climber's learnt policy network, experiments/learning_run),
+//             the highest first: knowledge learnt once across many walls, no Q_grid.
 
 #include "common/enum_names.hpp"
 
 namespace crux {
 
-enum class TransferMode { Paper, Informed, Prior, Seeded, Shaping, Ordered };
+enum class TransferMode { Paper, Informed, Prior, Seeded, Shaping, Ordered, Network };
 template <>
 struct EnumNames<TransferMode> {
-  static constexpr std::array<EnumName<TransferMode>, 6> entries{{{TransferMode::Paper, "paper"},
+  static constexpr std::array<EnumName<TransferMode>, 7> entries{{{TransferMode::Paper, "paper"},
                                                                   {TransferMode::Informed, "informed"},
                                                                   {TransferMode::Prior, "prior"},
                                                                   {TransferMode::Seeded, "seeded"},
                                                                   {TransferMode::Shaping, "shaping"},
-                                                                  {TransferMode::Ordered, "ordered"}}};
+                                                                  {TransferMode::Ordered, "ordered"},
+                                                                  {TransferMode::Network, "network"}}};
 };
 
 }  // namespace crux

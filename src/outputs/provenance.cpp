@@ -37,6 +37,10 @@ Provenance record_provenance(const ExperimentConfig& config) {
     p.q_grid = absolute_path(config.q_grid);
     p.q_grid_sha256 = sha256_of_file(config.q_grid, "Q-table file");
   }
+  if (!config.policy.empty()) {
+    p.policy = absolute_path(config.policy);
+    p.policy_sha256 = sha256_of_file(config.policy, "policy file");
+  }
   return p;
 }
 
@@ -54,6 +58,8 @@ std::string provenance_toml(const Provenance& p) {
   line("wall_sha256", p.wall_sha256);
   line("q_grid", p.q_grid);
   line("q_grid_sha256", p.q_grid_sha256);
+  line("policy", p.policy);
+  line("policy_sha256", p.policy_sha256);
   return out;
 }
 
@@ -72,6 +78,10 @@ nlohmann::ordered_json provenance_json(const Provenance& p) {
   out["wall_seed"] = p.wall_seed ? nlohmann::ordered_json(*p.wall_seed) : nlohmann::ordered_json(nullptr);
   out["q_grid"] = text_or_null(p.q_grid);
   out["q_grid_sha256"] = text_or_null(p.q_grid_sha256);
+  if (!p.policy.empty()) {  // only the network mode's runs have one: the others' summaries stay as they were
+    out["policy"] = p.policy;
+    out["policy_sha256"] = p.policy_sha256;
+  }
   return out;
 }
 
@@ -84,7 +94,8 @@ void check_recorded_provenance(const ExperimentConfig& config, const Provenance&
   };
   for (const Digest& d : {Digest{"urdf_sha256", "URDF", now.urdf, now.urdf_sha256},
                           Digest{"wall_sha256", "wall file", now.wall_file, now.wall_sha256},
-                          Digest{"q_grid_sha256", "Q_grid file", now.q_grid, now.q_grid_sha256}}) {
+                          Digest{"q_grid_sha256", "Q_grid file", now.q_grid, now.q_grid_sha256},
+                          Digest{"policy_sha256", "policy file", now.policy, now.policy_sha256}}) {
     const auto recorded = config.recorded_provenance.find(d.key);
     if (recorded == config.recorded_provenance.end() || recorded->second == d.sha256) continue;
     throw InputError(config_path,

@@ -21,6 +21,7 @@ struct Provenance {
   std::string wall_file, wall_sha256;
   std::optional<std::uint64_t> wall_seed;
   std::string q_grid, q_grid_sha256;
+  std::string policy, policy_sha256;  // the network transfer mode's policy file
 };
 
 // The body model path (the default one when none is configured), made absolute.

@@ -50,6 +50,7 @@ SweepPlan plan_sweep(std::vector<std::string> keys, std::vector<SweepCell> cells
     const auto [group, inserted] = groups.emplace(identity, groups.size());
     cells[c].wall_group = group->second;
     const ExperimentParameters& s = cells[c].config.settings;
+    require_experiment_transfer_mode(s);
     if (inserted) {
       first_cell.push_back(c);
       group_walls.push_back(0);

@@ -91,6 +91,54 @@ TEST(CliLearning, ConfigFileAndFlagsCombine) {
   EXPECT_NE(text.find("seed = 11"), std::string::npos) << "the flag overrides the file";
 }
 
+TEST(CliLearning, TrainUnderTheNetworkModeRecordsThePolicyItWasOrderedBy) {
+  const auto policy = testing::write_temporary("cli_height_policy.json", testing::linear_policy_json(57, 1.0));
+  const fs::path out = learning_scratch("network");
+  const auto outcome = run_crux("train --wall-seed 3 --iterations 300 --transfer network --policy " + policy.string() +
+                                " -o " + out.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  std::ifstream in(out / "summary.json");
+  const auto summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["provenance"]["policy"], fs::absolute(policy).lexically_normal().string());
+  EXPECT_EQ(summary["provenance"]["policy_sha256"].get<std::string>().size(), 64u);
+  const fs::path replay = learning_scratch("network_replay");
+  const auto replayed = run_crux("train --config " + (out / "config.toml").string() + " -o " + replay.string());
+  ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
+  const auto text = [](const fs::path& file) {
+    std::ifstream file_in(file);
+    return std::string((std::istreambuf_iterator<char>(file_in)), std::istreambuf_iterator<char>());
+  };
+  EXPECT_EQ(text(out / "iterations.csv"), text(replay / "iterations.csv"));
+}
+
+// Each: one line naming the input, exit code 2, no folder written.
+TEST(CliLearning, BadPolicyInputsAreOneLineExit2AndWriteNothing) {
+  const auto corrupt = testing::write_temporary("cli_corrupt_policy.json", "{\"format\": \"crux-policy\", ");
+  const auto numeric = testing::write_temporary(
+      "cli_numeric_policy.json", testing::replaced(testing::linear_policy_json(57, 1.0), "\"reach\"", "\"numeric\""));
+  const auto other_span = testing::write_temporary("cli_span_policy.json", testing::linear_policy_json(57, 1.0, 3.5));
+  const auto good = testing::write_temporary("cli_good_policy.json", testing::linear_policy_json(57, 1.0));
+  const std::string missing = testing::temporary_path("cli_missing_policy.json").string();
+  const std::string train = "train --wall-seed 3 --iterations 50 ";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {train + "--transfer network --policy " + missing, missing + ": no such file"},
+      {train + "--transfer network --policy " + corrupt.string(), corrupt.string() + ": not JSON"},
+      {train + "--transfer network --policy " + numeric.string(), "a policy for the \"numeric\" observation"},
+      {train + "--transfer network --policy " + other_span.string(), "filter.max_span = 3.5 m"},
+      {train + "--transfer network", "--policy: experiment.transfer = network orders exploration"},
+      {train + "--transfer ordered --policy " + good.string(), "only experiment.transfer = network uses a policy"},
+      {"paper --transfer network --walls 2 --iterations 50", "--transfer: network orders exploration by"},
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const fs::path out = learning_scratch(fmt::format("bad_policy_{}", i));
+    const auto outcome = run_crux(cases[i].first + " -o " + out.string());
+    EXPECT_EQ(outcome.exit_code, 2) << cases[i].first << ": " << outcome.err;
+    EXPECT_EQ(testing::count_lines(outcome.err), 1) << outcome.err;
+    EXPECT_NE(outcome.err.find(cases[i].second), std::string::npos) << outcome.err;
+    EXPECT_FALSE(fs::exists(out)) << cases[i].first;
+  }
+}
+
 TEST(CliLearning, PlanReportsItsLength) {
   const auto outcome = run_crux("plan --wall-seed 3 --json");
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;

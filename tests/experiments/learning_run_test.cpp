@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <set>
+
 #include "body/kinematics.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
@@ -37,6 +39,40 @@ TEST(LearningRun, TransferAndControlAgreeUntilTheFirstGGreedyChoice) {
   }
   EXPECT_GT(compared, 0) << "some iterations came before a g-greedy choice";
   RecordProperty("iterations_compared", compared);
+}
+
+// Under the network mode every first move of a state goes to the candidate the policy
+// scores highest (all untried moves tie in Q_wall, epsilon is 0): the highest hold with a
+// policy that scores height, the lowest with its opposite, and without a policy the
+// seeded rule's random tie-break.
+TEST(LearningRun, TheNetworkModeTriesTheHighestScoredMoveFirst) {
+  const BodyModel& model = testing::human_model();
+  LearningParameters parameters;
+  parameters.iterations = 1;
+  parameters.dyna.epsilon = 0.0;
+  parameters.dyna.transfer = TransferMode::Network;
+  const Wall wall = generate_random_wall(3);
+  const ClimbingMdp mdp(model, wall, parameters.climbing);
+  double lowest = 1e9, highest = -1e9;
+  int lowest_id = -1, highest_id = -1;
+  for (const ActionCandidate& c : mdp.candidates()) {
+    const Hold& hold = wall.holds[c.wall];
+    if (hold.position.z() < lowest) lowest = hold.position.z(), lowest_id = hold.id;
+    if (hold.position.z() > highest) highest = hold.position.z(), highest_id = hold.id;
+  }
+  const auto first_move = [&](double weight, std::uint64_t seed) {
+    const PolicyNetwork up = load_policy_network(
+        testing::write_temporary(fmt::format("height_{}.json", weight), testing::linear_policy_json(57, weight))
+            .string());
+    return run_learning(model, wall, parameters, seed, nullptr, {}, nullptr, &up).iterations.at(0).hold_id;
+  };
+  std::set<int> unscored;
+  for (const std::uint64_t seed : {1, 2, 3, 4, 5, 6}) {
+    EXPECT_EQ(first_move(1.0, seed), highest_id) << "seed " << seed;
+    EXPECT_EQ(first_move(-1.0, seed), lowest_id) << "seed " << seed;
+    unscored.insert(run_learning(model, wall, parameters, seed).iterations.at(0).hold_id);
+  }
+  EXPECT_GT(unscored.size(), 1U) << "without a policy the tie is random";
 }
 
 // The recorded climb is the last completed episode's: the start posture, then one

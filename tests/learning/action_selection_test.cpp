@@ -261,5 +261,43 @@ TEST(ActionSelection, AnEmptyTieOrderChoosesAsEpsilonGreedyOnQWall) {
   }
 }
 
+// The network mode's rule: epsilon-greedy on Q_wall, w-greedy's ties broken by scores.
+SelectionRule scored_by(const std::vector<double>& scores) {
+  SelectionRule rule{false, false, {}};
+  rule.wall_tie_scores = scores;
+  return rule;
+}
+
+// All four untried (Q_wall 0): the tie goes to candidate 3, the highest score, at every
+// iteration; with candidates 1 and 3 scored equal, the random tie-break picks between them.
+TEST(ActionSelection, TieScoresPickTheTiedCandidateWithTheHighestScore) {
+  QTable wall(4), grid(40);
+  const SelectionStreams streams(1);
+  const std::vector<double> scores{0.5, -1.0, 0.2, 2.5};
+  std::set<std::size_t> between_equals;
+  for (int i = 0; i < 100; ++i) {
+    const ActionChoice c = select_action(wall, grid, kState, kCandidates, 0.0, streams, i, scored_by(scores));
+    EXPECT_EQ(c.regime, Regime::WGreedy);
+    EXPECT_EQ(c.candidate, 3u) << "iteration " << i;
+    between_equals.insert(
+        select_action(wall, grid, kState, kCandidates, 0.0, streams, i, scored_by({0.0, 1.0, -1.0, 1.0})).candidate);
+  }
+  EXPECT_EQ(between_equals, (std::set<std::size_t>{1, 3}));
+}
+
+// Hold 1 untried (0) is Q_wall's best over tried holds 0, 2 and 3, whatever their scores.
+TEST(ActionSelection, TieScoresNeverOverturnQWall) {
+  QTable wall(4), grid(40);
+  taken(wall, 5, 0, -3.0);
+  taken(wall, 5, 2, -2.0);
+  taken(wall, 5, 3, -4.0);
+  const SelectionStreams streams(1);
+  const std::vector<double> scores{9.0, -9.0, 9.0, 9.0};
+  EXPECT_EQ(select_action(wall, grid, kState, kCandidates, 0.0, streams, 0, scored_by(scores)).candidate, 1u);
+  const std::vector<double> too_few{1.0, 2.0};
+  EXPECT_THROW(select_action(wall, grid, kState, kCandidates, 0.0, streams, 0, scored_by(too_few)),
+               std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace crux

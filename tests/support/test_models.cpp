@@ -9,10 +9,21 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace crux::testing {
+
+std::string linear_policy_json(int column, double weight, double max_span) {
+  std::vector<double> row(66, 0.0);
+  row.at(static_cast<std::size_t>(column)) = weight;
+  return fmt::format(R"({{"format": "crux-policy", "version": 1, "observation": "reach", "max_candidates": 32, )"
+                     R"("max_span": {}, "activation": "relu", "slot_layers": [{{"weight": [[{}]], "bias": [0]}}], )"
+                     R"("value_layers": []}})",
+                     max_span, fmt::join(row, ", "));
+}
 
 const BodyModel& human_model() {
   static const BodyModel model = load_body_model(default_body_model_path());

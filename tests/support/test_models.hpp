@@ -32,6 +32,11 @@ std::string synthetic_tree_urdf_for_mujoco(std::uint64_t seed);
 // Replaces the first occurrence of `from` (which must exist) by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to);
 
+// A policy file's text (climbing/policy_network) of one linear layer: each candidate's
+// score is `weight` times input `column` of the 66 the network reads (57: the candidate's
+// height over the free limb's grasp point, over the span), trained under max_span.
+std::string linear_policy_json(int column, double weight, double max_span = 2.8);
+
 // This test process's own folder under the temporary directory (TMPDIR), a fresh
 // crux-tests-XXXXXX made on first use and removed when the process ends: ctest runs test
 // cases in parallel processes, and no test writes to a path another process or the
