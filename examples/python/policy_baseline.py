@@ -164,9 +164,10 @@ class SlotPolicy(nn.Module):
     so that a slot means "this hold" whatever the wall and the order; the value reads the
     state alone."""
 
-    def __init__(self, hidden):
+    def __init__(self, hidden, max_span):
         super().__init__()
         self.hidden = hidden
+        self.max_span = max_span  # the lengths' scale: filter.max_span in training
         self.slot_net = mlp([STATE_SIZE + SLOT_SIZE, hidden, hidden, 1])
         self.value_net = mlp([STATE_SIZE, hidden, hidden, 1])
 
@@ -195,9 +196,14 @@ def layers_of(sequential):
             for layer in sequential if isinstance(layer, nn.Conv1d)]
 
 
-def save_policy(policy, path, span, training):
+def configured_max_span():
+    """filter.max_span's default, which the environments train under (climbing_config sets no other)."""
+    return next(key["default"] for key in crux.config_keys() if key["key"] == "filter.max_span")
+
+
+def save_policy(policy, path, training):
     record = {"format": POLICY_FORMAT, "version": POLICY_VERSION, "observation": OBSERVATION,
-              "max_candidates": MAX_CANDIDATES, "max_span": span, "activation": "relu",
+              "max_candidates": MAX_CANDIDATES, "max_span": policy.max_span, "activation": "relu",
               "slot_layers": layers_of(policy.slot_net), "value_layers": layers_of(policy.value_net),
               "training": training}
     path = pathlib.Path(path)
@@ -222,7 +228,7 @@ def load_policy(path):
                          f"{record.get('version')!r}; this evaluator takes {OBSERVATION!r} version {POLICY_VERSION}")
     try:
         hidden = len(record["slot_layers"][0]["bias"])
-        policy = SlotPolicy(hidden)
+        policy = SlotPolicy(hidden, float(record["max_span"]))
         for sequential, layers in ((policy.slot_net, record["slot_layers"]), (policy.value_net, record["value_layers"])):
             convolutions = [layer for layer in sequential if isinstance(layer, nn.Conv1d)]
             if len(convolutions) != len(layers):
@@ -336,8 +342,8 @@ def train(args, progress=None):
     config = climbing_config(args.physics_model)
     envs = crux.gym.VectorClimbEnv(args.envs, wall=args.train_walls, observation=OBSERVATION, wall_order="sample",
                                    config=config, max_episode_steps=args.episode_steps)
-    span = envs.single_observation_space["candidates"].high.max() / 3
-    policy = SlotPolicy(args.hidden)
+    span = configured_max_span()
+    policy = SlotPolicy(args.hidden, span)
     optimiser = torch.optim.Adam(policy.parameters(), lr=args.lr, eps=1e-5)
     generator = torch.Generator().manual_seed(args.seed)
     rng = np.random.default_rng([args.seed, 1])
@@ -380,7 +386,7 @@ def train(args, progress=None):
                 progress(record)
     training = {"command": args.command, "seed": args.seed, "steps": updates * args.rollout * args.envs,
                 "settings": {key: getattr(args, key) for key in SETTINGS}}
-    return policy, history, training, span
+    return policy, history, training
 
 
 VALIDATION_KEYS = ("finished", "mean_length", "mean_length_ratio", "within_1_5_plans")
@@ -391,12 +397,12 @@ SETTINGS = ("lr", "entropy", "hidden", "rollout", "envs", "epochs", "minibatch",
 # --- evaluation ------------------------------------------------------------------------------
 
 
-def climb(policy, env, span, cap=CLIMB_CAP):
+def climb(policy, env, cap=CLIMB_CAP):
     """One greedy climb: (finished, actions taken, failed moves)."""
     obs, _ = env.reset()
     failed = 0
     for taken in range(1, cap + 1):
-        action = greedy_slot(policy, *single_features(obs, span))
+        action = greedy_slot(policy, *single_features(obs, policy.max_span))
         obs, _, terminated, truncated, info = env.step(action)
         failed += not info["reached"]
         if terminated:
@@ -432,8 +438,7 @@ def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None):
         except ValueError as error:  # under the static model, a start that does not hold
             skipped.append({"wall_seed": seed, "why": str(error)})
             continue
-        span = env.observation_space["candidates"].high.max() / 3
-        done, length, failed = climb(policy, env, span)
+        done, length, failed = climb(policy, env)
         wall = {"wall_seed": seed, "finished": done, "length": length, "failed_moves": failed}
         if plans is not None:
             wall["plan_length"] = plans.get(seed)
@@ -465,15 +470,18 @@ def command_train(args):
     def progress(record):
         print(json.dumps(record), file=sys.stderr, flush=True)
 
-    policy, history, training, span = train(args, progress)
+    policy, history, training = train(args, progress)
     training["history"] = history
-    save_policy(policy, args.out, float(span), training)
+    save_policy(policy, args.out, training)
     print(json.dumps({"policy": str(args.out), "steps": training["steps"], "last": history[-1] if history else None}))
 
 
 def command_evaluate(args):
     try:
         policy, _ = load_policy(args.policy)
+        if abs(policy.max_span - configured_max_span()) > 1e-9:
+            raise ValueError(f"{args.policy}: a policy trained with filter.max_span = {policy.max_span} m, and the "
+                             f"walls are climbed with {configured_max_span()} m: its observation would be another")
     except ValueError as error:
         print(f"policy_baseline.py: --policy: {error}", file=sys.stderr)
         sys.exit(2)
@@ -489,7 +497,7 @@ def command_evaluate(args):
 # best `keep` of the stage before for more steps, and 3 seeds of the last two; a setting's
 # score is its validation climbs' share that finish within 1.5 times the plan's length.
 SEARCH_GRID = {"lr": [3e-4, 1e-3], "entropy": [0.003, 0.01], "hidden": [64, 128], "rollout": [64, 128],
-               "gamma": [0.97, 0.99]}
+               "gamma": [0.95, 0.99]}
 STAGES = [{"steps": 500_000, "keep": None, "seeds": [1]}, {"steps": 2_000_000, "keep": 8, "seeds": [1]},
           {"steps": 6_000_000, "keep": 2, "seeds": [1, 2, 3]}]
 SEARCH_LOG = "search.jsonl"
@@ -533,7 +541,9 @@ def command_search(args):
     plans_path = args.out / "validation_plans.json"
     if not plans_path.exists():
         plans = plan_lengths(args.validation_walls, args.physics_model)
-        plans_path.write_text(json.dumps({str(seed): length for seed, length in plans.items()}))
+        partial = plans_path.with_name(f"{plans_path.name}.{os.getpid()}.partial")
+        partial.write_text(json.dumps({str(seed): length for seed, length in plans.items()}))
+        os.replace(partial, plans_path)  # parts started together each write it whole
     args.validation_plans = {int(seed): length for seed, length in json.loads(plans_path.read_text()).items()}
     stage = STAGES[args.stage]
     done = {(setting_name(r["setting"]), r["seed"]) for r in records if r["stage"] == args.stage}
@@ -548,10 +558,10 @@ def command_search(args):
         run.seed, run.steps = seed, args.steps or stage["steps"]
         run.command = (f"examples/python/policy_baseline.py train --steps {run.steps} --seed {seed} "
                        + " ".join(f"--{key} {value:g}" for key, value in setting.items()))
-        policy, history, training, span = train(run)
+        policy, history, training = train(run)
         validation = evaluate(policy, args.validation_walls, args.physics_model, args.validation_plans)
         path = args.out / "policies" / f"stage{args.stage}-{name}-seed{seed}.json"
-        save_policy(policy, path, float(span), dict(training, history=history))
+        save_policy(policy, path, dict(training, history=history))
         record = {"stage": args.stage, "setting": setting, "seed": seed, "steps": run.steps,
                   "seconds": history[-1]["seconds"] if history else None, "history": history,
                   "validation": {key: validation[key] for key in VALIDATION_KEYS}, "policy": str(path)}

@@ -43,10 +43,10 @@ def reach_share(policy, walls):
     reached = taken = 0
     for seed in walls:
         env = crux.gym.ClimbEnv(seed, "reach")
-        span = env.observation_space["candidates"].high.max() / 3
         obs, _ = env.reset()
         for _ in range(60):
-            obs, _, terminated, _, info = env.step(baseline.greedy_slot(policy, *baseline.single_features(obs, span)))
+            features = baseline.single_features(obs, policy.max_span)
+            obs, _, terminated, _, info = env.step(baseline.greedy_slot(policy, *features))
             reached += info["reached"]
             taken += 1
             if terminated:
@@ -59,7 +59,7 @@ def test_a_short_run_learns_to_choose_moves_that_reach_and_repeats_itself(tmp_pa
     capsys.readouterr()
     trained, record = baseline.load_policy(first)
     baseline.deterministic(1)
-    untrained = baseline.SlotPolicy(32)
+    untrained = baseline.SlotPolicy(32, 2.8)
     before, after = reach_share(untrained, range(4)), reach_share(trained, range(4))
     print(f"share of greedy moves that reach on the training walls: {before:.3f} untrained, {after:.3f} trained")
     # Measured: 0.0 untrained (its greedy choice repeats a failed move), 0.996 trained.
@@ -98,9 +98,9 @@ def hand_climb(policy, wall_seed):
 
 def test_the_evaluators_numbers_are_those_of_climbs_run_by_hand(tmp_path, capsys):
     baseline.deterministic(5)
-    policy = baseline.SlotPolicy(16)
+    policy = baseline.SlotPolicy(16, 2.8)
     path = tmp_path / "policy.json"
-    baseline.save_policy(policy, path, 2.8, {"seed": 5})
+    baseline.save_policy(policy, path, {"seed": 5})
     loaded, _ = baseline.load_policy(path)
     baseline.main(["evaluate", "--policy", str(path), "--wall-seeds", "3:4", "--json"])
     result = json.loads(capsys.readouterr().out)
@@ -151,9 +151,9 @@ def test_crux_trains_with_the_policy_as_its_network_prior_and_scores_as_torch_do
     # Under --transfer network with epsilon 0 the first move of a run is the candidate the
     # C++ (Eigen) evaluation of the policy scores highest: on each wall it is torch's too.
     baseline.deterministic(3)
-    policy = baseline.SlotPolicy(16)
+    policy = baseline.SlotPolicy(16, 2.8)
     path = tmp_path / "policy.json"
-    baseline.save_policy(policy, path, 2.8, {"seed": 3})
+    baseline.save_policy(policy, path, {"seed": 3})
     loaded, _ = baseline.load_policy(path)
     config = {"experiment.transfer": "network", "experiment.policy": str(path), "experiment.iterations": 1,
               "learning.epsilon": 0.0}
@@ -170,3 +170,16 @@ def test_crux_trains_with_the_policy_as_its_network_prior_and_scores_as_torch_do
         assert run.iterations["hold_id"][0] == wall.hold_ids[best], f"wall {seed}"
     with pytest.raises(ValueError, match="only experiment.transfer = network uses a policy file"):
         crux.run_learning(crux.Wall.random(1), {"experiment.policy": str(path), "experiment.iterations": 1})
+
+
+def test_docs_python_block_loads_a_policy_and_climbs(tmp_path, monkeypatch):
+    text = (REPOSITORY / "docs" / "PYTHON.md").read_text()
+    start = text.index("A policy\nfile it writes loads in a few lines")
+    block = text[text.index("```python\n", start) + len("```python\n"):text.index("```\n", text.index("```python\n", start))]
+    path = tmp_path / "policy.json"
+    baseline.deterministic(2)
+    baseline.save_policy(baseline.SlotPolicy(8, 2.8), path, {"seed": 2})
+    monkeypatch.chdir(REPOSITORY)
+    namespace = {}
+    exec(block.replace("build/policy.json", str(path)), namespace)  # the block as written, on a policy of ours
+    assert namespace["actions"] >= 1 and namespace["record"]["training"]["seed"] == 2
