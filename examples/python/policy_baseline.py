@@ -119,12 +119,16 @@ def deterministic(seed, threads=1):
     torch.use_deterministic_algorithms(True)
 
 
-def climbing_config(physics_model):
+def climbing_config(physics_model, reward_height=None):
     """The environment's config: the paper's rules, or the static model with the learner's
-    remedy of docs/PHYSICS.md (height shaping, a failed move in a stuck stance is a fall)."""
+    remedy of docs/PHYSICS.md (height shaping, a failed move in a stuck stance is a fall).
+    reward_height: reward.height instead of the model's (0, or 100 under the static model)."""
+    config = {}
     if physics_model == "static":
-        return {"physics.model": "static", "reward.height": 100.0, "physics.fall_when_stuck": True}
-    return {}
+        config = {"physics.model": "static", "reward.height": 100.0, "physics.fall_when_stuck": True}
+    if reward_height is not None:
+        config["reward.height"] = reward_height
+    return config
 
 
 # --- features and network ------------------------------------------------------------------
@@ -339,7 +343,7 @@ def sample_actions(policy, state, slots, mask, generator):
 def train(args, progress=None):
     """Masked PPO; returns (policy, history), history a record per validation."""
     deterministic(args.seed, args.threads)
-    config = climbing_config(args.physics_model)
+    config = climbing_config(args.physics_model, args.reward_height)
     envs = crux.gym.VectorClimbEnv(args.envs, wall=args.train_walls, observation=OBSERVATION, wall_order="sample",
                                    config=config, max_episode_steps=args.episode_steps)
     span = configured_max_span()
@@ -391,7 +395,7 @@ def train(args, progress=None):
 
 VALIDATION_KEYS = ("finished", "mean_length", "mean_length_ratio", "within_1_5_plans")
 SETTINGS = ("lr", "entropy", "hidden", "rollout", "envs", "epochs", "minibatch", "clip", "gamma", "lam",
-            "value_weight", "episode_steps", "physics_model")
+            "value_weight", "episode_steps", "physics_model", "reward_height")
 
 
 # --- evaluation ------------------------------------------------------------------------------
@@ -421,7 +425,7 @@ def plan_lengths(wall_seeds, physics_model="kinematic"):
             crux.ClimbMdp(wall, config=config)
         except ValueError:
             continue  # a start that does not hold: evaluate skips the wall too
-        plan = crux.plan(wall, config=config)
+        plan = crux.plan(wall, config={"physics.model": physics_model})  # the planner takes no reward
         lengths[seed] = plan["length"] if plan["found"] else None
     return lengths
 
@@ -600,6 +604,9 @@ def training_options(command):
     command.add_argument("--validate-every", type=non_negative, default=20,
                          help="updates between validations (0: none)")
     command.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic")
+    command.add_argument("--reward-height", type=non_negative_float, default=None,
+                         help="reward.height in training (potential-based height shaping, per metre, in the paper's "
+                         "reward units); default: the model's rules (0, or 100 under the static model)")
     command.add_argument("--threads", type=positive, default=1, help="torch's CPU threads (1: deterministic)")
 
 
