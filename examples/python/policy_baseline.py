@@ -119,11 +119,12 @@ def deterministic(seed, threads=1):
     torch.use_deterministic_algorithms(True)
 
 
-def climbing_config(physics_model, reward_height=None):
+def climbing_config(physics_model, reward_height=None, gamma=None):
     """The environment's config: the paper's rules, or the static model with the learner's
     remedy of docs/PHYSICS.md (height shaping, a failed move in a stuck stance is a fall).
-    reward_height: reward.height instead of the model's (0, or 100 under the static model)."""
-    config = {}
+    reward_height: reward.height instead of the model's (0, or 100 under the static model);
+    gamma: the learner's discount, which makes that shaping potential-based for it."""
+    config = {} if gamma is None else {"learning.gamma": gamma}
     if physics_model == "static":
         config = {"physics.model": "static", "reward.height": 100.0, "physics.fall_when_stuck": True}
     if reward_height is not None:
@@ -343,7 +344,7 @@ def sample_actions(policy, state, slots, mask, generator):
 def train(args, progress=None):
     """Masked PPO; returns (policy, history), history a record per validation."""
     deterministic(args.seed, args.threads)
-    config = climbing_config(args.physics_model, args.reward_height)
+    config = climbing_config(args.physics_model, args.reward_height, args.gamma)
     envs = crux.gym.VectorClimbEnv(args.envs, wall=args.train_walls, observation=OBSERVATION, wall_order="sample",
                                    config=config, max_episode_steps=args.episode_steps)
     span = configured_max_span()

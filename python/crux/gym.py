@@ -289,7 +289,8 @@ class ClimbEnv(gymnasium.Env):
     wall_split: {"train": walls, "evaluation": walls}, two lists that must not share a
         wall; the environment takes the evaluation walls when evaluation is true, the
         training walls otherwise. Instead of wall.
-    config: the keys of config.toml's [reward], [ik], [physics], [filter] and [grid] tables and experiment.urdf.
+    config: the keys of config.toml's [reward], [ik], [physics], [filter] and [grid] tables, experiment.urdf and
+        learning.gamma (the discount reward.height's shaping uses: the learner's own, 0.9 by default).
     max_candidates: the numeric form's action count, the most candidates a state may offer.
     model: a crux.BodyModel, or None for experiment.urdf's body or the default one.
     render_mode: None, "rgb_array" (the climber on the wall, each limb in its colour, with a

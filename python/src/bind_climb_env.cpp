@@ -30,7 +30,8 @@ class ClimbMdp {
     const ExperimentConfig c = config_from_python(config, kClimbMdpKeys, "ClimbMdp");
     BodyModelPtr body = body_from(model, c.urdf);
     py::gil_scoped_release release;
-    episode_ = std::make_unique<ClimbEpisode>(std::move(body), std::move(wall), c.settings.learning.climbing);
+    episode_ = std::make_unique<ClimbEpisode>(std::move(body), std::move(wall), c.settings.learning.climbing,
+                                              c.settings.learning.dyna.rates.gamma);
   }
 
   py::tuple reset(const py::handle& seed, const py::handle&) {
@@ -148,7 +149,8 @@ void bind_climb_env(py::module_& m) {
                        "limb; see action_mask()")
       .def(py::init<Wall, const py::handle&, const py::handle&, const py::handle&>(), py::arg("wall"),
            py::arg("config") = py::none(), py::arg("max_steps") = 1000, py::arg("model") = py::none(),
-           "config takes the keys of config.toml's [reward], [ik], [filter] and [grid] tables and experiment.urdf; "
+           "config takes the keys of config.toml's [reward], [ik], [physics], [filter] and [grid] tables, experiment.urdf and "
+           "learning.gamma (the discount of reward.height's shaping); "
            "an episode is truncated after max_steps actions, never when max_steps is None")
       .def("reset", &ClimbMdp::reset, py::arg("seed") = py::none(), py::arg("options") = py::none(),
            "Back to the start configuration with the right hand free: (obs, info). The environment draws no random "

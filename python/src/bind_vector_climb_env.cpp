@@ -106,6 +106,7 @@ class VectorClimbEnv {
     }
     const ExperimentConfig c = config_from_python(config, kClimbMdpKeys, "VectorClimbEnv");
     parameters_ = c.settings.learning.climbing;
+    discount_ = c.settings.learning.dyna.rates.gamma;
     model_ = body_from(model, c.urdf);
     slots_.resize(static_cast<std::size_t>(envs));
     for (Slot& slot : slots_) slot.listed.resize(walls_.size());
@@ -183,11 +184,11 @@ class VectorClimbEnv {
 
   void start_episode(Slot& slot) const {
     if (slot.next_wall) {
-      slot.drawn = std::make_unique<ClimbEpisode>(model_, std::move(*slot.next_wall), parameters_);
+      slot.drawn = std::make_unique<ClimbEpisode>(model_, std::move(*slot.next_wall), parameters_, discount_);
       slot.episode = slot.drawn.get();
     } else if (slot.next_index) {
       std::unique_ptr<ClimbEpisode>& listed = slot.listed[*slot.next_index];
-      if (!listed) listed = std::make_unique<ClimbEpisode>(model_, walls_[*slot.next_index], parameters_);
+      if (!listed) listed = std::make_unique<ClimbEpisode>(model_, walls_[*slot.next_index], parameters_, discount_);
       slot.episode = listed.get();
       slot.drawn.reset();
     } else {
@@ -284,6 +285,7 @@ class VectorClimbEnv {
   int action_count_ = 0;  // the numeric form's max_candidates, or the paper's hold count
   std::optional<int> max_steps_;
   ClimbingParameters parameters_;
+  double discount_ = 0.0;  // learning.gamma: the height shaping's
   BodyModelPtr model_;
   std::vector<Slot> slots_;
 };

@@ -7,11 +7,11 @@
 
 namespace crux::python {
 
-ClimbEpisode::ClimbEpisode(BodyModelPtr model, Wall wall, const ClimbingParameters& parameters)
+ClimbEpisode::ClimbEpisode(BodyModelPtr model, Wall wall, const ClimbingParameters& parameters, double discount)
     : model_(std::move(model)),
       wall_(std::move(wall)),
       parameters_(parameters),
-      mdp_(std::make_unique<ClimbingMdp>(*model_, wall_, parameters_)),
+      mdp_(std::make_unique<ClimbingMdp>(*model_, wall_, parameters_, discount)),
       data_(*model_) {
   forward_kinematics(*model_, data_, mdp_->start_posture());
   start_centre_of_mass_ = crux::centre_of_mass(*model_, data_);

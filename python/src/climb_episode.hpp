@@ -30,8 +30,9 @@ struct EpisodeStep {
 
 class ClimbEpisode {
  public:
-  // Solves the start configuration (InputError naming the wall if it cannot).
-  ClimbEpisode(BodyModelPtr model, Wall wall, const ClimbingParameters& parameters);
+  // Solves the start configuration (InputError naming the wall if it cannot). discount:
+  // the learner's gamma, which the height shaping uses (ClimbingMdp).
+  ClimbEpisode(BodyModelPtr model, Wall wall, const ClimbingParameters& parameters, double discount);
 
   // Holds the MDP, which keeps a reference to wall_: never copied nor moved.
   ClimbEpisode(const ClimbEpisode&) = delete;

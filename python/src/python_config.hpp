@@ -15,8 +15,10 @@ namespace crux::python {
 // The keys of one config section: what the functions over the grid or the filter take.
 inline const ParameterSet kGridKeys{{"grid"}, {}};
 inline const ParameterSet kFilterKeys{{"filter"}, {}};
-// What the climbing environments take, single or vector.
-inline const ParameterSet kClimbMdpKeys{{"experiment.urdf", "reward", "ik", "physics", "filter", "grid"}, {}};
+// What the climbing environments take, single or vector; learning.gamma is the discount
+// that reward.height's shaping uses, the learner's own (0.9, the paper's, by default).
+inline const ParameterSet kClimbMdpKeys{
+    {"experiment.urdf", "learning.gamma", "reward", "ik", "physics", "filter", "grid"}, {}};
 
 // `caller` names the Python function in errors: "ClimbMdp" gives "crux.ClimbMdp does
 // not take wall.seed". `defaults`: the function's own defaults, which the config overrides.

@@ -197,3 +197,24 @@ def test_the_old_name_of_the_raw_mdp_still_works_and_says_it_is_deprecated(wall7
     assert "ClimbEnv" not in crux.__all__
     with pytest.raises(AttributeError):
         crux.ClimbEnvironment  # noqa: B018
+
+
+def test_height_shaping_uses_the_learners_discount_learning_gamma():
+    # reward.height's shaping gamma phi(s') - phi(s) is potential-based only under the
+    # learner's own discount: the same reached move differs by (0.99 - 0.9) phi(s'), phi
+    # being 100 per metre of the held holds' mean height after it.
+    wall = crux.Wall.random(7)
+    rewards = {}
+    for gamma in (0.9, 0.99):
+        mdp = crux.ClimbMdp(wall, config={"reward.height": 100.0, "learning.gamma": gamma})
+        for hold in np.flatnonzero(mdp.action_mask()):
+            mdp.reset()
+            obs, reward, _, _, info = mdp.step(int(hold))
+            if info["reached"]:
+                rewards[gamma] = (int(hold), reward, obs["configuration"])
+                break
+    assert rewards[0.9][0] == rewards[0.99][0]
+    held = [h for h in rewards[0.99][2] if h >= 0]
+    potential = 100.0 * np.mean(wall.positions[held][:, 2])
+    assert rewards[0.99][1] - rewards[0.9][1] == pytest.approx(0.09 * potential, rel=1e-9)
+    assert crux.ClimbMdp(wall).step(rewards[0.9][0])[1] == -1.0  # the paper's step reward, unshaped
