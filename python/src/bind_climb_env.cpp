@@ -149,7 +149,8 @@ void bind_climb_env(py::module_& m) {
                        "limb; see action_mask()")
       .def(py::init<Wall, const py::handle&, const py::handle&, const py::handle&>(), py::arg("wall"),
            py::arg("config") = py::none(), py::arg("max_steps") = 1000, py::arg("model") = py::none(),
-           "config takes the keys of config.toml's [reward], [ik], [physics], [filter] and [grid] tables, experiment.urdf and "
+           "config takes the keys of config.toml's [reward], [ik], [physics], [filter] and [grid] tables, "
+           "experiment.urdf and "
            "learning.gamma (the discount of reward.height's shaping); "
            "an episode is truncated after max_steps actions, never when max_steps is None")
       .def("reset", &ClimbMdp::reset, py::arg("seed") = py::none(), py::arg("options") = py::none(),
