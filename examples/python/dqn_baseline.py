@@ -35,6 +35,7 @@ from torch import nn
 import crux
 import crux.gym  # registers crux/Climb-v0
 import gymnasium
+from example_arguments import OneLineParser, positive
 
 VALIDATION_FIRST_SEED = 10000
 HELD_OUT_FIRST_SEED = 20000
@@ -61,23 +62,6 @@ SEEDS_PER_SETTING = 3
 COMPARISON_FILE = "comparison.json"
 DYNA_CONDITIONS = [("Dyna-Q paper, from scratch", "paper", False), ("Dyna-Q paper, transfer", "paper", True),
                    ("Dyna-Q prior, from scratch", "prior", False), ("Dyna-Q prior, transfer", "prior", True)]
-
-
-class OneLineParser(argparse.ArgumentParser):
-    """Bad input: one line naming the argument, exit code 2 (argparse's code, without its usage)."""
-
-    def error(self, message):
-        self.exit(2, f"{self.prog}: {message}\n")
-
-
-def positive(text):
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"must be an integer, got {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
-    return value
 
 
 def fraction(text):

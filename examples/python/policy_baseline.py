@@ -39,6 +39,7 @@ from torch import nn
 
 import crux
 import crux.gym  # registers crux/Climb-v0
+from example_arguments import OneLineParser, integer_at_least, positive, wall_seed_range
 
 POLICY_FORMAT = "crux-policy"
 POLICY_VERSION = 1
@@ -55,31 +56,7 @@ STATE_SIZE = 55  # free limb 4, held holds 12, root 3, joint angles 32, centre o
 SLOT_SIZE = 3 + 7 + 1  # the candidate, its reach features, whether its move failed here
 
 
-class OneLineParser(argparse.ArgumentParser):
-    """Bad input: one line naming the argument, exit code 2 (argparse's code, without its usage)."""
-
-    def error(self, message):
-        self.exit(2, f"{self.prog}: {message}\n")
-
-
-def positive(text):
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"must be an integer, got {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
-    return value
-
-
-def non_negative(text):
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"must be an integer, got {text!r}") from None
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"must be at least 0, got {value}")
-    return value
+non_negative = integer_at_least(0)
 
 
 def non_negative_float(text):
@@ -104,13 +81,6 @@ def unit_interval(text):
     if value > 1:
         raise argparse.ArgumentTypeError(f"must be within [0, 1], got {text!r}")
     return value
-
-
-def wall_seed_range(text):
-    first, _, last = text.partition(":")
-    if not first.isdigit() or not last.isdigit() or int(last) < int(first):
-        raise argparse.ArgumentTypeError(f"'{text}' is not A:B with 0 <= A <= B")
-    return list(range(int(first), int(last) + 1))
 
 
 def deterministic(seed, threads=1):

@@ -25,6 +25,7 @@ import sys
 import numpy as np
 
 import crux
+from example_arguments import wall_seed_range
 
 MAX_CANDIDATES = 32
 # The joint at the root of each limb, in crux's limb order (right hand, left hand, right
@@ -34,13 +35,6 @@ LIMB_ROOT_JOINTS = ["right_shoulder_flexion", "left_shoulder_flexion", "right_hi
 EPISODE_ACTIONS = 40
 BASE_FEATURES = 58
 REACH_FEATURES = 7
-
-
-def wall_seed_range(text):
-    first, _, last = text.partition(":")
-    if not first.isdigit() or not last.isdigit() or int(last) < int(first):
-        raise argparse.ArgumentTypeError(f"'{text}' is not A:B with 0 <= A <= B")
-    return range(int(first), int(last) + 1)
 
 
 def slot_features(observation, limb_roots):
