@@ -11,15 +11,15 @@ namespace {
 // state, whose failed moves are those the agent's model has seen fail from it.
 class CandidateScores {
  public:
-  CandidateScores(const BodyModel& model, const PolicyNetwork& network, const Wall& wall)
-      : model_(model), network_(network), workspace_(model, network, wall.hold_count()), body_(model) {
+  CandidateScores(const BodyModel& model, const PolicyNetwork& network, const Wall& wall, double max_span_m)
+      : model_(model), network_(network), workspace_(model, network, wall.hold_count()), max_span_m_(max_span_m) {
     holds_.reserve(wall.hold_count());
     failed_.reserve(wall.hold_count());
     scores_.reserve(wall.hold_count());
   }
 
   std::span<const double> of(const ClimbingMdp& mdp, const DeterministicModel& experience,
-                             std::span<const ActionCandidate> candidates, double max_span_m) {
+                             std::span<const ActionCandidate> candidates) {
     const StateCode state = mdp.state().wall;
     holds_.clear();
     failed_.clear();
@@ -28,19 +28,19 @@ class CandidateScores {
       const Experience* known = experience.find(state, c.wall);
       if (known != nullptr && known->next_wall_state == state) failed_.push_back(c.wall);
     }
-    forward_kinematics(model_, body_, mdp.posture());
-    const Eigen::Vector3d centre = centre_of_mass(model_, body_);
+    forward_kinematics(model_, workspace_.body, mdp.posture());
+    const Eigen::Vector3d centre = centre_of_mass(model_, workspace_.body);
     scores_.resize(candidates.size());
     score_candidates(model_, network_, workspace_,
-                     {mdp.wall(), mdp.configuration(), mdp.posture(), centre, holds_, max_span_m, failed_}, scores_);
+                     {mdp.wall(), mdp.configuration(), mdp.posture(), centre, holds_, max_span_m_, failed_}, scores_);
     return scores_;
   }
 
  private:
   const BodyModel& model_;
   const PolicyNetwork& network_;
-  PolicyWorkspace workspace_;
-  BodyData body_;
+  PolicyWorkspace workspace_;  // its body data also gives the centre of mass the observation reads
+  double max_span_m_;
   std::vector<int> holds_, failed_;
   std::vector<double> scores_;
 };
@@ -178,7 +178,8 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
   DynaQAgent agent(mdp.wall_action_count(), mdp.grid_action_count(), parameters.dyna, seed);
   if (initial_q_grid != nullptr) agent.set_q_grid(*initial_q_grid);
   std::optional<CandidateScores> scores;
-  if (policy != nullptr && parameters.dyna.transfer == TransferMode::Network) scores.emplace(model, *policy, wall);
+  if (policy != nullptr && parameters.dyna.transfer == TransferMode::Network)
+    scores.emplace(model, *policy, wall, parameters.climbing.filter.max_span_m);
   RunResult result;
   result.can_fall = checks_stances(parameters.climbing.physics.model);
   result.iterations.reserve(parameters.iterations);
@@ -195,10 +196,8 @@ RunResult run_learning(const BodyModel& model, const Wall& wall, const LearningP
   for (int& iteration = loop.iteration; iteration < parameters.iterations;) {
     const StateCouple state = mdp.state();
     const std::span<const ActionCandidate> candidates = mdp.candidates();
-    const ActionChoice choice =
-        agent.choose(state, candidates,
-                     scores ? scores->of(mdp, agent.model(), candidates, parameters.climbing.filter.max_span_m)
-                            : std::span<const double>());
+    const ActionChoice choice = agent.choose(
+        state, candidates, scores ? scores->of(mdp, agent.model(), candidates) : std::span<const double>());
     const ActionCandidate action = candidates[choice.candidate];
     IterationRecord record{episode, choice.regime, wall.holds[action.wall].id};
     record.grid_state = static_cast<std::uint32_t>(state.grid);

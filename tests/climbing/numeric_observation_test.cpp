@@ -8,6 +8,7 @@
 #include "body/kinematics.hpp"
 #include "climbing/climbing_mdp.hpp"
 #include "common/input_error.hpp"
+#include "support/climb_start.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
@@ -35,26 +36,7 @@ struct ObservationStorage {
   }
 };
 
-struct StartState {
-  const BodyModel& model = testing::human_model();
-  Wall wall = generate_random_wall(1);
-  ClimbingParameters parameters;
-  ClimbingMdp mdp{model, wall, parameters};
-  std::vector<int> candidates;
-  Eigen::Vector3d centre_of_mass, grasp;
-  StartState() {
-    for (const ActionCandidate& c : mdp.candidates()) candidates.push_back(c.wall);
-    std::sort(candidates.begin(), candidates.end());
-    BodyData data(model);
-    forward_kinematics(model, data, mdp.posture());
-    centre_of_mass = centre_of_mass_of(data);
-    grasp = data.points[operational_point(Limb::RightHand)];
-  }
-  Eigen::Vector3d centre_of_mass_of(BodyData& data) { return crux::centre_of_mass(model, data); }
-  NumericObservationInput input(const Wall& w) const {
-    return {w, mdp.configuration(), mdp.posture(), centre_of_mass, candidates, kSpan};
-  }
-};
+using StartState = testing::ClimbStart;
 
 float relative(double value, double origin) { return static_cast<float>(value - origin); }
 
@@ -62,7 +44,7 @@ TEST(NumericObservation, PlacesTheStateRelativeToTheFreeLimbsGraspPoint) {
   StartState s;
   ObservationStorage out;
   BodyData data(s.model);
-  write_numeric_observation(s.model, data, s.input(s.wall), kSlots, out.rows());
+  write_numeric_observation(s.model, data, s.input(s.wall, kSpan), kSlots, out.rows());
 
   EXPECT_EQ(out.free_limb, (std::vector<float>{1, 0, 0, 0}));  // the start frees the right hand
   for (int limb = 0; limb < kLimbCount; ++limb) {
@@ -95,11 +77,11 @@ TEST(NumericObservation, ClipsTheHeightLeftToTwiceTheSpan) {
   BodyData data(s.model);
   Wall high = s.wall;
   high.finish_height = 100.0;
-  write_numeric_observation(s.model, data, s.input(high), kSlots, out.rows());
+  write_numeric_observation(s.model, data, s.input(high, kSpan), kSlots, out.rows());
   EXPECT_EQ(out.to_finish[0], static_cast<float>(2 * kSpan));
   Wall low = s.wall;
   low.finish_height = -100.0;
-  write_numeric_observation(s.model, data, s.input(low), kSlots, out.rows());
+  write_numeric_observation(s.model, data, s.input(low, kSpan), kSlots, out.rows());
   EXPECT_EQ(out.to_finish[0], static_cast<float>(-2 * kSpan));
 }
 
@@ -109,7 +91,7 @@ TEST(NumericObservation, RefusesMoreCandidatesThanSlotsNamingMaxCandidates) {
   BodyData data(s.model);
   const int too_few = static_cast<int>(s.candidates.size()) - 1;
   try {
-    write_numeric_observation(s.model, data, s.input(s.wall), too_few, out.rows());
+    write_numeric_observation(s.model, data, s.input(s.wall, kSpan), too_few, out.rows());
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.source(), "max_candidates");
@@ -133,7 +115,7 @@ TEST(NumericObservation, ReachFeaturesPlaceEachCandidateFromTheFreeLimbsShoulder
   StartState s;
   ObservationStorage out;
   BodyData data(s.model);
-  write_numeric_observation(s.model, data, s.input(s.wall), kSlots, out.reach_rows());
+  write_numeric_observation(s.model, data, s.input(s.wall, kSpan), kSlots, out.reach_rows());
 
   const Limb free = s.mdp.configuration().free_limb();
   const Eigen::Vector3d shoulder = limb_root_by_kinematics(s.model, s.mdp.posture(), free);
@@ -162,7 +144,7 @@ TEST(NumericObservation, MarksTheMovesThatFailedFromThisStateAndNoOther) {
   ObservationStorage out;
   BodyData data(s.model);
   const std::vector<int> failed{s.candidates[2], s.candidates[0]};
-  NumericObservationInput input = s.input(s.wall);
+  NumericObservationInput input = s.input(s.wall, kSpan);
   input.failed_holds = failed;
   write_numeric_observation(s.model, data, input, kSlots, out.reach_rows());
   for (int slot = 0; slot < kSlots; ++slot) {

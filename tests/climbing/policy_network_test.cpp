@@ -12,6 +12,7 @@
 #include "climbing/climbing_mdp.hpp"
 #include "common/input_error.hpp"
 #include "support/allocation_counter.hpp"
+#include "support/climb_start.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
@@ -44,47 +45,31 @@ std::string small_policy(const std::string& observation = "reach", const std::st
       row_reading(kToFinishColumn, 1), first_row_extra);
 }
 
-struct PolicyStartState {
-  const BodyModel& model = testing::human_model();
-  Wall wall = generate_random_wall(1);
-  ClimbingParameters parameters;
-  ClimbingMdp mdp{model, wall, parameters};
-  std::vector<int> holds;
-  Eigen::Vector3d centre_of_mass, grasp;
-  PolicyStartState() {
-    for (const ActionCandidate& c : mdp.candidates()) holds.push_back(c.wall);
-    BodyData data(model);
-    forward_kinematics(model, data, mdp.posture());
-    centre_of_mass = crux::centre_of_mass(model, data);
-    grasp = data.points[operational_point(mdp.configuration().free_limb())];
-  }
-};
-
 TEST(PolicyNetwork, ScoresEachCandidateAsTheLayersSayByHand) {
-  const PolicyStartState s;
+  const testing::ClimbStart s;
   const PolicyNetwork network = load_policy_network(testing::write_temporary("policy.json", small_policy()).string());
   ASSERT_EQ(network.slot_layers.size(), 2U);
   PolicyWorkspace workspace(s.model, network, s.wall.hold_count());
-  const std::vector<int> failed{s.holds[1]};
-  std::vector<double> scores(s.holds.size());
-  score_candidates(s.model, network, workspace,
-                   {s.wall, s.mdp.configuration(), s.mdp.posture(), s.centre_of_mass, s.holds, kPolicySpan, failed},
-                   scores);
+  const std::vector<int> failed{s.candidates[1]};
+  std::vector<double> scores(s.candidates.size());
+  score_candidates(
+      s.model, network, workspace,
+      {s.wall, s.mdp.configuration(), s.mdp.posture(), s.centre_of_mass, s.candidates, kPolicySpan, failed}, scores);
   const double to_finish = std::max(0.0, (s.wall.finish_height - s.centre_of_mass.z()) / kPolicySpan);
-  for (std::size_t i = 0; i < s.holds.size(); ++i) {
-    const double height = (s.wall.holds[s.holds[i]].position.z() - s.grasp.z()) / kPolicySpan;
+  for (std::size_t i = 0; i < s.candidates.size(); ++i) {
+    const double height = (s.wall.holds[s.candidates[i]].position.z() - s.grasp.z()) / kPolicySpan;
     const double expected = 10.0 * (i == 1 ? 1.0 : 0.0) + std::max(0.0, height) + 2.0 * to_finish + 0.5;
-    EXPECT_NEAR(scores[i], expected, 1e-5) << "candidate " << i << " (hold " << s.holds[i] << ")";
+    EXPECT_NEAR(scores[i], expected, 1e-5) << "candidate " << i << " (hold " << s.candidates[i] << ")";
   }
 }
 
 TEST(PolicyNetwork, ScoringAllocatesNothing) {
-  const PolicyStartState s;
+  const testing::ClimbStart s;
   const PolicyNetwork network = load_policy_network(testing::write_temporary("policy.json", small_policy()).string());
   PolicyWorkspace workspace(s.model, network, s.wall.hold_count());
-  std::vector<double> scores(s.holds.size());
-  const NumericObservationInput input{s.wall,     s.mdp.configuration(), s.mdp.posture(), s.centre_of_mass, s.holds,
-                                      kPolicySpan};
+  std::vector<double> scores(s.candidates.size());
+  const NumericObservationInput input{s.wall,           s.mdp.configuration(), s.mdp.posture(),
+                                      s.centre_of_mass, s.candidates,          kPolicySpan};
   score_candidates(s.model, network, workspace, input, scores);
   const long before = testing::allocation_count();
   score_candidates(s.model, network, workspace, input, scores);
