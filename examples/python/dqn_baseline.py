@@ -36,6 +36,7 @@ import crux
 import crux.gym  # registers crux/Climb-v0
 import gymnasium
 from example_arguments import OneLineParser, positive
+from wall_statistics import interval, paired, per_wall_mean
 
 VALIDATION_FIRST_SEED = 10000
 HELD_OUT_FIRST_SEED = 20000
@@ -402,42 +403,6 @@ def epsilon_greedy(net):
 def single_wall_env(seed):
     # No TimeLimit: an episode runs until it finishes, as Dyna-Q's learning episodes do.
     return crux.gym.ClimbEnv(wall=[seed], observation="numeric")
-
-
-# --- statistics over walls -------------------------------------------------------------------
-
-
-def interval(values):
-    """Mean and 95 % Student-t interval over walls."""
-    from scipy import stats
-
-    values = np.asarray([v for v in values if v is not None and not math.isnan(v)], float)
-    if values.size < 2:
-        return {"mean": float(values.mean()) if values.size else None, "low": None, "high": None, "n": int(values.size)}
-    half = stats.t.ppf(0.975, values.size - 1) * values.std(ddof=1) / math.sqrt(values.size)
-    return {"mean": float(values.mean()), "low": float(values.mean() - half), "high": float(values.mean() + half),
-            "n": int(values.size)}
-
-
-def paired(a, b):
-    """a - b over walls, with its t-interval and the two-sided p of the t-test over walls."""
-    from scipy import stats
-
-    pairs = [(x, y) for x, y in zip(a, b) if x is not None and y is not None]
-    diff = np.array([x - y for x, y in pairs], float)
-    result = interval(diff)
-    constant = diff.size < 2 or np.allclose(diff, diff[0])
-    result["p"] = None if constant else float(stats.ttest_1samp(diff, 0.0).pvalue)
-    return result
-
-
-def per_wall_mean(runs, key):
-    """runs: per wall, a list of per-seed dicts; the mean of key over the seeds that have it."""
-    out = []
-    for wall in runs:
-        values = [run[key] for run in wall if run.get(key) is not None]
-        out.append(float(np.mean(values)) if values else None)
-    return out
 
 
 # --- commands ---------------------------------------------------------------------------------

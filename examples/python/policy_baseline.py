@@ -40,6 +40,7 @@ from torch import nn
 import crux
 import crux.gym  # registers crux/Climb-v0
 from example_arguments import OneLineParser, integer_at_least, positive, wall_seed_range
+from wall_statistics import interval, paired, per_wall_mean
 
 POLICY_FORMAT = "crux-policy"
 POLICY_VERSION = 1
@@ -436,6 +437,103 @@ def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None):
     return result
 
 
+# --- the comparison on held-out walls (docs/BASELINES.md) ----------------------------------
+
+# Dyna-Q's and the random policy's rows are those of the DQN's comparison (dqn_baseline.py
+# compare): the paper's Dyna-Q learning 8000 iterations on each wall from scratch, then its
+# greedy climb; the random policy's one episode; both capped at experiment.greedy_cap's 500.
+DYNA_ITERATIONS = 8000
+OTHERS_CAP = 500
+
+
+def dyna_q_climb(wall_seed, seed):
+    """The paper's Dyna-Q on the wall, from scratch: its greedy climb's (finished, length)."""
+    run = crux.run_learning(crux.Wall.random(wall_seed),
+                            {"experiment.iterations": DYNA_ITERATIONS, "experiment.transfer": "paper"}, seed=seed)
+    return run.greedy_length >= 0, (run.greedy_length if run.greedy_length >= 0 else None)
+
+
+def random_climb(wall_seed, seed):
+    """One episode of the masked uniform random policy: (finished, length)."""
+    env = crux.gym.ClimbEnv(wall=[wall_seed], observation="numeric")
+    rng = np.random.default_rng([seed, wall_seed])
+    _, info = env.reset(seed=0)
+    for taken in range(1, OTHERS_CAP + 1):
+        if not info["action_mask"].any():
+            break
+        _, _, terminated, _, info = env.step(int(rng.choice(np.flatnonzero(info["action_mask"]))))
+        if terminated:
+            return True, taken
+    return False, None
+
+
+def compare(policies, wall_seeds, seeds):
+    """Per held-out wall: its plan, each policy's greedy climb, and Dyna-Q's and random's
+    runs with each learning seed; then each method's mean over walls (each wall its runs'
+    mean) with 95 % t-intervals, and the policy's differences paired over walls."""
+    plans = plan_lengths(wall_seeds)
+    walls = [{"wall_seed": seed, "plan_length": plans.get(seed), "policy": [], "dyna_q": [], "random": []}
+             for seed in wall_seeds if seed in plans]
+    for policy in policies:
+        climbs = evaluate(policy, [w["wall_seed"] for w in walls], plans=plans)["walls"]
+        for wall, climb in zip(walls, climbs):
+            length = climb["length"] if climb["finished"] else None
+            wall["policy"].append({"finished": float(climb["finished"]), "length": length,
+                                   "ratio": length / wall["plan_length"] if length and wall["plan_length"] else None,
+                                   "failed_moves": climb["failed_moves"]})
+    for wall in walls:
+        for seed in seeds:
+            for method, climb in (("dyna_q", dyna_q_climb), ("random", random_climb)):
+                done, length = climb(wall["wall_seed"], seed)
+                wall[method].append({"finished": float(done), "length": length})
+    runs = {method: [wall[method] for wall in walls] for method in ("policy", "dyna_q", "random")}
+    summary = {"wall_seeds": [w["wall_seed"] for w in walls], "learning_seeds": list(seeds), "walls": walls,
+               "plan_length": interval([w["plan_length"] for w in walls]), "methods": {}, "paired": {}}
+    for method, rows in runs.items():
+        summary["methods"][method] = {key: interval(per_wall_mean(rows, key)) for key in ("finished", "length")}
+    summary["methods"]["policy"]["ratio"] = interval(per_wall_mean(runs["policy"], "ratio"))
+    for other in ("dyna_q", "random"):
+        for key in ("finished", "length"):
+            summary["paired"][f"policy - {other}, {key}"] = paired(per_wall_mean(runs["policy"], key),
+                                                                     per_wall_mean(runs[other], key))
+    summary["paired"]["policy - plan, length"] = paired(per_wall_mean(runs["policy"], "length"),
+                                                        [w["plan_length"] for w in walls])
+    return summary
+
+
+def comparison_markdown(summary):
+    def cell(c, digits=1, percent=False):
+        if c["mean"] is None:
+            return "-"
+        k, unit = (100, " %") if percent else (1, "")
+        text = f"{c['mean'] * k:.{digits}f}"
+        if c["low"] is not None:
+            text += f" [{c['low'] * k:.{digits}f}, {c['high'] * k:.{digits}f}]"
+        return text + unit + ("" if c["n"] == len(summary["walls"]) else f" (n = {c['n']})")
+
+    def lengths(runs):
+        return ", ".join("-" if r["length"] is None else str(r["length"]) for r in runs)
+
+    names = {"policy": "learnt policy, greedy (zero-shot)",
+             "dyna_q": f"Dyna-Q paper, {DYNA_ITERATIONS} iterations on the wall", "random": "random (masked uniform)"}
+    lines = ["| method | climbs finished | climb length (finished) |", "|---|---|---|"]
+    for method, m in summary["methods"].items():
+        lines.append(f"| {names[method]} | {cell(m['finished'], 0, True)} | {cell(m['length'])} |")
+    lines.append(f"| exact plan | | {cell(summary['plan_length'])} |")
+    lines += ["", f"Policy's length over the plan's: {cell(summary['methods']['policy']['ratio'], 2)}", "",
+              "| paired over walls | difference | p |", "|---|---|---|"]
+    for label, c in summary["paired"].items():
+        percent = label.endswith("finished")
+        lines.append(f"| {label} | {cell(c, 0 if percent else 1, percent)} | "
+                     f"{'-' if c['p'] is None else format(c['p'], '.2g')} |")
+    lines += ["", "| wall | plan | policy, per seed | Dyna-Q, per seed | random finished, per seed |",
+              "|---|---|---|---|---|"]
+    for w in summary["walls"]:
+        lines.append(f"| {w['wall_seed']} | {w['plan_length']} | {lengths(w['policy'])} | {lengths(w['dyna_q'])} "
+                     f"| {', '.join(str(int(r['finished'])) for r in w['random'])} |")
+    return "\n".join(lines)
+
+
 # --- commands --------------------------------------------------------------------------------
 
 
@@ -451,21 +549,85 @@ def command_train(args):
     print(json.dumps({"policy": str(args.out), "steps": training["steps"], "last": history[-1] if history else None}))
 
 
-def command_evaluate(args):
+
+
+def load_for_walls(path):
+    """load_policy, for the walls crux builds now (the same filter.max_span), or exit 2 with one line."""
     try:
-        policy, _ = load_policy(args.policy)
+        policy, _ = load_policy(path)
         if abs(policy.max_span - configured_max_span()) > 1e-9:
-            raise ValueError(f"{args.policy}: a policy trained with filter.max_span = {policy.max_span} m, and the "
+            raise ValueError(f"{path}: a policy trained with filter.max_span = {policy.max_span} m, and the "
                              f"walls are climbed with {configured_max_span()} m: its observation would be another")
     except ValueError as error:
         print(f"policy_baseline.py: --policy: {error}", file=sys.stderr)
         sys.exit(2)
+    return policy
+
+
+def command_evaluate(args):
+    policy = load_for_walls(args.policy)
     result = evaluate(policy, args.wall_seeds, args.physics_model, plan_lengths(args.wall_seeds, args.physics_model))
     if args.json:
         print(json.dumps(result, indent=2))
         return
     print(f"{result['climbs']} climbs, {result['finished']:.1%} finished, mean length {result['mean_length']}, "
           f"mean plan length {result['mean_plan_length']}")
+
+
+def command_compare(args):
+    policies = [load_for_walls(path) for path in args.policy]
+    summary = compare(policies, args.wall_seeds, args.seeds)
+    summary["policies"] = [str(path) for path in args.policy]
+    if args.out:
+        args.out.parent.mkdir(parents=True, exist_ok=True)
+        temporary = args.out.with_name(args.out.name + ".partial")
+        temporary.write_text(json.dumps(summary, indent=1) + "\n")
+        os.replace(temporary, args.out)
+    print(json.dumps(summary, indent=1) if args.json else comparison_markdown(summary))
+
+
+def command_plot(args):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    records = search_records(args.search)
+    if not records:
+        print(f"policy_baseline.py: --search: {args.search} has no {SEARCH_LOG}", file=sys.stderr)
+        sys.exit(2)
+    panels = (("finished", "validation climbs finished (%)", 100), ("mean_length_ratio", "mean length / plan's", 1),
+              ("within_1_5_plans", "climbs within 1.5 x the plan (%)", 100))
+    figure, axes = plt.subplots(1, len(panels) + (args.comparison is not None), figsize=(5 * len(panels) + 5, 4.2))
+    colours = {0: "0.7", 1: "tab:blue", 2: "tab:red"}
+    for record in records:
+        steps = [point["steps"] for point in record["history"]]
+        for axis, (key, label, scale) in zip(axes, panels):
+            values = [scale * point[key] if point[key] is not None else np.nan for point in record["history"]]
+            axis.plot(steps, values, color=colours[record["stage"]], linewidth=1.6 if record["stage"] == 2 else 0.8,
+                      alpha=0.9 if record["stage"] else 0.5)
+            axis.set(xscale="log", xlabel="environment steps of training", ylabel=label)
+    axes[1].axhline(1.5, color="black", linestyle="--", linewidth=1)
+    axes[0].legend(handles=[matplotlib.lines.Line2D([], [], color=c, label=f"stage {stage}")
+                            for stage, c in colours.items()], loc="lower right")
+    if args.comparison is not None:
+        summary = json.loads(args.comparison.read_text())
+        axis, plans = axes[-1], [w["plan_length"] for w in summary["walls"]]
+        for method, colour, label in (("policy", "tab:red", "learnt policy (zero-shot)"),
+                                      ("dyna_q", "tab:green", f"Dyna-Q after {DYNA_ITERATIONS} iterations")):
+            lengths = per_wall_mean([w[method] for w in summary["walls"]], "length")
+            axis.scatter(plans, [np.nan if v is None else v for v in lengths], color=colour, label=label, s=18)
+        top = max(plans) + 2
+        axis.plot([0, top], [0, top], color="black", linewidth=1, label="the plan's length")
+        axis.plot([0, top], [0, 1.5 * top], color="black", linestyle="--", linewidth=1, label="1.5 x the plan's")
+        axis.set(xlabel="exact plan's length (moves)", ylabel="greedy climb's length (actions, mean over seeds)",
+                 title="held-out walls")
+        axis.legend(loc="upper left", fontsize=8)
+    figure.tight_layout()
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    temporary = args.out.with_name(args.out.stem + ".partial" + args.out.suffix)
+    figure.savefig(temporary, dpi=90)
+    os.replace(temporary, args.out)
 
 
 # The search (docs/BASELINES.md): every setting of the grid for STAGES[0]'s steps, then the
@@ -601,6 +763,18 @@ def parser():
     e.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
     e.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic")
     e.add_argument("--json", action="store_true", help="print the result as JSON")
+    c = commands.add_parser("compare", help="Policies against Dyna-Q and random on held-out walls, paired over walls")
+    c.add_argument("--policy", type=pathlib.Path, nargs="+", required=True,
+                   help="policy files (a setting's seeds): each climbs each wall once")
+    c.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
+    c.add_argument("--seeds", type=wall_seed_range, default=range(1, 4),
+                   help="Dyna-Q's and random's learning seeds A:B (default 1:3)")
+    c.add_argument("--out", type=pathlib.Path, default=None, help="also write the comparison (JSON) to this file")
+    c.add_argument("--json", action="store_true", help="print the comparison as JSON, not as tables")
+    g = commands.add_parser("plot", help="The search's validation curves (and a comparison's walls) as a PNG")
+    g.add_argument("--search", type=pathlib.Path, required=True, help="the folder of search.jsonl")
+    g.add_argument("--comparison", type=pathlib.Path, default=None, help="a file compare --out wrote")
+    g.add_argument("out", type=pathlib.Path, help="the PNG to write")
     return top
 
 
@@ -613,7 +787,8 @@ def main(argv=None):
             parser().error(f"--train-walls: must be at most {VALIDATION_FIRST_SEED}, the first validation wall")
         args.train_walls = list(range(args.train_walls)) if args.train_walls else None
         args.validation_walls = list(range(VALIDATION_FIRST_SEED, VALIDATION_FIRST_SEED + args.validation_walls))
-    {"train": command_train, "search": command_search, "evaluate": command_evaluate}[args.command_name](args)
+    {"train": command_train, "search": command_search, "evaluate": command_evaluate, "compare": command_compare,
+     "plot": command_plot}[args.command_name](args)
 
 
 if __name__ == "__main__":

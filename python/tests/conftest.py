@@ -15,8 +15,9 @@ import crux
 GYMNASIUM_SOURCE = pathlib.Path(__file__).resolve().parents[3] / "shared" / "third_party" / "gymnasium-1.4.0"
 if GYMNASIUM_SOURCE.is_dir():
     sys.path.insert(0, str(GYMNASIUM_SOURCE))
-# The examples, which the tests load by path, import their shared argument types
-# (examples/python/example_arguments.py) from their folder, as a script run there does.
+# The examples, which the tests load by path, import their shared argument types and
+# statistics (examples/python/example_arguments.py, wall_statistics.py) from their folder,
+# as a script run there does.
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "examples" / "python"))
 
 

@@ -183,3 +183,47 @@ def test_docs_python_block_loads_a_policy_and_climbs(tmp_path, monkeypatch):
     namespace = {}
     exec(block.replace("build/policy.json", str(path)), namespace)  # the block as written, on a policy of ours
     assert namespace["actions"] >= 1 and namespace["record"]["training"]["seed"] == 2
+
+
+def hand_random_climb(wall_seed, seed):
+    """The random policy's episode through crux.ClimbMdp: a uniform draw among the offered slots."""
+    mdp = crux.ClimbMdp(crux.Wall.random(wall_seed), max_steps=None)
+    mdp.reset()
+    rng = np.random.default_rng([seed, wall_seed])
+    for taken in range(1, baseline.OTHERS_CAP + 1):
+        holds = np.flatnonzero(mdp.action_mask())
+        _, _, terminated, _, _ = mdp.step(int(holds[rng.choice(np.arange(holds.size))]))
+        if terminated:
+            return 1.0, taken
+    return 0.0, None
+
+
+def test_the_comparison_is_made_of_its_parts_and_draws(tmp_path, capsys):
+    baseline.deterministic(4)
+    paths = [tmp_path / "a.json", tmp_path / "b.json"]
+    for path in paths:
+        baseline.save_policy(baseline.SlotPolicy(16, 2.8), path, {"seed": 4})
+    out = tmp_path / "comparison.json"
+    baseline.main(["compare", "--policy", *map(str, paths), "--wall-seeds", "3:4", "--seeds", "1:2", "--out", str(out)])
+    table = capsys.readouterr().out
+    summary = json.loads(out.read_text())
+    policies = [baseline.load_policy(path)[0] for path in paths]
+    for wall in summary["walls"]:
+        seed = wall["wall_seed"]
+        assert wall["plan_length"] == crux.plan(crux.Wall.random(seed))["length"]
+        climbs = [hand_climb(policy, seed) for policy in policies]
+        assert [(bool(r["finished"]), r["length"]) for r in wall["policy"]] == [
+            (done, length if done else None) for done, length in climbs]
+        for run, learning_seed in zip(wall["dyna_q"], (1, 2)):
+            learnt = crux.run_learning(crux.Wall.random(seed), {"experiment.transfer": "paper"}, seed=learning_seed)
+            assert run["length"] == (learnt.greedy_length if learnt.greedy_length >= 0 else None)
+        assert [(r["finished"], r["length"]) for r in wall["random"]] == [hand_random_climb(seed, s) for s in (1, 2)]
+        assert f"| {seed} | {wall['plan_length']} |" in table
+    # Paired over walls: each wall's mean over its runs, policy minus random.
+    differences = [np.mean([r["finished"] for r in w["policy"]]) - np.mean([r["finished"] for r in w["random"]])
+                   for w in summary["walls"]]
+    assert summary["paired"]["policy - random, finished"]["mean"] == pytest.approx(np.mean(differences))
+    figure = tmp_path / "curves.png"
+    baseline.main(["plot", "--search", str(REPOSITORY / "models" / "policies" / "search"), "--comparison", str(out),
+                   str(figure)])
+    assert figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and not list(tmp_path.glob("*.partial*"))
