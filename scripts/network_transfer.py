@@ -8,7 +8,7 @@ iterations given as --q-grid-iterations) reused by `crux transfer --transfer pri
 every wall, against prior's control (the same rule from an empty Q_grid).
 
     PYTHONPATH=build/release/python /usr/bin/python3 scripts/network_transfer.py \
-        --policy models/policies/ppo.json --wall-seeds 20000:20029 --seeds 1:3 [--iterations 8000] \
+        --policy models/policies/reach-ppo.json --wall-seeds 20000:20029 --seeds 1:3 [--iterations 8000] \
         [--q-grid out/qgrid16/runs/training_0/q_grid.bin --q-grid-iterations 128000]
 
 Reports, walls as the unit (each wall's mean over its seeds one observation): iterations to

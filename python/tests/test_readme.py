@@ -62,6 +62,24 @@ def test_the_python_block_runs_with_gymnasiums_source_on_readmes_pythonpath(repo
     assert done.returncode == 0, done.stderr
 
 
+def test_the_shipped_policy_climbs_the_held_out_walls_as_readme_says(repository):
+    (gymnasium,) = need(["gymnasium"], GYMNASIUM)
+    need(["torch"], "the policy needs Debian's python3-torch")
+    (line,) = [line for block in fenced("sh") for line in block.splitlines() if "policy_baseline.py evaluate" in line]
+    for folder in ("examples", "models"):
+        (repository / folder).symlink_to(README.parent / folder)
+    done = run_shell(line, repository, GYMNASIUM=str(pathlib.Path(gymnasium.__file__).parents[1]))
+    assert done.returncode == 0, done.stderr
+    # The shipped policy's held-out record, which docs/BASELINES.md quotes.
+    record = json.loads((README.parent / "models" / "policies" / "reach-ppo.heldout.json").read_text())
+    assert done.stdout == (f"{record['climbs']} climbs, {record['finished']:.1%} finished, mean length "
+                           f"{record['mean_length']}, mean plan length {record['mean_plan_length']}\n"), done.stdout
+    baselines = (README.parent / "docs" / "BASELINES.md").read_text()
+    assert (f"| held-out, 20000-20029 | {record['finished']:.0%} (30 of 30) | {record['mean_length']:.1f} "
+            f"| {record['mean_plan_length']:.1f} | {record['mean_length_ratio']:.2f} "
+            f"| {record['within_1_5_plans']:.0%} |").replace("%", " %") in baselines
+
+
 def quick_tour():
     text = README.read_text()
     start = text.index("\n## A quick tour\n")
