@@ -325,6 +325,11 @@ def train(args, progress=None):
                                    config=config, max_episode_steps=args.episode_steps)
     span = configured_max_span()
     policy = SlotPolicy(args.hidden, span)
+    if getattr(args, "init_policy", None):
+        start, _ = load_policy(args.init_policy)  # e.g. the kinematic policy, fine-tuned under the static model
+        if start.hidden != args.hidden:
+            raise ValueError(f"{args.init_policy}: a policy of width {start.hidden}, and --hidden is {args.hidden}")
+        policy.load_state_dict(start.state_dict())
     optimiser = torch.optim.Adam(policy.parameters(), lr=args.lr, eps=1e-5)
     generator = torch.Generator().manual_seed(args.seed)
     rng = np.random.default_rng([args.seed, 1])
@@ -548,7 +553,11 @@ def command_train(args):
     def progress(record):
         print(json.dumps(record), file=sys.stderr, flush=True)
 
-    policy, history, training = train(args, progress)
+    try:
+        policy, history, training = train(args, progress)
+    except ValueError as error:  # a bad --init-policy file, named by the message
+        print(f"policy_baseline.py: --init-policy: {error}", file=sys.stderr)
+        sys.exit(2)
     training["history"] = history
     save_policy(policy, args.out, training)
     print(json.dumps({"policy": str(args.out), "steps": training["steps"], "last": history[-1] if history else None}))
@@ -762,6 +771,8 @@ def parser():
     t.add_argument("--out", type=pathlib.Path, required=True, help="the policy file to write (JSON)")
     t.add_argument("--steps", type=positive, default=1_000_000, help="environment steps")
     t.add_argument("--seed", type=int, default=1, help="fixes the walls, the network and the sampling")
+    t.add_argument("--init-policy", type=pathlib.Path, default=None,
+                   help="start from this policy file's weights (of the same --hidden) instead of random ones")
     training_options(t)
     h = commands.add_parser("search", help="The settings' search, resumable: runs the stage's runs not yet logged")
     h.add_argument("--out", type=pathlib.Path, required=True, help="the folder of search.jsonl and the policies")

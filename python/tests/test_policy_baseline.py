@@ -225,3 +225,23 @@ def test_the_comparison_is_made_of_its_parts_and_draws(tmp_path, capsys):
     baseline.main(["plot", "--search", str(REPOSITORY / "models" / "policies" / "search"), "--comparison", str(out),
                    str(figure)])
     assert figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and not list(tmp_path.glob("*.partial*"))
+
+
+def test_training_can_start_from_a_policy_and_refuses_a_bad_one(tmp_path, capsys):
+    baseline.deterministic(6)
+    start = tmp_path / "start.json"
+    baseline.save_policy(baseline.SlotPolicy(32, 2.8), start, {"seed": 6})
+    # One update at a rate of 1e-9: the weights stay the starting ones (Adam moves each by about the rate).
+    tuned = train(tmp_path, "tuned.json", ["--init-policy", str(start), "--steps", "256", "--lr", "1e-9"])
+    fresh = train(tmp_path, "fresh.json", ["--steps", "256", "--lr", "1e-9"])
+    weights = {name: np.array(json.loads(path.read_text())["slot_layers"][0]["weight"])
+               for name, path in (("start", start), ("tuned", tuned), ("fresh", fresh))}
+    assert np.allclose(weights["tuned"], weights["start"], atol=1e-6)
+    assert not np.allclose(weights["fresh"], weights["start"], atol=1e-2)
+    capsys.readouterr()
+    for bad, problem in ((tmp_path / "missing.json", "cannot read the policy file"), (start, "of width 32")):
+        with pytest.raises(SystemExit) as exit_code:
+            baseline.main(["train", "--out", str(tmp_path / "x.json"), *SHORT, "--hidden", "16", "--init-policy", str(bad)])
+        error = capsys.readouterr().err
+        assert exit_code.value.code == 2 and error.count("\n") == 1 and problem in error, error
+        assert error.startswith("policy_baseline.py: --init-policy: ") and not (tmp_path / "x.json").exists()
