@@ -187,11 +187,17 @@ def save_policy(policy, path, training):
               "max_candidates": MAX_CANDIDATES, "max_span": policy.max_span, "activation": "relu",
               "slot_layers": layers_of(policy.slot_net), "value_layers": layers_of(policy.value_net),
               "training": training}
+    write_whole(path, json.dumps(record) + "\n")
+
+
+def write_whole(path, text):
+    """Writes text to path through a file of this process's own, renamed over it: never a
+    half-written file, and processes that write the same file at once each write it whole."""
     path = pathlib.Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    temporary = path.with_name(path.name + ".partial")
-    temporary.write_text(json.dumps(record) + "\n")
-    os.replace(temporary, path)  # never a half-written policy
+    temporary = path.with_name(f"{path.name}.{os.getpid()}.partial")
+    temporary.write_text(text)
+    os.replace(temporary, path)
 
 
 def load_policy(path):
@@ -593,10 +599,7 @@ def command_compare(args):
     summary = compare(policies, args.wall_seeds, args.seeds)
     summary["policies"] = [str(path) for path in args.policy]
     if args.out:
-        args.out.parent.mkdir(parents=True, exist_ok=True)
-        temporary = args.out.with_name(args.out.name + ".partial")
-        temporary.write_text(json.dumps(summary, indent=1) + "\n")
-        os.replace(temporary, args.out)
+        write_whole(args.out, json.dumps(summary, indent=1) + "\n")
     print(json.dumps(summary, indent=1) if args.json else comparison_markdown(summary))
 
 
@@ -697,9 +700,7 @@ def command_search(args):
     plans_path = args.out / "validation_plans.json"
     if not plans_path.exists():
         plans = plan_lengths(args.validation_walls, args.physics_model)
-        partial = plans_path.with_name(f"{plans_path.name}.{os.getpid()}.partial")
-        partial.write_text(json.dumps({str(seed): length for seed, length in plans.items()}))
-        os.replace(partial, plans_path)  # parts started together each write it whole
+        write_whole(plans_path, json.dumps({str(seed): length for seed, length in plans.items()}))
     args.validation_plans = {int(seed): length for seed, length in json.loads(plans_path.read_text()).items()}
     stage = STAGES[args.stage]
     done = {(setting_name(r["setting"]), r["seed"]) for r in records if r["stage"] == args.stage}
