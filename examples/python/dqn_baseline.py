@@ -52,12 +52,12 @@ REWARD_SCALE = 1e-4
 # the candidates (docs/BASELINES.md, "Pilots").
 GAMMA = 0.9
 N_STEP = 3
-BATCH = 32
+BATCH = 32  # --batch's default, the 20,000-step search's
 TRAIN_EVERY = 2
 TARGET_EVERY = 500
 FINAL_EPSILON = 0.05
 STATE_SIZE = 55  # free limb 4, held holds 12, root 3, joint angles 32, centre of mass 3, height to the finish 1
-CHECKPOINTS = 2  # validation evaluations, evenly spaced, the last at the end
+CHECKPOINTS = 2  # validation evaluations, evenly spaced, the last at the end (--checkpoints)
 SEARCH_GRID = {"lr": [3e-4, 1e-3], "epsilon_decay": [0.2, 0.6], "hidden": [64, 128]}
 SEEDS_PER_SETTING = 3
 COMPARISON_FILE = "comparison.json"
@@ -140,12 +140,20 @@ def split(train_walls, evaluation_seeds):
 # --- features and network ------------------------------------------------------------------
 
 
-def features(obs, span):
-    """The numeric observation as (state (55,), candidates (K, 3), mask (K,) bool), lengths in max_spans."""
+def batch_features(obs, span):
+    """The numeric observation, batched (leading axis: environments), as (state (E, 55),
+    candidates (E, K, 3), mask (E, K) bool), lengths in max_spans."""
     posture = obs["posture"]
-    state = np.concatenate([obs["free_limb"], obs["held"].ravel() / span, posture[:3] / span, posture[3:],
-                            obs["centre_of_mass"] / span, obs["to_finish"] / span])
+    envs = posture.shape[0]
+    state = np.concatenate([obs["free_limb"], obs["held"].reshape(envs, -1) / span, posture[:, :3] / span,
+                            posture[:, 3:], obs["centre_of_mass"] / span, obs["to_finish"] / span], axis=1)
     return state.astype(np.float32), (obs["candidates"] / span).astype(np.float32), obs["candidate_mask"] > 0.5
+
+
+def features(obs, span):
+    """batch_features of one environment's observation: (state (55,), candidates (K, 3), mask (K,))."""
+    state, candidates, mask = batch_features({key: value[None] for key, value in obs.items()}, span)
+    return state[0], candidates[0], mask[0]
 
 
 class SlotQNetwork(nn.Module):
@@ -181,10 +189,10 @@ def network_digest(net):
 
 
 class Replay:
-    """n-step transitions, all kept (the budget is small)."""
+    """n-step transitions, the last `capacity` of them (a ring: the oldest is overwritten)."""
 
     def __init__(self, capacity, state_size, slots):
-        self.size = 0
+        self.capacity, self.added = capacity, 0
         self.state = np.zeros((capacity, state_size), np.float32)
         self.candidates = np.zeros((capacity, slots, 3), np.float32)
         self.mask = np.zeros((capacity, slots), bool)
@@ -195,13 +203,17 @@ class Replay:
         self.next_candidates = np.zeros_like(self.candidates)
         self.next_mask = np.zeros_like(self.mask)
 
+    @property
+    def size(self):
+        return min(self.added, self.capacity)
+
     def add(self, pending, following, terminated):
-        (state, candidates, mask, action, _), index = pending[0], self.size
+        (state, candidates, mask, action, _), index = pending[0], self.added % self.capacity
         self.state[index], self.candidates[index], self.mask[index], self.action[index] = state, candidates, mask, action
         self.reward[index] = sum(GAMMA**k * step[4] for k, step in enumerate(pending))
         self.discount[index] = 0.0 if terminated else GAMMA ** len(pending)
         self.next_state[index], self.next_candidates[index], self.next_mask[index] = following
-        self.size += 1
+        self.added += 1
 
     def batch(self, indices):
         def t(array):
@@ -279,52 +291,118 @@ def greedy_climbs(net, env, walls, span):
     return results
 
 
-def train(args, validation_walls=None, log=None, progress=None):
-    """One DQN run; returns its record (deterministic) and the network. `progress`, if
-    given, hears the environment steps done (a Progress)."""
-    for name in ("steps", "hidden", "train_walls"):
+def check_run(args):
+    for name in ("steps", "hidden", "train_walls", "envs", "batch", "checkpoints"):
         value = getattr(args, name)
         if isinstance(value, bool) or not isinstance(value, int) or value < 1:
             raise ValueError(f"{name}: must be a positive integer, got {value!r}")
+    if args.replay is not None and (isinstance(args.replay, bool) or not isinstance(args.replay, int)
+                                    or args.replay < args.batch):
+        raise ValueError(f"replay: must be None or an integer of at least the batch, got {args.replay!r}")
     if not 0 < args.epsilon_decay <= 1:
         raise ValueError(f"epsilon_decay: must be in (0, 1], got {args.epsilon_decay!r}")
     if not (args.lr > 0 and math.isfinite(args.lr)):
         raise ValueError(f"lr: must be a positive number, got {args.lr!r}")
+
+
+class Learner:
+    """One run's network, its target, their optimiser and the replay."""
+
+    def __init__(self, args, slots):
+        self.net = SlotQNetwork(STATE_SIZE, args.hidden)
+        self.target = SlotQNetwork(STATE_SIZE, args.hidden)
+        self.target.load_state_dict(self.net.state_dict())
+        self.optimiser = torch.optim.Adam(self.net.parameters(), lr=args.lr)
+        self.replay = Replay(min(args.steps, args.replay or args.steps), STATE_SIZE, slots)
+        self.batch, self.losses = args.batch, []
+
+    def ready(self):
+        return self.replay.size >= self.batch
+
+    def update(self, rng):
+        loss = td_loss(self.net, self.target, self.replay.batch(rng.integers(self.replay.size, size=self.batch)))
+        self.optimiser.zero_grad()
+        loss.backward()
+        nn.utils.clip_grad_norm_(self.net.parameters(), 10.0)
+        self.optimiser.step()
+        self.losses.append(float(loss))
+
+    def copy_to_target(self):
+        self.target.load_state_dict(self.net.state_dict())
+
+
+class Validation:
+    """The greedy policy's climbs on the validation walls at the checkpoints, timed apart."""
+
+    def __init__(self, args, walls, log):
+        self.walls, self.log, self.curve, self.seconds = walls, log, [], 0.0
+        self.env = None
+        if walls:
+            self.env = make_env(split(args.train_walls, wall_seeds(VALIDATION_FIRST_SEED, walls)), evaluation=True,
+                                max_episode_steps=GREEDY_CAP)
+
+    def __call__(self, step, net, span, episodes):
+        if self.env is None:
+            return
+        started = time.perf_counter()
+        self.curve.append({"step": step, "validation": greedy_climbs(net, self.env, self.walls, span)})
+        self.seconds += time.perf_counter() - started
+        if self.log:
+            done = sum(r["finished"] for r in self.curve[-1]["validation"])
+            no_retry = sum(r["finished_no_retry"] for r in self.curve[-1]["validation"])
+            self.log(f"  step {step}: {len(episodes)} episodes, validation {done}/{self.walls} finished, "
+                     f"{no_retry} without retries")
+
+
+def train(args, validation_walls=None, log=None, progress=None):
+    """One DQN run; returns its record (deterministic), the network and the seconds spent
+    on validation. `progress`, if given, hears the environment steps done (a Progress).
+    args.envs environments: one (the search at 20,000 steps) or a VectorClimbEnv of them."""
+    check_run(args)
     deterministic(args.seed)
     rng = np.random.default_rng(args.seed)
+    validation = Validation(args, validation_walls, log)
+    run = train_one_env if args.envs == 1 else train_vector
+    learner, episodes, masked_choices, steps = run(args, rng, validation, progress)
+    record = {
+        "setting": {"lr": args.lr, "epsilon_decay": args.epsilon_decay, "hidden": args.hidden},
+        "collection": {"envs": args.envs, "batch": args.batch, "replay": learner.replay.capacity},
+        "seed": args.seed,
+        "steps": steps,
+        "train_walls": args.train_walls,
+        "episodes": episodes,
+        "masked_choices": masked_choices,
+        "mean_loss_per_tenth": [float(np.mean(part)) for part in np.array_split(np.array(learner.losses), 10)
+                                if part.size],
+        "curve": validation.curve,
+        "network_sha256": network_digest(learner.net),
+    }
+    return record, learner.net, validation.seconds
+
+
+def checkpoint_steps(total, count):
+    return {round(total * k / count) for k in range(1, count + 1)}
+
+
+def train_one_env(args, rng, validation, progress):
+    """One environment, one update of args.batch every TRAIN_EVERY steps."""
     env = make_env(split(args.train_walls, [HELD_OUT_FIRST_SEED]), max_episode_steps=1000)
     span = env.unwrapped._span
-    validation = None
-    if validation_walls:
-        validation = make_env(split(args.train_walls, wall_seeds(VALIDATION_FIRST_SEED, validation_walls)),
-                              evaluation=True, max_episode_steps=GREEDY_CAP)
     obs, info = env.reset(seed=args.seed)
     state, candidates, mask = features(obs, span)
-    net = SlotQNetwork(state.size, args.hidden)
-    target = SlotQNetwork(state.size, args.hidden)
-    target.load_state_dict(net.state_dict())
-    optimiser = torch.optim.Adam(net.parameters(), lr=args.lr)
-    replay = Replay(args.steps, state.size, mask.size)
+    learner = Learner(args, mask.size)
     decay_steps = max(1, round(args.epsilon_decay * args.steps))
     learning_starts = min(1000, args.steps // 10)
     pending = collections.deque()
-    episodes, length, losses, masked_choices = [], 0, [], 0
-    checkpoints = {round(args.steps * k / CHECKPOINTS) for k in range(1, CHECKPOINTS + 1)}
-    curve, validation_seconds = [], 0.0
-
-    def validate(step):
-        nonlocal validation_seconds
-        started = time.perf_counter()
-        curve.append({"step": step, "validation": greedy_climbs(net, validation, validation_walls, span)})
-        validation_seconds += time.perf_counter() - started
-
+    episodes, length, masked_choices = [], 0, 0
+    checkpoints = checkpoint_steps(args.steps, args.checkpoints)
     for step in range(1, args.steps + 1):
         epsilon = max(FINAL_EPSILON, 1.0 - (1.0 - FINAL_EPSILON) * (step - 1) / decay_steps)
         possible = np.flatnonzero(mask)
         if rng.random() < epsilon:
             action = int(rng.choice(possible))
         else:
-            action = greedy_action(net, state, candidates, mask)
+            action = greedy_action(learner.net, state, candidates, mask)
         masked_choices += not mask[action]
         obs, reward, terminated, truncated, info = env.step(action)
         length += 1
@@ -332,45 +410,86 @@ def train(args, validation_walls=None, log=None, progress=None):
         state, candidates, mask = features(obs, span)
         if terminated or truncated or not mask.any():
             while pending:
-                replay.add(pending, (state, candidates, mask), terminated)
+                learner.replay.add(pending, (state, candidates, mask), terminated)
                 pending.popleft()
             episodes.append({"end_step": step, "length": length, "finished": bool(terminated)})
             length = 0
             obs, info = env.reset()
             state, candidates, mask = features(obs, span)
         elif len(pending) == N_STEP:
-            replay.add(pending, (state, candidates, mask), False)
+            learner.replay.add(pending, (state, candidates, mask), False)
             pending.popleft()
-        if step >= learning_starts and step % TRAIN_EVERY == 0 and replay.size >= BATCH:
-            loss = td_loss(net, target, replay.batch(rng.integers(replay.size, size=BATCH)))
-            optimiser.zero_grad()
-            loss.backward()
-            nn.utils.clip_grad_norm_(net.parameters(), 10.0)
-            optimiser.step()
-            losses.append(float(loss))
+        if step >= learning_starts and step % TRAIN_EVERY == 0 and learner.ready():
+            learner.update(rng)
         if step % TARGET_EVERY == 0:
-            target.load_state_dict(net.state_dict())
+            learner.copy_to_target()
         if progress:
             progress.update(step)
-        if validation and step in checkpoints:
-            validate(step)
-            if log:
-                done = sum(r["finished"] for r in curve[-1]["validation"])
-                no_retry = sum(r["finished_no_retry"] for r in curve[-1]["validation"])
-                log(f"  step {step}: {len(episodes)} episodes, validation {done}/{validation_walls} finished, "
-                    f"{no_retry} without retries")
-    record = {
-        "setting": {"lr": args.lr, "epsilon_decay": args.epsilon_decay, "hidden": args.hidden},
-        "seed": args.seed,
-        "steps": args.steps,
-        "train_walls": args.train_walls,
-        "episodes": episodes,
-        "masked_choices": masked_choices,
-        "mean_loss_per_tenth": [float(np.mean(part)) for part in np.array_split(np.array(losses), 10) if part.size],
-        "curve": curve,
-        "network_sha256": network_digest(net),
-    }
-    return record, net, validation_seconds
+        if step in checkpoints:
+            validation(step, learner.net, span, episodes)
+    return learner, episodes, masked_choices, args.steps
+
+
+def explore(mask, greedy, epsilon, rng):
+    """Per environment: with probability epsilon a uniform draw among its possible actions
+    (the argmax of uniform noise over them), else its greedy action."""
+    drawn = np.argmax(rng.random(mask.shape) * mask, axis=1)
+    return np.where(rng.random(len(mask)) < epsilon, drawn, greedy)
+
+
+def train_vector(args, rng, validation, progress):
+    """args.envs environments stepped together (one greedy inference for all of them) and
+    one update of args.batch transitions a step of them all, so that a run of millions of
+    steps takes minutes; the replay keeps the last args.replay transitions, and the target
+    is copied every TARGET_EVERY / TRAIN_EVERY updates, as in the one-environment run."""
+    span = make_env(split(args.train_walls, [HELD_OUT_FIRST_SEED])).unwrapped._span
+    envs = crux.gym.VectorClimbEnv(args.envs, wall=wall_seeds(0, args.train_walls), observation="numeric",
+                                   wall_order="sample", max_episode_steps=1000)
+    obs, _ = envs.reset(seed=args.seed)
+    state, candidates, mask = batch_features(obs, span)
+    learner = Learner(args, mask.shape[1])
+    rounds = max(1, args.steps // args.envs)
+    decay_rounds = max(1, round(args.epsilon_decay * rounds))
+    learning_starts = min(1000, args.steps // 10)
+    pending = [collections.deque() for _ in range(args.envs)]
+    lengths, resetting = np.zeros(args.envs, np.int64), np.zeros(args.envs, bool)
+    episodes, masked_choices, updates = [], 0, 0
+    checkpoints = checkpoint_steps(rounds, args.checkpoints)
+    for round_ in range(1, rounds + 1):
+        step = round_ * args.envs
+        epsilon = max(FINAL_EPSILON, 1.0 - (1.0 - FINAL_EPSILON) * (round_ - 1) / decay_rounds)
+        with torch.no_grad():
+            # A resetting environment's action is unused; a row with no possible action scores all -inf.
+            q = learner.net(torch.from_numpy(state), torch.from_numpy(candidates), torch.from_numpy(mask))
+        action = explore(mask, torch.argmax(q, dim=1).numpy(), epsilon, rng)
+        masked_choices += int(np.sum(~mask[np.arange(args.envs), action] & ~resetting))
+        obs, reward, terminated, truncated, _ = envs.step(action)
+        following = batch_features(obs, span)
+        for env in np.flatnonzero(~resetting):
+            pending[env].append((state[env], candidates[env], mask[env], action[env], reward[env] * REWARD_SCALE))
+            lengths[env] += 1
+            after = tuple(part[env] for part in following)
+            if terminated[env] or truncated[env]:
+                while pending[env]:
+                    learner.replay.add(pending[env], after, terminated[env])
+                    pending[env].popleft()
+                episodes.append({"end_step": step, "length": int(lengths[env]), "finished": bool(terminated[env])})
+                lengths[env] = 0
+            elif len(pending[env]) == N_STEP:
+                learner.replay.add(pending[env], after, False)
+                pending[env].popleft()
+        resetting = terminated | truncated
+        state, candidates, mask = following
+        if step >= learning_starts and learner.ready():
+            learner.update(rng)
+            updates += 1
+            if updates % (TARGET_EVERY // TRAIN_EVERY) == 0:
+                learner.copy_to_target()
+        if progress:
+            progress.update(step)
+        if round_ in checkpoints:
+            validation(step, learner.net, span, episodes)
+    return learner, episodes, masked_choices, rounds * args.envs
 
 
 def early_episodes(policy, env, rng, span, cap=DYNA_ITERATIONS):
@@ -440,6 +559,13 @@ def part(text):
     return index, count
 
 
+def grid_setting(text):
+    names = [setting_name(setting) for setting in settings()]
+    if text not in names:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a setting of the grid ({', '.join(names)})")
+    return text
+
+
 def search_log_name(index, count):
     """The file that part index of count of the search appends its records to."""
     return "search.jsonl" if count == 1 else f"search-{index}of{count}.jsonl"
@@ -460,23 +586,23 @@ def command_search(args):
     done = set()
     if log_path.exists():
         done = {(setting_name(r["setting"]), r["seed"]) for r in map(json.loads, log_path.read_text().splitlines())}
-    for rank, setting in enumerate(settings()):
-        if (rank // 2) % count != index - 1:  # each part gets both widths
+    grid = [setting for setting in settings() if args.setting in (None, setting_name(setting))]
+    runs = [(setting, seed) for setting in grid for seed in range(args.seed, args.seed + SEEDS_PER_SETTING)]
+    for setting, seed in runs[index - 1::count]:  # the K-th of every N runs: the parts alternate the widths
+        name = setting_name(setting)
+        if (name, seed) in done:
             continue
-        for seed in range(args.seed, args.seed + SEEDS_PER_SETTING):
-            name = setting_name(setting)
-            if (name, seed) in done:
-                continue
-            run = argparse.Namespace(steps=args.steps, seed=seed, train_walls=args.train_walls, **setting)
-            print(f"{name} seed {seed}", flush=True)
-            started = time.perf_counter()
-            record, net, validation_seconds = train(run, validation_walls=args.validation_walls,
-                                                    log=lambda m: print(m, flush=True))
-            record["wall_clock_s"] = {"training": round(time.perf_counter() - started - validation_seconds, 3),
-                                      "validation": round(validation_seconds, 3)}
-            torch.save(net.state_dict(), out / "nets" / f"{name}-s{seed}.pt")
-            with log_path.open("a") as file:
-                file.write(json.dumps(record, sort_keys=True) + "\n")
+        run = argparse.Namespace(steps=args.steps, seed=seed, train_walls=args.train_walls, envs=args.envs,
+                                 batch=args.batch, replay=args.replay, checkpoints=args.checkpoints, **setting)
+        print(f"{name} seed {seed}", flush=True)
+        started = time.perf_counter()
+        record, net, validation_seconds = train(run, validation_walls=args.validation_walls,
+                                                log=lambda m: print(m, flush=True))
+        record["wall_clock_s"] = {"training": round(time.perf_counter() - started - validation_seconds, 3),
+                                  "validation": round(validation_seconds, 3)}
+        torch.save(net.state_dict(), out / "nets" / f"{name}-s{seed}.pt")
+        with log_path.open("a") as file:
+            file.write(json.dumps(record, sort_keys=True) + "\n")
 
 
 def search_table(records):
@@ -718,6 +844,19 @@ def command_plot(args):
     print(f"wrote {args.figure}")
 
 
+def collection_options(parser):
+    """How a run collects and learns: train's and search's shared options."""
+    parser.add_argument("--train-walls", type=positive, default=500)
+    parser.add_argument("--validation-walls", type=positive, default=30)
+    parser.add_argument("--envs", type=positive, default=1,
+                        help="environments stepped together: 1 (an update every 2 steps) or a VectorClimbEnv "
+                             "of them (an update every step of them all)")
+    parser.add_argument("--batch", type=positive, default=BATCH, help="transitions an update")
+    parser.add_argument("--replay", type=positive, help="transitions the replay keeps (default: every one)")
+    parser.add_argument("--checkpoints", type=positive, default=CHECKPOINTS,
+                        help="validations, evenly spaced, the last at the end")
+
+
 def main(argv=None):
     # The whole docstring, so that --help gives the commands and the files they write.
     parser = OneLineParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -729,8 +868,7 @@ def main(argv=None):
     one.add_argument("--epsilon-decay", type=fraction, default=0.2,
                      help="share of the steps over which epsilon falls from 1 to 0.05")
     one.add_argument("--hidden", type=positive, default=64, help="width of the two hidden layers")
-    one.add_argument("--train-walls", type=positive, default=500)
-    one.add_argument("--validation-walls", type=positive, default=30)
+    collection_options(one)
     one.add_argument("--save", help="where to write the network's state_dict")
     one.add_argument("--quiet", action="store_true",
                      help="no progress on stderr (a bar on a terminal, else a line every ten seconds)")
@@ -739,10 +877,10 @@ def main(argv=None):
     search.add_argument("--out", required=True)
     search.add_argument("--steps", type=positive, default=20000)
     search.add_argument("--seed", type=int, default=1)
-    search.add_argument("--train-walls", type=positive, default=500)
-    search.add_argument("--validation-walls", type=positive, default=30)
+    search.add_argument("--setting", type=grid_setting, help="one setting of the grid only, by its name (e.g. lr0.001-decay0.2-h64)")
+    collection_options(search)
     search.add_argument("--part", type=part, default=(1, 1),
-                        help="K/N: run the K-th of N shares of the grid, for N processes (one core each)")
+                        help="K/N: run the K-th of every N runs of the grid, for N processes (one core each)")
     compare = commands.add_parser("compare", help="the chosen setting, Dyna-Q and random on the held-out walls")
     compare.add_argument("--out", required=True)
     compare.add_argument("--seed", type=int, default=1)

@@ -30,6 +30,7 @@ value network (training only) reads the state's 55 numbers.
 """
 
 import argparse
+import copy
 import json
 import math
 import os
@@ -348,6 +349,7 @@ def train(args, progress=None):
     if args.validation_walls and validation_plans is None:
         validation_plans = plan_lengths(args.validation_walls, args.physics_model)
     started = time.monotonic()
+    best = None  # with --keep-best: (score, steps, weights) of the best validation so far
     for update in range(updates):
         optimiser.param_groups[0]["lr"] = args.lr * (1 - update / updates)
         for t in range(args.rollout):
@@ -373,11 +375,17 @@ def train(args, progress=None):
             if args.validation_walls:
                 validation = evaluate(policy, args.validation_walls, args.physics_model, validation_plans)
                 record.update({key: validation[key] for key in VALIDATION_KEYS})
+                score = (validation["finished"], -(validation["mean_length_ratio"] or math.inf))
+                if getattr(args, "keep_best", False) and (best is None or score > best[0]):
+                    best = (score, steps, copy.deepcopy(policy.state_dict()))
             history.append(record)
             if progress:
                 progress(record)
     training = {"command": args.command, "seed": args.seed, "steps": updates * args.rollout * args.envs,
                 "settings": {key: getattr(args, key) for key in SETTINGS}}
+    if best is not None:
+        policy.load_state_dict(best[2])
+        training["kept_steps"] = best[1]  # the weights are those after these steps, not the last ones
     return policy, history, training
 
 
@@ -774,6 +782,9 @@ def parser():
     t.add_argument("--seed", type=int, default=1, help="fixes the walls, the network and the sampling")
     t.add_argument("--init-policy", type=pathlib.Path, default=None,
                    help="start from this policy file's weights (of the same --hidden) instead of random ones")
+    t.add_argument("--keep-best", action="store_true",
+                   help="write the weights of the best validation (most finished, then the shortest climbs "
+                   "against the plans), not the last ones")
     training_options(t)
     h = commands.add_parser("search", help="The settings' search, resumable: runs the stage's runs not yet logged")
     h.add_argument("--out", type=pathlib.Path, required=True, help="the folder of search.jsonl and the policies")

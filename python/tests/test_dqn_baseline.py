@@ -52,7 +52,8 @@ def short_run(*extra):
 
 
 def short_args(**changes):
-    values = dict(steps=300, seed=1, lr=1e-3, epsilon_decay=0.2, hidden=64, train_walls=2)
+    values = dict(steps=300, seed=1, lr=1e-3, epsilon_decay=0.2, hidden=64, train_walls=2, envs=1,
+                  batch=32, replay=None, checkpoints=2)
     return argparse.Namespace(**dict(values, **changes))
 
 
@@ -212,3 +213,34 @@ def test_train_keeps_stdout_to_its_record_and_takes_quiet():
     assert done.returncode == 0, done.stderr
     assert done.stderr == ""
     json.loads(done.stdout)
+
+
+def test_the_replay_keeps_the_last_transitions_of_its_capacity(baseline):
+    replay = baseline.Replay(3, 2, 4)
+    following = (np.zeros(2, np.float32), np.zeros((4, 3), np.float32), np.ones(4, bool))
+    for action in range(5):
+        replay.add([(np.full(2, action, np.float32), np.zeros((4, 3)), np.ones(4, bool), action, 1.0)], following,
+                   terminated=action == 4)
+    assert replay.size == 3 and sorted(replay.action.tolist()) == [2, 3, 4]
+    assert replay.discount.tolist() == [pytest.approx(baseline.GAMMA), 0.0, pytest.approx(baseline.GAMMA)]
+
+
+def test_vector_collection_repeats_itself_and_keeps_to_the_mask(baseline):
+    args = short_args(steps=400, envs=4, batch=16, replay=100)
+    first, net, _ = baseline.train(args, validation_walls=1)
+    again, _, _ = baseline.train(args, validation_walls=1)
+    assert json.dumps(first, sort_keys=True) == json.dumps(again, sort_keys=True)
+    assert first["collection"] == {"envs": 4, "batch": 16, "replay": 100} and first["steps"] == 400
+    assert first["masked_choices"] == 0
+    assert [point["step"] for point in first["curve"]] == [200, 400]
+    assert sum(episode["length"] for episode in first["episodes"]) <= 400
+    one_env, _, _ = baseline.train(short_args(steps=400), validation_walls=1)
+    assert one_env["network_sha256"] != first["network_sha256"]
+
+
+def test_search_refuses_a_setting_outside_its_grid(baseline, capsys, tmp_path):
+    with pytest.raises(SystemExit) as exit:
+        baseline.main(["search", "--out", str(tmp_path), "--setting", "lr1-decay1-h1"])
+    err = capsys.readouterr().err
+    assert exit.value.code == 2 and len(err.splitlines()) == 1 and "--setting" in err and "lr0.001-decay0.2-h64" in err
+    assert not any(tmp_path.iterdir())

@@ -245,3 +245,28 @@ def test_training_can_start_from_a_policy_and_refuses_a_bad_one(tmp_path, capsys
         error = capsys.readouterr().err
         assert exit_code.value.code == 2 and error.count("\n") == 1 and problem in error, error
         assert error.startswith("policy_baseline.py: --init-policy: ") and not (tmp_path / "x.json").exists()
+
+
+def test_keep_best_writes_the_weights_of_the_best_validation(tmp_path, monkeypatch, capsys):
+    # Scripted validations over the short run's 96 updates: the second is the best (the
+    # fourth ties it on finished but climbs longer against the plans); the fifth is the run
+    # without --keep-best.
+    scores = iter([(0.2, 1.5), (0.6, 1.5), (0.4, 1.2), (0.6, 1.8), (0.1, 1.0)])
+    weights_seen = []
+
+    def scripted_evaluate(policy, wall_seeds, physics_model="kinematic", plans=None):
+        weights_seen.append(policy.slot_net[0].weight.detach()[:, :, 0].tolist())
+        finished, ratio = next(scores)
+        return {"finished": finished, "mean_length": 10.0, "mean_length_ratio": ratio, "within_1_5_plans": 0.0}
+
+    monkeypatch.setattr(baseline, "evaluate", scripted_evaluate)
+    monkeypatch.setattr(baseline, "plan_lengths", lambda walls, physics_model="kinematic": {})
+    kept = train(tmp_path, "kept.json", ["--validation-walls", "1", "--validate-every", "24", "--keep-best"])
+    last = train(tmp_path, "last.json", ["--validation-walls", "1", "--validate-every", "96"])
+    capsys.readouterr()
+    record = json.loads(kept.read_text())
+    assert len(weights_seen) == 5 and record["training"]["kept_steps"] == record["training"]["history"][1]["steps"]
+    assert record["slot_layers"][0]["weight"] == weights_seen[1] != weights_seen[3]
+    # Without --keep-best the last weights are written, and the run is otherwise the same.
+    assert json.loads(last.read_text())["slot_layers"][0]["weight"] == weights_seen[3] == weights_seen[4]
+    assert "kept_steps" not in json.loads(last.read_text())["training"]
