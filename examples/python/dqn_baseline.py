@@ -8,6 +8,12 @@ random policy on the same walls (docs/BASELINES.md).
     /usr/bin/python3 examples/python/dqn_baseline.py compare --out build/baseline   # on the held-out walls
     /usr/bin/python3 examples/python/dqn_baseline.py plot --out build/baseline docs/images/baseline_curves.png
 
+At the learnt policy's budget: the chosen setting, 6 M steps a run over 64 environments
+stepped together (--envs; --part K/3 runs the K-th seed):
+
+    /usr/bin/python3 examples/python/dqn_baseline.py search --out build/baseline-6m --setting lr0.0003-decay0.6-h64 \
+        --steps 6000000 --envs 64 --batch 256 --replay 1000000 --checkpoints 6 --part 1/3
+
 search writes OUT/search.jsonl (OUT/search-KofN.jsonl with --part K/N), one JSON record
 per run, and the networks in OUT/nets/; compare writes OUT/comparison.json; plot writes
 the figure it is given (.png or .svg). docs/BASELINES.md times the full run (about half

@@ -270,3 +270,17 @@ def test_keep_best_writes_the_weights_of_the_best_validation(tmp_path, monkeypat
     # Without --keep-best the last weights are written, and the run is otherwise the same.
     assert json.loads(last.read_text())["slot_layers"][0]["weight"] == weights_seen[3] == weights_seen[4]
     assert "kept_steps" not in json.loads(last.read_text())["training"]
+
+
+def test_baselines_keep_best_table_quotes_its_record():
+    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "static_keep_best.json").read_text())
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    for run in record["runs"]:
+        rate = run["command"].split("--lr ")[1].split()[0]
+        best = max(run["validation"], key=lambda p: (p["finished"], -(p["mean_length_ratio"] or np.inf)))
+        held = run["held_out"]
+        row = (f"| {float(rate):.0e} | {best['finished']:.0%} ({round(best['finished'] * 25)} of 25) "
+               f"| {run['kept_steps']:,} | {run['validation'][-1]['finished']:.0%} "
+               f"| {held['finished']:.0%} ({round(held['finished'] * held['climbs'])} of {held['climbs']})")
+        row = row.replace("e-0", "e-").replace("%", " %")
+        assert best["steps"] == run["kept_steps"] and row in text, row
