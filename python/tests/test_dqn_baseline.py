@@ -180,7 +180,9 @@ def test_the_docs_name_the_files_the_script_writes(baseline, tmp_path, monkeypat
     text = BASELINES.read_text()
     docs = text[text.index("\n## The first baseline: a masked DQN\n"):text.index("\n## Not done\n")]
     for name, text in (("the docstring", baseline.__doc__), ("docs/BASELINES.md", docs)):
-        quoted = set(re.findall(r"[\w-]+\.jsonl?\b", text))
+        # Records committed under models/ are quoted, not written by the script.
+        committed = {path.name for path in (REPOSITORY / "models").rglob("*.json")}
+        quoted = set(re.findall(r"[\w-]+\.jsonl?\b", text)) - committed
         assert {"search.jsonl", "search-KofN.jsonl", "comparison.json"} <= quoted <= written, name
         # plot writes the figure it is given: the docs' is the one they show.
         for figure in re.findall(r"dqn_baseline\.py plot --out \S+ (\S+)", text):
@@ -244,3 +246,20 @@ def test_search_refuses_a_setting_outside_its_grid(baseline, capsys, tmp_path):
     err = capsys.readouterr().err
     assert exit.value.code == 2 and len(err.splitlines()) == 1 and "--setting" in err and "lr0.001-decay0.2-h64" in err
     assert not any(tmp_path.iterdir())
+
+
+def test_baselines_quotes_the_6m_record():
+    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "dqn_6m.json").read_text())
+    text = BASELINES.read_text()
+    for run in record["runs"]:
+        assert run["steps"] == 6_000_000 and run["collection"] == {"envs": 64, "batch": 256, "replay": 1_000_000}
+        per_million = ", ".join(map(str, run["finished_per_million_steps"]))
+        last = run["validation"][-1]
+        assert [point["finished"] for point in run["validation"]] == [0] * 6
+        row = (f"| {run['seed']} | {run['training_episodes']} | {run['finished_episodes']} | {per_million} | 0 of 30 at "
+               f"each")
+        assert row in text and f"| {last['mean_moves_before_failure']:.0f} (the cap), {last['mean_rise_m']:.2f} m |" in text
+    held_out = record["held_out"]["methods"]["DQN, greedy without retries (zero-shot)"]
+    assert held_out["finished"]["mean"] == 0.0 and held_out["reached_share"]["mean"] == 1.0
+    rise = held_out["rise_m"]
+    assert f"rises {rise['mean']:.3f} m [{rise['low']:.3f}, {rise['high']:.3f}]" in text
