@@ -81,7 +81,7 @@ def fraction(text):
     return value
 
 
-def learning_rate(text):
+def positive_number(text):
     try:
         value = float(text)
     except ValueError:
@@ -244,9 +244,19 @@ def td_loss(net, target, batch):
 # --- training and evaluation ---------------------------------------------------------------
 
 
-def make_env(wall_split, evaluation=False, max_episode_steps=None):
+def make_env(wall_split, evaluation=False, max_episode_steps=None, config=None):
     return gymnasium.make("crux/Climb-v0", observation="numeric", wall_split=wall_split, evaluation=evaluation,
-                          wall_order="cycle" if evaluation else "sample", max_episode_steps=max_episode_steps)
+                          wall_order="cycle" if evaluation else "sample", max_episode_steps=max_episode_steps,
+                          config=config)
+
+
+def training_config(args):
+    """The training environments' config: the paper's rewards, or with --reward-height the
+    potential-based height shaping of docs/PHYSICS.md, discounted with the DQN's gamma so
+    that the optimal policy stays the paper's."""
+    if args.reward_height is None:
+        return None
+    return {"reward.height": args.reward_height, "learning.gamma": GAMMA}
 
 
 def greedy_climbs(net, env, walls, span):
@@ -373,6 +383,7 @@ def train(args, validation_walls=None, log=None, progress=None):
     record = {
         "setting": {"lr": args.lr, "epsilon_decay": args.epsilon_decay, "hidden": args.hidden},
         "collection": {"envs": args.envs, "batch": args.batch, "replay": learner.replay.capacity},
+        "reward_height": args.reward_height,
         "seed": args.seed,
         "steps": steps,
         "train_walls": args.train_walls,
@@ -392,7 +403,7 @@ def checkpoint_steps(total, count):
 
 def train_one_env(args, rng, validation, progress):
     """One environment, one update of args.batch every TRAIN_EVERY steps."""
-    env = make_env(split(args.train_walls, [HELD_OUT_FIRST_SEED]), max_episode_steps=1000)
+    env = make_env(split(args.train_walls, [HELD_OUT_FIRST_SEED]), max_episode_steps=1000, config=training_config(args))
     span = env.unwrapped._span
     obs, info = env.reset(seed=args.seed)
     state, candidates, mask = features(obs, span)
@@ -450,7 +461,7 @@ def train_vector(args, rng, validation, progress):
     is copied every TARGET_EVERY / TRAIN_EVERY updates, as in the one-environment run."""
     span = make_env(split(args.train_walls, [HELD_OUT_FIRST_SEED])).unwrapped._span
     envs = crux.gym.VectorClimbEnv(args.envs, wall=wall_seeds(0, args.train_walls), observation="numeric",
-                                   wall_order="sample", max_episode_steps=1000)
+                                   wall_order="sample", max_episode_steps=1000, config=training_config(args))
     obs, _ = envs.reset(seed=args.seed)
     state, candidates, mask = batch_features(obs, span)
     learner = Learner(args, mask.shape[1])
@@ -599,7 +610,8 @@ def command_search(args):
         if (name, seed) in done:
             continue
         run = argparse.Namespace(steps=args.steps, seed=seed, train_walls=args.train_walls, envs=args.envs,
-                                 batch=args.batch, replay=args.replay, checkpoints=args.checkpoints, **setting)
+                                 batch=args.batch, replay=args.replay, checkpoints=args.checkpoints,
+                                 reward_height=args.reward_height, **setting)
         print(f"{name} seed {seed}", flush=True)
         started = time.perf_counter()
         record, net, validation_seconds = train(run, validation_walls=args.validation_walls,
@@ -861,6 +873,9 @@ def collection_options(parser):
     parser.add_argument("--replay", type=positive, help="transitions the replay keeps (default: every one)")
     parser.add_argument("--checkpoints", type=positive, default=CHECKPOINTS,
                         help="validations, evenly spaced, the last at the end")
+    parser.add_argument("--reward-height", type=positive_number, default=None,
+                        help="reward.height in training (potential-based height shaping, per metre, in the paper's "
+                             "reward units); default: none, the paper's rewards")
 
 
 def main(argv=None):
@@ -870,7 +885,7 @@ def main(argv=None):
     one = commands.add_parser("train", help="one DQN run; prints its record as JSON")
     one.add_argument("--steps", type=positive, default=20000, help="environment steps of training")
     one.add_argument("--seed", type=int, default=1)
-    one.add_argument("--lr", type=learning_rate, default=1e-3)
+    one.add_argument("--lr", type=positive_number, default=1e-3)
     one.add_argument("--epsilon-decay", type=fraction, default=0.2,
                      help="share of the steps over which epsilon falls from 1 to 0.05")
     one.add_argument("--hidden", type=positive, default=64, help="width of the two hidden layers")

@@ -53,7 +53,7 @@ def short_run(*extra):
 
 def short_args(**changes):
     values = dict(steps=300, seed=1, lr=1e-3, epsilon_decay=0.2, hidden=64, train_walls=2, envs=1,
-                  batch=32, replay=None, checkpoints=2)
+                  batch=32, replay=None, checkpoints=2, reward_height=None)
     return argparse.Namespace(**dict(values, **changes))
 
 
@@ -138,7 +138,8 @@ def test_the_same_seed_gives_the_same_bytes_and_the_record_its_fields(baseline):
 
 
 @pytest.mark.parametrize("argument, value", [("--steps", "0"), ("--hidden", "-3"), ("--lr", "0"),
-                                             ("--epsilon-decay", "1.5"), ("--train-walls", "two")])
+                                             ("--epsilon-decay", "1.5"), ("--train-walls", "two"),
+                                             ("--reward-height", "-1"), ("--envs", "0")])
 def test_bad_input_is_one_line_naming_the_argument(baseline, capsys, argument, value):
     with pytest.raises(SystemExit) as exit:
         baseline.main(["train", argument, value])
@@ -238,6 +239,10 @@ def test_vector_collection_repeats_itself_and_keeps_to_the_mask(baseline):
     assert sum(episode["length"] for episode in first["episodes"]) <= 400
     one_env, _, _ = baseline.train(short_args(steps=400), validation_walls=1)
     assert one_env["network_sha256"] != first["network_sha256"]
+    # Height shaping changes the rewards the DQN learns from, and the record says so.
+    shaped, _, _ = baseline.train(short_args(steps=400, envs=4, batch=16, replay=100, reward_height=1e5))
+    assert shaped["reward_height"] == 1e5 and first["reward_height"] is None
+    assert shaped["network_sha256"] != first["network_sha256"]
 
 
 def test_search_refuses_a_setting_outside_its_grid(baseline, capsys, tmp_path):
