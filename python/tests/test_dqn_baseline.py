@@ -268,3 +268,14 @@ def test_baselines_quotes_the_6m_record():
     assert held_out["finished"]["mean"] == 0.0 and held_out["reached_share"]["mean"] == 1.0
     rise = held_out["rise_m"]
     assert f"rises {rise['mean']:.3f} m [{rise['low']:.3f}, {rise['high']:.3f}]" in text
+    shaped = record["shaped_3m"]
+    for run in shaped["runs"]:
+        assert run["reward_height"] == 1e5 and run["steps"] == 3_000_000
+        finished = ", ".join(str(point["finished_no_retry"]) for point in run["validation"])
+        rises = ", ".join(f"{point['mean_rise_m']:.2f}" for point in run["validation"])
+        per_half_million = ", ".join(map(str, run["finished_per_half_million_steps"]))
+        row = f"| {run['seed']} | {per_half_million} | {finished} | {rises} |"
+        assert row in text, row
+    rise = shaped["held_out"]["methods"]["DQN, greedy without retries (zero-shot)"]["rise_m"]
+    assert shaped["held_out"]["methods"]["DQN, greedy without retries (zero-shot)"]["finished"]["mean"] == 0.0
+    assert f"(rise {rise['mean']:.3f} m [{rise['low']:.3f},\n  {rise['high']:.3f}]" in text
