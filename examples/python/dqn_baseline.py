@@ -609,9 +609,7 @@ def command_search(args):
         name = setting_name(setting)
         if (name, seed) in done:
             continue
-        run = argparse.Namespace(steps=args.steps, seed=seed, train_walls=args.train_walls, envs=args.envs,
-                                 batch=args.batch, replay=args.replay, checkpoints=args.checkpoints,
-                                 reward_height=args.reward_height, **setting)
+        run = argparse.Namespace(**{key: getattr(args, key) for key in RUN_OPTIONS}, seed=seed, **setting)
         print(f"{name} seed {seed}", flush=True)
         started = time.perf_counter()
         record, net, validation_seconds = train(run, validation_walls=args.validation_walls,
@@ -862,6 +860,10 @@ def command_plot(args):
     print(f"wrote {args.figure}")
 
 
+# What search passes on to each run's train, as collection_options declares them.
+RUN_OPTIONS = ("steps", "train_walls", "envs", "batch", "replay", "checkpoints", "reward_height")
+
+
 def collection_options(parser):
     """How a run collects and learns: train's and search's shared options."""
     parser.add_argument("--train-walls", type=positive, default=500)
@@ -910,6 +912,8 @@ def main(argv=None):
     plot.add_argument("--out", required=True)
     plot.add_argument("figure")
     args = parser.parse_args(argv)
+    if getattr(args, "replay", None) is not None and args.replay < args.batch:
+        parser.error(f"argument --replay: must be at least --batch ({args.batch}), got {args.replay}")
     {"train": command_train, "search": command_search, "compare": command_compare, "plot": command_plot}[
         args.command](args)
 

@@ -139,7 +139,8 @@ def test_the_same_seed_gives_the_same_bytes_and_the_record_its_fields(baseline):
 
 @pytest.mark.parametrize("argument, value", [("--steps", "0"), ("--hidden", "-3"), ("--lr", "0"),
                                              ("--epsilon-decay", "1.5"), ("--train-walls", "two"),
-                                             ("--reward-height", "-1"), ("--envs", "0")])
+                                             ("--reward-height", "-1"), ("--envs", "0"),
+                                             ("--replay", "8")])
 def test_bad_input_is_one_line_naming_the_argument(baseline, capsys, argument, value):
     with pytest.raises(SystemExit) as exit:
         baseline.main(["train", argument, value])
