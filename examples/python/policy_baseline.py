@@ -66,12 +66,29 @@ SLOT_SIZE = 3 + 7 + 1  # the candidate, its reach features, whether its move fai
 non_negative = integer_at_least(0)
 
 
-def non_negative_float(text):
+def finite_float(text):
     try:
         value = float(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"must be a number, got {text!r}") from None
-    if not math.isfinite(value) or value < 0:
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"must be a finite number, got {text!r}")
+    return value
+
+
+def finish_height(text):
+    """A wall.finish_height that crux's random walls take (their key's range)."""
+    value = finite_float(text)
+    try:
+        crux.Wall.random(0, {"wall.finish_height": value})
+    except ValueError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+    return value
+
+
+def non_negative_float(text):
+    value = finite_float(text)
+    if value < 0:
         raise argparse.ArgumentTypeError(f"must be a finite number >= 0, got {text!r}")
     return value
 
@@ -328,8 +345,10 @@ def train(args, progress=None):
     """Masked PPO; returns (policy, history), history a record per validation."""
     deterministic(args.seed, args.threads)
     config = climbing_config(args.physics_model, args.reward_height, args.gamma)
+    # A lower finishing height makes finishes common early (a curriculum); validation keeps the walls' own.
+    wall_config = None if args.finish_height is None else {"wall.finish_height": args.finish_height}
     envs = crux.gym.VectorClimbEnv(args.envs, wall=args.train_walls, observation=OBSERVATION, wall_order="sample",
-                                   config=config, max_episode_steps=args.episode_steps)
+                                   config=config, max_episode_steps=args.episode_steps, wall_config=wall_config)
     span = configured_max_span()
     policy = SlotPolicy(args.hidden, span)
     if getattr(args, "init_policy", None):
@@ -391,7 +410,7 @@ def train(args, progress=None):
 
 VALIDATION_KEYS = ("finished", "mean_length", "mean_length_ratio", "within_1_5_plans")
 SETTINGS = ("lr", "entropy", "hidden", "rollout", "envs", "epochs", "minibatch", "clip", "gamma", "lam",
-            "value_weight", "episode_steps", "physics_model", "reward_height")
+            "value_weight", "episode_steps", "physics_model", "reward_height", "finish_height")
 
 
 # --- evaluation ------------------------------------------------------------------------------
@@ -770,6 +789,9 @@ def training_options(command):
     command.add_argument("--reward-height", type=non_negative_float, default=None,
                          help="reward.height in training (potential-based height shaping, per metre, in the paper's "
                          "reward units); default: the model's rules (0, or 100 under the static model)")
+    command.add_argument("--finish-height", type=finish_height, default=None,
+                         help="the training walls' finishing height (wall.finish_height, m; default the generator's "
+                         "3): lower for a curriculum; validation keeps 3")
     command.add_argument("--threads", type=positive, default=1, help="torch's CPU threads (1: deterministic)")
 
 

@@ -284,3 +284,23 @@ def test_baselines_keep_best_table_quotes_its_record():
                f"| {held['finished']:.0%} ({round(held['finished'] * held['climbs'])} of {held['climbs']})")
         row = row.replace("e-0", "e-").replace("%", " %")
         assert best["steps"] == run["kept_steps"] and row in text, row
+
+
+def test_a_lower_finishing_height_reaches_the_training_walls_and_is_checked(tmp_path, capsys):
+    # Below the start's centre of mass, the first move that reaches finishes the climb; at the
+    # walls' own 3 m the short run's first updates finish almost nothing.
+    counts = {}
+    for height in ("0.5", None):
+        extra = ["--steps", "2048", "--validate-every", "8"] + (["--finish-height", height] if height else [])
+        record = json.loads(train(tmp_path, f"{height}.json", extra).read_text())
+        last = record["training"]["history"][-1]
+        counts[height] = last["finished_episodes"] / last["episodes"]
+        assert record["training"]["settings"]["finish_height"] == (float(height) if height else None)
+    capsys.readouterr()
+    assert counts["0.5"] >= 0.9 and counts[None] <= 0.1, counts
+    for bad, problem in (("nan", "must be a finite number"), ("2000", "wall.finish_height: must be in")):
+        with pytest.raises(SystemExit) as exit_code:
+            baseline.main(["train", "--out", str(tmp_path / "x.json"), *SHORT, "--finish-height", bad])
+        error = capsys.readouterr().err
+        assert exit_code.value.code == 2 and error.count("\n") == 1 and problem in error, error
+        assert not (tmp_path / "x.json").exists()
