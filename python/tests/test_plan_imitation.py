@@ -1,0 +1,105 @@
+"""examples/python/plan_imitation.py: the demonstrations are the exact plans' moves as the
+environment sees them, cloning them learns to choose the plan's slot and repeats itself,
+and a bad demonstrations file is one line and exit code 2."""
+
+import contextlib
+import importlib.util
+import io
+import json
+import pathlib
+import sys
+
+import numpy as np
+import pytest
+
+import crux
+
+from needed import need
+
+gymnasium, torch = need(
+    ["gymnasium", "torch"], "plan imitation needs Gymnasium (../shared/third_party/gymnasium-1.4.0) and python3-torch"
+)
+
+REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
+EXAMPLES = REPOSITORY / "examples" / "python"
+sys.path.insert(0, str(EXAMPLES))  # plan_imitation imports policy_baseline from its folder
+_spec = importlib.util.spec_from_file_location("plan_imitation", EXAMPLES / "plan_imitation.py")
+imitation = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(imitation)
+baseline = imitation.baseline
+
+WALLS = range(1000000, 1000008)  # 8 walls: 7 plans replay to the finish, 1 stops at a move it does not reach
+
+
+@pytest.fixture(scope="module")
+def demonstrations(tmp_path_factory):
+    out = tmp_path_factory.mktemp("demonstrations") / "plans.npz"
+    printed = io.StringIO()
+    with contextlib.redirect_stdout(printed):
+        imitation.main(["demonstrate", "--wall-seeds", f"{WALLS[0]}:{WALLS[-1]}", "--out", str(out)])
+    return out, json.loads(printed.getvalue())
+
+
+def test_the_demonstrations_are_the_plans_moves_as_the_environment_sees_them(demonstrations):
+    path, printed = demonstrations
+    data = imitation.load_demonstrations([path])
+    assert printed["steps"] == len(data["action"]) and sum(printed["replays"].values()) == len(WALLS)
+    span = baseline.configured_max_span()
+    for seed in WALLS[:2]:
+        steps = np.flatnonzero(data["wall"] == seed)
+        plan = crux.plan(crux.Wall.random(seed))
+        env = crux.gym.ClimbEnv(seed, "reach")
+        obs, info = env.reset()
+        assert len(steps) == plan["length"]  # both of these walls' plans replay to the finish
+        for step, hold_id in zip(steps, plan["holds"]):
+            state, slots, mask = baseline.single_features(obs, span)
+            assert np.array_equal(state[0], data["state"][step]) and np.array_equal(slots[0], data["slots"][step])
+            assert np.array_equal(mask[0], data["mask"][step])
+            action = int(data["action"][step])
+            assert env.wall.hold_ids[info["candidate_holds"][action]] == hold_id
+            obs, _, terminated, _, info = env.step(action)
+            assert info["reached"]
+        assert terminated and not info.get("fell", False)
+
+
+def test_failed_flags_never_mark_the_plans_slot_nor_an_empty_slot():
+    rng = np.random.default_rng(3)
+    slots = torch.zeros(64, baseline.MAX_CANDIDATES, baseline.SLOT_SIZE)
+    mask = torch.zeros(64, baseline.MAX_CANDIDATES, dtype=torch.bool)
+    mask[:, :10] = True
+    action = torch.from_numpy(rng.integers(0, 10, 64))
+    flagged = imitation.flag_failed(slots, mask, action, 0.5, rng)[:, :, imitation.FAILED_FLAG]
+    assert not flagged[torch.arange(64), action].any() and not flagged[:, 10:].any()
+    assert 0.4 < float(flagged[:, :10].sum()) / (64 * 9) < 0.6 and not slots.any()  # the input is left alone
+
+
+def imitate(tmp_path, name, demonstrations, extra=()):
+    out = tmp_path / name
+    imitation.main(["imitate", "--demonstrations", str(demonstrations), "--out", str(out), "--epochs", "100", "--lr", "0.01",
+                    "--hidden", "32", "--minibatch", "16", "--validation-walls", "0", *extra])
+    return out
+
+
+def test_cloning_learns_the_plans_slots_and_repeats_itself(tmp_path, demonstrations, capsys):
+    first = imitate(tmp_path, "first.json", demonstrations[0])
+    capsys.readouterr()
+    record = json.loads(first.read_text())
+    history = record["training"]["history"]
+    # Measured: the plan's slot chosen on 13 % of the steps in the first epoch, 94 % in the last.
+    assert history[0]["plan_slot_chosen"] < 0.5 and history[-1]["plan_slot_chosen"] >= 0.85, history[-1]
+    policy, _ = baseline.load_policy(first)  # a policy file evaluate reads
+    assert policy.hidden == 32 and record["training"]["imitated_steps"] > 50
+    second = imitate(tmp_path, "second.json", demonstrations[0])
+    assert json.loads(second.read_text())["slot_layers"] == record["slot_layers"]  # the same seed, the same weights
+
+
+@pytest.mark.parametrize("content, problem", [(None, "not a demonstrations file"), (b"not npz", "not a demonstrations file")])
+def test_a_bad_demonstrations_file_is_one_line_and_exit_code_2(tmp_path, capsys, content, problem):
+    bad = tmp_path / "bad.npz"
+    if content is not None:
+        bad.write_bytes(content)
+    with pytest.raises(SystemExit) as exit_code:
+        imitate(tmp_path, "x.json", bad)
+    error = capsys.readouterr().err
+    assert exit_code.value.code == 2 and error.count("\n") == 1 and problem in error, error
+    assert error.startswith("plan_imitation.py: --demonstrations: ") and not (tmp_path / "x.json").exists()
