@@ -8,7 +8,7 @@
         not reach: under ik.guess = previous a verdict can depend on the route that first
         met its configuration (docs/MODEL.md, C11), and the planner's route is not the
         replay's. Prints what the walls gave (JSON).
-    imitate --demonstrations FILE.npz [...] --out POLICY.json [--epochs E] [--failed-share P]
+    imitate --demonstrations FILE.npz [...] --out POLICY.json [--epochs E] [--failed-share P] [--physics-model static]
         Trains policy_baseline.py's slot network to choose the plan's slot (cross-entropy),
         validates its greedy climbs after each epoch on walls 10000.. and writes a policy file
         that policy_baseline.py evaluate reads. The plans never fail a move, so the network
@@ -110,7 +110,7 @@ def imitate(data, args, progress=None):
     rng = np.random.default_rng([args.seed, 2])
     tensors = {field: torch.from_numpy(data[field]) for field in ("state", "slots", "mask", "action")}
     validation = list(range(baseline.VALIDATION_FIRST_SEED, baseline.VALIDATION_FIRST_SEED + args.validation_walls))
-    plans = baseline.plan_lengths(validation) if validation else None
+    plans = baseline.plan_lengths(validation, args.physics_model) if validation else None
     history, started = [], time.monotonic()
     for epoch in range(args.epochs):
         order = rng.permutation(len(data["action"]))
@@ -129,7 +129,7 @@ def imitate(data, args, progress=None):
         record = {"epoch": epoch + 1, "loss": loss_sum / len(order), "plan_slot_chosen": correct / len(order),
                   "seconds": round(time.monotonic() - started, 1)}
         if validation:
-            result = baseline.evaluate(policy, validation, plans=plans)
+            result = baseline.evaluate(policy, validation, args.physics_model, plans)
             record.update({key: result[key] for key in baseline.VALIDATION_KEYS})
         history.append(record)
         if progress:
@@ -159,7 +159,8 @@ def command_imitate(args):
 
     policy, history = imitate(data, args, progress)
     command = " ".join(["examples/python/plan_imitation.py"] + [shlex.quote(a) for a in args.argv])
-    settings = {key: getattr(args, key) for key in ("epochs", "hidden", "lr", "minibatch", "failed_share")}
+    settings = {key: getattr(args, key)
+                for key in ("epochs", "hidden", "lr", "minibatch", "failed_share", "physics_model")}
     baseline.save_policy(policy, args.out, {"command": command, "seed": args.seed, "steps": 0,
                                             "imitated_steps": len(data["action"]), "settings": settings,
                                             "history": history})
@@ -185,6 +186,8 @@ def parser():
                    help="share of the other offered slots marked as failed moves in each minibatch")
     i.add_argument("--validation-walls", type=integer_at_least(0), default=30,
                    help="greedy climbs on walls 10000.. after each epoch (0: none)")
+    i.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic",
+                   help="the model the validation climbs under (that of the demonstrations)")
     return top
 
 
