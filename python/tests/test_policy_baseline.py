@@ -304,3 +304,21 @@ def test_a_lower_finishing_height_reaches_the_training_walls_and_is_checked(tmp_
         error = capsys.readouterr().err
         assert exit_code.value.code == 2 and error.count("\n") == 1 and problem in error, error
         assert not (tmp_path / "x.json").exists()
+
+
+def test_baselines_curriculum_table_quotes_its_record():
+    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "static_curriculum.json").read_text())
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    for run in record["runs"]:
+        stages = run["stages"]
+        assert [stage["finish_height"] for stage in stages] == [2.0, 2.5, 3.0]
+        assert all(f"--finish-height {stage['finish_height']}" in stage["command"] for stage in stages)
+        trained = ", ".join(f"{s['validation'][-1]['finished_episodes'] / s['validation'][-1]['episodes']:.0%}"
+                            for s in stages)
+        validated = ", ".join(f"{s['validation'][-1]['finished']:.0%}" for s in stages)
+        best = max(v["finished"] for s in stages for v in s["validation"])
+        held = run["held_out"]
+        row = (f"| {run['lr']:.0e} | {trained} | {validated} | {best:.0%} "
+               f"| {held['finished']:.0%} ({round(held['finished'] * held['climbs'])} of {held['climbs']}) |")
+        row = row.replace("e-0", "e-").replace("%", " %")
+        assert row in text, row
