@@ -103,3 +103,24 @@ def test_a_bad_demonstrations_file_is_one_line_and_exit_code_2(tmp_path, capsys,
     error = capsys.readouterr().err
     assert exit_code.value.code == 2 and error.count("\n") == 1 and "not a demonstrations file" in error, error
     assert error.startswith("plan_imitation.py: --demonstrations: ") and not (tmp_path / "x.json").exists()
+
+
+def test_baselines_cloning_table_quotes_its_record():
+    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "plan_imitation.json").read_text())
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    steps = sum(part["steps"] for part in record["demonstrations"])
+    stopped = sum(part["replays"].get("replay failed", 0) for part in record["demonstrations"])
+    assert f"give {steps:,} pairs" in text and f"replays of {stopped} plans" in text
+
+    def cells(held):
+        done = round(held["finished"] * held["climbs"])
+        return (f"| {held['finished']:.0%} ({done} of {held['climbs']}) | {held['mean_length_ratio']:.2f} "
+                f"| {held['failed_moves_per_finished_climb']:.1f} |").replace("%", " %")
+
+    for clone in record["clones"]:
+        assert f"| {clone['last_epoch']['plan_slot_chosen']:.0%} ".replace("%", " %") + cells(clone["held_out"]) in text
+    assert "| " + cells(record["ppo_from_clone"]["held_out"]) in text
+    shipped = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo.heldout.json").read_text())
+    finished = [wall for wall in shipped["walls"] if wall["finished"]]
+    shipped["failed_moves_per_finished_climb"] = np.mean([wall["failed_moves"] for wall in finished])
+    assert "| the shipped policy (PPO, 6 M steps) | " + cells(shipped) in text
