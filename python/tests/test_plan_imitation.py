@@ -124,3 +124,27 @@ def test_baselines_cloning_table_quotes_its_record():
     finished = [wall for wall in shipped["walls"] if wall["finished"]]
     shipped["failed_moves_per_finished_climb"] = np.mean([wall["failed_moves"] for wall in finished])
     assert "| the shipped policy (PPO, 6 M steps) | " + cells(shipped) in text
+
+
+def test_baselines_static_cloning_table_quotes_its_record():
+    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "plan_imitation.json").read_text())["static"]
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    walls = {2: record["demonstrations"][:2], 4: record["demonstrations"]}
+    for clone in record["clones"]:
+        parts = walls[clone["demonstration_files"]]
+        replayed = sum(part["replays"]["finished"] for part in parts)
+        assert sum(part["steps"] for part in parts) == clone["imitated_steps"]
+        held = clone["held_out"]
+        validation = clone["validation_finished"]
+        row = (f"| {clone['imitated_steps']:,} ({replayed}) | {clone['last_epoch']['plan_slot_chosen']:.0%} "
+               f"| {max(validation):.0%}, {validation[-1]:.0%} "
+               f"| {held['finished']:.0%} ({round(held['finished'] * held['climbs'])} of {held['climbs']}) "
+               f"| {held['mean_length_ratio']:.2f} | {held['failed_moves_per_finished_climb']:.1f} |")
+        row = row.replace("%", " %")
+        assert row in text, row
+    first = record["clones"][1]["held_out"]["walls"]  # the first flagged clone's climbs
+    capped = sum(not wall["finished"] and wall["length"] == baseline.CLIMB_CAP for wall in first)
+    fell = sum(not wall["finished"] and wall["length"] < baseline.CLIMB_CAP for wall in first)
+    assert f"Of its 25 climbs, {fell} fall and {capped} reach the cap" in text
+    shares = ", ".join(f"{row['finished']:.0%}".replace("%", " %") for row in record["ppo_from_clone"]["validation"])
+    assert shares.replace(", 0 %", " and 0 %") in text
