@@ -4,13 +4,14 @@
     demonstrate --wall-seeds A:B --out FILE.npz [--physics-model static]
         Plans each random wall A..B exactly (crux.plan) and replays the plan in the reach
         form's environment: each step stores the policy's features of the state and the
-        slot of the plan's hold. A replay stops at the first plan move the environment does
-        not reach: under ik.guess = previous a verdict can depend on the route that first
-        met its configuration (docs/MODEL.md, C11), and the planner's route is not the
-        replay's. Prints what the walls gave (JSON).
+        slot of the plan's hold; the file also records the physics model. A replay stops
+        at the first plan move the environment does not reach: under ik.guess = previous
+        a verdict can depend on the route that first met its configuration (docs/MODEL.md,
+        C11), and the planner's route is not the replay's. Prints what the walls gave (JSON).
     imitate --demonstrations FILE.npz [...] --out POLICY.json [--epochs E] [--failed-share P] [--physics-model static]
         Trains policy_baseline.py's slot network to choose the plan's slot (cross-entropy),
-        validates its greedy climbs after each epoch on walls 10000.. and writes a policy file
+        validates its greedy climbs after each epoch on walls 10000.. (under the files'
+        physics model, which --physics-model must name) and writes a policy file
         that policy_baseline.py evaluate reads. The plans never fail a move, so the network
         would never see the observation's "this move failed here" flag: --failed-share marks
         that share of the other offered slots as failed in each minibatch (a failed move is
@@ -20,10 +21,12 @@ Deterministic on one thread: the same files and seed give the same weights.
 """
 
 import json
+import os
 import pathlib
 import shlex
 import sys
 import time
+import zipfile
 
 import numpy as np
 import torch
@@ -81,16 +84,48 @@ def demonstrate(wall_seeds, physics_model="kinematic"):
     return data, counts
 
 
-def load_demonstrations(paths):
-    """The files' steps, concatenated; ValueError naming a file that demonstrate did not write."""
+# Each field's shape after the steps' axis, and its kind.
+SHAPES = {"state": ((baseline.STATE_SIZE,), "f"), "slots": ((baseline.MAX_CANDIDATES, baseline.SLOT_SIZE), "f"),
+          "mask": ((baseline.MAX_CANDIDATES,), "b"), "action": ((), "i"), "wall": ((), "i")}
+
+
+def read_demonstrations(path):
+    """One file's fields, checked: ValueError naming what is wrong."""
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            fields = {field: data[field] for field in (*FIELDS, "physics_model")}
+    except (OSError, ValueError, KeyError, TypeError, AttributeError, zipfile.BadZipFile) as error:
+        raise ValueError(f"not a demonstrations file ({error})") from None
+    for field, (shape, kind) in SHAPES.items():
+        if fields[field].shape[1:] != shape or fields[field].dtype.kind != kind:
+            raise ValueError(f"not a demonstrations file ({field} of shape {fields[field].shape[1:]} and kind "
+                             f"{fields[field].dtype.kind!r}, where {shape} and {kind!r} belong)")
+    if len({len(fields[field]) for field in FIELDS}) != 1:
+        raise ValueError("not a demonstrations file (its fields have different numbers of steps)")
+    action = fields["action"]
+    inside = (action >= 0) & (action < baseline.MAX_CANDIDATES)
+    if not inside.all() or not fields["mask"][np.arange(len(action)), action].all():
+        raise ValueError("not a demonstrations file (a plan's slot that its state does not offer)")
+    return fields
+
+
+def load_demonstrations(paths, physics_model):
+    """The files' steps, concatenated; ValueError naming a file that demonstrate did not
+    write, one made under another physics model, or files without a step."""
     parts = []
     for path in paths:
         try:
-            with np.load(path) as data:
-                parts.append({field: data[field] for field in FIELDS})
-        except (OSError, ValueError, KeyError) as error:
-            raise ValueError(f"{path}: not a demonstrations file ({error})") from None
-    return {field: np.concatenate([part[field] for part in parts]) for field in FIELDS}
+            part = read_demonstrations(path)
+        except ValueError as error:
+            raise ValueError(f"{path}: {error}") from None
+        if str(part["physics_model"]) != physics_model:
+            raise ValueError(f"{path}: plans made under the {part['physics_model']} model, and --physics-model "
+                             f"is {physics_model}")
+        parts.append(part)
+    data = {field: np.concatenate([part[field] for part in parts]) for field in FIELDS}
+    if not len(data["action"]):
+        raise ValueError(f"{', '.join(map(str, paths))}: no step to imitate (no wall gave a plan)")
+    return data
 
 
 def flag_failed(slots, mask, action, share, rng):
@@ -137,19 +172,35 @@ def imitate(data, args, progress=None):
     return policy, history
 
 
+def writable_folder(path, option, prog="plan_imitation.py"):
+    """Makes path's folder, or exits 2 with one line before any work is done."""
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        if not os.access(path.parent, os.W_OK):
+            raise PermissionError(f"cannot write in {path.parent}")
+    except OSError as error:
+        print(f"{prog}: {option}: {path}: {error}", file=sys.stderr)
+        sys.exit(2)
+
+
 def command_demonstrate(args):
+    writable_folder(args.out, "--out")
     data, counts = demonstrate(args.wall_seeds, args.physics_model)
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    partial = args.out.with_name(f"{args.out.name}.partial.npz")  # never a half-written file
-    np.savez_compressed(partial, **data)
-    partial.replace(args.out)
+    data["physics_model"] = np.array(args.physics_model)
+    partial = args.out.with_name(f"{args.out.name}.{os.getpid()}.partial.npz")  # never a half-written file
+    try:
+        np.savez_compressed(partial, **data)
+        partial.replace(args.out)
+    finally:
+        partial.unlink(missing_ok=True)
     print(json.dumps({"demonstrations": str(args.out), "steps": len(data["action"]),
                       "walls": len(args.wall_seeds), "replays": counts}))
 
 
 def command_imitate(args):
+    writable_folder(args.out, "--out")
     try:
-        data = load_demonstrations(args.demonstrations)
+        data = load_demonstrations(args.demonstrations, args.physics_model)
     except ValueError as error:
         print(f"plan_imitation.py: --demonstrations: {error}", file=sys.stderr)
         sys.exit(2)
@@ -187,7 +238,7 @@ def parser():
     i.add_argument("--validation-walls", type=integer_at_least(0), default=30,
                    help="greedy climbs on walls 10000.. after each epoch (0: none)")
     i.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic",
-                   help="the model the validation climbs under (that of the demonstrations)")
+                   help="the model the demonstrations' plans were made under, which the validation climbs under")
     return top
 
 

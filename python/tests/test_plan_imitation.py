@@ -42,8 +42,8 @@ def demonstrations(tmp_path_factory):
 
 def test_the_demonstrations_are_the_plans_moves_as_the_environment_sees_them(demonstrations):
     path, printed = demonstrations
-    data = imitation.load_demonstrations([path])
-    assert printed["steps"] == len(data["action"]) and sum(printed["replays"].values()) == len(WALLS)
+    data = imitation.load_demonstrations([path], "kinematic")
+    assert printed["steps"] == len(data["action"]) and printed["replays"] == {"finished": 7, "replay failed": 1}
     span = baseline.configured_max_span()
     for seed in WALLS[:2]:
         steps = np.flatnonzero(data["wall"] == seed)
@@ -93,16 +93,45 @@ def test_cloning_learns_the_plans_slots_and_repeats_itself(tmp_path, demonstrati
     assert json.loads(second.read_text())["slot_layers"] == record["slot_layers"]  # the same seed, the same weights
 
 
-@pytest.mark.parametrize("content", [None, b"not npz"])
-def test_a_bad_demonstrations_file_is_one_line_and_exit_code_2(tmp_path, capsys, content):
-    bad = tmp_path / "bad.npz"
-    if content is not None:
-        bad.write_bytes(content)
-    with pytest.raises(SystemExit) as exit_code:
-        imitate(tmp_path, "x.json", bad)
-    error = capsys.readouterr().err
-    assert exit_code.value.code == 2 and error.count("\n") == 1 and "not a demonstrations file" in error, error
-    assert error.startswith("plan_imitation.py: --demonstrations: ") and not (tmp_path / "x.json").exists()
+def bad_files(good, folder):
+    """Demonstration files that must each be refused: (path, what the error names)."""
+    data = dict(np.load(good))
+    cases = {"missing": (folder / "missing.npz", "not a demonstrations file"),
+             "not npz": (folder / "text.npz", "not a demonstrations file"),
+             "truncated": (folder / "truncated.npz", "not a demonstrations file"),
+             "an array": (folder / "array.npy", "not a demonstrations file"),
+             "uneven": (folder / "uneven.npz", "different numbers of steps"),
+             "narrow": (folder / "narrow.npz", "slots of shape"),
+             "slot not offered": (folder / "offered.npz", "does not offer"),
+             "empty": (folder / "empty.npz", "no step to imitate"),
+             "static": (folder / "static.npz", "made under the static model")}
+    cases["not npz"][0].write_bytes(b"not npz")
+    cases["truncated"][0].write_bytes(good.read_bytes()[:300])
+    np.save(cases["an array"][0], data["state"])
+    np.savez(cases["uneven"][0], **{**data, "action": data["action"][:-1]})
+    np.savez(cases["narrow"][0], **{**data, "slots": data["slots"][:, :, :5]})
+    np.savez(cases["slot not offered"][0], **{**data, "action": np.full_like(data["action"], 31)})
+    np.savez(cases["empty"][0], **{key: value[:0] if value.ndim else value for key, value in data.items()})
+    np.savez(cases["static"][0], **{**data, "physics_model": np.array("static")})
+    return cases
+
+
+def test_bad_demonstrations_or_output_are_one_line_and_exit_code_2(tmp_path, demonstrations, capsys):
+    assert str(np.load(demonstrations[0])["physics_model"]) == "kinematic"
+    cases = bad_files(demonstrations[0], tmp_path)
+    (tmp_path / "a file").write_text("")
+    for name, (bad, problem) in cases.items():
+        with pytest.raises(SystemExit) as exit_code:
+            imitate(tmp_path, "x.json", bad)
+        error = capsys.readouterr().err
+        assert exit_code.value.code == 2 and error.count("\n") == 1 and problem in error, (name, error)
+        assert error.startswith(f"plan_imitation.py: --demonstrations: {bad}: " if name != "empty" else
+                                "plan_imitation.py: --demonstrations: ") and not (tmp_path / "x.json").exists()
+    for command in (["demonstrate", "--wall-seeds", "1:1"], ["imitate", "--demonstrations", str(demonstrations[0])]):
+        with pytest.raises(SystemExit) as exit_code:
+            imitation.main([*command, "--out", str(tmp_path / "a file" / "x")])
+        error = capsys.readouterr().err
+        assert exit_code.value.code == 2 and error.count("\n") == 1 and "--out" in error, error
 
 
 def test_baselines_cloning_table_quotes_its_record():
@@ -148,3 +177,15 @@ def test_baselines_static_cloning_table_quotes_its_record():
     assert f"Of its 25 climbs, {fell} fall and {capped} reach the cap" in text
     shares = ", ".join(f"{row['finished']:.0%}".replace("%", " %") for row in record["ppo_from_clone"]["validation"])
     assert shares.replace(", 0 %", " and 0 %") in text
+
+
+def test_static_plans_are_demonstrated_and_cloned_under_the_static_model(tmp_path, capsys):
+    out = tmp_path / "static.npz"
+    imitation.main(["demonstrate", "--physics-model", "static", "--wall-seeds", "1100000:1100001", "--out", str(out)])
+    assert json.loads(capsys.readouterr().out)["replays"] == {"finished": 2}
+    data = imitation.load_demonstrations([out], "static")
+    plan = crux.plan(crux.Wall.random(1100000), config={"physics.model": "static"})
+    assert np.sum(data["wall"] == 1100000) == plan["length"]  # the static plan, not the kinematic one
+    assert plan["length"] != crux.plan(crux.Wall.random(1100000))["length"]
+    policy = imitate(tmp_path, "static.json", out, ["--physics-model", "static", "--epochs", "1"])
+    assert json.loads(policy.read_text())["training"]["settings"]["physics_model"] == "static"
