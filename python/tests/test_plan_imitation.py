@@ -146,6 +146,15 @@ def test_baselines_cloning_table_quotes_its_record():
         return (f"| {held['finished']:.0%} ({done} of {held['climbs']}) | {held['mean_length_ratio']:.2f} "
                 f"| {held['failed_moves_per_finished_climb']:.1f} |").replace("%", " %")
 
+    parts = record["demonstrations"]
+    walls = sum(sum(part["replays"].values()) - part["replays"].get("no start", 0) for part in parts)
+    assert f"replays of {stopped} plans ({stopped / walls:.0%})".replace("%", " %") in text
+    unflagged, flagged = (clone["held_out"] for clone in record["clones"])
+    assert (f"({round(unflagged['finished'] * unflagged['climbs'])} walls, whose plans are shorter than most: "
+            f"{unflagged['mean_plan_length']:.1f} moves on average), it climbs within\n  "
+            f"{unflagged['mean_length_ratio']:.2f} times the plan") in text
+    assert f"finishes {flagged['finished']:.0%}, but with {flagged['failed_moves_per_finished_climb']:.0f} failed moves a"\
+        .replace("%", " %") in text.replace("\n  ", " ")
     for clone in record["clones"]:
         assert f"| {clone['last_epoch']['plan_slot_chosen']:.0%} ".replace("%", " %") + cells(clone["held_out"]) in text
     assert "| " + cells(record["ppo_from_clone"]["held_out"]) in text
