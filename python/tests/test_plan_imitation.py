@@ -153,8 +153,9 @@ def test_baselines_cloning_table_quotes_its_record():
     assert (f"({round(unflagged['finished'] * unflagged['climbs'])} walls, whose plans are shorter than most: "
             f"{unflagged['mean_plan_length']:.1f} moves on average), it climbs within\n  "
             f"{unflagged['mean_length_ratio']:.2f} times the plan") in text
-    assert f"finishes {flagged['finished']:.0%}, but with {flagged['failed_moves_per_finished_climb']:.0f} failed moves a"\
-        .replace("%", " %") in text.replace("\n  ", " ")
+    failed = flagged["failed_moves_per_finished_climb"]
+    assert f"finishes {flagged['finished']:.0%}, but with {failed:.0f} failed moves a".replace("%", " %") \
+        in text.replace("\n  ", " ")
     for clone in record["clones"]:
         assert f"| {clone['last_epoch']['plan_slot_chosen']:.0%} ".replace("%", " %") + cells(clone["held_out"]) in text
     assert "| " + cells(record["ppo_from_clone"]["held_out"]) in text
