@@ -39,6 +39,10 @@ from example_arguments import OneLineParser, integer_at_least, positive, wall_se
 
 FAILED_FLAG = baseline.SLOT_SIZE - 1  # the slot feature "its move failed from this state"
 FIELDS = ("state", "slots", "mask", "action", "wall")
+# Each field's shape after the steps' axis, and its type.
+SHAPES = {"state": ((baseline.STATE_SIZE,), np.float32),
+          "slots": ((baseline.MAX_CANDIDATES, baseline.SLOT_SIZE), np.float32),
+          "mask": ((baseline.MAX_CANDIDATES,), bool), "action": ((), np.int64), "wall": ((), np.int64)}
 
 
 def plan_slots(wall_seed, physics_model):
@@ -55,9 +59,10 @@ def plan_slots(wall_seed, physics_model):
         return None, "no plan"
     obs, info = env.reset()
     steps = []
+    span = baseline.configured_max_span()
     for hold_id in plan["holds"]:
         slot = int(np.flatnonzero(info["candidate_holds"] == wall.index_of(hold_id))[0])
-        features = baseline.single_features(obs, baseline.configured_max_span())
+        features = baseline.single_features(obs, span)
         obs, _, terminated, _, info = env.step(slot)
         if not info["reached"]:
             return steps, "replay failed"
@@ -76,17 +81,7 @@ def demonstrate(wall_seeds, physics_model="kinematic"):
         for state, slots, mask, slot in steps or []:
             for field, value in zip(FIELDS, (state, slots, mask, slot, seed)):
                 rows[field].append(value)
-    empty = {"state": (0, baseline.STATE_SIZE), "slots": (0, baseline.MAX_CANDIDATES, baseline.SLOT_SIZE),
-             "mask": (0, baseline.MAX_CANDIDATES)}
-    data = {field: np.array(values) if values else np.zeros(empty.get(field, 0)) for field, values in rows.items()}
-    data["mask"] = data["mask"].astype(bool)
-    data["action"] = data["action"].astype(np.int64)
-    return data, counts
-
-
-# Each field's shape after the steps' axis, and its kind.
-SHAPES = {"state": ((baseline.STATE_SIZE,), "f"), "slots": ((baseline.MAX_CANDIDATES, baseline.SLOT_SIZE), "f"),
-          "mask": ((baseline.MAX_CANDIDATES,), "b"), "action": ((), "i"), "wall": ((), "i")}
+    return {field: np.array(rows[field], dtype).reshape((-1, *shape)) for field, (shape, dtype) in SHAPES.items()}, counts
 
 
 def read_demonstrations(path):
@@ -96,7 +91,8 @@ def read_demonstrations(path):
             fields = {field: data[field] for field in (*FIELDS, "physics_model")}
     except (OSError, ValueError, KeyError, TypeError, AttributeError, zipfile.BadZipFile) as error:
         raise ValueError(f"not a demonstrations file ({error})") from None
-    for field, (shape, kind) in SHAPES.items():
+    for field, (shape, dtype) in SHAPES.items():
+        kind = np.dtype(dtype).kind
         if fields[field].shape[1:] != shape or fields[field].dtype.kind != kind:
             raise ValueError(f"not a demonstrations file ({field} of shape {fields[field].shape[1:]} and kind "
                              f"{fields[field].dtype.kind!r}, where {shape} and {kind!r} belong)")
