@@ -81,7 +81,8 @@ def demonstrate(wall_seeds, physics_model="kinematic"):
         for state, slots, mask, slot in steps or []:
             for field, value in zip(FIELDS, (state, slots, mask, slot, seed)):
                 rows[field].append(value)
-    return {field: np.array(rows[field], dtype).reshape((-1, *shape)) for field, (shape, dtype) in SHAPES.items()}, counts
+    data = {field: np.array(rows[field], dtype).reshape((-1, *shape)) for field, (shape, dtype) in SHAPES.items()}
+    return data, counts
 
 
 def read_demonstrations(path):
