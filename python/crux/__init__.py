@@ -4,9 +4,9 @@ learnt to walls it has never seen (Libeau, Micaelli, Sigaud), as a Python module
 The body, IK, walls, the climbing MDP with Gymnasium's step conventions (ClimbMdp; the
 Gymnasium environment itself is crux.gym.ClimbEnv), the
 paper's agent (run_learning) and experiment (run_experiment), a wall's exact shortest
-climb (plan) and a climb performed in MuJoCo (perform), and Q-tables as numpy
-arrays. Bad input raises ValueError with the CLI's error line; docs/PYTHON.md has the
-tour.
+climb (plan), every climb it allows (climb_graph) and a climb performed in MuJoCo
+(perform), and Q-tables as numpy arrays. Bad input raises ValueError with the CLI's
+error line; docs/PYTHON.md has the tour.
 """
 
 from ._crux import (
@@ -22,6 +22,7 @@ from ._crux import (
     Wall,
     __version__,
     agent_state,
+    climb_graph,
     config_keys,
     forward_kinematics,
     grid_state_space,
@@ -51,6 +52,7 @@ __all__ = [
     "Wall",
     "__version__",
     "agent_state",
+    "climb_graph",
     "config_keys",
     "forward_kinematics",
     "grid_state_space",

@@ -1,6 +1,7 @@
 // The paper's agent and experiment: one learning run (Algorithm 2), and the experiment
 // of section IV, returning what the CLI's summary.json holds.
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -10,6 +11,7 @@
 #include "bindings.hpp"
 #include "common/input_error.hpp"
 #include "conversions.hpp"
+#include "experiments/climb_graph.hpp"
 #include "experiments/config_key_json.hpp"
 #include "interruption.hpp"
 #include "jobs/command_keys.hpp"
@@ -203,6 +205,41 @@ py::object plan_py(const Wall& wall, const py::handle& config_handle, const py::
   return json_to_python(record);
 }
 
+// crux.climb_graph: the graph's states and moves as arrays, each move marked optimal or not.
+py::dict climb_graph_py(const Wall& wall, const py::handle& config_handle, const py::handle& model_handle) {
+  const ExperimentConfig config = config_from_python(config_handle, kPythonPlanKeys, "climb_graph");
+  const BodyModelPtr model = body_from(model_handle, config.urdf);
+  ClimbGraph graph;
+  {
+    py::gil_scoped_release release;
+    graph = explore_climbs(*model, wall, config.settings.learning.climbing, config.settings.plan_search.max_ik_solves);
+  }
+  const auto state_count = static_cast<py::ssize_t>(graph.states.size());
+  py::array_t<int> configurations({state_count, py::ssize_t{kLimbCount}});
+  py::array_t<int> distances(state_count);
+  std::vector<int> moves;  // (state, hold, target, optimal) rows
+  for (py::ssize_t s = 0; s < state_count; ++s) {
+    const GraphState& state = graph.states[s];
+    std::copy(state.configuration.holds.begin(), state.configuration.holds.end(),
+              configurations.mutable_data() + s * kLimbCount);
+    distances.mutable_data()[s] = state.distance;
+    const std::vector<int> best = optimal_holds(graph, state);
+    for (const GraphMove& move : state.moves) {
+      const bool optimal = std::find(best.begin(), best.end(), move.hold) != best.end();
+      moves.insert(moves.end(), {static_cast<int>(s), move.hold, move.target, optimal ? 1 : 0});
+    }
+  }
+  py::array_t<int> move_rows({static_cast<py::ssize_t>(moves.size() / 4), py::ssize_t{4}});
+  std::copy(moves.begin(), moves.end(), move_rows.mutable_data());
+  py::dict out;
+  out["configurations"] = configurations;
+  out["distances"] = distances;
+  out["moves"] = move_rows;
+  out["stopped_at_limit"] = graph.stopped_at_limit;
+  out["ik_solves"] = graph.ik_solves;
+  return out;
+}
+
 }  // namespace
 
 namespace {
@@ -266,6 +303,13 @@ void bind_experiment(py::module_& m) {
   m.def("plan", &plan_py, py::arg("wall"), py::arg("config") = py::none(), py::arg("model") = py::none(),
         "A wall's exact shortest climb under the learning's rules (crux plan): returns the record crux plan --json "
         "prints. config takes the keys of [ik], [physics] and [filter], experiment.urdf and experiment.plan_*.");
+  m.def("climb_graph", &climb_graph_py, py::arg("wall"), py::arg("config") = py::none(), py::arg("model") = py::none(),
+        "Every climb the learning's rules allow on the wall: its states (3-configurations reachable from the start, "
+        "breadth-first, the start first) and their reachable moves, as a dict of arrays: configurations (hold indices "
+        "in limb order, -1 free), distances (actions to the finish, -1 when none finishes), moves (rows of state, "
+        "hold index, target state or -1 when the move finishes, 1 when the move is optimal), stopped_at_limit and "
+        "ik_solves. config takes crux.plan's keys; experiment.plan_max_solves bounds the solves (whole walls take "
+        "hundreds of thousands).");
   m.def("run_experiment", &run_experiment_py, py::arg("config") = py::none(), py::arg("output") = py::none(),
         py::arg("overwrite") = false,
         "The paper's experiment (crux paper): returns summary.json's contents; writes crux paper's folder to "

@@ -347,3 +347,31 @@ def test_run_learning_under_the_dynamic_model_performs_its_moves_in_mujoco():
     facts = run.summary["run_facts"]["training"][0]
     assert 1 <= facts["moves_simulated"] <= 20
     assert 0 <= facts["moves_performed"] <= facts["moves_simulated"]
+
+
+def test_climb_graph_agrees_with_the_plan_and_marks_the_moves_one_action_nearer():
+    wall = crux.Wall.random(10, config={"wall.finish_height": 1.4})  # a few moves: the whole graph in 0.2 s
+    for model in ("kinematic", "static"):
+        graph = crux.climb_graph(wall, config={"physics.model": model})
+        plan = crux.plan(wall, config={"physics.model": model})
+        assert not graph["stopped_at_limit"] and graph["ik_solves"] > 0
+        configurations, distances, moves = graph["configurations"], graph["distances"], graph["moves"]
+        assert distances[0] == plan["length"]
+        assert list(configurations[0]) == [-1, *wall.start[1:]], "the start, right hand free"
+        after = np.where(moves[:, 2] < 0, 0, distances[moves[:, 2]])
+        reaches_finish = (distances[moves[:, 0]] >= 0) & (after >= 0)
+        assert np.array_equal(moves[:, 3] == 1, reaches_finish & (after + 1 == distances[moves[:, 0]]))
+        # The plan's climb takes an optimal move from each state it passes through.
+        state = 0
+        for hold_id in plan["holds"]:
+            row = moves[(moves[:, 0] == state) & (moves[:, 1] == wall.index_of(hold_id))]
+            assert len(row) == 1 and row[0, 3] == 1
+            state = row[0, 2]
+        assert state == -1, "the plan's last move finishes"
+
+
+def test_climb_graph_refuses_keys_it_does_not_take_and_stops_at_its_budget():
+    with pytest.raises(ValueError, match="reward.height"):
+        crux.climb_graph(crux.Wall.random(10), config={"reward.height": 1.0})
+    graph = crux.climb_graph(crux.Wall.random(3), config={"experiment.plan_max_solves": 300})
+    assert graph["stopped_at_limit"] and graph["ik_solves"] == 300

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "configurations/reachability.hpp"
+#include "support/planning_walls.hpp"
 #include "support/test_models.hpp"
 #include "wall/random_wall.hpp"
 
@@ -70,20 +71,8 @@ TEST(ShortestPlan, AnExhaustedSearchIsNotALimit) {
   EXPECT_LT(plan.ik_solves, static_cast<std::size_t>(PlanParameters{}.max_ik_solves));
 }
 
-// Random wall 10 with its finish at 1.4 m, which a few moves reach, and the static
-// model's rules.
-Wall low_finish_wall() {
-  Wall wall = generate_random_wall(10);
-  wall.finish_height = 1.4;
-  return wall;
-}
-
-ClimbingParameters static_rules() {
-  ClimbingParameters parameters;
-  parameters.physics.model = PhysicsModel::Static;
-  parameters.reachability.ik.wall = WallRule::Avoid;
-  return parameters;
-}
+using testing::low_finish_wall;
+using testing::static_rules;
 
 // Under the static model a move may reach a stance that holds while a posture on the way
 // does not; checking the way (the replay's samples, on the three holds kept) refuses such
