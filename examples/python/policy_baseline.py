@@ -598,7 +598,7 @@ def command_train(args):
 
 
 
-def load_for_walls(path):
+def load_for_walls(path, prog="policy_baseline.py"):
     """load_policy, for the walls crux builds now (the same filter.max_span), or exit 2 with one line."""
     try:
         policy, _ = load_policy(path)
@@ -606,7 +606,7 @@ def load_for_walls(path):
             raise ValueError(f"{path}: a policy trained with filter.max_span = {policy.max_span} m, and the "
                              f"walls are climbed with {configured_max_span()} m: its observation would be another")
     except ValueError as error:
-        print(f"policy_baseline.py: --policy: {error}", file=sys.stderr)
+        print(f"{prog}: --policy: {error}", file=sys.stderr)
         sys.exit(2)
     return policy
 

@@ -1,0 +1,118 @@
+"""Where a learnt policy's greedy climbs go wrong, measured against every climb the wall
+allows (crux.climb_graph, docs/BASELINES.md).
+
+    climb_diagnosis.py --policy FILE --wall-seeds A:B [--physics-model static] [--json]
+
+Each move of a climb is one of: optimal (to a state one action nearer the finish), a detour
+(to a state no nearer, from which a climb still finishes), into a dead end (to a state from
+which no climb finishes), within a dead end, or failed (not reached; the climber stays). A state the graph does not hold is off the
+graph: the environment reached it on a route whose IK verdicts differ from the graph's
+(an IK solve starts from the posture before the move: docs/MODEL.md, C30).
+Each climb finished, fell or reached the cap of policy_baseline's evaluation (200 actions);
+the report also counts the climbs that entered a dead end and those that came back to a
+configuration they had held (a greedy policy, which has no memory, then loops).
+"""
+
+import json
+import pathlib
+
+import numpy as np
+
+import crux
+import policy_baseline as baseline
+from example_arguments import OneLineParser, wall_seed_range
+
+MOVE_KINDS = ("optimal", "detour", "into_dead_end", "within_dead_end", "failed", "off_graph")
+GRAPH_SOLVES = 5_000_000  # whole random walls take 40,000-60,000 solves (docs/BASELINES.md)
+
+
+def distances(wall, physics_model):
+    """{configuration (hold indices in limb order, -1 free): actions to the finish, -1 if none}."""
+    graph = crux.climb_graph(wall, config={"physics.model": physics_model, "experiment.plan_max_solves": GRAPH_SOLVES})
+    if graph["stopped_at_limit"]:
+        raise RuntimeError(f"{wall.name}: the climb graph took more than {GRAPH_SOLVES} solves")
+    return {tuple(c): int(d) for c, d in zip(graph["configurations"].tolist(), graph["distances"])}
+
+
+def move_kind(before, reached, finished, after):
+    """before, after: the states' distances, None for a state the graph does not hold."""
+    if not reached:
+        return "failed"
+    if before is None or (after is None and not finished):
+        return "off_graph"
+    if before < 0:
+        return "within_dead_end"
+    if finished:
+        return "optimal" if before == 1 else "detour"
+    if after < 0:
+        return "into_dead_end"
+    return "optimal" if after == before - 1 else "detour"
+
+
+def diagnose_climb(policy, mdp, distance, cap=baseline.CLIMB_CAP):
+    """One greedy climb (policy_baseline's climb, on the MDP, which names its configuration)."""
+    raw, _ = mdp.reset()
+    kinds = dict.fromkeys(MOVE_KINDS, 0)
+    held, revisited, entered_dead_end, ending = set(), False, False, "cap"
+    for _ in range(cap):
+        configuration = tuple(raw["configuration"].tolist())
+        revisited |= configuration in held
+        held.add(configuration)
+        holds = np.flatnonzero(mdp.action_mask())
+        features = baseline.single_features(mdp.numeric_observation(baseline.MAX_CANDIDATES, reach=True),
+                                            policy.max_span)
+        raw, _, terminated, _, info = mdp.step(int(holds[baseline.greedy_slot(policy, *features)]))
+        finished = terminated and not info["fell"]
+        after = distance.get(tuple(raw["configuration"].tolist()))
+        kind = move_kind(distance.get(configuration), info["reached"], finished, after)
+        kinds[kind] += 1
+        entered_dead_end |= kind == "into_dead_end"
+        if terminated:
+            ending = "fell" if info["fell"] else "finished"
+            break
+    return {"ending": ending, "actions": sum(kinds.values()), "moves": kinds, "entered_dead_end": entered_dead_end,
+            "revisited": revisited}
+
+
+def diagnose(policy, wall_seeds, physics_model="kinematic"):
+    """The climbs on the walls whose start holds, and their sums."""
+    config = baseline.climbing_config(physics_model)
+    walls = []
+    for seed in wall_seeds:
+        wall = crux.Wall.random(seed)
+        try:
+            mdp = crux.ClimbMdp(wall, config=config, max_steps=None)
+        except ValueError:
+            continue  # a start that does not hold, as evaluate skips it
+        climb = diagnose_climb(policy, mdp, distances(wall, physics_model))
+        walls.append({"wall_seed": seed, **climb})
+    total = {kind: sum(w["moves"][kind] for w in walls) for kind in MOVE_KINDS}
+    return {"climbs": len(walls), **{ending: sum(w["ending"] == ending for w in walls)
+                                     for ending in ("finished", "fell", "cap")},
+            "entered_dead_end": sum(w["entered_dead_end"] for w in walls),
+            "revisited": sum(w["revisited"] for w in walls), "moves": total, "walls": walls}
+
+
+def parser():
+    top = OneLineParser(prog="climb_diagnosis.py", description=__doc__.split("\n\n")[0])
+    top.add_argument("--policy", type=pathlib.Path, required=True, help="a policy file (policy_baseline.py's)")
+    top.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
+    top.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic")
+    top.add_argument("--json", action="store_true", help="the whole report, per wall, as JSON")
+    return top
+
+
+def main(argv=None):
+    args = parser().parse_args(argv)
+    result = diagnose(baseline.load_for_walls(args.policy, "climb_diagnosis.py"), args.wall_seeds, args.physics_model)
+    if args.json:
+        print(json.dumps(result, indent=2))
+        return
+    moves = ", ".join(f"{kind.replace('_', ' ')} {count}" for kind, count in result["moves"].items())
+    print(f"{result['climbs']} climbs: {result['finished']} finished, {result['fell']} fell, {result['cap']} at the "
+          f"cap; {result['entered_dead_end']} entered a dead end, {result['revisited']} came back to a "
+          f"configuration. Moves: {moves}")
+
+
+if __name__ == "__main__":
+    main()
