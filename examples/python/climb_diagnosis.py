@@ -3,14 +3,15 @@ allows (crux.climb_graph, docs/BASELINES.md).
 
     climb_diagnosis.py --policy FILE --wall-seeds A:B [--physics-model static] [--json]
 
-Each move of a climb is one of: optimal (to a state one action nearer the finish), a detour
-(to a state no nearer, from which a climb still finishes), into a dead end (to a state from
-which no climb finishes), within a dead end, or failed (not reached; the climber stays). A state the graph does not hold is off the
-graph: the environment reached it on a route whose IK verdicts differ from the graph's
-(an IK solve starts from the posture before the move: docs/MODEL.md, C30).
-Each climb finished, fell or reached the cap of policy_baseline's evaluation (200 actions);
-the report also counts the climbs that entered a dead end and those that came back to a
-configuration they had held (a greedy policy, which has no memory, then loops).
+Each move of a climb is one of: optimal (to a state one action nearer the finish), a
+detour (to a state no nearer, from which a climb still finishes), into a dead end (to a
+state from which no climb finishes), within a dead end, or failed (not reached; the
+climber stays). A state the graph does not hold is off the graph: the environment
+reached it on a route whose IK verdicts differ from the graph's (an IK solve starts from
+the posture before the move: docs/MODEL.md, C30). Each climb finished, fell or reached
+the cap of policy_baseline's evaluation (200 actions); the report also counts the climbs
+that entered a dead end and those that came back to a configuration they had held (a
+greedy policy, which has no memory, then loops).
 """
 
 import json

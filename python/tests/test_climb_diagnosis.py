@@ -1,6 +1,6 @@
 """examples/python/climb_diagnosis.py: each move is classified by the climb graph's
-distances, the climbs are the evaluator's, a fall under the static model follows a dead
-end, and bad input is one line and exit code 2."""
+distances, the climbs are the evaluator's, falls after dead ends are reported as such,
+and bad input is one line and exit code 2."""
 
 import contextlib
 import importlib.util
@@ -14,7 +14,7 @@ import pytest
 from needed import need
 
 gymnasium, torch = need(
-    ["gymnasium", "torch"], "the climb diagnosis needs Gymnasium (../shared/third_party/gymnasium-1.4.0) and python3-torch"
+    ["gymnasium", "torch"], "the climb diagnosis needs Gymnasium (../shared/third_party/gymnasium-1.4.0) and torch"
 )
 
 REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
@@ -64,14 +64,14 @@ def test_the_climbs_are_the_evaluators_and_every_action_is_counted_once():
     assert result["moves"] == {kind: sum(w["moves"][kind] for w in result["walls"]) for kind in diagnosis.MOVE_KINDS}
 
 
-def test_a_fall_under_the_static_model_follows_a_dead_end():
-    # A fall comes when every move of the stance fails: the graph's state has no move that
-    # finishes, so the climb entered a dead end (or a state off the graph) on its way.
-    # The shipped (kinematic) policy falls on both walls under the static model.
+def test_the_shipped_policys_falls_under_the_static_model_follow_a_dead_end():
+    # A fall comes in a stance whose every move fails in the environment. On these two
+    # walls the shipped (kinematic) policy falls, each time after a move into a state from
+    # which the graph finishes no climb; the report must say so.
     result = run("--policy", str(SHIPPED), "--wall-seeds", "20004:20005", "--physics-model", "static")
-    assert result["fell"] == 2
+    assert result["fell"] == 2 and result["entered_dead_end"] == 2
     for wall in result["walls"]:
-        assert wall["entered_dead_end"] or wall["moves"]["off_graph"], wall
+        assert wall["moves"]["into_dead_end"] >= 1, wall
 
 
 @pytest.mark.parametrize("arguments, problem", [
@@ -84,3 +84,51 @@ def test_bad_input_is_one_line_and_exit_code_2(capsys, arguments, problem):
     assert stopped.value.code == 2
     err = capsys.readouterr().err
     assert err.startswith(problem) and err.count("\n") == 1, err
+
+
+RECORD = REPOSITORY / "models" / "policies" / "search" / "climb_diagnosis.json"
+
+
+def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
+    record = json.loads(RECORD.read_text())
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    for row in record["diagnoses"]:
+        unfinished = [wall for wall in row["walls"] if wall["ending"] != "finished"]
+        cells = [row["physics_model"], row["climbs"], row["finished"], row["fell"], row["cap"],
+                 sum(wall["entered_dead_end"] for wall in unfinished), *row["moves"].values()]
+        assert " | ".join(map(str, cells)) + " |" in text, row["name"]
+    graphs = record["static_graphs"]
+    flat = " ".join(text.split())
+    assert (f"{graphs['dead_end_states']:,} of the {graphs['states']:,} states a climb can reach "
+            f"({graphs['dead_end_states'] / graphs['states']:.0%})").replace("%", " %") in flat
+    assert (f"{graphs['into_dead_end']:,} of the {graphs['moves_from_live_states']:,} moves that reach a state from a "
+            f"live one ({graphs['into_dead_end'] / graphs['moves_from_live_states']:.0%})").replace("%", " %") in flat
+    pilots = record["pilots"]
+    for model, log in (("kinematic", "dagger_kinematic_walls_1000000_1000799"),
+                       ("static", "dagger_static_walls_1100000_1100499")):
+        for r in pilots[log]:
+            row = (f"| {model} | {r['round']} | {r['states']:,} | {r['nearest_chosen']:.0%} | "
+                   f"{r['validation']['finished']:.0%} | {r['held_out']['finished']:.0%} |").replace("%", " %")
+            assert row in text, f"{model} round {r['round']}"
+            ratio = r["held_out"]["mean_length_ratio"]
+            assert text.split(row)[1].split("\n")[0].strip(" |") == (f"{ratio:.2f}" if ratio else "")
+    first, second = pilots["cost_softmax_static_walls_1100000_1100499"]
+    assert first["validation"]["finished"] == first["held_out"]["finished"]
+    assert (f"finished {first['held_out']['finished']:.0%} of the static validation and held-out walls after round 0 "
+            f"and {second['validation']['finished']:.0%} and {second['held_out']['finished']:.0%} after round 1") \
+        .replace("%", " %") in flat
+    classifier = pilots["good_move_classifier_static"]
+    assert f"gave {classifier['slots']:,} offered slots, {classifier['good_share']:.0%} of them good" \
+        .replace("%", " %") in flat
+    assert f"AUC of {classifier['held_out_auc']:.3f}" in flat
+    assert f"({classifier['training_auc']:.3f} on training)" in flat
+    assert f"good in {classifier['top_slot_good']:.1%} of the held-out states".replace("%", " %") in flat
+    assert f"is good in {classifier['random_slot_good']:.1%}".replace("%", " %") in flat
+
+
+def test_the_records_shipped_rows_are_what_the_diagnosis_gives_now():
+    record = json.loads(RECORD.read_text())
+    shipped = next(row for row in record["diagnoses"] if row["policy"] == "models/policies/reach-ppo.json"
+                   and row["physics_model"] == "kinematic")
+    now = run("--policy", str(SHIPPED), "--wall-seeds", "20000:20001")
+    assert now["walls"] == shipped["walls"][:2]
