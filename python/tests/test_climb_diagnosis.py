@@ -117,6 +117,11 @@ def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
     assert (f"finished {first['held_out']['finished']:.0%} of the static validation and held-out walls after round 0 "
             f"and {second['validation']['finished']:.0%} and {second['held_out']['finished']:.0%} after round 1") \
         .replace("%", " %") in flat
+    kinematic = pilots["cost_softmax_kinematic_walls_1000000_1000799"]
+    shares = [f"{r['held_out']['finished']:.0%}".replace("%", " %") for r in kinematic]
+    ratios = [f"{r['held_out']['mean_length_ratio']:.2f}" for r in kinematic]
+    assert f"it finished {shares[0]}, {shares[1]} and {shares[2]} of the held-out walls" in flat
+    assert f"at {ratios[0]}, {ratios[1]} and {ratios[2]} times the plan" in flat
     classifier = pilots["good_move_classifier_static"]
     assert f"gave {classifier['slots']:,} offered slots, {classifier['good_share']:.0%} of them good" \
         .replace("%", " %") in flat
