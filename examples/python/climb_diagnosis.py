@@ -1,7 +1,7 @@
 """Where a learnt policy's greedy climbs go wrong, measured against every climb the wall
 allows (crux.climb_graph, docs/BASELINES.md).
 
-    climb_diagnosis.py --policy FILE --wall-seeds A:B [--physics-model static] [--json]
+    climb_diagnosis.py --policy FILE --wall-seeds A:B [--physics-model static] [--oracle reach|live] [--json]
 
 Each move of a climb is one of: optimal (to a state one action nearer the finish), a
 detour (to a state no nearer, from which a climb still finishes), into a dead end (to a
@@ -12,6 +12,10 @@ the posture before the move: docs/MODEL.md, C30). Each climb finished, fell or r
 the cap of policy_baseline's evaluation (200 actions); the report also counts the climbs
 that entered a dead end and those that came back to a configuration they had held (a
 greedy policy, which has no memory, then loops).
+
+--oracle tells the policy what it cannot see: the climbs choose greedily among the offered
+moves the graph reaches (reach), or among those that also keep a climb to the finish
+(live), so that the report measures how far knowing that would take the policy.
 """
 
 import json
@@ -27,12 +31,28 @@ MOVE_KINDS = ("optimal", "detour", "into_dead_end", "within_dead_end", "failed",
 GRAPH_SOLVES = 5_000_000  # whole random walls take 40,000-60,000 solves (docs/BASELINES.md)
 
 
-def distances(wall, physics_model):
-    """{configuration (hold indices in limb order, -1 free): actions to the finish, -1 if none}."""
+def climb_graph(wall, physics_model):
+    """(distance, moves): {configuration (hold indices in limb order, -1 free): actions to the
+    finish, -1 if none}, and {configuration: {hold index: the distance after the move, 0 when
+    it finishes}} for the moves the graph reaches."""
     graph = crux.climb_graph(wall, config={"physics.model": physics_model, "experiment.plan_max_solves": GRAPH_SOLVES})
     if graph["stopped_at_limit"]:
         raise RuntimeError(f"{wall.name}: the climb graph took more than {GRAPH_SOLVES} solves")
-    return {tuple(c): int(d) for c, d in zip(graph["configurations"].tolist(), graph["distances"])}
+    configurations = [tuple(c) for c in graph["configurations"].tolist()]
+    distance = dict(zip(configurations, graph["distances"].tolist()))
+    moves = {}
+    for state, hold, target, _ in graph["moves"].tolist():
+        moves.setdefault(configurations[state], {})[hold] = 0 if target < 0 else distance[configurations[target]]
+    return distance, moves
+
+
+def oracle_mask(mask, holds, after, oracle):
+    """The policy's mask, narrowed to the offered moves the graph reaches ("reach") or to those
+    that also keep a climb to the finish ("live"); unchanged where that leaves none."""
+    allowed = [hold in after and (oracle == "reach" or after[hold] >= 0) for hold in holds]
+    narrowed = mask.copy()
+    narrowed[0, :len(holds)] &= np.array(allowed, dtype=bool)
+    return narrowed if narrowed.any() else mask
 
 
 def move_kind(before, reached, finished, after):
@@ -50,8 +70,9 @@ def move_kind(before, reached, finished, after):
     return "optimal" if after == before - 1 else "detour"
 
 
-def diagnose_climb(policy, mdp, distance, cap=baseline.CLIMB_CAP):
+def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP):
     """One greedy climb (policy_baseline's climb, on the MDP, which names its configuration)."""
+    distance, moves = graph
     raw, _ = mdp.reset()
     kinds = dict.fromkeys(MOVE_KINDS, 0)
     held, revisited, entered_dead_end, ending = set(), False, False, "cap"
@@ -60,9 +81,11 @@ def diagnose_climb(policy, mdp, distance, cap=baseline.CLIMB_CAP):
         revisited |= configuration in held
         held.add(configuration)
         holds = np.flatnonzero(mdp.action_mask())
-        features = baseline.single_features(mdp.numeric_observation(baseline.MAX_CANDIDATES, reach=True),
-                                            policy.max_span)
-        raw, _, terminated, _, info = mdp.step(int(holds[baseline.greedy_slot(policy, *features)]))
+        state, slots, mask = baseline.single_features(mdp.numeric_observation(baseline.MAX_CANDIDATES, reach=True),
+                                                      policy.max_span)
+        if oracle != "none":
+            mask = oracle_mask(mask, holds, moves.get(configuration, {}), oracle)
+        raw, _, terminated, _, info = mdp.step(int(holds[baseline.greedy_slot(policy, state, slots, mask)]))
         finished = terminated and not info["fell"]
         after = distance.get(tuple(raw["configuration"].tolist()))
         kind = move_kind(distance.get(configuration), info["reached"], finished, after)
@@ -75,7 +98,7 @@ def diagnose_climb(policy, mdp, distance, cap=baseline.CLIMB_CAP):
             "revisited": revisited}
 
 
-def diagnose(policy, wall_seeds, physics_model="kinematic"):
+def diagnose(policy, wall_seeds, physics_model="kinematic", oracle="none"):
     """The climbs on the walls whose start holds, and their sums."""
     config = baseline.climbing_config(physics_model)
     walls = []
@@ -85,10 +108,10 @@ def diagnose(policy, wall_seeds, physics_model="kinematic"):
             mdp = crux.ClimbMdp(wall, config=config, max_steps=None)
         except ValueError:
             continue  # a start that does not hold, as evaluate skips it
-        climb = diagnose_climb(policy, mdp, distances(wall, physics_model))
+        climb = diagnose_climb(policy, mdp, climb_graph(wall, physics_model), oracle)
         walls.append({"wall_seed": seed, **climb})
     total = {kind: sum(w["moves"][kind] for w in walls) for kind in MOVE_KINDS}
-    return {"climbs": len(walls), **{ending: sum(w["ending"] == ending for w in walls)
+    return {"oracle": oracle, "climbs": len(walls), **{ending: sum(w["ending"] == ending for w in walls)
                                      for ending in ("finished", "fell", "cap")},
             "entered_dead_end": sum(w["entered_dead_end"] for w in walls),
             "revisited": sum(w["revisited"] for w in walls), "moves": total, "walls": walls}
@@ -99,13 +122,17 @@ def parser():
     top.add_argument("--policy", type=pathlib.Path, required=True, help="a policy file (policy_baseline.py's)")
     top.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
     top.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic")
+    top.add_argument("--oracle", choices=("none", "reach", "live"), default="none",
+                     help="let the policy choose only among the moves the graph reaches (reach), or among those "
+                     "that also keep a climb to the finish (live): what the policy would do if it knew that")
     top.add_argument("--json", action="store_true", help="the whole report, per wall, as JSON")
     return top
 
 
 def main(argv=None):
     args = parser().parse_args(argv)
-    result = diagnose(baseline.load_for_walls(args.policy, "climb_diagnosis.py"), args.wall_seeds, args.physics_model)
+    result = diagnose(baseline.load_for_walls(args.policy, "climb_diagnosis.py"), args.wall_seeds, args.physics_model,
+                      args.oracle)
     if args.json:
         print(json.dumps(result, indent=2))
         return

@@ -9,6 +9,7 @@ import json
 import pathlib
 import sys
 
+import numpy as np
 import pytest
 
 from needed import need
@@ -41,6 +42,22 @@ SHIPPED = REPOSITORY / "models" / "policies" / "reach-ppo.json"
 ])
 def test_a_move_is_classified_by_the_distances_before_and_after(before, reached, finished, after, kind):
     assert diagnosis.move_kind(before, reached, finished, after) == kind
+
+
+def test_the_oracles_narrow_the_mask_to_the_moves_the_graph_allows():
+    mask = np.array([[True, True, True, True, False]])
+    holds = np.array([4, 7, 9, 12])
+    after = {7: 3, 9: -1, 30: 2}  # 4 and 12 do not reach, 9 leads into a dead end
+    assert diagnosis.oracle_mask(mask, holds, after, "reach").tolist() == [[False, True, True, False, False]]
+    assert diagnosis.oracle_mask(mask, holds, after, "live").tolist() == [[False, True, False, False, False]]
+    assert diagnosis.oracle_mask(mask, holds, {}, "live").tolist() == mask.tolist(), "none allowed: unchanged"
+
+
+def test_with_the_live_oracle_no_climb_enters_a_dead_end():
+    result = run("--policy", str(SHIPPED), "--wall-seeds", "20004:20005", "--physics-model", "static",
+                 "--oracle", "live")
+    assert result["oracle"] == "live" and result["climbs"] == 2
+    assert result["entered_dead_end"] == 0 and result["moves"]["into_dead_end"] == 0
 
 
 def run(*arguments):
@@ -97,6 +114,14 @@ def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
         cells = [row["physics_model"], row["climbs"], row["finished"], row["fell"], row["cap"],
                  sum(wall["entered_dead_end"] for wall in unfinished), *row["moves"].values()]
         assert " | ".join(map(str, cells)) + " |" in text, row["name"]
+    held_out = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo.heldout.json").read_text())
+    plans = {wall["wall_seed"]: wall["plan_length"] for wall in held_out["walls"]}
+    kinematic = [row for row in record["diagnoses"] if row["policy"] == "models/policies/reach-ppo.json"
+                 and row["physics_model"] == "kinematic"]
+    ratios = [np.mean([w["actions"] / plans[w["wall_seed"]] for w in row["walls"] if w["ending"] == "finished"])
+              for row in kinematic]
+    assert [row["oracle"] for row in kinematic] == ["none", "reach"]
+    assert f"take\n  {ratios[1]:.2f} times their plans, as without it ({ratios[0]:.2f})" in text
     graphs = record["static_graphs"]
     flat = " ".join(text.split())
     assert (f"{graphs['dead_end_states']:,} of the {graphs['states']:,} states a climb can reach "
@@ -134,6 +159,6 @@ def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
 def test_the_records_shipped_rows_are_what_the_diagnosis_gives_now():
     record = json.loads(RECORD.read_text())
     shipped = next(row for row in record["diagnoses"] if row["policy"] == "models/policies/reach-ppo.json"
-                   and row["physics_model"] == "kinematic")
+                   and row["physics_model"] == "kinematic" and row["oracle"] == "none")
     now = run("--policy", str(SHIPPED), "--wall-seeds", "20000:20001")
     assert now["walls"] == shipped["walls"][:2]
