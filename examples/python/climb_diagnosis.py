@@ -6,12 +6,13 @@ allows (crux.climb_graph, docs/BASELINES.md).
 Each move of a climb is one of: optimal (to a state one action nearer the finish), a
 detour (to a state no nearer, from which a climb still finishes), into a dead end (to a
 state from which no climb finishes), within a dead end, or failed (not reached; the
-climber stays). A state the graph does not hold is off the graph: the environment
-reached it on a route whose IK verdicts differ from the graph's (an IK solve starts from
-the posture before the move: docs/MODEL.md, C30). Each climb finished, fell or reached
-the cap of policy_baseline's evaluation (200 actions); the report also counts the climbs
-that entered a dead end and those that came back to a configuration they had held (a
-greedy policy, which has no memory, then loops).
+climber stays), counted apart when the graph's own route reached that move. A state the
+graph does not hold is off the graph: the environment reached it on a route whose IK
+verdicts differ from the graph's (an IK solve starts from the posture before the move:
+docs/MODEL.md, C30). Each climb finished, fell or reached the cap of policy_baseline's
+evaluation (200 actions); the report also counts the climbs that entered a dead end and
+those that came back to a configuration they had held (a greedy policy, which has no
+memory, then loops).
 
 --oracle tells the policy what it cannot see: the climbs choose greedily among the offered
 moves the graph reaches (reach), or among those that also keep a climb to the finish
@@ -27,7 +28,7 @@ import crux
 import policy_baseline as baseline
 from example_arguments import OneLineParser, wall_seed_range
 
-MOVE_KINDS = ("optimal", "detour", "into_dead_end", "within_dead_end", "failed", "off_graph")
+MOVE_KINDS = ("optimal", "detour", "into_dead_end", "within_dead_end", "failed", "failed_graph_reaches", "off_graph")
 GRAPH_SOLVES = 5_000_000  # whole random walls take 40,000-60,000 solves (docs/BASELINES.md)
 
 
@@ -55,10 +56,11 @@ def oracle_mask(mask, holds, after, oracle):
     return narrowed if narrowed.any() else mask
 
 
-def move_kind(before, reached, finished, after):
-    """before, after: the states' distances, None for a state the graph does not hold."""
+def move_kind(before, reached, finished, after, graph_reaches=False):
+    """before, after: the states' distances, None for a state the graph does not hold;
+    graph_reaches: whether the graph's own route reached the move."""
     if not reached:
-        return "failed"
+        return "failed_graph_reaches" if graph_reaches else "failed"
     if before is None or (after is None and not finished):
         return "off_graph"
     if before < 0:
@@ -85,10 +87,12 @@ def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP):
                                                       policy.max_span)
         if oracle != "none":
             mask = oracle_mask(mask, holds, moves.get(configuration, {}), oracle)
-        raw, _, terminated, _, info = mdp.step(int(holds[baseline.greedy_slot(policy, state, slots, mask)]))
+        slot = baseline.greedy_slot(policy, state, slots, mask)
+        raw, _, terminated, _, info = mdp.step(int(holds[slot]))
         finished = terminated and not info["fell"]
         after = distance.get(tuple(raw["configuration"].tolist()))
-        kind = move_kind(distance.get(configuration), info["reached"], finished, after)
+        graph_reaches = int(holds[slot]) in moves.get(configuration, {})
+        kind = move_kind(distance.get(configuration), info["reached"], finished, after, graph_reaches)
         kinds[kind] += 1
         entered_dead_end |= kind == "into_dead_end"
         if terminated:

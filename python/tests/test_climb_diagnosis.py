@@ -30,6 +30,7 @@ SHIPPED = REPOSITORY / "models" / "policies" / "reach-ppo.json"
 
 @pytest.mark.parametrize("before, reached, finished, after, kind", [
     (5, False, False, 5, "failed"),
+    (None, False, False, None, "failed"),
     (5, True, False, 4, "optimal"),
     (5, True, False, 5, "detour"),
     (5, True, False, 7, "detour"),
@@ -42,6 +43,11 @@ SHIPPED = REPOSITORY / "models" / "policies" / "reach-ppo.json"
 ])
 def test_a_move_is_classified_by_the_distances_before_and_after(before, reached, finished, after, kind):
     assert diagnosis.move_kind(before, reached, finished, after) == kind
+
+
+def test_a_failed_move_the_graph_reaches_is_counted_apart():
+    assert diagnosis.move_kind(5, False, False, 5, graph_reaches=True) == "failed_graph_reaches"
+    assert diagnosis.move_kind(5, True, False, 4, graph_reaches=True) == "optimal"
 
 
 def test_the_oracles_narrow_the_mask_to_the_moves_the_graph_allows():
@@ -76,7 +82,7 @@ def test_the_climbs_are_the_evaluators_and_every_action_is_counted_once():
         assert wall["wall_seed"] == climb["wall_seed"]
         assert (wall["ending"] == "finished") == climb["finished"]
         assert wall["actions"] == climb["length"] == sum(wall["moves"].values())
-        assert wall["moves"]["failed"] == climb["failed_moves"]
+        assert wall["moves"]["failed"] + wall["moves"]["failed_graph_reaches"] == climb["failed_moves"]
     assert result["finished"] + result["fell"] + result["cap"] == result["climbs"]
     assert result["moves"] == {kind: sum(w["moves"][kind] for w in result["walls"]) for kind in diagnosis.MOVE_KINDS}
 
@@ -109,6 +115,7 @@ RECORD = REPOSITORY / "models" / "policies" / "search" / "climb_diagnosis.json"
 def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
     record = json.loads(RECORD.read_text())
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    flat = " ".join(text.split())
     for row in record["diagnoses"]:
         unfinished = [wall for wall in row["walls"] if wall["ending"] != "finished"]
         cells = [row["physics_model"], row["climbs"], row["finished"], row["fell"], row["cap"],
@@ -122,8 +129,12 @@ def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
               for row in kinematic]
     assert [row["oracle"] for row in kinematic] == ["none", "reach"]
     assert f"take\n  {ratios[1]:.2f} times their plans, as without it ({ratios[0]:.2f})" in text
+    shipped, clone = ((row["finished"], row["climbs"], row["moves"]["failed_graph_reaches"], sum(row["moves"].values()))
+                      for row in record["diagnoses"] if row["oracle"] == "live")
+    assert (f"finish {shipped[0]} of {shipped[1]} (the static clone's {clone[0]} of {clone[1]}) and loop on the rest, "
+            f"and {shipped[2]} of their {shipped[3]} actions (the clone's {clone[2]} of {clone[3]}) fail on moves the "
+            f"graph reaches") in flat
     graphs = record["static_graphs"]
-    flat = " ".join(text.split())
     assert (f"{graphs['dead_end_states']:,} of the {graphs['states']:,} states a climb can reach "
             f"({graphs['dead_end_states'] / graphs['states']:.0%})").replace("%", " %") in flat
     assert (f"{graphs['into_dead_end']:,} of the {graphs['moves_from_live_states']:,} moves that reach a state from a "
