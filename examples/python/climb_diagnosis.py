@@ -4,19 +4,22 @@ allows (crux.climb_graph, docs/BASELINES.md).
     climb_diagnosis.py --policy FILE --wall-seeds A:B [--physics-model static] [--oracle reach|live] [--json]
 
 Each move of a climb is one of: optimal (to a state one action nearer the finish), a
-detour (to a state no nearer, from which a climb still finishes), into a dead end (to a
-state from which no climb finishes), within a dead end, or failed (not reached; the
-climber stays), counted apart when the graph's own route reached that move. A state the
-graph does not hold is off the graph: the environment reached it on a route whose IK
-verdicts differ from the graph's (an IK solve starts from the posture before the move:
-docs/MODEL.md, C30). Each climb finished, fell or reached the cap of policy_baseline's
-evaluation (200 actions); the report also counts the climbs that entered a dead end and
-those that came back to a configuration they had held (a greedy policy, which has no
-memory, then loops).
+shortcut (nearer by more: a move the graph's routes did not reach), a detour (no nearer,
+to a state from which a climb the graph knows still finishes), into a dead end (to a
+state from which the graph knows no climb that finishes), within a dead end, or failed
+(not reached; the climber stays), counted apart when the graph's own route reached that
+move. A state the graph does not hold is off the graph. The graph's verdicts are those of
+its own routes: an IK solve starts from the posture before the move (docs/MODEL.md, C30),
+so a climb arriving in another posture may meet others. Each climb finished, fell or
+reached the cap of policy_baseline's evaluation (200 actions); the report also counts the
+climbs that entered a dead end and those that came back, by a move that reached, to a
+configuration they had held. A wall whose graph outgrows 5 M IK solves is skipped, named.
 
 --oracle tells the policy what it cannot see: the climbs choose greedily among the offered
 moves the graph reaches (reach), or among those that also keep a climb to the finish
-(live), so that the report measures how far knowing that would take the policy.
+(live), less those that failed there; where that leaves none they choose among all
+(counted as oracle_fallbacks). The report then measures how far knowing that would take
+the policy.
 """
 
 import json
@@ -28,17 +31,18 @@ import crux
 import policy_baseline as baseline
 from example_arguments import OneLineParser, wall_seed_range
 
-MOVE_KINDS = ("optimal", "detour", "into_dead_end", "within_dead_end", "failed", "failed_graph_reaches", "off_graph")
-GRAPH_SOLVES = 5_000_000  # whole random walls take 40,000-60,000 solves (docs/BASELINES.md)
+MOVE_KINDS = ("optimal", "shortcut", "detour", "into_dead_end", "within_dead_end", "failed", "failed_graph_reaches",
+              "off_graph")
+GRAPH_SOLVES = 5_000_000  # a random wall's graph takes about 50,000 (docs/PERFORMANCE.md)
 
 
 def climb_graph(wall, physics_model):
     """(distance, moves): {configuration (hold indices in limb order, -1 free): actions to the
     finish, -1 if none}, and {configuration: {hold index: the distance after the move, 0 when
-    it finishes}} for the moves the graph reaches."""
-    graph = crux.climb_graph(wall, config={"physics.model": physics_model, "experiment.plan_max_solves": GRAPH_SOLVES})
+    it finishes}} for the moves the graph reaches; None when the graph outgrows its budget."""
+    graph = crux.climb_graph(wall, config={"physics.model": physics_model}, max_ik_solves=GRAPH_SOLVES)
     if graph["stopped_at_limit"]:
-        raise RuntimeError(f"{wall.name}: the climb graph took more than {GRAPH_SOLVES} solves")
+        return None
     configurations = [tuple(c) for c in graph["configurations"].tolist()]
     distance = dict(zip(configurations, graph["distances"].tolist()))
     moves = {}
@@ -47,13 +51,15 @@ def climb_graph(wall, physics_model):
     return distance, moves
 
 
-def oracle_mask(mask, holds, after, oracle):
+def oracle_mask(mask, holds, failed, after, oracle):
     """The policy's mask, narrowed to the offered moves the graph reaches ("reach") or to those
-    that also keep a climb to the finish ("live"); unchanged where that leaves none."""
-    allowed = [hold in after and (oracle == "reach" or after[hold] >= 0) for hold in holds]
+    that also keep a climb to the finish ("live"), less those that failed here in the
+    environment; None where that leaves none (the climb then chooses among all it is offered)."""
+    allowed = [hold in after and not fail and (oracle == "reach" or after[hold] >= 0)
+               for hold, fail in zip(holds, failed)]
     narrowed = mask.copy()
     narrowed[0, :len(holds)] &= np.array(allowed, dtype=bool)
-    return narrowed if narrowed.any() else mask
+    return narrowed if narrowed.any() else None
 
 
 def move_kind(before, reached, finished, after, graph_reaches=False):
@@ -66,10 +72,12 @@ def move_kind(before, reached, finished, after, graph_reaches=False):
     if before < 0:
         return "within_dead_end"
     if finished:
-        return "optimal" if before == 1 else "detour"
-    if after < 0:
+        after = 0
+    elif after < 0:
         return "into_dead_end"
-    return "optimal" if after == before - 1 else "detour"
+    if after == before - 1:
+        return "optimal"
+    return "shortcut" if after < before - 1 else "detour"
 
 
 def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP):
@@ -77,48 +85,59 @@ def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP):
     distance, moves = graph
     raw, _ = mdp.reset()
     kinds = dict.fromkeys(MOVE_KINDS, 0)
-    held, revisited, entered_dead_end, ending = set(), False, False, "cap"
+    held = {tuple(raw["configuration"].tolist())}
+    revisited, entered_dead_end, fallbacks, ending = False, False, 0, "cap"
     for _ in range(cap):
         configuration = tuple(raw["configuration"].tolist())
-        revisited |= configuration in held
-        held.add(configuration)
         holds = np.flatnonzero(mdp.action_mask())
-        state, slots, mask = baseline.single_features(mdp.numeric_observation(baseline.MAX_CANDIDATES, reach=True),
-                                                      policy.max_span)
+        obs = mdp.numeric_observation(baseline.MAX_CANDIDATES, reach=True)
+        state, slots, mask = baseline.single_features(obs, policy.max_span)
         if oracle != "none":
-            mask = oracle_mask(mask, holds, moves.get(configuration, {}), oracle)
+            narrowed = oracle_mask(mask, holds, obs["candidate_failed"][:len(holds)] > 0.5,
+                                   moves.get(configuration, {}), oracle)
+            fallbacks += narrowed is None
+            mask = mask if narrowed is None else narrowed
         slot = baseline.greedy_slot(policy, state, slots, mask)
         raw, _, terminated, _, info = mdp.step(int(holds[slot]))
         finished = terminated and not info["fell"]
-        after = distance.get(tuple(raw["configuration"].tolist()))
+        reached_configuration = tuple(raw["configuration"].tolist())
         graph_reaches = int(holds[slot]) in moves.get(configuration, {})
-        kind = move_kind(distance.get(configuration), info["reached"], finished, after, graph_reaches)
+        kind = move_kind(distance.get(configuration), info["reached"], finished, distance.get(reached_configuration),
+                         graph_reaches)
         kinds[kind] += 1
         entered_dead_end |= kind == "into_dead_end"
         if terminated:
             ending = "fell" if info["fell"] else "finished"
             break
+        if info["reached"]:  # a failed move stays where it was: not a return
+            revisited |= reached_configuration in held
+            held.add(reached_configuration)
     return {"ending": ending, "actions": sum(kinds.values()), "moves": kinds, "entered_dead_end": entered_dead_end,
-            "revisited": revisited}
+            "revisited": revisited, "oracle_fallbacks": fallbacks}
 
 
 def diagnose(policy, wall_seeds, physics_model="kinematic", oracle="none"):
     """The climbs on the walls whose start holds, and their sums."""
     config = baseline.climbing_config(physics_model)
-    walls = []
+    walls, skipped = [], []
     for seed in wall_seeds:
         wall = crux.Wall.random(seed)
         try:
             mdp = crux.ClimbMdp(wall, config=config, max_steps=None)
         except ValueError:
             continue  # a start that does not hold, as evaluate skips it
-        climb = diagnose_climb(policy, mdp, climb_graph(wall, physics_model), oracle)
-        walls.append({"wall_seed": seed, **climb})
+        graph = climb_graph(wall, physics_model)
+        if graph is None:
+            skipped.append({"wall_seed": seed, "why": f"its climb graph takes more than {GRAPH_SOLVES} IK solves"})
+            continue
+        walls.append({"wall_seed": seed, **diagnose_climb(policy, mdp, graph, oracle)})
     total = {kind: sum(w["moves"][kind] for w in walls) for kind in MOVE_KINDS}
-    return {"oracle": oracle, "climbs": len(walls), **{ending: sum(w["ending"] == ending for w in walls)
-                                     for ending in ("finished", "fell", "cap")},
+    endings = {ending: sum(w["ending"] == ending for w in walls) for ending in ("finished", "fell", "cap")}
+    return {"oracle": oracle, "climbs": len(walls), **endings,
             "entered_dead_end": sum(w["entered_dead_end"] for w in walls),
-            "revisited": sum(w["revisited"] for w in walls), "moves": total, "walls": walls}
+            "revisited": sum(w["revisited"] for w in walls),
+            "oracle_fallbacks": sum(w["oracle_fallbacks"] for w in walls), "moves": total, "walls": walls,
+            "skipped_walls": skipped}
 
 
 def parser():
@@ -143,7 +162,8 @@ def main(argv=None):
     moves = ", ".join(f"{kind.replace('_', ' ')} {count}" for kind, count in result["moves"].items())
     print(f"{result['climbs']} climbs: {result['finished']} finished, {result['fell']} fell, {result['cap']} at the "
           f"cap; {result['entered_dead_end']} entered a dead end, {result['revisited']} came back to a "
-          f"configuration. Moves: {moves}")
+          f"configuration. Moves: {moves}" + (f"; the oracle left no move {result['oracle_fallbacks']} times"
+                                               if result["oracle"] != "none" else ""))
 
 
 if __name__ == "__main__":

@@ -28,11 +28,12 @@ def integer_at_least(minimum):
 
 
 positive = integer_at_least(1)
+LARGEST_SEED = 2**64 - 1  # a wall's seed is crux's 64-bit seed
 
 
 def wall_seed_range(text):
     """Random walls' seeds A:B, A to B inclusive, as a range."""
     first, _, last = text.partition(":")
-    if not first.isdigit() or not last.isdigit() or int(last) < int(first):
-        raise argparse.ArgumentTypeError(f"'{text}' is not A:B with 0 <= A <= B")
+    if not first.isdigit() or not last.isdigit() or not int(first) <= int(last) <= LARGEST_SEED:
+        raise argparse.ArgumentTypeError(f"'{text}' is not A:B with 0 <= A <= B <= {LARGEST_SEED}")
     return range(int(first), int(last) + 1)

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -205,14 +206,21 @@ py::object plan_py(const Wall& wall, const py::handle& config_handle, const py::
   return json_to_python(record);
 }
 
+// What crux.climb_graph takes: the rules of a climb (crux.plan's keys without the plan's
+// budget and move check: the graph has its own budget and checks stances only).
+const ParameterSet kPythonClimbGraphKeys{{"experiment.urdf", "ik", "physics", "filter"}, {"physics.fall_when_stuck"}};
+
 // crux.climb_graph: the graph's states and moves as arrays, each move marked optimal or not.
-py::dict climb_graph_py(const Wall& wall, const py::handle& config_handle, const py::handle& model_handle) {
-  const ExperimentConfig config = config_from_python(config_handle, kPythonPlanKeys, "climb_graph");
+py::dict climb_graph_py(const Wall& wall, const py::handle& config_handle, const py::handle& model_handle,
+                        const py::handle& max_solves_handle) {
+  const ExperimentConfig config = config_from_python(config_handle, kPythonClimbGraphKeys, "climb_graph");
   const BodyModelPtr model = body_from(model_handle, config.urdf);
+  const auto max_solves =
+      static_cast<int>(integer_from(max_solves_handle, 1, std::numeric_limits<int>::max(), "max_ik_solves"));
   ClimbGraph graph;
   {
     py::gil_scoped_release release;
-    graph = explore_climbs(*model, wall, config.settings.learning.climbing, config.settings.plan_search.max_ik_solves);
+    graph = explore_climbs(*model, wall, config.settings.learning.climbing, max_solves);
   }
   const auto state_count = static_cast<py::ssize_t>(graph.states.size());
   py::array_t<int> configurations({state_count, py::ssize_t{kLimbCount}});
@@ -236,6 +244,7 @@ py::dict climb_graph_py(const Wall& wall, const py::handle& config_handle, const
   out["distances"] = distances;
   out["moves"] = move_rows;
   out["stopped_at_limit"] = graph.stopped_at_limit;
+  out["expanded_states"] = graph.expanded_states;
   out["ik_solves"] = graph.ik_solves;
   return out;
 }
@@ -304,12 +313,14 @@ void bind_experiment(py::module_& m) {
         "A wall's exact shortest climb under the learning's rules (crux plan): returns the record crux plan --json "
         "prints. config takes the keys of [ik], [physics] and [filter], experiment.urdf and experiment.plan_*.");
   m.def("climb_graph", &climb_graph_py, py::arg("wall"), py::arg("config") = py::none(), py::arg("model") = py::none(),
+        py::arg("max_ik_solves") = 5000000,
         "Every climb the learning's rules allow on the wall: its states (3-configurations reachable from the start, "
         "breadth-first, the start first) and their reachable moves, as a dict of arrays: configurations (hold indices "
         "in limb order, -1 free), distances (actions to the finish, -1 when none finishes), moves (rows of state, "
-        "hold index, target state or -1 when the move finishes, 1 when the move is optimal), stopped_at_limit and "
-        "ik_solves. config takes crux.plan's keys; experiment.plan_max_solves bounds the solves (whole walls take "
-        "hundreds of thousands).");
+        "hold index, target state or -1 when the move finishes, 1 when the move is optimal), stopped_at_limit, "
+        "expanded_states and ik_solves. config takes the keys of [ik], [physics] and [filter] and experiment.urdf; "
+        "max_ik_solves bounds the IK solves (a random wall takes about 50,000). When stopped_at_limit, the states "
+        "from expanded_states on were never explored and the distances say nothing.");
   m.def("run_experiment", &run_experiment_py, py::arg("config") = py::none(), py::arg("output") = py::none(),
         py::arg("overwrite") = false,
         "The paper's experiment (crux paper): returns summary.json's contents; writes crux paper's folder to "

@@ -37,7 +37,8 @@ SHIPPED = REPOSITORY / "models" / "policies" / "reach-ppo.json"
     (5, True, False, -1, "into_dead_end"),
     (-1, True, False, -1, "within_dead_end"),
     (1, True, True, None, "optimal"),
-    (3, True, True, None, "detour"),  # a finish the graph did not expect of that state
+    (3, True, True, None, "shortcut"),  # a finish the graph's routes did not reach from that state
+    (5, True, False, 2, "shortcut"),
     (None, True, False, 4, "off_graph"),
     (5, True, False, None, "off_graph"),
 ])
@@ -51,12 +52,13 @@ def test_a_failed_move_the_graph_reaches_is_counted_apart():
 
 
 def test_the_oracles_narrow_the_mask_to_the_moves_the_graph_allows():
-    mask = np.array([[True, True, True, True, False]])
-    holds = np.array([4, 7, 9, 12])
-    after = {7: 3, 9: -1, 30: 2}  # 4 and 12 do not reach, 9 leads into a dead end
-    assert diagnosis.oracle_mask(mask, holds, after, "reach").tolist() == [[False, True, True, False, False]]
-    assert diagnosis.oracle_mask(mask, holds, after, "live").tolist() == [[False, True, False, False, False]]
-    assert diagnosis.oracle_mask(mask, holds, {}, "live").tolist() == mask.tolist(), "none allowed: unchanged"
+    mask = np.array([[True, True, True, True, True, False]])
+    holds = np.array([4, 7, 9, 12, 15])
+    failed = np.array([False, False, False, False, True])
+    after = {7: 3, 9: -1, 15: 2, 30: 2}  # 4 and 12 do not reach, 9 leads into a dead end, 15 failed here
+    assert diagnosis.oracle_mask(mask, holds, failed, after, "reach").tolist() == [[0, 1, 1, 0, 0, 0]]
+    assert diagnosis.oracle_mask(mask, holds, failed, after, "live").tolist() == [[0, 1, 0, 0, 0, 0]]
+    assert diagnosis.oracle_mask(mask, holds, failed, {}, "live") is None, "none allowed"
 
 
 def test_with_the_live_oracle_no_climb_enters_a_dead_end():
@@ -100,6 +102,7 @@ def test_the_shipped_policys_falls_under_the_static_model_follow_a_dead_end():
 @pytest.mark.parametrize("arguments, problem", [
     (["--policy", "missing.json", "--wall-seeds", "1:2"], "climb_diagnosis.py: --policy: "),
     (["--policy", str(SHIPPED), "--wall-seeds", "2:1"], "climb_diagnosis.py: argument --wall-seeds: "),
+    (["--policy", str(SHIPPED), "--wall-seeds", f"1:{2**64}"], "climb_diagnosis.py: argument --wall-seeds: "),
 ])
 def test_bad_input_is_one_line_and_exit_code_2(capsys, arguments, problem):
     with pytest.raises(SystemExit) as stopped:
@@ -116,24 +119,48 @@ def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
     record = json.loads(RECORD.read_text())
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
     flat = " ".join(text.split())
-    for row in record["diagnoses"]:
-        unfinished = [wall for wall in row["walls"] if wall["ending"] != "finished"]
+    rows = record["diagnoses"]
+
+    def unfinished(row):
+        return [wall for wall in row["walls"] if wall["ending"] != "finished"]
+
+    for row in rows:
         cells = [row["physics_model"], row["climbs"], row["finished"], row["fell"], row["cap"],
-                 sum(wall["entered_dead_end"] for wall in unfinished), *row["moves"].values()]
+                 sum(wall["entered_dead_end"] for wall in unfinished(row)), row["revisited"], *row["moves"].values()]
         assert " | ".join(map(str, cells)) + " |" in text, row["name"]
+    static = [row for row in rows if row["physics_model"] == "static" and row["oracle"] == "none"]
+    entered = ", ".join(f"{sum(w['entered_dead_end'] for w in unfinished(row))} of {len(unfinished(row))}"
+                        for row in static)
+    assert entered.rsplit(", ", 1)[0] + " and " + entered.rsplit(", ", 1)[1] + " unfinished climbs" in flat
+    failed = [(row["moves"]["failed"] + row["moves"]["failed_graph_reaches"]) / sum(row["moves"].values())
+              for row in static]
+    assert f"({min(failed):.0%} to {max(failed):.0%} of all their actions".replace("% to", " to").replace("%", " %") \
+        + " are failed moves)" in flat
+    odd_falls = [(wall["wall_seed"], row["name"]) for row in static for wall in row["walls"]
+                 if wall["ending"] == "fell" and not (wall["entered_dead_end"] or wall["moves"]["off_graph"])]
+    finished_after = [wall["wall_seed"] for row in static for wall in row["walls"]
+                      if wall["ending"] == "finished" and wall["entered_dead_end"]]
+    assert len(odd_falls) == 1 and f"the one (wall {odd_falls[0][0]}, the static clone)" in flat
+    assert f"two climbs (walls {finished_after[0]} and {finished_after[1]}) finished" in flat
+    shipped = rows[0]
+    kinds = shipped["moves"]
+    assert (f"the shipped policy's {sum(kinds.values())} actions against the plans' " in flat
+            and f"are {kinds['optimal']} optimal moves, {kinds['shortcut']} shortcuts, {kinds['detour']} detours, "
+            f"{kinds['failed'] + kinds['failed_graph_reaches']} failed moves ({kinds['failed_graph_reaches']} of them"
+            in flat)
     held_out = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo.heldout.json").read_text())
     plans = {wall["wall_seed"]: wall["plan_length"] for wall in held_out["walls"]}
-    kinematic = [row for row in record["diagnoses"] if row["policy"] == "models/policies/reach-ppo.json"
-                 and row["physics_model"] == "kinematic"]
-    ratios = [np.mean([w["actions"] / plans[w["wall_seed"]] for w in row["walls"] if w["ending"] == "finished"])
-              for row in kinematic]
-    assert [row["oracle"] for row in kinematic] == ["none", "reach"]
-    assert f"take\n  {ratios[1]:.2f} times their plans, as without it ({ratios[0]:.2f})" in text
-    shipped, clone = ((row["finished"], row["climbs"], row["moves"]["failed_graph_reaches"], sum(row["moves"].values()))
-                      for row in record["diagnoses"] if row["oracle"] == "live")
-    assert (f"finish {shipped[0]} of {shipped[1]} (the static clone's {clone[0]} of {clone[1]}) and loop on the rest, "
-            f"and {shipped[2]} of their {shipped[3]} actions (the clone's {clone[2]} of {clone[3]}) fail on moves the "
-            f"graph reaches") in flat
+    assert f"against the plans' {sum(plans.values())} are" in flat
+    without = {wall["wall_seed"]: wall["actions"] for wall in shipped["walls"]}
+    reach = next(row for row in rows if row["oracle"] == "reach" and row["physics_model"] == "kinematic")
+    done = [wall for wall in reach["walls"] if wall["ending"] == "finished"]
+    assert (f"finishes {len(done)} of 30 kinematic walls; on those {len(done)} its climbs take "
+            f"{np.mean([w['actions'] / plans[w['wall_seed']] for w in done]):.2f} times their plans, against "
+            f"{np.mean([without[w['wall_seed']] / plans[w['wall_seed']] for w in done]):.2f} without the oracle, "
+            f"and {reach['cap']} climbs go round to the cap") in flat
+    live = [row for row in rows if row["oracle"] == "live"]
+    assert [row["finished"] for row in live] == [4, 4] and [row["revisited"] for row in live] == [18, 18]
+    assert "each finish 4 of 25, and 18 of their 25 climbs come back" in flat
     graphs = record["static_graphs"]
     assert (f"{graphs['dead_end_states']:,} of the {graphs['states']:,} states a climb can reach "
             f"({graphs['dead_end_states'] / graphs['states']:.0%})").replace("%", " %") in flat

@@ -355,6 +355,7 @@ def test_climb_graph_agrees_with_the_plan_and_marks_the_moves_one_action_nearer(
         graph = crux.climb_graph(wall, config={"physics.model": model})
         plan = crux.plan(wall, config={"physics.model": model})
         assert not graph["stopped_at_limit"] and graph["ik_solves"] > 0
+        assert graph["expanded_states"] == len(graph["distances"])
         configurations, distances, moves = graph["configurations"], graph["distances"], graph["moves"]
         assert distances[0] == plan["length"]
         assert list(configurations[0]) == [-1, *wall.start[1:]], "the start, right hand free"
@@ -371,7 +372,12 @@ def test_climb_graph_agrees_with_the_plan_and_marks_the_moves_one_action_nearer(
 
 
 def test_climb_graph_refuses_keys_it_does_not_take_and_stops_at_its_budget():
-    with pytest.raises(ValueError, match="reward.height"):
-        crux.climb_graph(crux.Wall.random(10), config={"reward.height": 1.0})
-    graph = crux.climb_graph(crux.Wall.random(3), config={"experiment.plan_max_solves": 300})
+    for key, value in (("reward.height", 1.0), ("experiment.plan_check_moves", True),
+                       ("experiment.plan_max_solves", 300)):
+        with pytest.raises(ValueError, match=key.replace(".", r"\.")):
+            crux.climb_graph(crux.Wall.random(10), config={key: value})
+    with pytest.raises(ValueError, match="max_ik_solves"):
+        crux.climb_graph(crux.Wall.random(10), max_ik_solves=0)
+    graph = crux.climb_graph(crux.Wall.random(3), max_ik_solves=300)
     assert graph["stopped_at_limit"] and graph["ik_solves"] == 300
+    assert 0 < graph["expanded_states"] < len(graph["distances"]), "states found but never explored"

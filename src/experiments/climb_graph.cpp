@@ -1,5 +1,6 @@
 #include "experiments/climb_graph.hpp"
 
+#include <cstdint>
 #include <deque>
 #include <unordered_map>
 
@@ -48,6 +49,7 @@ ClimbGraph explore_climbs(const BodyModel& model, const Wall& wall, const Climbi
   std::vector<int> possible(wall.hold_count());
   const auto over_budget = [&] { return reacher.solves() >= static_cast<std::size_t>(max_ik_solves); };
   for (std::size_t current = 0; current < graph.states.size() && !graph.stopped_at_limit; ++current) {
+    graph.expanded_states = current + 1;
     const HoldConfiguration configuration = graph.states[current].configuration;
     const Limb free = configuration.free_limb();
     const int count = possible_actions(wall, configuration, parameters.filter, possible);

@@ -8,6 +8,7 @@
 // on the states its own mistakes lead to (DAgger, Ross et al. 2011).
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "climbing/climbing_mdp.hpp"
@@ -31,7 +32,10 @@ struct GraphState {
 
 struct ClimbGraph {
   std::vector<GraphState> states;  // breadth-first from the start, states[0]
-  bool stopped_at_limit = false;   // the budget ran out: later states' moves are missing
+  // The budget ran out: the states from expanded_states on (and the last expanded one's
+  // later moves) were never explored, so their distances say nothing.
+  bool stopped_at_limit = false;
+  std::size_t expanded_states = 0;
   std::size_t ik_solves = 0;
 };
 

@@ -5,7 +5,6 @@
 #include <algorithm>
 
 #include "configurations/possible_actions.hpp"
-#include "configurations/reachability.hpp"
 #include "experiments/shortest_plan.hpp"
 #include "support/planning_walls.hpp"
 #include "support/test_models.hpp"
@@ -81,6 +80,26 @@ void expect_moves_as_the_mdp(const ClimbingParameters& parameters) {
 TEST(ClimbGraph, MovesAsTheMdpKinematic) { expect_moves_as_the_mdp(ClimbingParameters{}); }
 TEST(ClimbGraph, MovesAsTheMdpStatic) { expect_moves_as_the_mdp(static_rules()); }
 
+// Every state of a whole graph, dead ends and detours included: its distance is one more
+// than the nearest its moves lead to (0 after a finish), and none exactly when no move
+// leads to the finish or to a state with a distance.
+TEST(ClimbGraph, EachDistanceIsOneMoreThanTheNearestMovesAfterIt) {
+  const ClimbGraph graph = explore_climbs(testing::human_model(), low_finish_wall(), static_rules(), kWholeWall);
+  ASSERT_FALSE(graph.stopped_at_limit);
+  EXPECT_EQ(graph.expanded_states, graph.states.size());
+  int dead_ends = 0;
+  for (const GraphState& state : graph.states) {
+    int nearest = kNoRoute;
+    for (const GraphMove& move : state.moves) {
+      const int after = move.target == kFinishState ? 0 : graph.states[move.target].distance;
+      if (after != kNoRoute && (nearest == kNoRoute || after < nearest)) nearest = after;
+    }
+    EXPECT_EQ(state.distance, nearest == kNoRoute ? kNoRoute : nearest + 1);
+    dead_ends += state.distance == kNoRoute;
+  }
+  EXPECT_GT(dead_ends, 0) << "the static model leaves stances from which no climb finishes";
+}
+
 TEST(ClimbGraph, OptimalHoldsAreTheMovesOneStepNearer) {
   ClimbGraph graph;
   graph.states.resize(4);
@@ -101,6 +120,7 @@ TEST(ClimbGraph, StopsAtItsBudgetOfSolves) {
   const ClimbGraph graph = explore_climbs(testing::human_model(), generate_random_wall(3), ClimbingParameters{}, 500);
   EXPECT_TRUE(graph.stopped_at_limit);
   EXPECT_EQ(graph.ik_solves, 500u);
+  EXPECT_LT(graph.expanded_states, graph.states.size()) << "states found but never explored";
 }
 
 }  // namespace
