@@ -13,7 +13,8 @@ its own routes: an IK solve starts from the posture before the move (docs/MODEL.
 so a climb arriving in another posture may meet others. Each climb finished, fell or
 reached the cap of policy_baseline's evaluation (200 actions); the report also counts the
 climbs that entered a dead end and those that came back, by a move that reached, to a
-configuration they had held. A wall whose graph outgrows 5 M IK solves is skipped, named.
+configuration they had held. A wall whose graph outgrows crux.climb_graph's budget of IK
+solves (5 M; a random wall takes about 50,000) is skipped, named.
 
 --oracle tells the policy what it cannot see: the climbs choose greedily among the offered
 moves the graph reaches (reach), or among those that also keep a climb to the finish
@@ -33,14 +34,13 @@ from example_arguments import OneLineParser, wall_seed_range
 
 MOVE_KINDS = ("optimal", "shortcut", "detour", "into_dead_end", "within_dead_end", "failed", "failed_graph_reaches",
               "off_graph")
-GRAPH_SOLVES = 5_000_000  # a random wall's graph takes about 50,000 (docs/PERFORMANCE.md)
 
 
 def climb_graph(wall, physics_model):
     """(distance, moves): {configuration (hold indices in limb order, -1 free): actions to the
     finish, -1 if none}, and {configuration: {hold index: the distance after the move, 0 when
     it finishes}} for the moves the graph reaches; None when the graph outgrows its budget."""
-    graph = crux.climb_graph(wall, config={"physics.model": physics_model}, max_ik_solves=GRAPH_SOLVES)
+    graph = crux.climb_graph(wall, config={"physics.model": physics_model})
     if graph["stopped_at_limit"]:
         return None
     configurations = [tuple(c) for c in graph["configurations"].tolist()]
@@ -128,7 +128,7 @@ def diagnose(policy, wall_seeds, physics_model="kinematic", oracle="none"):
             continue  # a start that does not hold, as evaluate skips it
         graph = climb_graph(wall, physics_model)
         if graph is None:
-            skipped.append({"wall_seed": seed, "why": f"its climb graph takes more than {GRAPH_SOLVES} IK solves"})
+            skipped.append({"wall_seed": seed, "why": "its graph outgrows crux.climb_graph's budget of IK solves"})
             continue
         walls.append({"wall_seed": seed, **diagnose_climb(policy, mdp, graph, oracle)})
     total = {kind: sum(w["moves"][kind] for w in walls) for kind in MOVE_KINDS}

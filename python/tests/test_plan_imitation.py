@@ -3,11 +3,9 @@ environment sees them, cloning them learns to choose the plan's slot and repeats
 and a bad demonstrations file is one line and exit code 2."""
 
 import contextlib
-import importlib.util
 import io
 import json
 import pathlib
-import sys
 
 import numpy as np
 import pytest
@@ -21,11 +19,7 @@ gymnasium, torch = need(
 )
 
 REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
-EXAMPLES = REPOSITORY / "examples" / "python"
-sys.path.insert(0, str(EXAMPLES))  # plan_imitation imports policy_baseline from its folder
-_spec = importlib.util.spec_from_file_location("plan_imitation", EXAMPLES / "plan_imitation.py")
-imitation = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(imitation)
+import plan_imitation as imitation  # noqa: E402 (conftest puts examples/python on the path; it needs torch)
 baseline = imitation.baseline
 
 WALLS = range(1000000, 1000008)  # 8 walls: 7 plans replay to the finish, 1 stops at a move it does not reach
