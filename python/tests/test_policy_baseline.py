@@ -322,3 +322,49 @@ def test_baselines_curriculum_table_quotes_its_record():
                f"| {held['finished']:.0%} ({round(held['finished'] * held['climbs'])} of {held['climbs']}) |")
         row = row.replace("e-0", "e-").replace("%", " %")
         assert row in text, row
+
+
+def test_baselines_long_training_table_quotes_its_record():
+    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    stage3 = json.loads((REPOSITORY / "models" / "policies" / "search" / "heldout_stage3.json").read_text())
+
+    def interval(c, digits=2):
+        return f"{c['mean']:.{digits}f} [{c['low']:.{digits}f}, {c['high']:.{digits}f}]"
+
+    for run in record["runs"]:
+        assert f"--steps 14000000 --seed {run['seed']} " in run["command"] and run["steps"] == 13_996_032
+        # The 6 M-step column is the same seed's climbs in the comparison's record, recomputed here.
+        six = [wall["policy"][run["seed"] - 1] for wall in stage3["walls"]]
+        assert run["held_out_6m"]["mean_length_ratio"] == pytest.approx(
+            np.mean([climb["ratio"] for climb in six if climb["finished"]]))
+        held, static, change = run["held_out"], run["held_out_static"], run["paired_ratio_14m_minus_6m"]
+        row = (f"| {run['seed']} | {run['seconds']:.0f} | {run['validation'][-1]['mean_length_ratio']:.2f} "
+               f"| {held['finished']:.0%} | {run['held_out_6m']['mean_length_ratio']:.2f} "
+               f"| {held['mean_length_ratio']:.2f} | {held['within_1_5_plans']:.0%} "
+               f"| {interval(change)}, p = {change['p']:.2g} "
+               f"| {static['finished']:.0%} ({round(static['finished'] * static['climbs'])} of {static['climbs']}) |")
+        assert row.replace("%", " %") in text, row
+    change = record["paired_ratio_14m_minus_6m"]
+    assert (f"{interval(record['ratio_14m'])} times their plans, against {interval(record['ratio_6m'])} "
+            f"at 6 M steps") in text.replace("\n", " ")
+    assert f"{interval(change)} (p = {change['p']:.1e})" in text.replace("\n", " ")
+    runs = record["runs"]
+    shipped = json.loads((REPOSITORY / "models" / "policies" / "search" / "climb_diagnosis.json").read_text())
+    shipped = next(d for d in shipped["diagnoses"] if d["policy"].endswith("reach-ppo.json")
+                   and d["physics_model"] == "kinematic" and d["oracle"] == "none")["moves"]
+
+    def spread(key):
+        values = [key(run["diagnosis"]["moves"]) for run in runs]
+        return min(values), max(values)
+
+    actions, failed = spread(lambda m: sum(m.values())), spread(lambda m: m["failed"] + m["failed_graph_reaches"])
+    detours, optimal = spread(lambda m: m["detour"]), spread(lambda m: m["optimal"])
+    plans = sum(wall["plan_length"] for wall in runs[0]["held_out"]["walls"])
+    prose = text.replace("\n", " ")
+    assert (f"({actions[0]} to {actions[1]} actions against the plans' {plans}, where the shipped policy takes "
+            f"{sum(shipped.values())})") in prose
+    assert (f"failed moves fell from {shipped['failed'] + shipped['failed_graph_reaches']} to {failed[0]}-{failed[1]}, "
+            f"and detours from {shipped['detour']} to {detours[0]}-{detours[1]}, with {optimal[0]} to {optimal[1]} "
+            f"optimal moves") in prose
+    assert f"so {actions[0] - round(1.5 * plans)} to {actions[1] - round(1.5 * plans)} more actions" in prose
