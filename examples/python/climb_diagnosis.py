@@ -85,25 +85,24 @@ def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP):
     distance, moves = graph
     raw, _ = mdp.reset()
     kinds = dict.fromkeys(MOVE_KINDS, 0)
-    held = {tuple(raw["configuration"].tolist())}
+    configuration = tuple(raw["configuration"].tolist())
+    held = {configuration}
     revisited, entered_dead_end, fallbacks, ending = False, False, 0, "cap"
     for _ in range(cap):
-        configuration = tuple(raw["configuration"].tolist())
         holds = np.flatnonzero(mdp.action_mask())
+        graph_moves = moves.get(configuration, {})
         obs = mdp.numeric_observation(baseline.MAX_CANDIDATES, reach=True)
         state, slots, mask = baseline.single_features(obs, policy.max_span)
         if oracle != "none":
-            narrowed = oracle_mask(mask, holds, obs["candidate_failed"][:len(holds)] > 0.5,
-                                   moves.get(configuration, {}), oracle)
+            narrowed = oracle_mask(mask, holds, obs["candidate_failed"][:len(holds)] > 0.5, graph_moves, oracle)
             fallbacks += narrowed is None
             mask = mask if narrowed is None else narrowed
         slot = baseline.greedy_slot(policy, state, slots, mask)
         raw, _, terminated, _, info = mdp.step(int(holds[slot]))
         finished = terminated and not info["fell"]
         reached_configuration = tuple(raw["configuration"].tolist())
-        graph_reaches = int(holds[slot]) in moves.get(configuration, {})
         kind = move_kind(distance.get(configuration), info["reached"], finished, distance.get(reached_configuration),
-                         graph_reaches)
+                         int(holds[slot]) in graph_moves)
         kinds[kind] += 1
         entered_dead_end |= kind == "into_dead_end"
         if terminated:
@@ -112,6 +111,7 @@ def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP):
         if info["reached"]:  # a failed move stays where it was: not a return
             revisited |= reached_configuration in held
             held.add(reached_configuration)
+        configuration = reached_configuration
     return {"ending": ending, "actions": sum(kinds.values()), "moves": kinds, "entered_dead_end": entered_dead_end,
             "revisited": revisited, "oracle_fallbacks": fallbacks}
 

@@ -329,15 +329,15 @@ def test_baselines_long_training_table_quotes_its_record():
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
     stage3 = json.loads((REPOSITORY / "models" / "policies" / "search" / "heldout_stage3.json").read_text())
 
-    def interval(c, digits=2):
-        return f"{c['mean']:.{digits}f} [{c['low']:.{digits}f}, {c['high']:.{digits}f}]"
+    def interval(c):
+        return f"{c['mean']:.2f} [{c['low']:.2f}, {c['high']:.2f}]"
 
     for run in record["runs"]:
         assert f"--steps 14000000 --seed {run['seed']} " in run["command"] and run["steps"] == 13_996_032
         # The 6 M-step column is the same seed's climbs in the comparison's record, recomputed here.
-        six = [wall["policy"][run["seed"] - 1] for wall in stage3["walls"]]
+        six_climbs = [wall["policy"][run["seed"] - 1] for wall in stage3["walls"]]
         assert run["held_out_6m"]["mean_length_ratio"] == pytest.approx(
-            np.mean([climb["ratio"] for climb in six if climb["finished"]]))
+            np.mean([climb["ratio"] for climb in six_climbs if climb["finished"]]))
         held, static, change = run["held_out"], run["held_out_static"], run["paired_ratio_14m_minus_6m"]
         row = (f"| {run['seed']} | {run['seconds']:.0f} | {run['validation'][-1]['mean_length_ratio']:.2f} "
                f"| {held['finished']:.0%} | {run['held_out_6m']['mean_length_ratio']:.2f} "

@@ -8,7 +8,6 @@
 // on the states its own mistakes lead to (DAgger, Ross et al. 2011).
 
 #include <cstddef>
-#include <cstdint>
 #include <vector>
 
 #include "climbing/climbing_mdp.hpp"
