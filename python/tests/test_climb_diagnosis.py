@@ -19,7 +19,8 @@ gymnasium, torch = need(
 REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
 import climb_diagnosis as diagnosis  # noqa: E402 (conftest puts examples/python on the path; it needs torch)
 baseline = diagnosis.baseline
-SHIPPED = REPOSITORY / "models" / "policies" / "reach-ppo.json"
+# The policy the record's analyses were measured with, shipped until the 14 M-step one replaced it.
+SIX_M_POLICY = REPOSITORY / "models" / "policies" / "search" / "reach-ppo-6m.json"
 
 
 @pytest.mark.parametrize("before, reached, finished, after, kind", [
@@ -56,7 +57,7 @@ def test_the_oracles_narrow_the_mask_to_the_moves_the_graph_allows():
 
 
 def test_with_the_live_oracle_no_climb_enters_a_dead_end():
-    result = run("--policy", str(SHIPPED), "--wall-seeds", "20004:20005", "--physics-model", "static",
+    result = run("--policy", str(SIX_M_POLICY), "--wall-seeds", "20004:20005", "--physics-model", "static",
                  "--oracle", "live")
     assert result["oracle"] == "live" and result["climbs"] == 2
     assert result["entered_dead_end"] == 0 and result["moves"]["into_dead_end"] == 0
@@ -70,8 +71,8 @@ def run(*arguments):
 
 
 def test_the_climbs_are_the_evaluators_and_every_action_is_counted_once():
-    result = run("--policy", str(SHIPPED), "--wall-seeds", "20000:20001")
-    policy, _ = baseline.load_policy(SHIPPED)
+    result = run("--policy", str(SIX_M_POLICY), "--wall-seeds", "20000:20001")
+    policy, _ = baseline.load_policy(SIX_M_POLICY)
     evaluated = baseline.evaluate(policy, range(20000, 20002), plans={})
     assert result["climbs"] == evaluated["climbs"] == 2
     for wall, climb in zip(result["walls"], evaluated["walls"]):
@@ -83,11 +84,11 @@ def test_the_climbs_are_the_evaluators_and_every_action_is_counted_once():
     assert result["moves"] == {kind: sum(w["moves"][kind] for w in result["walls"]) for kind in diagnosis.MOVE_KINDS}
 
 
-def test_the_shipped_policys_falls_under_the_static_model_follow_a_dead_end():
+def test_the_6m_policys_falls_under_the_static_model_follow_a_dead_end():
     # A fall comes in a stance whose every move fails in the environment. On these two
-    # walls the shipped (kinematic) policy falls, each time after a move into a state from
+    # walls the 6 M (kinematic) policy falls, each time after a move into a state from
     # which the graph finishes no climb; the report must say so.
-    result = run("--policy", str(SHIPPED), "--wall-seeds", "20004:20005", "--physics-model", "static")
+    result = run("--policy", str(SIX_M_POLICY), "--wall-seeds", "20004:20005", "--physics-model", "static")
     assert result["fell"] == 2 and result["entered_dead_end"] == 2
     for wall in result["walls"]:
         assert wall["moves"]["into_dead_end"] >= 1, wall
@@ -95,8 +96,8 @@ def test_the_shipped_policys_falls_under_the_static_model_follow_a_dead_end():
 
 @pytest.mark.parametrize("arguments, problem", [
     (["--policy", "missing.json", "--wall-seeds", "1:2"], "climb_diagnosis.py: --policy: "),
-    (["--policy", str(SHIPPED), "--wall-seeds", "2:1"], "climb_diagnosis.py: argument --wall-seeds: "),
-    (["--policy", str(SHIPPED), "--wall-seeds", f"1:{2**64}"], "climb_diagnosis.py: argument --wall-seeds: "),
+    (["--policy", str(SIX_M_POLICY), "--wall-seeds", "2:1"], "climb_diagnosis.py: argument --wall-seeds: "),
+    (["--policy", str(SIX_M_POLICY), "--wall-seeds", f"1:{2**64}"], "climb_diagnosis.py: argument --wall-seeds: "),
 ])
 def test_bad_input_is_one_line_and_exit_code_2(capsys, arguments, problem):
     with pytest.raises(SystemExit) as stopped:
@@ -136,16 +137,29 @@ def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
                       if wall["ending"] == "finished" and wall["entered_dead_end"]]
     assert len(odd_falls) == 1 and f"the one (wall {odd_falls[0][0]}, the static clone)" in flat
     assert f"two climbs (walls {finished_after[0]} and {finished_after[1]}) finished" in flat
-    shipped = rows[0]
-    kinds = shipped["moves"]
-    assert (f"the shipped policy's {sum(kinds.values())} actions against the plans' " in flat
+    six_m = rows[0]
+    kinds = six_m["moves"]
+    assert (f"the 6 M policy's {sum(kinds.values())} actions against the plans' " in flat
             and f"are {kinds['optimal']} optimal moves, {kinds['shortcut']} shortcuts, {kinds['detour']} detours, "
             f"{kinds['failed'] + kinds['failed_graph_reaches']} failed moves ({kinds['failed_graph_reaches']} of them"
             in flat)
-    held_out = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo.heldout.json").read_text())
+    held_out = json.loads((REPOSITORY / "models" / "policies" / "search" / "reach-ppo-6m.heldout.json").read_text())
     plans = {wall["wall_seed"]: wall["plan_length"] for wall in held_out["walls"]}
     assert f"against the plans' {sum(plans.values())} are" in flat
-    without = {wall["wall_seed"]: wall["actions"] for wall in shipped["walls"]}
+    # The shipped policy's row is the diagnosis of its seed's 14 M-step run.
+    long_training = json.loads((RECORD.parent / "long_training.json").read_text())
+    [shipped] = [run["diagnosis"] for run in long_training["runs"] if run["seed"] == 1]
+    kinds = shipped["moves"]
+    cells = [shipped["climbs"], shipped["finished"], shipped["fell"], shipped["cap"], shipped["entered_dead_end"],
+             shipped["revisited"], *kinds.values()]
+    assert "| the shipped policy (14 M steps) | kinematic | " + " | ".join(map(str, cells)) + " |" in text
+    surplus = sum(kinds.values()) - round(1.5 * sum(plans.values()))
+    assert (f"The shipped policy's {sum(kinds.values())} actions are {kinds['optimal']} optimal moves, "
+            f"{kinds['shortcut']} shortcuts, {kinds['detour']} detours, "
+            f"{kinds['failed'] + kinds['failed_graph_reaches']} failed moves ({kinds['failed_graph_reaches']} of them "
+            f"moves the graph's own route reaches) and {kinds['off_graph']} off the graph: {surplus} too many for "
+            f"{round(1.5 * sum(plans.values()))}.") in flat
+    without = {wall["wall_seed"]: wall["actions"] for wall in six_m["walls"]}
     reach = next(row for row in rows if row["oracle"] == "reach" and row["physics_model"] == "kinematic")
     done = [wall for wall in reach["walls"] if wall["ending"] == "finished"]
     assert (f"finishes {len(done)} of 30 kinematic walls; on those {len(done)} its climbs take "
@@ -188,9 +202,9 @@ def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
     assert f"is good in {classifier['random_slot_good']:.1%}".replace("%", " %") in flat
 
 
-def test_the_records_shipped_rows_are_what_the_diagnosis_gives_now():
+def test_the_records_6m_rows_are_what_the_diagnosis_gives_now():
     record = json.loads(RECORD.read_text())
-    shipped = next(row for row in record["diagnoses"] if row["policy"] == "models/policies/reach-ppo.json"
-                   and row["physics_model"] == "kinematic" and row["oracle"] == "none")
-    now = run("--policy", str(SHIPPED), "--wall-seeds", "20000:20001")
-    assert now["walls"] == shipped["walls"][:2]
+    six_m = next(row for row in record["diagnoses"] if row["policy"] == "models/policies/search/reach-ppo-6m.json"
+                 and row["physics_model"] == "kinematic" and row["oracle"] == "none")
+    now = run("--policy", str(SIX_M_POLICY), "--wall-seeds", "20000:20001")
+    assert now["walls"] == six_m["walls"][:2]

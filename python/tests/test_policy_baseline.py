@@ -363,10 +363,11 @@ def test_baselines_long_training_table_quotes_its_record():
     assert (f"{interval(record['ratio_14m'])} times their plans, against {interval(record['ratio_6m'])} "
             f"at 6 M steps") in prose
     assert f"{interval(change)} (p = {change['p']:.1e})" in prose
-    assert f"seeds climb within {interval(record['ratio_14m'])} times the plan" in prose
+    assert (f"and {interval(record['ratio_14m'])} times the exact plan's: shorter than the same setting's at 6 M "
+            f"steps ({interval(record['ratio_6m'])}, paired {interval(change)})") in prose
     diagnoses = json.loads((REPOSITORY / "models" / "policies" / "search" / "climb_diagnosis.json").read_text())
-    [shipped] = [d["moves"] for d in diagnoses["diagnoses"] if d["policy"] == "models/policies/reach-ppo.json"
-                 and d["physics_model"] == "kinematic" and d["oracle"] == "none"]
+    [six_m] = [d["moves"] for d in diagnoses["diagnoses"] if d["policy"] == "models/policies/search/reach-ppo-6m.json"
+               and d["physics_model"] == "kinematic" and d["oracle"] == "none"]
 
     def spread(key):
         values = [key(run["diagnosis"]["moves"]) for run in runs]
@@ -375,10 +376,50 @@ def test_baselines_long_training_table_quotes_its_record():
     actions, failed = spread(lambda m: sum(m.values())), spread(lambda m: m["failed"] + m["failed_graph_reaches"])
     detours, optimal = spread(lambda m: m["detour"]), spread(lambda m: m["optimal"])
     plans = sum(wall["plan_length"] for wall in runs[0]["held_out"]["walls"])
-    assert (f"({actions[0]} to {actions[1]} actions against the plans' {plans}, where the shipped policy, "
-            f"stage 3's seed 3 at 6 M steps, takes {sum(shipped.values())})") in prose
-    assert (f"failed moves fell from {shipped['failed'] + shipped['failed_graph_reaches']} to {failed[0]}-{failed[1]}, "
-            f"and detours from {shipped['detour']} to {detours[0]}-{detours[1]}, with {optimal[0]} to {optimal[1]} "
+    assert (f"({actions[0]} to {actions[1]} actions against the plans' {plans}, where the 6 M policy "
+            f"takes {sum(six_m.values())})") in prose
+    assert (f"failed moves fell from {six_m['failed'] + six_m['failed_graph_reaches']} to {failed[0]}-{failed[1]}, "
+            f"and detours from {six_m['detour']} to {detours[0]}-{detours[1]}, with {optimal[0]} to {optimal[1]} "
             f"optimal moves") in prose
     assert (f"is {round(1.5 * plans)} actions, so {actions[0] - round(1.5 * plans)} to "
             f"{actions[1] - round(1.5 * plans)} more actions") in prose
+
+
+def test_baselines_14m_comparison_quotes_its_record():
+    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "heldout_14m.json").read_text())
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    assert record["policies"][0] == "models/policies/reach-ppo.json"  # the shipped policy is the first seed
+    for line in baseline.comparison_markdown(record).splitlines():
+        assert line in text, line  # the tables as compare prints them
+    climbs = [[wall["policy"][seed] for wall in record["walls"]] for seed in range(3)]
+    lengths = [np.mean([climb["length"] for climb in seed]) for seed in climbs]
+    ratios = [np.mean([climb["ratio"] for climb in seed]) for seed in climbs]
+    within = [np.mean([climb["ratio"] <= 1.5 for climb in seed]) for seed in climbs]
+    assert all(climb["finished"] for seed in climbs for climb in seed)
+    prose = " ".join(text.split())
+    assert (f"Per seed: {lengths[0]:.1f}, {lengths[1]:.1f} and {lengths[2]:.1f} actions (ratios {ratios[0]:.2f}, "
+            f"{ratios[1]:.2f} and {ratios[2]:.2f}; within 1.5 times the plan on {within[0]:.0%}, {within[1]:.0%} and "
+            f"{within[2]:.0%} of the walls)").replace("%", " %") in prose
+    stage3 = json.loads((REPOSITORY / "models" / "policies" / "search" / "heldout_stage3.json").read_text())
+    failed = [np.mean([climb["failed_moves"] for wall in comparison["walls"] for climb in wall["policy"]])
+              for comparison in (stage3, record)]
+    assert f"of which {failed[0]:.1f} a climb are failed moves; at 14 M steps," in prose
+    assert f"more, of which {failed[1]:.1f} are failed moves." in prose
+
+
+def test_the_shipped_policy_is_the_14m_run_the_docs_describe():
+    record = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo.json").read_text())["training"]
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    start = text.index("### The shipped policy")
+    section = text[start:text.index("### The length target", start)]
+    assert f"/usr/bin/python3 {record['command']}\n" in section and record["steps"] == 13_996_032
+    last = record["history"][-1]
+    assert f"This file's training took {last['seconds']:.0f} s on" in section
+    assert (f"| validation, 10000-10029 (its last validation) | {last['finished']:.0%} | {last['mean_length']:.1f} | "
+            f"| {last['mean_length_ratio']:.2f} | {last['within_1_5_plans']:.0%} |").replace("%", " %") in section
+    long_training = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
+    # Its validations are those of the same command's first run, the wall-clock aside.
+    [first] = [run for run in long_training["runs"] if run["seed"] == 1]
+    assert [{key: v[key] for key in first["validation"][0]} for v in record["history"]] == first["validation"]
+    six_m = json.loads((REPOSITORY / "models" / "policies" / "search" / "reach-ppo-6m.json").read_text())["training"]
+    assert "--steps 6000000 --seed 3 " in six_m["command"] and six_m["steps"] == 5_996_544

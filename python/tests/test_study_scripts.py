@@ -10,6 +10,9 @@ import pathlib
 import subprocess
 import sys
 
+import numpy as np
+from scipy import stats
+
 SCRIPTS = pathlib.Path(__file__).resolve().parents[2] / "scripts"
 METRICS = ["first_5_iterations", "time_to_threshold_half", "time_to_threshold", "time_to_threshold_2x",
            "time_to_threshold_4x"]
@@ -87,3 +90,57 @@ def test_table_gives_the_saving_and_the_total(tmp_path):
     (tmp_path / "sweep" / "summary.json").write_text(json.dumps(summary))
     row = run_script("transfer_walls_table.py", tmp_path / "sweep").splitlines()[2]
     assert "| -1400 (no interval) | 0.88 (no interval) |" in row, row
+
+
+def network_transfer():
+    sys.path.insert(0, str(SCRIPTS))
+    try:
+        import network_transfer as module  # it imports crux and scipy
+    finally:
+        sys.path.remove(str(SCRIPTS))
+    return module
+
+
+def test_network_transfers_comparison_and_amortised_total_by_hand():
+    # Walls' means 100, 300, 50 against 400, 600, 200: differences -300, -300, -150.
+    result = network_transfer().compare([100, 300, 50], [400, 600, 200], 1000)
+    sem = math.sqrt((50**2 * 2 + 100**2) / 2) / math.sqrt(3)  # deviations 50, 50, 100 from the mean
+    quantile = math.sqrt(2 * 0.95**2 / (1 - 0.95**2))
+    assert result["difference"]["mean"] == -250
+    assert math.isclose(result["difference"]["low"], -250 - quantile * sem)
+    assert math.isclose(result["difference"]["p_value"], 2 * t2_cdf(-250 / sem))
+    assert result["walls_lower"] == 3 and math.isclose(result["saving_share"], 250 / 400)
+    # Amortised over N walls: 1000 / N + 150 < 400 from N = 5 on (at N = 4 the totals are equal).
+    assert result["walls_to_beat_control"] == 5
+
+
+def test_transfer_docs_quote_the_network_transfer_record():
+    root = SCRIPTS.parent
+    record = json.loads((root / "models" / "policies" / "search" / "network_transfer.json").read_text())
+    text = (root / "docs" / "TRANSFER.md").read_text()
+
+    def row(label, c, training=None):
+        first, control = c["first_5_iterations"]
+        d = c["difference"]
+        cells = [label, f"{first:.0f}", f"{control:.0f}",
+                 f"{d['mean']:.0f} [{d['low']:.0f}, {d['high']:.0f}], {d['p_value']:.0e}",
+                 f"{c['saving_share']:.0%}".replace("%", " %"), f"{c['walls_lower']} of {record['walls']} walls",
+                 f"{c['walls_to_beat_control']} walls ({training})" if training else ""]
+        return ("| " + " | ".join(cells) + " |").replace("|  |", "| |")
+
+    shipped, six_m = record["shipped"], record["six_m"]
+    steps = shipped["comparisons"]["network"]["training"]
+    assert steps == json.loads((root / "models" / "policies" / "reach-ppo.json").read_text())["training"]["steps"]
+    assert row("the policy (`network`)", shipped["comparisons"]["network"], f"{steps:,} training steps") in text
+    grid = shipped["comparisons"]["reused_q_grid"]
+    assert row("one reused Q_grid (`prior`, reach)", grid, f"{grid['training']:,} training iterations") in text
+    assert row("the policy against the reused Q_grid", shipped["network_against_reused_q_grid"]) in text
+    earlier = six_m["comparisons"]["network"]
+    assert earlier["training"] == 5_996_544
+    assert row("the 6 M policy (`network`)", earlier, f"{earlier['training']:,} training steps") in text
+    # The two policies on the same walls and seeds, paired over walls.
+    shorter = np.subtract(shipped["per_wall"]["network"]["treated"], six_m["per_wall"]["network"]["treated"])
+    half = stats.t.ppf(0.975, len(shorter) - 1) * stats.sem(shorter)
+    assert (f"({shorter.mean():.1f} [{shorter.mean() - half:.1f}, {shorter.mean() + half:.1f}], "
+            f"p = {stats.ttest_1samp(shorter, 0).pvalue:.1g}, lower on {np.sum(shorter < 0)} of 30 walls)") \
+        in " ".join(text.split())
