@@ -2,6 +2,7 @@
 gives the same weights, the evaluator's numbers are those of a climb run by hand, and a
 bad policy file is one line and exit code 2."""
 
+import hashlib
 import importlib.util
 import json
 import os
@@ -386,40 +387,87 @@ def test_baselines_long_training_table_quotes_its_record():
 
 
 def test_baselines_14m_comparison_quotes_its_record():
-    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "heldout_14m.json").read_text())
+    policies = REPOSITORY / "models" / "policies"
+    record = json.loads((policies / "search" / "heldout_14m.json").read_text())
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
-    assert record["policies"][0] == "models/policies/reach-ppo.json"  # the shipped policy is the first seed
+    start = text.index("The shipped setting trained for 14 M steps, its three seeds")
+    section = text[start:text.index("**At 6 M steps**", start)]
     for line in baseline.comparison_markdown(record).splitlines():
-        assert line in text, line  # the tables as compare prints them
+        assert line in section, line  # the tables as compare prints them
+    # The first seed's climbs are the shipped policy's evaluation, climb for climb.
+    shipped = json.loads((policies / "reach-ppo.heldout.json").read_text())["walls"]
+    assert [(wall["policy"][0]["length"], wall["policy"][0]["failed_moves"]) for wall in record["walls"]] \
+        == [(wall["length"], wall["failed_moves"]) for wall in shipped]
     climbs = [[wall["policy"][seed] for wall in record["walls"]] for seed in range(3)]
+    assert all(climb["finished"] for seed in climbs for climb in seed)
     lengths = [np.mean([climb["length"] for climb in seed]) for seed in climbs]
     ratios = [np.mean([climb["ratio"] for climb in seed]) for seed in climbs]
     within = [np.mean([climb["ratio"] <= 1.5 for climb in seed]) for seed in climbs]
-    assert all(climb["finished"] for seed in climbs for climb in seed)
-    prose = " ".join(text.split())
+    prose = " ".join(section.split())
     assert (f"Per seed: {lengths[0]:.1f}, {lengths[1]:.1f} and {lengths[2]:.1f} actions (ratios {ratios[0]:.2f}, "
             f"{ratios[1]:.2f} and {ratios[2]:.2f}; within 1.5 times the plan on {within[0]:.0%}, {within[1]:.0%} and "
             f"{within[2]:.0%} of the walls)").replace("%", " %") in prose
-    stage3 = json.loads((REPOSITORY / "models" / "policies" / "search" / "heldout_stage3.json").read_text())
+    stage3 = json.loads((policies / "search" / "heldout_stage3.json").read_text())
     failed = [np.mean([climb["failed_moves"] for wall in comparison["walls"] for climb in wall["policy"]])
               for comparison in (stage3, record)]
-    assert f"of which {failed[0]:.1f} a climb are failed moves; at 14 M steps," in prose
-    assert f"more, of which {failed[1]:.1f} are failed moves." in prose
+    flat = " ".join(text.split())
+    assert f"of which {failed[0]:.1f} a climb are failed moves; at 14 M steps," in flat
+    assert f"more, of which {failed[1]:.1f} are failed moves." in flat
 
 
 def test_the_shipped_policy_is_the_14m_run_the_docs_describe():
-    record = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo.json").read_text())["training"]
+    policies = REPOSITORY / "models" / "policies"
+    policy = json.loads((policies / "reach-ppo.json").read_text())
+    record = policy["training"]
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
     start = text.index("### The shipped policy")
     section = text[start:text.index("### The length target", start)]
+    flat = " ".join(section.split())
     assert f"/usr/bin/python3 {record['command']}\n" in section and record["steps"] == 13_996_032
     last = record["history"][-1]
     assert f"This file's training took {last['seconds']:.0f} s on" in section
     assert (f"| validation, 10000-10029 (its last validation) | {last['finished']:.0%} | {last['mean_length']:.1f} | "
             f"| {last['mean_length_ratio']:.2f} | {last['within_1_5_plans']:.0%} |").replace("%", " %") in section
-    long_training = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
-    # Its validations are those of the same command's first run, the wall-clock aside.
-    [first] = [run for run in long_training["runs"] if run["seed"] == 1]
-    assert [{key: v[key] for key in first["validation"][0]} for v in record["history"]] == first["validation"]
-    six_m = json.loads((REPOSITORY / "models" / "policies" / "search" / "reach-ppo-6m.json").read_text())["training"]
+    assert f"(about {round(last['episodes'], -4):,} of them)" in " ".join(text.split())
+    long_training = json.loads((policies / "search" / "long_training.json").read_text())
+    runs = {run["seed"]: run for run in long_training["runs"]}
+    # Its validations are those of the same command's first run, the wall-clock aside, and so are its weights.
+    assert [{key: v[key] for key in runs[1]["validation"][0]} for v in record["history"]] == runs[1]["validation"]
+    digest = hashlib.sha256(json.dumps([policy["slot_layers"], policy["value_layers"]]).encode()).hexdigest()
+    assert runs[1]["weights_sha256"]["first_run"] == runs[1]["weights_sha256"]["rerun_shipped"] == digest
+    # Chosen by the last validation's ratio, where the search's score would pick another seed.
+    last_ratio = {seed: run["validation"][-1]["mean_length_ratio"] for seed, run in runs.items()}
+    last_within = {seed: run["validation"][-1]["within_1_5_plans"] for seed, run in runs.items()}
+    held = {seed: run["held_out"]["mean_length_ratio"] for seed, run in runs.items()}
+    assert min(last_ratio, key=last_ratio.get) == 1 and max(last_within, key=last_within.get) == 3
+    assert (f"1.50, against seeds 2 and 3's {last_ratio[2]:.2f} and {last_ratio[3]:.2f}. By the search's score, the "
+            f"share within 1.5 times the plan, seed 3 would lead ({last_within[3]:.0%} against {last_within[1]:.0%})"
+            ).replace("%", " %") in flat
+    assert max(held, key=held.get) == 1
+    assert f"({held[1]:.2f} against {held[2]:.2f} and {held[3]:.2f})" in flat
+    six_m = json.loads((policies / "search" / "reach-ppo-6m.json").read_text())["training"]
     assert "--steps 6000000 --seed 3 " in six_m["command"] and six_m["steps"] == 5_996_544
+
+
+def test_baselines_18m_run_quotes_its_record():
+    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    flat = " ".join(text.split())
+    eighteen, fourteen = record["eighteen_m"], next(run for run in record["runs"] if run["seed"] == 1)
+    assert "--steps 18000000 --seed 1 " in eighteen["command"] and f"{eighteen['seconds']:.0f} s, beside" in flat
+
+    def row(label, run):
+        last, held, static = run["validation"][-1], run["held_out"], run["held_out_static"]
+        recent = np.mean([v["mean_length_ratio"] for v in run["validation"][-10:]])
+        done = round(static["finished"] * static["climbs"])
+        return (f"| {label} | {last['finished']:.0%}, {last['mean_length_ratio']:.2f} | {recent:.2f} "
+                f"| {held['finished']:.0%} | {held['mean_length_ratio']:.2f} | {held['within_1_5_plans']:.0%} "
+                f"| {static['finished']:.0%} ({done} of {static['climbs']}) |").replace("%", " %")
+
+    assert row("14 M (the shipped policy)", fourteen) in text
+    assert row("18 M", eighteen) in text
+    change = eighteen["paired_ratio_18m_minus_14m"]
+    interval = f"{change['mean']:+.2f} [{change['low']:.2f}, {change['high']:.2f}]"
+    assert f"is {interval} times the plan (p = {change['p']:.2f})" in flat and f"paired {interval})" in flat
+    lowest = min(eighteen["validation"], key=lambda v: v["mean_length_ratio"])
+    assert f"at its lowest, {lowest['mean_length_ratio']:.2f}, at {lowest['steps'] / 1e6:.1f} M steps" in flat

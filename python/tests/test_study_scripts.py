@@ -108,6 +108,7 @@ def test_network_transfers_comparison_and_amortised_total_by_hand():
     quantile = math.sqrt(2 * 0.95**2 / (1 - 0.95**2))
     assert result["difference"]["mean"] == -250
     assert math.isclose(result["difference"]["low"], -250 - quantile * sem)
+    assert math.isclose(result["difference"]["high"], -250 + quantile * sem)
     assert math.isclose(result["difference"]["p_value"], 2 * t2_cdf(-250 / sem))
     assert result["walls_lower"] == 3 and math.isclose(result["saving_share"], 250 / 400)
     # Amortised over N walls: 1000 / N + 150 < 400 from N = 5 on (at N = 4 the totals are equal).
@@ -144,3 +145,23 @@ def test_transfer_docs_quote_the_network_transfer_record():
     assert (f"({shorter.mean():.1f} [{shorter.mean() - half:.1f}, {shorter.mean() + half:.1f}], "
             f"p = {stats.ttest_1samp(shorter, 0).pvalue:.1g}, lower on {np.sum(shorter < 0)} of 30 walls)") \
         in " ".join(text.split())
+    # The walls up to which the 6 M policy's amortised total stays the lower one, and from the interval's ends.
+    extra = shipped["comparisons"]["network"]["training"] - earlier["training"]
+    flat = " ".join(text.split())
+    assert f"{extra:,} more training steps for {-shorter.mean():.0f} iterations a wall" in flat
+    assert f"up to about {round(extra / -shorter.mean(), -4):,.0f} walls" in flat
+    assert (f"({round(extra / -(shorter.mean() - half), -4):,.0f} to {extra / -(shorter.mean() + half) / 1e6:.1f} "
+            f"million from the interval of the difference)") in flat
+    # The policy's total against the reused Q_grid's: training / N + first, equal at N = (T - T') / (first' - first).
+    crossing = (steps - grid["training"]) / (grid["first_5_iterations"][0] - shipped["comparisons"]["network"]
+                                            ["first_5_iterations"][0])
+    assert f"falls below the Q_grid's from about {round(crossing, -2):,.0f} walls" in flat
+    baselines = " ".join((root / "docs" / "BASELINES.md").read_text().split())
+    network = shipped["comparisons"]["network"]
+    assert (f"brings the first 5 episodes down from {network['first_5_iterations'][1]:.0f} iterations to "
+            f"{network['first_5_iterations'][0]:.0f}, and its training pays for itself from "
+            f"{network['walls_to_beat_control']} walls on") in baselines
+    assert (f"take {network['first_5_iterations'][0]:.0f} iterations against control's "
+            f"{network['first_5_iterations'][1]:.0f}, and the policy's {steps:,} training steps") in baselines
+    assert (f"The 6 M policy took {earlier['first_5_iterations'][0]:.0f} iterations and beat control from "
+            f"{earlier['walls_to_beat_control']} walls on") in baselines
