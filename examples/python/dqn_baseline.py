@@ -8,7 +8,7 @@ random policy on the same walls (docs/BASELINES.md).
     /usr/bin/python3 examples/python/dqn_baseline.py compare --out build/baseline   # on the held-out walls
     /usr/bin/python3 examples/python/dqn_baseline.py plot --out build/baseline docs/images/baseline_curves.png
 
-At the learnt policy's budget: the chosen setting, 6 M steps a run over 64 environments
+At the PPO search's budget: the chosen setting, 6 M steps a run over 64 environments
 stepped together (--envs; --part K/3 runs the K-th seed):
 
     /usr/bin/python3 examples/python/dqn_baseline.py search --out build/baseline-6m --setting lr0.0003-decay0.6-h64 \

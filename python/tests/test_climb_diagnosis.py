@@ -150,7 +150,7 @@ def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
     long_training = json.loads((RECORD.parent / "long_training.json").read_text())
     [shipped] = [run["diagnosis"] for run in long_training["runs"] if run["seed"] == 1]
     # Every climb finishes, so its count of climbs that entered a dead end is the column's (unfinished ones).
-    assert shipped["finished"] == shipped["climbs"]
+    assert shipped["finished"] == shipped["climbs"] and shipped["entered_dead_end"] == 0
     kinds = shipped["moves"]
     cells = [shipped["climbs"], shipped["finished"], shipped["fell"], shipped["cap"], shipped["entered_dead_end"],
              shipped["revisited"], *kinds.values()]

@@ -366,6 +366,10 @@ def test_baselines_long_training_table_quotes_its_record():
     assert f"{interval(change)} (p = {change['p']:.1e})" in prose
     assert (f"and {interval(record['ratio_14m'])} times the exact plan's: shorter than the same setting's at 6 M "
             f"steps ({interval(record['ratio_6m'])}, paired {interval(change)})") in prose
+    python_doc = " ".join((REPOSITORY / "docs" / "PYTHON.md").read_text().split())
+    [seed1] = [run for run in record["runs"] if run["seed"] == 1]
+    assert (f"in {interval(record['ratio_14m'])} times the exact plan's length over its setting's three seeds at 14 M "
+            f"steps (the shipped policy, seed 1: {seed1['held_out']['mean_length_ratio']:.2f};") in python_doc
     diagnoses = json.loads((REPOSITORY / "models" / "policies" / "search" / "climb_diagnosis.json").read_text())
     [six_m] = [d["moves"] for d in diagnoses["diagnoses"] if d["policy"] == "models/policies/search/reach-ppo-6m.json"
                and d["physics_model"] == "kinematic" and d["oracle"] == "none"]
@@ -396,8 +400,9 @@ def test_baselines_14m_comparison_quotes_its_record():
         assert line in section, line  # the tables as compare prints them
     # The first seed's climbs are the shipped policy's evaluation, climb for climb.
     shipped = json.loads((policies / "reach-ppo.heldout.json").read_text())["walls"]
-    assert [(wall["policy"][0]["length"], wall["policy"][0]["failed_moves"]) for wall in record["walls"]] \
-        == [(wall["length"], wall["failed_moves"]) for wall in shipped]
+    first_seed = [(wall["wall_seed"], wall["policy"][0]["length"], wall["policy"][0]["failed_moves"])
+                  for wall in record["walls"]]
+    assert first_seed == [(wall["wall_seed"], wall["length"], wall["failed_moves"]) for wall in shipped]
     climbs = [[wall["policy"][seed] for wall in record["walls"]] for seed in range(3)]
     assert all(climb["finished"] for seed in climbs for climb in seed)
     lengths = [np.mean([climb["length"] for climb in seed]) for seed in climbs]
@@ -440,9 +445,9 @@ def test_the_shipped_policy_is_the_14m_run_the_docs_describe():
     last_within = {seed: run["validation"][-1]["within_1_5_plans"] for seed, run in runs.items()}
     held = {seed: run["held_out"]["mean_length_ratio"] for seed, run in runs.items()}
     assert min(last_ratio, key=last_ratio.get) == 1 and max(last_within, key=last_within.get) == 3
-    assert (f"1.50, against seeds 2 and 3's {last_ratio[2]:.2f} and {last_ratio[3]:.2f}. By the search's score, the "
-            f"share within 1.5 times the plan, seed 3 would lead ({last_within[3]:.0%} against {last_within[1]:.0%})"
-            ).replace("%", " %") in flat
+    assert (f"{last_ratio[1]:.2f}, against seeds 2 and 3's {last_ratio[2]:.2f} and {last_ratio[3]:.2f}. By the "
+            f"search's score, the share within 1.5 times the plan, seed 3 would lead ({last_within[3]:.0%} against "
+            f"{last_within[1]:.0%})").replace("%", " %") in flat
     assert max(held, key=held.get) == 1
     assert f"({held[1]:.2f} against {held[2]:.2f} and {held[3]:.2f})" in flat
     six_m = json.loads((policies / "search" / "reach-ppo-6m.json").read_text())["training"]
@@ -454,7 +459,8 @@ def test_baselines_18m_run_quotes_its_record():
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
     flat = " ".join(text.split())
     eighteen, fourteen = record["eighteen_m"], next(run for run in record["runs"] if run["seed"] == 1)
-    assert "--steps 18000000 --seed 1 " in eighteen["command"] and f"{eighteen['seconds']:.0f} s, beside" in flat
+    assert eighteen["command"].replace("18000000", "14000000").replace("s1-18m", "s1-14m") == fourteen["command"]
+    assert f"{eighteen['seconds']:.0f} s, beside" in flat
 
     def row(label, run):
         last, held, static = run["validation"][-1], run["held_out"], run["held_out_static"]
@@ -467,6 +473,14 @@ def test_baselines_18m_run_quotes_its_record():
     assert row("14 M (the shipped policy)", fourteen) in text
     assert row("18 M", eighteen) in text
     change = eighteen["paired_ratio_18m_minus_14m"]
+    shipped = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo.heldout.json").read_text())["walls"]
+    assert [wall["wall_seed"] for wall in eighteen["held_out"]["walls"]] == [wall["wall_seed"] for wall in shipped]
+    ratios = [[wall["length"] / wall["plan_length"] for wall in walls]
+              for walls in (eighteen["held_out"]["walls"], shipped)]
+    assert change["mean"] == pytest.approx(np.mean(np.subtract(*ratios)))
+    lead = " ".join(text[:text.index("## The learnt policy")].split())
+    held = [run["held_out"]["mean_length_ratio"] for run in (eighteen, fourteen)]
+    assert f"({held[0]:.2f} against {held[1]:.2f}, paired {change['mean']:+.2f}" in lead
     interval = f"{change['mean']:+.2f} [{change['low']:.2f}, {change['high']:.2f}]"
     assert f"is {interval} times the plan (p = {change['p']:.2f})" in flat and f"paired {interval})" in flat
     lowest = min(eighteen["validation"], key=lambda v: v["mean_length_ratio"])

@@ -165,3 +165,5 @@ def test_transfer_docs_quote_the_network_transfer_record():
             f"{network['first_5_iterations'][1]:.0f}, and the policy's {steps:,} training steps") in baselines
     assert (f"The 6 M policy took {earlier['first_5_iterations'][0]:.0f} iterations and beat control from "
             f"{earlier['walls_to_beat_control']} walls on") in baselines
+    assert (f"the longer training saved Dyna-Q {-shorter.mean():.1f} more iterations (p = "
+            f"{stats.ttest_1samp(shorter, 0).pvalue:.1g}), for {extra:,} more training steps") in baselines
