@@ -454,13 +454,13 @@ def test_the_shipped_policy_is_the_14m_run_the_docs_describe():
     assert "--steps 6000000 --seed 3 " in six_m["command"] and six_m["steps"] == 5_996_544
 
 
-def test_baselines_18m_run_quotes_its_record():
+def test_baselines_18m_runs_quote_their_record():
     record = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
     flat = " ".join(text.split())
-    eighteen, fourteen = record["eighteen_m"], next(run for run in record["runs"] if run["seed"] == 1)
-    assert eighteen["command"].replace("18000000", "14000000").replace("s1-18m", "s1-14m") == fourteen["command"]
-    assert f"{eighteen['seconds']:.0f} s, beside" in flat
+    fourteen = {run["seed"]: run for run in record["runs"]}
+    eighteen = {run["seed"]: run for run in record["eighteen_m"]}
+    assert sorted(eighteen) == [1, 2]
 
     def row(label, run):
         last, held, static = run["validation"][-1], run["held_out"], run["held_out_static"]
@@ -470,18 +470,38 @@ def test_baselines_18m_run_quotes_its_record():
                 f"| {held['finished']:.0%} | {held['mean_length_ratio']:.2f} | {held['within_1_5_plans']:.0%} "
                 f"| {static['finished']:.0%} ({done} of {static['climbs']}) |").replace("%", " %")
 
-    assert row("14 M (the shipped policy)", fourteen) in text
-    assert row("18 M", eighteen) in text
-    change = eighteen["paired_ratio_18m_minus_14m"]
-    shipped = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo.heldout.json").read_text())["walls"]
-    assert [wall["wall_seed"] for wall in eighteen["held_out"]["walls"]] == [wall["wall_seed"] for wall in shipped]
-    ratios = [[wall["length"] / wall["plan_length"] for wall in walls]
-              for walls in (eighteen["held_out"]["walls"], shipped)]
-    assert change["mean"] == pytest.approx(np.mean(np.subtract(*ratios)))
+    def ratios(run):
+        return [wall["length"] / wall["plan_length"] for wall in run["held_out"]["walls"]]
+
+    def interval(change):
+        return f"{change['mean']:+.2f} [{change['low']:.2f}, {change['high']:.2f}]"
+
+    assert row("1, 14 M (the shipped policy)", fourteen[1]) in text
+    shipped = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo.heldout.json").read_text())
+    assert fourteen[1]["held_out"]["walls"] == shipped["walls"]
+    for seed, run in eighteen.items():
+        assert run["command"].replace("18000000", "14000000").replace("-18m", "-14m") == fourteen[seed]["command"]
+        assert f"seed {seed} in {run['seconds']:.0f} s" in flat
+        if seed != 1:
+            assert row(f"{seed}, 14 M", fourteen[seed]) in text
+        assert row(f"{seed}, 18 M", run) in text
+        walls = [[wall["wall_seed"] for wall in r["held_out"]["walls"]] for r in (run, fourteen[seed])]
+        assert walls[0] == walls[1]
+        change = run["paired_ratio_18m_minus_14m"]
+        assert change["mean"] == pytest.approx(np.mean(np.subtract(ratios(run), ratios(fourteen[seed]))))
+        assert f"{interval(change)} {'times the plan for ' if seed == 1 else 'for '}seed {seed} " \
+               f"(p = {change['p']:.2f})" in flat
+    pooled = record["eighteen_m_pooled"]
+    means = [np.mean([ratios(runs[seed]) for seed in pooled["seeds"]], axis=0) for runs in (eighteen, fourteen)]
+    assert pooled["paired_ratio_18m_minus_14m"]["mean"] == pytest.approx(np.mean(np.subtract(*means)))
+    assert [pooled["ratio_18m"], pooled["ratio_14m"]] == pytest.approx([float(np.mean(m)) for m in means])
+    both = f"{pooled['ratio_18m']:.2f} against {pooled['ratio_14m']:.2f}"
+    change = pooled["paired_ratio_18m_minus_14m"]
+    assert f"{both} at 14 M: {interval(change)} (p = {change['p']:.2f})" in flat
     lead = " ".join(text[:text.index("## The learnt policy")].split())
-    held = [run["held_out"]["mean_length_ratio"] for run in (eighteen, fourteen)]
-    assert f"({held[0]:.2f} against {held[1]:.2f}, paired {change['mean']:+.2f}" in lead
-    interval = f"{change['mean']:+.2f} [{change['low']:.2f}, {change['high']:.2f}]"
-    assert f"is {interval} times the plan (p = {change['p']:.2f})" in flat and f"paired {interval})" in flat
-    lowest = min(eighteen["validation"], key=lambda v: v["mean_length_ratio"])
+    assert f"({both}, paired {interval(change)})" in lead
+    lowest = min(eighteen[1]["validation"], key=lambda v: v["mean_length_ratio"])
     assert f"at its lowest, {lowest['mean_length_ratio']:.2f}, at {lowest['steps'] / 1e6:.1f} M steps" in flat
+    last = eighteen[2]["validation"][-1]["mean_length_ratio"]
+    assert f"2's last validation, {last:.2f}, is below 1.5 and its held-out climbs take " \
+           f"{eighteen[2]['held_out']['mean_length_ratio']:.2f} times the plan" in flat
