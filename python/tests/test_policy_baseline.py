@@ -454,6 +454,16 @@ def test_the_shipped_policy_is_the_14m_run_the_docs_describe():
     assert "--steps 6000000 --seed 3 " in six_m["command"] and six_m["steps"] == 5_996_544
 
 
+def test_every_committed_policy_s_command_writes_its_own_file():
+    # Rerunning a file's command must reproduce that file, never overwrite another policy.
+    policies = sorted((REPOSITORY / "models" / "policies").rglob("*.json"))
+    commands = {path: json.loads(path.read_text()).get("training", {}).get("command") for path in policies}
+    commands = {path: command for path, command in commands.items() if command}
+    assert len(commands) == 2
+    for path, command in commands.items():
+        assert command.split(" --out ")[1].split()[0] == str(path.relative_to(REPOSITORY)), path
+
+
 def test_baselines_18m_runs_quote_their_record():
     record = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
