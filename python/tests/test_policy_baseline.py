@@ -515,3 +515,55 @@ def test_baselines_18m_runs_quote_their_record():
     last = eighteen[2]["validation"][-1]["mean_length_ratio"]
     assert f"2's last validation, {last:.2f}, is below 1.5 and its held-out climbs take " \
            f"{eighteen[2]['held_out']['mean_length_ratio']:.2f} times the plan" in flat
+
+
+def test_baselines_keep_best_18m_quotes_its_record():
+    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
+    flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
+    eighteen = {run["seed"]: run for run in record["eighteen_m"]}
+    kept = {run["seed"]: run for run in record["keep_best_18m"]}
+    assert sorted(kept) == [1, 2]
+
+    def ratios(run):
+        return [wall["length"] / wall["plan_length"] for wall in run["held_out"]["walls"]]
+
+    def interval(change):
+        return f"{change['mean']:+.2f} [{change['low']:.2f}, {change['high']:.2f}] (p = {change['p']:.2f})"
+
+    for seed, run in kept.items():
+        last = eighteen[seed]
+        command = last["command"].replace(" --out ", " --keep-best --out ").replace(".json", "-best.json")
+        assert run["command"] == command
+        assert run["validations_equal_eighteen_m"]
+        # --keep-best's rule: most finished, then the lowest ratio, over the run's validations.
+        best = max(last["validation"], key=lambda v: (v["finished"], -v["mean_length_ratio"]))
+        assert run["kept_validation"] == best and run["kept_steps"] == best["steps"]
+        assert [wall["wall_seed"] for wall in run["held_out"]["walls"]] == \
+               [wall["wall_seed"] for wall in last["held_out"]["walls"]]
+        change = run["paired_ratio_kept_minus_last"]
+        assert change["mean"] == pytest.approx(np.mean(np.subtract(ratios(run), ratios(last))))
+    one, two = kept[1], kept[2]
+    assert f"(the same commands, the two side by side: {one['seconds']:.0f} and {two['seconds']:.0f} s)" in flat
+    assert (f"{one['kept_validation']['mean_length_ratio']:.2f} at {one['kept_steps'] / 1e6:.1f} M steps for seed 1 "
+            f"and {two['kept_validation']['mean_length_ratio']:.2f} at {two['kept_steps'] / 1e6:.1f} M for seed 2, "
+            f"where the last weights scored {eighteen[1]['validation'][-1]['mean_length_ratio']:.2f} and "
+            f"{eighteen[2]['validation'][-1]['mean_length_ratio']:.2f}") in flat
+    assert (f"they climb in {one['held_out']['mean_length_ratio']:.2f} and {two['held_out']['mean_length_ratio']:.2f} "
+            f"times the plan, against the last weights' {eighteen[1]['held_out']['mean_length_ratio']:.2f} and "
+            f"{eighteen[2]['held_out']['mean_length_ratio']:.2f}: paired "
+            f"{interval(one['paired_ratio_kept_minus_last'])} and "
+            f"{interval(two['paired_ratio_kept_minus_last'])}") in flat
+    pooled = record["keep_best_18m_pooled"]
+    means = [np.mean([ratios(runs[seed]) for seed in pooled["seeds"]], axis=0) for runs in (kept, eighteen)]
+    assert pooled["ratio_kept"] == pytest.approx(float(np.mean(means[0])))
+    assert pooled["paired_ratio_kept_minus_last"]["mean"] == pytest.approx(np.mean(np.subtract(*means)))
+    assert (f"{np.mean(means[0]):.2f} against {np.mean(means[1]):.2f}, "
+            f"{interval(pooled['paired_ratio_kept_minus_last'])}") in flat
+    static = [f"{s['finished']:.0%} ({round(s['finished'] * s['climbs'])} of {s['climbs']})".replace("%", " %")
+              for s in (one["held_out_static"], two["held_out_static"])]
+    assert f"Under the static model they finish {static[0]} and {static[1]}." in flat
+    errors = [np.std(ratios(run), ddof=1) / np.sqrt(len(ratios(run)))
+              for run in record["runs"] + record["eighteen_m"] + record["keep_best_18m"]]
+    assert f"standard error of {min(errors):.2f} to {max(errors):.2f} on the held-out walls (the seven" in flat
+    for verb in ("do", "are"):  # the lead and "Not done"
+        assert f"nor {verb} the weights of their best validations ({pooled['ratio_kept']:.2f})" in flat
