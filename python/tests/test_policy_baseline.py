@@ -567,3 +567,45 @@ def test_baselines_keep_best_18m_quotes_its_record():
     assert f"standard error of {min(errors):.2f} to {max(errors):.2f} on the held-out walls (the seven" in flat
     for verb in ("do", "are"):  # the lead and "Not done"
         assert f"nor {verb} the weights of their best validations ({pooled['ratio_kept']:.2f})" in flat
+
+
+def test_baselines_300_walls_quote_their_record():
+    from wall_statistics import interval, paired, per_wall_mean
+    root = REPOSITORY / "models" / "policies"
+    record = json.loads((root / "search" / "heldout_300.json").read_text())
+    flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
+    shipped, *others = record["policies"]
+    assert shipped["policy"] == "models/policies/reach-ppo.json"
+    assert [p["seed"] for p in record["policies"]] == [1, 2, 3]
+    assert all("--wall-seeds 20000:20299" in p["command"] for p in record["policies"])
+    walls = [[wall["wall_seed"] for wall in p["evaluation"]["walls"]] for p in record["policies"]]
+    assert walls == [list(range(20000, 20300))] * 3
+    # The first 30 of the 300 climbs are the shipped evaluation's, climb for climb.
+    assert shipped["evaluation"]["walls"][:30] == json.loads((root / "reach-ppo.heldout.json").read_text())["walls"]
+
+    def climbs(policy):
+        return [{"finished": float(w["finished"]), "ratio": w["length"] / w["plan_length"] if w["finished"] else None}
+                for w in policy["evaluation"]["walls"]]
+
+    by_wall = [list(runs) for runs in zip(*[climbs(p) for p in record["policies"]])]
+    ratios = [c["ratio"] for c in climbs(shipped)]
+    setting = per_wall_mean(by_wall, "ratio")
+    assert record["shipped_ratio"] == interval(ratios)
+    assert record["setting_ratio"] == interval(setting)
+    assert record["setting_finished"] == interval(per_wall_mean(by_wall, "finished"))
+    assert record["setting_ratio_minus_1_5"] == paired(setting, [1.5] * len(setting))
+    assert record["shipped_ratio_minus_1_5"] == paired(ratios, [1.5] * len(ratios))
+
+    def cell(c):
+        return f"{c['mean']:.2f} [{c['low']:.2f}, {c['high']:.2f}]"
+
+    above, alone = record["setting_ratio_minus_1_5"], record["shipped_ratio_minus_1_5"]
+    done = sum(w["finished"] for w in shipped["evaluation"]["walls"])
+    share = record["setting_finished"]
+    assert (f"the three seeds finish {share['mean']:.1%} [{share['low']:.1%}, {share['high']:.1%}] of the climbs, in "
+            f"{cell(record['setting_ratio'])} times the plan, {cell(above)} above 1.5 (p = {above['p']:.1e}); the "
+            f"shipped policy alone finishes {done} of 300, in {cell(record['shipped_ratio'])} times the plan "
+            f"(p = {alone['p']:.3f} against 1.5)").replace("%", "").replace(" [", " % [", 1) in flat
+    assert (f"the three seeds take {cell(record['setting_ratio'])} times the plan, above it (p = {above['p']:.1e}), "
+            f"while finishing {record['setting_finished']['mean']:.1%} of the climbs").replace("%", " %") in flat
+    assert f"On 300 held-out walls the setting takes {cell(record['setting_ratio'])} times the plan" in flat
