@@ -465,6 +465,7 @@ def test_every_committed_policy_s_command_writes_its_own_file():
 
 
 def test_baselines_18m_runs_quote_their_record():
+    from wall_statistics import paired
     record = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
     flat = " ".join(text.split())
@@ -498,12 +499,12 @@ def test_baselines_18m_runs_quote_their_record():
         walls = [[wall["wall_seed"] for wall in r["held_out"]["walls"]] for r in (run, fourteen[seed])]
         assert walls[0] == walls[1]
         change = run["paired_ratio_18m_minus_14m"]
-        assert change["mean"] == pytest.approx(np.mean(np.subtract(ratios(run), ratios(fourteen[seed]))))
+        assert change == pytest.approx(paired(ratios(run), ratios(fourteen[seed])))
         assert f"{interval(change)} {'times the plan for ' if seed == 1 else 'for '}seed {seed} " \
                f"(p = {change['p']:.2f})" in flat
     pooled = record["eighteen_m_pooled"]
     means = [np.mean([ratios(runs[seed]) for seed in pooled["seeds"]], axis=0) for runs in (eighteen, fourteen)]
-    assert pooled["paired_ratio_18m_minus_14m"]["mean"] == pytest.approx(np.mean(np.subtract(*means)))
+    assert pooled["paired_ratio_18m_minus_14m"] == pytest.approx(paired(*means))
     assert [pooled["ratio_18m"], pooled["ratio_14m"]] == pytest.approx([float(np.mean(m)) for m in means])
     both = f"{pooled['ratio_18m']:.2f} against {pooled['ratio_14m']:.2f}"
     change = pooled["paired_ratio_18m_minus_14m"]
@@ -518,6 +519,7 @@ def test_baselines_18m_runs_quote_their_record():
 
 
 def test_baselines_keep_best_18m_quotes_its_record():
+    from wall_statistics import paired
     record = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
     flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
     eighteen = {run["seed"]: run for run in record["eighteen_m"]}
@@ -534,14 +536,14 @@ def test_baselines_keep_best_18m_quotes_its_record():
         last = eighteen[seed]
         command = last["command"].replace(" --out ", " --keep-best --out ").replace(".json", "-best.json")
         assert run["command"] == command
-        assert run["validations_equal_eighteen_m"]
+        # The rerun's validations are the first run's: the same trajectory, other weights written.
+        assert run["validation_sha256"] == hashlib.sha256(json.dumps(last["validation"]).encode()).hexdigest()
         # --keep-best's rule: most finished, then the lowest ratio, over the run's validations.
         best = max(last["validation"], key=lambda v: (v["finished"], -v["mean_length_ratio"]))
         assert run["kept_validation"] == best and run["kept_steps"] == best["steps"]
         assert [wall["wall_seed"] for wall in run["held_out"]["walls"]] == \
                [wall["wall_seed"] for wall in last["held_out"]["walls"]]
-        change = run["paired_ratio_kept_minus_last"]
-        assert change["mean"] == pytest.approx(np.mean(np.subtract(ratios(run), ratios(last))))
+        assert run["paired_ratio_kept_minus_last"] == pytest.approx(paired(ratios(run), ratios(last)))
     one, two = kept[1], kept[2]
     assert f"(the same commands, the two side by side: {one['seconds']:.0f} and {two['seconds']:.0f} s)" in flat
     assert (f"{one['kept_validation']['mean_length_ratio']:.2f} at {one['kept_steps'] / 1e6:.1f} M steps for seed 1 "
@@ -556,15 +558,18 @@ def test_baselines_keep_best_18m_quotes_its_record():
     pooled = record["keep_best_18m_pooled"]
     means = [np.mean([ratios(runs[seed]) for seed in pooled["seeds"]], axis=0) for runs in (kept, eighteen)]
     assert pooled["ratio_kept"] == pytest.approx(float(np.mean(means[0])))
-    assert pooled["paired_ratio_kept_minus_last"]["mean"] == pytest.approx(np.mean(np.subtract(*means)))
+    assert pooled["paired_ratio_kept_minus_last"] == pytest.approx(paired(*means))
     assert (f"{np.mean(means[0]):.2f} against {np.mean(means[1]):.2f}, "
             f"{interval(pooled['paired_ratio_kept_minus_last'])}") in flat
     static = [f"{s['finished']:.0%} ({round(s['finished'] * s['climbs'])} of {s['climbs']})".replace("%", " %")
               for s in (one["held_out_static"], two["held_out_static"])]
     assert f"Under the static model they finish {static[0]} and {static[1]}." in flat
-    errors = [np.std(ratios(run), ddof=1) / np.sqrt(len(ratios(run)))
-              for run in record["runs"] + record["eighteen_m"] + record["keep_best_18m"]]
-    assert f"standard error of {min(errors):.2f} to {max(errors):.2f} on the held-out walls (the seven" in flat
+    errors = [np.std(np.subtract(ratios(run), ratios(eighteen[seed])), ddof=1) / np.sqrt(len(ratios(run)))
+              for seed, run in kept.items()]
+    assert f"standard error of {min(errors):.2f} to {max(errors):.2f} (kept against last" in flat
+    gaps = [f"{run['kept_validation']['mean_length_ratio']:.2f} against "
+            f"{eighteen[seed]['validation'][-1]['mean_length_ratio']:.2f}" for seed, run in kept.items()]
+    assert f"(on validation, {gaps[0]} and {gaps[1]})" in flat
     for verb in ("do", "are"):  # the lead and "Not done"
         assert f"nor {verb} the weights of their best validations ({pooled['ratio_kept']:.2f})" in flat
 
@@ -574,14 +579,17 @@ def test_baselines_300_walls_quote_their_record():
     root = REPOSITORY / "models" / "policies"
     record = json.loads((root / "search" / "heldout_300.json").read_text())
     flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
-    shipped, *others = record["policies"]
+    shipped = record["policies"][0]
     assert shipped["policy"] == "models/policies/reach-ppo.json"
     assert [p["seed"] for p in record["policies"]] == [1, 2, 3]
     assert all("--wall-seeds 20000:20299" in p["command"] for p in record["policies"])
     walls = [[wall["wall_seed"] for wall in p["evaluation"]["walls"]] for p in record["policies"]]
     assert walls == [list(range(20000, 20300))] * 3
-    # The first 30 of the 300 climbs are the shipped evaluation's, climb for climb.
-    assert shipped["evaluation"]["walls"][:30] == json.loads((root / "reach-ppo.heldout.json").read_text())["walls"]
+    # The first 30 of each seed's 300 climbs are its 30-wall climbs, climb for climb.
+    thirty = {run["seed"]: run["held_out"]["walls"]
+              for run in json.loads((root / "search" / "long_training.json").read_text())["runs"]}
+    assert thirty[1] == json.loads((root / "reach-ppo.heldout.json").read_text())["walls"]
+    assert all(p["evaluation"]["walls"][:30] == thirty[p["seed"]] for p in record["policies"])
 
     def climbs(policy):
         return [{"finished": float(w["finished"]), "ratio": w["length"] / w["plan_length"] if w["finished"] else None}
@@ -590,22 +598,26 @@ def test_baselines_300_walls_quote_their_record():
     by_wall = [list(runs) for runs in zip(*[climbs(p) for p in record["policies"]])]
     ratios = [c["ratio"] for c in climbs(shipped)]
     setting = per_wall_mean(by_wall, "ratio")
-    assert record["shipped_ratio"] == interval(ratios)
-    assert record["setting_ratio"] == interval(setting)
-    assert record["setting_finished"] == interval(per_wall_mean(by_wall, "finished"))
-    assert record["setting_ratio_minus_1_5"] == paired(setting, [1.5] * len(setting))
-    assert record["shipped_ratio_minus_1_5"] == paired(ratios, [1.5] * len(ratios))
+    expected = {"shipped_ratio": interval(ratios), "shipped_ratio_minus_1_5": paired(ratios, [1.5] * 300),
+                "setting_finished": interval(per_wall_mean(by_wall, "finished")), "setting_ratio": interval(setting),
+                "setting_ratio_minus_1_5": paired(setting, [1.5] * 300),
+                "setting_ratio_walls_20030_20299": interval(setting[30:]),
+                "setting_ratio_walls_20030_20299_minus_1_5": paired(setting[30:], [1.5] * 270)}
+    for key, value in expected.items():
+        assert record[key] == pytest.approx(value), key
 
     def cell(c):
         return f"{c['mean']:.2f} [{c['low']:.2f}, {c['high']:.2f}]"
 
-    above, alone = record["setting_ratio_minus_1_5"], record["shipped_ratio_minus_1_5"]
+    share, ratio, above = record["setting_finished"], record["setting_ratio"], record["setting_ratio_minus_1_5"]
+    alone = record["shipped_ratio_minus_1_5"]
     done = sum(w["finished"] for w in shipped["evaluation"]["walls"])
-    share = record["setting_finished"]
-    assert (f"the three seeds finish {share['mean']:.1%} [{share['low']:.1%}, {share['high']:.1%}] of the climbs, in "
-            f"{cell(record['setting_ratio'])} times the plan, {cell(above)} above 1.5 (p = {above['p']:.1e}); the "
-            f"shipped policy alone finishes {done} of 300, in {cell(record['shipped_ratio'])} times the plan "
-            f"(p = {alone['p']:.3f} against 1.5)").replace("%", "").replace(" [", " % [", 1) in flat
-    assert (f"the three seeds take {cell(record['setting_ratio'])} times the plan, above it (p = {above['p']:.1e}), "
-            f"while finishing {record['setting_finished']['mean']:.1%} of the climbs").replace("%", " %") in flat
-    assert f"On 300 held-out walls the setting takes {cell(record['setting_ratio'])} times the plan" in flat
+    finished = f"{share['mean']:.1%} [{share['low']:.1%}, {share['high']:.1%}]".replace("%", "").replace(" [", " % [")
+    assert (f"the three seeds finish {finished} of the climbs, in {cell(ratio)} times the plan, {cell(above)} above "
+            f"1.5 (p = {above['p']:.1e}); the shipped policy alone finishes {done} of 300, in "
+            f"{cell(record['shipped_ratio'])} times the plan (p = {alone['p']:.3f} against 1.5)") in flat
+    new = record["setting_ratio_walls_20030_20299"], record["setting_ratio_walls_20030_20299_minus_1_5"]
+    assert f"no earlier analysis used, the seeds take {cell(new[0])} times the plan (p = {new[1]['p']:.1e})" in flat
+    assert (f"the three seeds take {cell(ratio)} times the plan, above 1.5 (p = {above['p']:.1e}), while "
+            f"finishing {share['mean'] * 100:.1f} % of the climbs") in flat
+    assert f"On 300 held-out walls the setting takes {cell(ratio)} times the plan" in flat
