@@ -23,6 +23,17 @@ gymnasium, torch = need(
 
 REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
 SCRIPT = REPOSITORY / "examples" / "python" / "policy_baseline.py"
+SEARCH = REPOSITORY / "models" / "policies" / "search"
+
+
+def bracket(c, sign=""):
+    """An interval as the docs print it: mean [low, high] to two decimals (sign="+" signs the mean)."""
+    return f"{c['mean']:{sign}.2f} [{c['low']:.2f}, {c['high']:.2f}]"
+
+
+def held_out_ratios(run):
+    """A record's held-out climbs, each its length over its plan's (every climb finished)."""
+    return [wall["length"] / wall["plan_length"] for wall in run["held_out"]["walls"]]
 _spec = importlib.util.spec_from_file_location("policy_baseline", SCRIPT)
 baseline = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(baseline)
@@ -223,7 +234,7 @@ def test_the_comparison_is_made_of_its_parts_and_draws(tmp_path, capsys):
                    for w in summary["walls"]]
     assert summary["paired"]["policy - random, finished"]["mean"] == pytest.approx(np.mean(differences))
     figure = tmp_path / "curves.png"
-    baseline.main(["plot", "--search", str(REPOSITORY / "models" / "policies" / "search"), "--comparison", str(out),
+    baseline.main(["plot", "--search", str(SEARCH), "--comparison", str(out),
                    str(figure)])
     assert figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and not list(tmp_path.glob("*.partial*"))
 
@@ -274,7 +285,7 @@ def test_keep_best_writes_the_weights_of_the_best_validation(tmp_path, monkeypat
 
 
 def test_baselines_keep_best_table_quotes_its_record():
-    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "static_keep_best.json").read_text())
+    record = json.loads((SEARCH / "static_keep_best.json").read_text())
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
     for run in record["runs"]:
         rate = run["command"].split("--lr ")[1].split()[0]
@@ -308,7 +319,7 @@ def test_a_lower_finishing_height_reaches_the_training_walls_and_is_checked(tmp_
 
 
 def test_baselines_curriculum_table_quotes_its_record():
-    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "static_curriculum.json").read_text())
+    record = json.loads((SEARCH / "static_curriculum.json").read_text())
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
     for run in record["runs"]:
         stages = run["stages"]
@@ -326,13 +337,9 @@ def test_baselines_curriculum_table_quotes_its_record():
 
 
 def test_baselines_long_training_table_quotes_its_record():
-    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
+    record = json.loads((SEARCH / "long_training.json").read_text())
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
-    stage3 = json.loads((REPOSITORY / "models" / "policies" / "search" / "heldout_stage3.json").read_text())
-
-    def interval(c):
-        return f"{c['mean']:.2f} [{c['low']:.2f}, {c['high']:.2f}]"
-
+    stage3 = json.loads((SEARCH / "heldout_stage3.json").read_text())
     for run in record["runs"]:
         assert f"--steps 14000000 --seed {run['seed']} " in run["command"] and run["steps"] == 13_996_032
         # The 6 M-step column is the same seed's climbs in the comparison's record, recomputed here.
@@ -343,7 +350,7 @@ def test_baselines_long_training_table_quotes_its_record():
         row = (f"| {run['seed']} | {run['seconds']:.0f} | {run['validation'][-1]['mean_length_ratio']:.2f} "
                f"| {held['finished']:.0%} | {run['held_out_6m']['mean_length_ratio']:.2f} "
                f"| {held['mean_length_ratio']:.2f} | {held['within_1_5_plans']:.0%} "
-               f"| {interval(change)}, p = {change['p']:.2g} "
+               f"| {bracket(change)}, p = {change['p']:.2g} "
                f"| {static['finished']:.0%} ({round(static['finished'] * static['climbs'])} of {static['climbs']}) |")
         assert row.replace("%", " %") in text, row
     # The pooled ratios are each wall's mean over the seeds, recomputed from the climbs.
@@ -361,16 +368,16 @@ def test_baselines_long_training_table_quotes_its_record():
     change = record["paired_ratio_14m_minus_6m"]
     assert change["mean"] == pytest.approx(np.mean(np.subtract(long, six)))
     prose = text.replace("\n", " ")
-    assert (f"{interval(record['ratio_14m'])} times their plans, against {interval(record['ratio_6m'])} "
+    assert (f"{bracket(record['ratio_14m'])} times their plans, against {bracket(record['ratio_6m'])} "
             f"at 6 M steps") in prose
-    assert f"{interval(change)} (p = {change['p']:.1e})" in prose
-    assert (f"and {interval(record['ratio_14m'])} times the exact plan's: shorter than the same setting's at 6 M "
-            f"steps ({interval(record['ratio_6m'])}, paired {interval(change)})") in prose
+    assert f"{bracket(change)} (p = {change['p']:.1e})" in prose
+    assert (f"and {bracket(record['ratio_14m'])} times the exact plan's: shorter than the same setting's at 6 M "
+            f"steps ({bracket(record['ratio_6m'])}, paired {bracket(change)})") in prose
     python_doc = " ".join((REPOSITORY / "docs" / "PYTHON.md").read_text().split())
     [seed1] = [run for run in record["runs"] if run["seed"] == 1]
-    assert (f"in {interval(record['ratio_14m'])} times the exact plan's length over its setting's three seeds at 14 M "
+    assert (f"in {bracket(record['ratio_14m'])} times the exact plan's length over its setting's three seeds at 14 M "
             f"steps (the shipped policy, seed 1: {seed1['held_out']['mean_length_ratio']:.2f};") in python_doc
-    diagnoses = json.loads((REPOSITORY / "models" / "policies" / "search" / "climb_diagnosis.json").read_text())
+    diagnoses = json.loads((SEARCH / "climb_diagnosis.json").read_text())
     [six_m] = [d["moves"] for d in diagnoses["diagnoses"] if d["policy"] == "models/policies/search/reach-ppo-6m.json"
                and d["physics_model"] == "kinematic" and d["oracle"] == "none"]
 
@@ -466,7 +473,7 @@ def test_every_committed_policy_s_command_writes_its_own_file():
 
 def test_baselines_18m_runs_quote_their_record():
     from wall_statistics import paired
-    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
+    record = json.loads((SEARCH / "long_training.json").read_text())
     text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
     flat = " ".join(text.split())
     fourteen = {run["seed"]: run for run in record["runs"]}
@@ -481,11 +488,8 @@ def test_baselines_18m_runs_quote_their_record():
                 f"| {held['finished']:.0%} | {held['mean_length_ratio']:.2f} | {held['within_1_5_plans']:.0%} "
                 f"| {static['finished']:.0%} ({done} of {static['climbs']}) |").replace("%", " %")
 
-    def ratios(run):
-        return [wall["length"] / wall["plan_length"] for wall in run["held_out"]["walls"]]
-
     def interval(change):
-        return f"{change['mean']:+.2f} [{change['low']:.2f}, {change['high']:.2f}]"
+        return bracket(change, "+")
 
     assert row("1, 14 M (the shipped policy)", fourteen[1]) in text
     shipped = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo.heldout.json").read_text())
@@ -499,11 +503,12 @@ def test_baselines_18m_runs_quote_their_record():
         walls = [[wall["wall_seed"] for wall in r["held_out"]["walls"]] for r in (run, fourteen[seed])]
         assert walls[0] == walls[1]
         change = run["paired_ratio_18m_minus_14m"]
-        assert change == pytest.approx(paired(ratios(run), ratios(fourteen[seed])))
+        assert change == pytest.approx(paired(held_out_ratios(run), held_out_ratios(fourteen[seed])))
         assert f"{interval(change)} {'times the plan for ' if seed == 1 else 'for '}seed {seed} " \
                f"(p = {change['p']:.2f})" in flat
     pooled = record["eighteen_m_pooled"]
-    means = [np.mean([ratios(runs[seed]) for seed in pooled["seeds"]], axis=0) for runs in (eighteen, fourteen)]
+    means = [np.mean([held_out_ratios(runs[seed]) for seed in pooled["seeds"]], axis=0)
+             for runs in (eighteen, fourteen)]
     assert pooled["paired_ratio_18m_minus_14m"] == pytest.approx(paired(*means))
     assert [pooled["ratio_18m"], pooled["ratio_14m"]] == pytest.approx([float(np.mean(m)) for m in means])
     both = f"{pooled['ratio_18m']:.2f} against {pooled['ratio_14m']:.2f}"
@@ -520,17 +525,14 @@ def test_baselines_18m_runs_quote_their_record():
 
 def test_baselines_keep_best_18m_quotes_its_record():
     from wall_statistics import paired
-    record = json.loads((REPOSITORY / "models" / "policies" / "search" / "long_training.json").read_text())
+    record = json.loads((SEARCH / "long_training.json").read_text())
     flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
     eighteen = {run["seed"]: run for run in record["eighteen_m"]}
     kept = {run["seed"]: run for run in record["keep_best_18m"]}
     assert sorted(kept) == [1, 2]
 
-    def ratios(run):
-        return [wall["length"] / wall["plan_length"] for wall in run["held_out"]["walls"]]
-
     def interval(change):
-        return f"{change['mean']:+.2f} [{change['low']:.2f}, {change['high']:.2f}] (p = {change['p']:.2f})"
+        return f"{bracket(change, '+')} (p = {change['p']:.2f})"
 
     for seed, run in kept.items():
         last = eighteen[seed]
@@ -543,7 +545,7 @@ def test_baselines_keep_best_18m_quotes_its_record():
         assert run["kept_validation"] == best and run["kept_steps"] == best["steps"]
         assert [wall["wall_seed"] for wall in run["held_out"]["walls"]] == \
                [wall["wall_seed"] for wall in last["held_out"]["walls"]]
-        assert run["paired_ratio_kept_minus_last"] == pytest.approx(paired(ratios(run), ratios(last)))
+        assert run["paired_ratio_kept_minus_last"] == pytest.approx(paired(held_out_ratios(run), held_out_ratios(last)))
     one, two = kept[1], kept[2]
     assert f"(the same commands, the two side by side: {one['seconds']:.0f} and {two['seconds']:.0f} s)" in flat
     assert (f"{one['kept_validation']['mean_length_ratio']:.2f} at {one['kept_steps'] / 1e6:.1f} M steps for seed 1 "
@@ -556,7 +558,7 @@ def test_baselines_keep_best_18m_quotes_its_record():
             f"{interval(one['paired_ratio_kept_minus_last'])} and "
             f"{interval(two['paired_ratio_kept_minus_last'])}") in flat
     pooled = record["keep_best_18m_pooled"]
-    means = [np.mean([ratios(runs[seed]) for seed in pooled["seeds"]], axis=0) for runs in (kept, eighteen)]
+    means = [np.mean([held_out_ratios(runs[seed]) for seed in pooled["seeds"]], axis=0) for runs in (kept, eighteen)]
     assert pooled["ratio_kept"] == pytest.approx(float(np.mean(means[0])))
     assert pooled["paired_ratio_kept_minus_last"] == pytest.approx(paired(*means))
     assert (f"{np.mean(means[0]):.2f} against {np.mean(means[1]):.2f}, "
@@ -564,8 +566,8 @@ def test_baselines_keep_best_18m_quotes_its_record():
     static = [f"{s['finished']:.0%} ({round(s['finished'] * s['climbs'])} of {s['climbs']})".replace("%", " %")
               for s in (one["held_out_static"], two["held_out_static"])]
     assert f"Under the static model they finish {static[0]} and {static[1]}." in flat
-    errors = [np.std(np.subtract(ratios(run), ratios(eighteen[seed])), ddof=1) / np.sqrt(len(ratios(run)))
-              for seed, run in kept.items()]
+    differences = [np.subtract(held_out_ratios(run), held_out_ratios(eighteen[seed])) for seed, run in kept.items()]
+    errors = [np.std(d, ddof=1) / np.sqrt(len(d)) for d in differences]
     assert f"standard error of {min(errors):.2f} to {max(errors):.2f} (kept against last" in flat
     gaps = [f"{run['kept_validation']['mean_length_ratio']:.2f} against "
             f"{eighteen[seed]['validation'][-1]['mean_length_ratio']:.2f}" for seed, run in kept.items()]
@@ -606,18 +608,15 @@ def test_baselines_300_walls_quote_their_record():
     for key, value in expected.items():
         assert record[key] == pytest.approx(value), key
 
-    def cell(c):
-        return f"{c['mean']:.2f} [{c['low']:.2f}, {c['high']:.2f}]"
-
     share, ratio, above = record["setting_finished"], record["setting_ratio"], record["setting_ratio_minus_1_5"]
     alone = record["shipped_ratio_minus_1_5"]
     done = sum(w["finished"] for w in shipped["evaluation"]["walls"])
     finished = f"{share['mean']:.1%} [{share['low']:.1%}, {share['high']:.1%}]".replace("%", "").replace(" [", " % [")
-    assert (f"the three seeds finish {finished} of the climbs, in {cell(ratio)} times the plan, {cell(above)} above "
-            f"1.5 (p = {above['p']:.1e}); the shipped policy alone finishes {done} of 300, in "
-            f"{cell(record['shipped_ratio'])} times the plan (p = {alone['p']:.3f} against 1.5)") in flat
+    assert (f"the three seeds finish {finished} of the climbs, in {bracket(ratio)} times the plan, "
+            f"{bracket(above)} above 1.5 (p = {above['p']:.1e}); the shipped policy alone finishes {done} of 300, in "
+            f"{bracket(record['shipped_ratio'])} times the plan (p = {alone['p']:.3f} against 1.5)") in flat
     new = record["setting_ratio_walls_20030_20299"], record["setting_ratio_walls_20030_20299_minus_1_5"]
-    assert f"no earlier analysis used, the seeds take {cell(new[0])} times the plan (p = {new[1]['p']:.1e})" in flat
-    assert (f"the three seeds take {cell(ratio)} times the plan, above 1.5 (p = {above['p']:.1e}), while "
+    assert f"no earlier analysis used, the seeds take {bracket(new[0])} times the plan (p = {new[1]['p']:.1e})" in flat
+    assert (f"the three seeds take {bracket(ratio)} times the plan, above 1.5 (p = {above['p']:.1e}), while "
             f"finishing {share['mean'] * 100:.1f} % of the climbs") in flat
-    assert f"On 300 held-out walls the setting takes {cell(ratio)} times the plan" in flat
+    assert f"On 300 held-out walls the setting takes {bracket(ratio)} times the plan" in flat
