@@ -12,9 +12,10 @@ train writes the policy as plain weights in JSON (the format below), with the co
 the seed that trained it; evaluate climbs each random wall A..B once with the policy's
 greedy action (the highest-scored offered candidate; the observation marks the moves that
 failed from the current state, so a policy that learnt to can avoid them) and compares
-the climb's length, failed moves included, with the wall's exact shortest plan; compare
-puts policies beside Dyna-Q and the random policy on the same walls, paired over walls;
-plot draws the search's validation curves. models/policies/reach-ppo.json is the shipped
+the climb's length, failed moves included, with the wall's exact shortest plan (with
+--oracle verdict, only among the offered moves that reach: what knowing reach would give,
+no longer zero-shot); compare puts policies beside Dyna-Q and the random policy on the
+same walls, paired over walls; plot draws the search's validation curves. models/policies/reach-ppo.json is the shipped
 policy, its training command inside it.
 
 Training walls are random walls whose seeds each environment draws from its own stream,
@@ -416,17 +417,38 @@ SETTINGS = ("lr", "entropy", "hidden", "rollout", "envs", "epochs", "minibatch",
 # --- evaluation ------------------------------------------------------------------------------
 
 
-def climb(policy, env, cap=CLIMB_CAP):
-    """One greedy climb: (finished, actions taken, failed moves)."""
+def climb(policy, env, cap=CLIMB_CAP, oracle=None):
+    """One greedy climb: (finished, actions taken, failed moves). oracle: None, or
+    (wall seed, config) to choose only among the offered moves that reach (verdict_mask)."""
     obs, _ = env.reset()
-    failed = 0
+    failed, history = 0, []
     for taken in range(1, cap + 1):
-        action = greedy_slot(policy, *single_features(obs, policy.max_span))
+        state, slots, mask = single_features(obs, policy.max_span)
+        if oracle is not None:
+            reaching = mask & verdict_mask(*oracle, history, mask)
+            mask = reaching if reaching.any() else mask  # none reaches: the policy's own choice, to fail
+        action = greedy_slot(policy, state, slots, mask)
         obs, _, terminated, truncated, info = env.step(action)
+        history.append(action)
         failed += not info["reached"]
         if terminated:
             return not info.get("fell", False), taken, failed
     return False, cap, failed
+
+
+def verdict_mask(wall_seed, config, history, mask):
+    """Which offered slots' moves reach from the state the actions in history lead to: each
+    tried in a new environment on the same wall that first takes those actions. Its
+    verdicts are the climb's own, which depend on the route (docs/MODEL.md, C11) but are
+    a function of the actions since the reset."""
+    reaches = np.zeros_like(mask)
+    for slot in np.flatnonzero(mask[0]):
+        trial = crux.gym.ClimbEnv(wall_seed, OBSERVATION, config=config)
+        trial.reset()
+        for action in history:
+            trial.step(action)
+        reaches[0, slot] = trial.step(int(slot))[4]["reached"]
+    return reaches
 
 
 def plan_lengths(wall_seeds, physics_model="kinematic"):
@@ -445,10 +467,11 @@ def plan_lengths(wall_seeds, physics_model="kinematic"):
     return lengths
 
 
-def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None):
+def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None, oracle=False):
     """Greedy climbs on random walls: the finished share and the finished climbs' mean
     length; given plans (plan_lengths), the plans' mean length on the walls climbed, the
-    mean ratio and the share of climbs that finish within 1.5 times their plan's length."""
+    mean ratio and the share of climbs that finish within 1.5 times their plan's length.
+    oracle: choose only among the offered moves that reach (no longer a zero-shot climb)."""
     config = climbing_config(physics_model)
     lengths, plan_sum, ratios, skipped, walls = [], [], [], [], []
     for seed in wall_seeds:
@@ -457,7 +480,7 @@ def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None):
         except ValueError as error:  # under the static model, a start that does not hold
             skipped.append({"wall_seed": seed, "why": str(error)})
             continue
-        done, length, failed = climb(policy, env)
+        done, length, failed = climb(policy, env, oracle=(seed, config) if oracle else None)
         wall = {"wall_seed": seed, "finished": done, "length": length, "failed_moves": failed}
         if plans is not None:
             wall["plan_length"] = plans.get(seed)
@@ -613,7 +636,9 @@ def load_for_walls(path, prog="policy_baseline.py"):
 
 def command_evaluate(args):
     policy = load_for_walls(args.policy)
-    result = evaluate(policy, args.wall_seeds, args.physics_model, plan_lengths(args.wall_seeds, args.physics_model))
+    result = evaluate(policy, args.wall_seeds, args.physics_model, plan_lengths(args.wall_seeds, args.physics_model),
+                      oracle=args.oracle == "verdict")
+    result["oracle"] = args.oracle
     if args.json:
         print(json.dumps(result, indent=2))
         return
@@ -820,6 +845,9 @@ def parser():
     e.add_argument("--policy", type=pathlib.Path, required=True, help="a policy file train wrote")
     e.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
     e.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic")
+    e.add_argument("--oracle", choices=("none", "verdict"), default="none",
+                   help="verdict: the climbs choose only among the offered moves that reach, each tried first "
+                   "in a copy of the climb (what knowing reach would give; no longer zero-shot)")
     e.add_argument("--json", action="store_true", help="print the result as JSON")
     c = commands.add_parser("compare", help="Policies against Dyna-Q and random on held-out walls, paired over walls")
     c.add_argument("--policy", type=pathlib.Path, nargs="+", required=True,

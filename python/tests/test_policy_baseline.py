@@ -137,6 +137,33 @@ def run_evaluate(*arguments):
                           env=env, timeout=120)
 
 
+def test_the_verdict_oracle_foretells_each_move_of_a_climb_and_its_climbs_fail_none(capsys):
+    seed = 20240  # the random climb's draws; printed by the assertion's message
+    rng = np.random.default_rng(seed)
+    config = baseline.climbing_config("kinematic")
+    env = crux.gym.ClimbEnv(3, baseline.OBSERVATION, config=config)
+    obs, _ = env.reset()
+    history, verdicts = [], []
+    for _ in range(40):  # a random climb meets moves that fail and moves that reach
+        mask = baseline.single_features(obs, 2.8)[2]
+        foretold = baseline.verdict_mask(3, config, history, mask)
+        action = int(rng.choice(np.flatnonzero(mask[0])))
+        obs, _, terminated, _, info = env.step(action)
+        history.append(action)
+        verdicts.append((bool(foretold[0, action]), info["reached"]))
+        if terminated:
+            break
+    assert all(told == reached for told, reached in verdicts), f"seed {seed}: {verdicts}"
+    assert {reached for _, reached in verdicts} == {True, False}, f"seed {seed}: {verdicts}"
+    policy, _ = baseline.load_policy(REPOSITORY / "models" / "policies" / "reach-ppo.json")
+    plans = baseline.plan_lengths([20000])
+    alone, told = (baseline.evaluate(policy, [20000], plans=plans, oracle=oracle)["walls"][0]
+                   for oracle in (False, True))
+    assert (alone["finished"], alone["failed_moves"]) == (True, 3)  # heldout_300.json's first climb
+    assert (told["finished"], told["failed_moves"]) == (True, 0)
+    assert told["length"] < alone["length"]
+
+
 @pytest.mark.parametrize("content, problem", [
     (None, "cannot read the policy file"),
     ("{not json", "not a policy file (not JSON"),
@@ -620,3 +647,80 @@ def test_baselines_300_walls_quote_their_record():
     assert (f"the three seeds take {bracket(ratio)} times the plan, above 1.5 (p = {above['p']:.1e}), while "
             f"finishing {share['mean'] * 100:.1f} % of the climbs") in flat
     assert f"On 300 held-out walls the setting takes {bracket(ratio)} times the plan" in flat
+
+
+def test_baselines_oracle_quotes_its_record():
+    from wall_statistics import interval, paired, per_wall_mean
+    search = SEARCH
+    record = json.loads((search / "oracle_verdict_300.json").read_text())
+    alone = json.loads((search / "heldout_300.json").read_text())["policies"]
+    flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
+    told = record["policies"]
+    assert [(p["seed"], p["policy"]) for p in told] == [(p["seed"], p["policy"]) for p in alone]
+    assert all(p["command"].endswith("--wall-seeds 20000:20299 --oracle verdict --json") for p in told)
+    for mine, theirs in zip(told, alone):  # the same walls and plans as the zero-shot climbs
+        assert [(w["wall_seed"], w["plan_length"]) for w in mine["evaluation"]["walls"]] == \
+            [(w["wall_seed"], w["plan_length"]) for w in theirs["evaluation"]["walls"]]
+        assert mine["evaluation"]["oracle"] == "verdict"
+        assert sum(w["failed_moves"] for w in mine["evaluation"]["walls"]) == 0  # no move fails
+
+    def climbs(policy):
+        return [{"finished": float(w["finished"]), "ratio": w["length"] / w["plan_length"] if w["finished"] else None}
+                for w in policy["evaluation"]["walls"]]
+
+    by_wall = [[list(runs) for runs in zip(*[climbs(p) for p in policies])] for policies in (told, alone)]
+    ratio_told, ratio_alone = (per_wall_mean(walls, "ratio") for walls in by_wall)
+    expected = {"setting_finished": interval(per_wall_mean(by_wall[0], "finished")),
+                "setting_ratio": interval(ratio_told),
+                "setting_ratio_minus_1_5": paired(ratio_told, [1.5] * 300),
+                "setting_ratio_oracle_minus_zero_shot": paired(ratio_told, ratio_alone)}
+    for key, value in expected.items():
+        assert record[key] == pytest.approx(value), key
+    for mine, theirs in zip(told, alone):
+        assert mine["ratio_oracle_minus_zero_shot"] == pytest.approx(
+            paired([c["ratio"] for c in climbs(mine)], [c["ratio"] for c in climbs(theirs)]))
+
+    share, ratio, below = record["setting_finished"], record["setting_ratio"], record["setting_ratio_minus_1_5"]
+    shorter = record["setting_ratio_oracle_minus_zero_shot"]
+    finished = f"{share['mean']:.1%} [{share['low']:.1%}, {share['high']:.1%}]".replace("%", "").replace(" [", " % [")
+    negated = {"mean": -below["mean"], "low": -below["high"], "high": -below["low"]}
+    gain = {"mean": -shorter["mean"], "low": -shorter["high"], "high": -shorter["low"]}
+    assert (f"three seeds then finish {finished} of the climbs, in {bracket(ratio)} times the plan: {bracket(negated)} "
+            f"below 1.5 (p = {below['p']:.2g}), and {bracket(gain)} shorter than their own zero-shot climbs of the "
+            f"same walls (paired, p = {shorter['p']:.2g})") in flat
+    seeds = [f"{p['evaluation']['mean_length_ratio']:.2f}" for p in told]
+    assert (f"Seed by seed: {seeds[0]}, {seeds[1]} and {seeds[2]} (the shipped policy "
+            f"{bracket(told[0]['ratio_oracle_minus_zero_shot'])} against its own climbs)") in flat
+    six_m, graph = record["six_m_policy_30_walls"]["evaluation"], record["shipped_graph_oracle_30_walls"]["diagnosis"]
+    assert six_m["finished"] == 1.0 and six_m["climbs"] == 30
+    assert f"the 6 M policy finishes all 30, in {six_m['mean_length_ratio']:.2f} times the plan" in flat
+    assert (f"the shipped policy finishes only {graph['finished']} of the {graph['climbs']} held-out walls and fails "
+            f"{graph['moves']['failed_graph_reaches']} moves the graph reaches") in flat
+    assert f"climb the 300 walls in {bracket(ratio)} times the plan, {bracket(gain)} shorter than alone" in flat
+    assert f"the 14 M setting climbs the 300 held-out walls in {bracket(ratio)} times the plan" in flat
+
+
+def test_baselines_reach_pilots_quote_their_record():
+    record = json.loads((SEARCH / "reach_pilots.json").read_text())
+    flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
+    labels, fitted, choice = record["labels"], record["classifier"], record["at_the_policy_choice"]
+    assert (f"{labels['states']:,} states, {labels['moves']:,} moves, "
+            f"{labels['reaching_moves'] / labels['moves']:.0%} of them reach").replace("%", " %") in flat
+    assert (f"right on {fitted['accuracy']:.1%} of the moves of the last tenth of the walls "
+            f"({fitted['accuracy_with_half_the_walls']:.1%} with half the walls").replace("%", " %") in flat
+    assert choice["failing_passed"] + choice["reaching_rejected"] == pytest.approx(
+        (1 - choice["classifier_right"]) * choice["states"], abs=0.5)
+    assert (f"it is right on {choice['classifier_right']:.0%}: it passes {choice['failing_passed']} of the "
+            f"{choice['failing_choices']} choices that fail and rejects {choice['reaching_rejected']} of the "
+            f"{choice['states'] - choice['failing_choices']} that reach").replace("%", " %") in flat
+    assert f"the policy's choice reaches {choice['choice_reaches']:.0%} of the time".replace("%", " %") in flat
+    veto = {row["p"]: f"{row['mean_length_ratio']:.2f}" for row in record["veto_on_validation_walls_10000_10299"]}
+    assert (f"the climbs take {veto[0.0]} times the plan with no veto, {veto[0.1]} at p = 0.1 and 0.2, {veto[0.3]} "
+            f"at 0.3 and {veto[0.5]} at 0.5") in flat
+    assert veto[0.1] == veto[0.2]
+    distilled = {f"{row['validation_mean_length_ratio']:.2f}" for row in record["distillation"]}
+    assert len(distilled) == 1 and f"take {distilled.pop()} times the plan on those validation walls" in flat
+    standing = record["standing_guess"]
+    assert (f"({standing['moves']:,}, from about 1000 of the walls) is right on {standing['accuracy']:.1%}, against "
+            f"{fitted['accuracy_with_half_the_walls']:.1%}, where {1 - standing['reaching_share']:.0%} and "
+            f"{1 - fitted['half_the_walls_reaching_share']:.0%} of the moves fail").replace("%", " %") in flat
