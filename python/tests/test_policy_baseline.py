@@ -724,3 +724,21 @@ def test_baselines_reach_pilots_quote_their_record():
     assert (f"({standing['moves']:,}, from about 1000 of the walls) is right on {standing['accuracy']:.1%}, against "
             f"{fitted['accuracy_with_half_the_walls']:.1%}, where {1 - standing['reaching_share']:.0%} and "
             f"{1 - fitted['half_the_walls_reaching_share']:.0%} of the moves fail").replace("%", " %") in flat
+    focused = record["focused_on_the_policy_choice"]
+    assert (f"right on {focused['right_at_the_choice']:.1%} of those choices (it passes {focused['failing_passed']} of "
+            f"the {choice['failing_choices']} that fail and rejects {focused['reaching_rejected']} of those that "
+            f"reach)").replace("%", " %") in flat
+    vetoed = {row["p"]: row for row in focused["veto_on_validation_walls_10000_10299"]}
+    plain = {row["p"]: row for row in record["veto_on_validation_walls_10000_10299"]}[0.0]
+    assert (f"As a veto: {vetoed[0.1]['mean_length_ratio']:.2f} at p = 0.1, {vetoed[0.2]['mean_length_ratio']:.2f} "
+            f"at 0.2, but with {vetoed[0.2]['finished']:.0%} of the climbs finished and more failed moves than without "
+            f"it ({vetoed[0.2]['failed_moves']} against {plain['failed_moves']}), "
+            f"{vetoed[0.3]['mean_length_ratio']:.2f} at 0.3").replace("%", " %") in flat
+    soft = [row["mean_length_ratio"] for key in ("classifier", "focused")
+            for row in record["soft_on_validation_walls_10000_10299"][key]]
+    assert f"either classifier gives {min(soft):.2f} to {max(soft):.2f}" in flat
+    fine = {row["reward_unreachable"]: row for row in record["failure_penalty_fine_tunes"]["runs"]}
+    assert (f"the paper's -1000 give {fine[-1000]['mean_length_ratio']:.2f} on those validation walls "
+            f"({fine[-1000]['failed_moves']} failed moves), at -20000 {fine[-20000]['mean_length_ratio']:.2f} "
+            f"({fine[-20000]['failed_moves']}), at -5000 {fine[-5000]['mean_length_ratio']:.2f} and at -1 "
+            f"{fine[-1]['mean_length_ratio']:.2f}") in flat
