@@ -742,3 +742,9 @@ def test_baselines_reach_pilots_quote_their_record():
             f"({fine[-1000]['failed_moves']} failed moves), at -20000 {fine[-20000]['mean_length_ratio']:.2f} "
             f"({fine[-20000]['failed_moves']}), at -5000 {fine[-5000]['mean_length_ratio']:.2f} and at -1 "
             f"{fine[-1]['mean_length_ratio']:.2f}") in flat
+    noisy = {row["q"]: row["mean_length_ratio"] for row in record["noisy_oracle"]["runs"]}
+    middle = [noisy[q] for q in (0.95, 0.97, 0.98)]
+    assert (f"where it climbs in {plain['mean_length_ratio']:.2f} times the plan alone and {noisy[1.0]:.2f} with the "
+            f"oracle) gives {min(middle):.2f} to {max(middle):.2f} at q = 0.95 to 0.98, {noisy[0.9]:.2f} at 0.9 and "
+            f"{noisy[0.85]:.2f} at 0.85") in flat
+    assert f"the classifiers above are right on {fitted['accuracy']:.0%}".replace("%", " %") in flat
