@@ -13,10 +13,10 @@ the seed that trained it; evaluate climbs each random wall A..B once with the po
 greedy action (the highest-scored offered candidate; the observation marks the moves that
 failed from the current state, so a policy that learnt to can avoid them) and compares
 the climb's length, failed moves included, with the wall's exact shortest plan (with
---oracle verdict, only among the offered moves that reach: what knowing reach would give,
-no longer zero-shot); compare puts policies beside Dyna-Q and the random policy on the
-same walls, paired over walls; plot draws the search's validation curves. models/policies/reach-ppo.json is the shipped
-policy, its training command inside it.
+--oracle verdict, only among the offered moves that reach: what knowing reach would
+give, no longer zero-shot); compare puts policies beside Dyna-Q and the random policy on
+the same walls, paired over walls; plot draws the search's validation curves.
+models/policies/reach-ppo.json is the shipped policy, its training command inside it.
 
 Training walls are random walls whose seeds each environment draws from its own stream,
 uniform over [0, 2^63): the validation walls (seeds from 10000) and the held-out ones
@@ -417,15 +417,16 @@ SETTINGS = ("lr", "entropy", "hidden", "rollout", "envs", "epochs", "minibatch",
 # --- evaluation ------------------------------------------------------------------------------
 
 
-def climb(policy, env, cap=CLIMB_CAP, oracle=None):
-    """One greedy climb: (finished, actions taken, failed moves). oracle: None, or
-    (wall seed, config) to choose only among the offered moves that reach (verdict_mask)."""
+def climb(policy, env, cap=CLIMB_CAP, verdicts_of=None):
+    """One greedy climb: (finished, actions taken, failed moves). verdicts_of: None, or the
+    (wall seed, config) env was made with, to choose only among the offered moves that
+    reach (verdict_mask)."""
     obs, _ = env.reset()
     failed, history = 0, []
     for taken in range(1, cap + 1):
         state, slots, mask = single_features(obs, policy.max_span)
-        if oracle is not None:
-            reaching = mask & verdict_mask(*oracle, history, mask)
+        if verdicts_of is not None:
+            reaching = mask & verdict_mask(*verdicts_of, history, mask)
             mask = reaching if reaching.any() else mask  # none reaches: the policy's own choice, to fail
         action = greedy_slot(policy, state, slots, mask)
         obs, _, terminated, truncated, info = env.step(action)
@@ -439,10 +440,12 @@ def climb(policy, env, cap=CLIMB_CAP, oracle=None):
 def verdict_mask(wall_seed, config, history, mask):
     """Which offered slots' moves reach from the state the actions in history lead to: each
     tried in a new environment on the same wall that first takes those actions. Its
-    verdicts are the climb's own, which depend on the route (docs/MODEL.md, C11) but are
-    a function of the actions since the reset."""
+    verdicts are the climb's own: they depend on the route (docs/MODEL.md, C30), and a new
+    environment's are a function of the actions it has taken."""
     reaches = np.zeros_like(mask)
     for slot in np.flatnonzero(mask[0]):
+        # A new environment for each slot: the IK's cache keeps the first verdict on a
+        # configuration, so a move tried in one environment would change its later verdicts.
         trial = crux.gym.ClimbEnv(wall_seed, OBSERVATION, config=config)
         trial.reset()
         for action in history:
@@ -480,7 +483,7 @@ def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None, oracle=F
         except ValueError as error:  # under the static model, a start that does not hold
             skipped.append({"wall_seed": seed, "why": str(error)})
             continue
-        done, length, failed = climb(policy, env, oracle=(seed, config) if oracle else None)
+        done, length, failed = climb(policy, env, verdicts_of=(seed, config) if oracle else None)
         wall = {"wall_seed": seed, "finished": done, "length": length, "failed_moves": failed}
         if plans is not None:
             wall["plan_length"] = plans.get(seed)
@@ -642,8 +645,9 @@ def command_evaluate(args):
     if args.json:
         print(json.dumps(result, indent=2))
         return
+    told = ", told which moves reach" if args.oracle == "verdict" else ""
     print(f"{result['climbs']} climbs, {result['finished']:.1%} finished, mean length {result['mean_length']}, "
-          f"mean plan length {result['mean_plan_length']}")
+          f"mean plan length {result['mean_plan_length']}{told}")
 
 
 def command_compare(args):
