@@ -5,6 +5,7 @@ bad policy file is one line and exit code 2."""
 import hashlib
 import importlib.util
 import json
+import math
 import os
 import pathlib
 import subprocess
@@ -773,3 +774,19 @@ def test_baselines_reach_pilots_quote_their_record():
     assert f"the classifiers above are right on {fitted['accuracy']:.0%}".replace("%", " %") in flat
     best = min(row["mean_length_ratio"] for row in record["veto_on_validation_walls_10000_10299"])
     assert f"shortens the validation climbs by {plain['mean_length_ratio'] - best:.2f} at best" in flat
+    twice = fitted["twice_the_walls"]
+    assert twice["moves"] > 1.9 * labels["moves"]
+    accuracies = [fitted["accuracy_with_half_the_walls"], fitted["accuracy"], twice["accuracy"]]
+    assert (f"{twice['moves']:,} moves) make it right on {twice['accuracy']:.1%}: about two points a doubling "
+            f"({accuracies[0]:.1%}, {accuracies[1]:.1%}, {accuracies[2]:.1%})").replace("%", " %") in flat
+    assert all(0.015 < b - a < 0.03 for a, b in zip(accuracies, accuracies[1:]))  # "about two points a doubling"
+    later = {row["p"]: row for row in twice["veto_on_validation_walls_10000_10299"]}
+    assert (f"As a veto it then gives {later[0.1]['mean_length_ratio']:.2f} at p = 0.1, "
+            f"{later[0.2]['mean_length_ratio']:.2f} and {later[0.3]['mean_length_ratio']:.2f} at 0.2 and 0.3, "
+            f"{later[0.5]['mean_length_ratio']:.2f} at 0.5, and fewer climbs finish the higher p is "
+            f"({later[0.1]['finished']:.0%} to {later[0.5]['finished']:.0%})").replace("%", " %") in flat
+    words = {3: "three", 4: "four", 5: "five", 6: "six"}
+    gains = [b - a for a, b in zip(accuracies, accuracies[1:])]
+    factors = [2 ** ((0.95 - accuracies[-1]) / gain) for gain in (max(gains), min(gains))]
+    assert (f"at the {min(gains) * 100:.1f} to {max(gains) * 100:.1f} points a doubling measured, 95 % would take "
+            f"{words[math.floor(factors[0])]} to {words[math.ceil(factors[1])]} times as many") in flat
