@@ -5,7 +5,6 @@ bad policy file is one line and exit code 2."""
 import hashlib
 import importlib.util
 import json
-import math
 import os
 import pathlib
 import subprocess
@@ -785,8 +784,30 @@ def test_baselines_reach_pilots_quote_their_record():
             f"{later[0.2]['mean_length_ratio']:.2f} and {later[0.3]['mean_length_ratio']:.2f} at 0.2 and 0.3, "
             f"{later[0.5]['mean_length_ratio']:.2f} at 0.5, and fewer climbs finish the higher p is "
             f"({later[0.1]['finished']:.0%} to {later[0.5]['finished']:.0%})").replace("%", " %") in flat
-    words = {3: "three", 4: "four", 5: "five", 6: "six"}
     gains = [b - a for a, b in zip(accuracies, accuracies[1:])]
-    factors = [2 ** ((0.95 - accuracies[-1]) / gain) for gain in (max(gains), min(gains))]
-    assert (f"at the {min(gains) * 100:.1f} to {max(gains) * 100:.1f} points a doubling measured, 95 % would take "
-            f"{words[math.floor(factors[0])]} to {words[math.ceil(factors[1])]} times as many") in flat
+    assert f"the 8-epoch fits gained {min(gains) * 100:.1f} to {max(gains) * 100:.1f} points a doubling" in flat
+    longer = fitted["longer_training"]
+    at_choice = longer["at_the_policy_choice_6000_walls"]
+    assert f"{longer['accuracy_24_epochs_6000_walls']:.3f}" == f"{longer['accuracy_64_epochs_3000_walls']:.3f}"
+    assert (f"and 64 on the 3000 each make it right on {longer['accuracy_24_epochs_6000_walls']:.1%}, and on "
+            f"{at_choice['classifier_right']:.1%} of the policy's own choices on the last tenth of the walls "
+            f"(it passes "
+            f"{at_choice['failing_passed']} of the {at_choice['failing_choices']} that fail and rejects "
+            f"{at_choice['reaching_rejected']} of those that reach)").replace("%", " %") in flat
+    vetoes = {row["p"]: row for row in longer["veto_on_validation_walls_10000_10299"]}
+    assert (f"As a veto it gives {vetoes[0.1]['mean_length_ratio']:.2f} at p = 0.1, "
+            f"{vetoes[0.2]['mean_length_ratio']:.2f} at 0.2 and 0.3 ({vetoes[0.2]['finished']:.0%} and "
+            f"{vetoes[0.3]['finished']:.0%} of the climbs finished) and {vetoes[0.5]['mean_length_ratio']:.2f} at "
+            f"0.5").replace("%", " %") in flat
+    assert f"{vetoes[0.2]['mean_length_ratio']:.2f}" == f"{vetoes[0.3]['mean_length_ratio']:.2f}"
+    longer_gain = longer["accuracy_24_epochs_6000_walls"] - twice["accuracy"]
+    assert f"and 24 epochs on the 6000 walls {longer_gain * 100:.1f} points more" in flat
+    best = [min(row["mean_length_ratio"] for row in rows) for rows in (
+        record["veto_on_validation_walls_10000_10299"], twice["veto_on_validation_walls_10000_10299"],
+        longer["veto_on_validation_walls_10000_10299"])]
+    assert (f"(1.58, 1.57, 1.54 at {fitted['accuracy']:.1%}, {twice['accuracy']:.1%} and "
+            f"{longer['accuracy_24_epochs_6000_walls']:.1%})").replace("%", " %") in flat
+    assert [f"{b:.2f}" for b in best] == ["1.58", "1.57", "1.54"]
+    assert (f"trained longer on two million verdicts, it is right on {at_choice['classifier_right']:.1%} of "
+            f"the policy's choices and its veto brings the validation climbs to {best[2]:.2f}").replace("%", " %") \
+        in flat
