@@ -24,6 +24,9 @@ gymnasium, torch = need(
 REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
 SCRIPT = REPOSITORY / "examples" / "python" / "policy_baseline.py"
 SEARCH = REPOSITORY / "models" / "policies" / "search"
+_spec = importlib.util.spec_from_file_location("policy_baseline", SCRIPT)
+baseline = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(baseline)
 
 
 def bracket(c, sign=""):
@@ -31,12 +34,25 @@ def bracket(c, sign=""):
     return f"{c['mean']:{sign}.2f} [{c['low']:.2f}, {c['high']:.2f}]"
 
 
+def percent_bracket(c):
+    """A share's interval as the docs print it: 98.6 % [97.5, 99.6]."""
+    return f"{c['mean'] * 100:.1f} % [{c['low'] * 100:.1f}, {c['high'] * 100:.1f}]"
+
+
+def negated(c):
+    """The interval of minus the quantity: a change below zero told as a gain."""
+    return {"mean": -c["mean"], "low": -c["high"], "high": -c["low"]}
+
+
 def held_out_ratios(run):
     """A record's held-out climbs, each its length over its plan's (every climb finished)."""
     return [wall["length"] / wall["plan_length"] for wall in run["held_out"]["walls"]]
-_spec = importlib.util.spec_from_file_location("policy_baseline", SCRIPT)
-baseline = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(baseline)
+
+
+def evaluation_climbs(policy):
+    """A record's evaluate climbs: each finished (0 or 1) and its length over its plan's (None unfinished)."""
+    return [{"finished": float(w["finished"]), "ratio": w["length"] / w["plan_length"] if w["finished"] else None}
+            for w in policy["evaluation"]["walls"]]
 
 # The short run: 4 training walls, 8 environments, 96 updates of 8 x 32 steps (about 4 s).
 SHORT = ["--steps", "24576", "--envs", "8", "--rollout", "32", "--minibatch", "256", "--hidden", "32",
@@ -137,7 +153,7 @@ def run_evaluate(*arguments):
                           env=env, timeout=120)
 
 
-def test_the_verdict_oracle_foretells_each_move_of_a_climb_and_its_climbs_fail_none(capsys):
+def test_the_verdict_oracle_foretells_each_move_of_a_climb_and_its_climbs_fail_none():
     seed = 20240  # the random climb's draws; printed by the assertion's message
     rng = np.random.default_rng(seed)
     config = baseline.climbing_config("kinematic")
@@ -145,7 +161,7 @@ def test_the_verdict_oracle_foretells_each_move_of_a_climb_and_its_climbs_fail_n
     obs, _ = env.reset()
     history, verdicts = [], []
     for _ in range(40):  # a random climb meets moves that fail and moves that reach
-        mask = baseline.single_features(obs, 2.8)[2]
+        mask = obs["candidate_mask"][None] > 0.5
         foretold = baseline.verdict_mask(3, config, history, mask)
         action = int(rng.choice(np.flatnonzero(mask[0])))
         obs, _, terminated, _, info = env.step(action)
@@ -629,12 +645,8 @@ def test_baselines_300_walls_quote_their_record():
     assert thirty[1] == json.loads((root / "reach-ppo.heldout.json").read_text())["walls"]
     assert all(p["evaluation"]["walls"][:30] == thirty[p["seed"]] for p in record["policies"])
 
-    def climbs(policy):
-        return [{"finished": float(w["finished"]), "ratio": w["length"] / w["plan_length"] if w["finished"] else None}
-                for w in policy["evaluation"]["walls"]]
-
-    by_wall = [list(runs) for runs in zip(*[climbs(p) for p in record["policies"]])]
-    ratios = [c["ratio"] for c in climbs(shipped)]
+    by_wall = [list(runs) for runs in zip(*[evaluation_climbs(p) for p in record["policies"]])]
+    ratios = [c["ratio"] for c in evaluation_climbs(shipped)]
     setting = per_wall_mean(by_wall, "ratio")
     expected = {"shipped_ratio": interval(ratios), "shipped_ratio_minus_1_5": paired(ratios, [1.5] * 300),
                 "setting_finished": interval(per_wall_mean(by_wall, "finished")), "setting_ratio": interval(setting),
@@ -647,7 +659,7 @@ def test_baselines_300_walls_quote_their_record():
     share, ratio, above = record["setting_finished"], record["setting_ratio"], record["setting_ratio_minus_1_5"]
     alone = record["shipped_ratio_minus_1_5"]
     done = sum(w["finished"] for w in shipped["evaluation"]["walls"])
-    finished = f"{share['mean']:.1%} [{share['low']:.1%}, {share['high']:.1%}]".replace("%", "").replace(" [", " % [")
+    finished = percent_bracket(share)
     assert (f"the three seeds finish {finished} of the climbs, in {bracket(ratio)} times the plan, "
             f"{bracket(above)} above 1.5 (p = {above['p']:.1e}); the shipped policy alone finishes {done} of 300, in "
             f"{bracket(record['shipped_ratio'])} times the plan (p = {alone['p']:.3f} against 1.5)") in flat
@@ -660,9 +672,8 @@ def test_baselines_300_walls_quote_their_record():
 
 def test_baselines_oracle_quotes_its_record():
     from wall_statistics import interval, paired, per_wall_mean
-    search = SEARCH
-    record = json.loads((search / "oracle_verdict_300.json").read_text())
-    alone = json.loads((search / "heldout_300.json").read_text())["policies"]
+    record = json.loads((SEARCH / "oracle_verdict_300.json").read_text())
+    alone = json.loads((SEARCH / "heldout_300.json").read_text())["policies"]
     flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
     told = record["policies"]
     assert [(p["seed"], p["policy"]) for p in told] == [(p["seed"], p["policy"]) for p in alone]
@@ -673,11 +684,7 @@ def test_baselines_oracle_quotes_its_record():
         assert mine["evaluation"]["oracle"] == "verdict"
         assert sum(w["failed_moves"] for w in mine["evaluation"]["walls"]) == 0  # no move fails
 
-    def climbs(policy):
-        return [{"finished": float(w["finished"]), "ratio": w["length"] / w["plan_length"] if w["finished"] else None}
-                for w in policy["evaluation"]["walls"]]
-
-    by_wall = [[list(runs) for runs in zip(*[climbs(p) for p in policies])] for policies in (told, alone)]
+    by_wall = [[list(runs) for runs in zip(*[evaluation_climbs(p) for p in policies])] for policies in (told, alone)]
     ratio_told, ratio_alone = (per_wall_mean(walls, "ratio") for walls in by_wall)
     expected = {"setting_finished": interval(per_wall_mean(by_wall[0], "finished")),
                 "setting_ratio": interval(ratio_told),
@@ -687,23 +694,23 @@ def test_baselines_oracle_quotes_its_record():
         assert record[key] == pytest.approx(value), key
     for mine, theirs in zip(told, alone):
         assert mine["ratio_oracle_minus_zero_shot"] == pytest.approx(
-            paired([c["ratio"] for c in climbs(mine)], [c["ratio"] for c in climbs(theirs)]))
+            paired([c["ratio"] for c in evaluation_climbs(mine)], [c["ratio"] for c in evaluation_climbs(theirs)]))
 
     share, ratio, below = record["setting_finished"], record["setting_ratio"], record["setting_ratio_minus_1_5"]
     shorter = record["setting_ratio_oracle_minus_zero_shot"]
-    finished = f"{share['mean']:.1%} [{share['low']:.1%}, {share['high']:.1%}]".replace("%", "").replace(" [", " % [")
-    negated = {"mean": -below["mean"], "low": -below["high"], "high": -below["low"]}
-    gain = {"mean": -shorter["mean"], "low": -shorter["high"], "high": -shorter["low"]}
-    assert (f"three seeds then finish {finished} of the climbs, in {bracket(ratio)} times the plan: {bracket(negated)} "
+    finished = percent_bracket(share)
+    gain = negated(shorter)
+    assert (f"three seeds then finish {finished} of the climbs, in {bracket(ratio)} times the plan: "
+            f"{bracket(negated(below))} "
             f"below 1.5 (p = {below['p']:.2g}), and {bracket(gain)} shorter than their own zero-shot climbs of the "
             f"same walls (paired, p = {shorter['p']:.2g})") in flat
-    seeds = [f"{np.mean([c['ratio'] for c in climbs(p) if c['ratio'] is not None]):.2f}" for p in told]
+    seeds = [f"{np.mean([c['ratio'] for c in evaluation_climbs(p) if c['ratio'] is not None]):.2f}" for p in told]
     assert (f"Seed by seed: {seeds[0]}, {seeds[1]} and {seeds[2]} (the shipped policy "
             f"{bracket(told[0]['ratio_oracle_minus_zero_shot'])} against its own climbs)") in flat
     six_m, graph = record["six_m_policy_30_walls"]["evaluation"], record["shipped_graph_oracle_30_walls"]["diagnosis"]
     assert six_m["finished"] == 1.0 and six_m["climbs"] == 30
-    six_m_alone = json.loads((search / "reach-ppo-6m.heldout.json").read_text())
-    six_m_graph = next(d for d in json.loads((search / "climb_diagnosis.json").read_text())["diagnoses"]
+    six_m_alone = json.loads((SEARCH / "reach-ppo-6m.heldout.json").read_text())
+    six_m_graph = next(d for d in json.loads((SEARCH / "climb_diagnosis.json").read_text())["diagnoses"]
                        if d["oracle"] == "reach" and d["physics_model"] == "kinematic")
     assert six_m_graph["policy"] == record["six_m_policy_30_walls"]["policy"]
     assert (f"with them the 6 M policy finishes {six_m_graph['finished']} of the {six_m_graph['climbs']} held-out "
@@ -713,7 +720,7 @@ def test_baselines_oracle_quotes_its_record():
             f"({six_m_alone['mean_length_ratio']:.2f} alone)") in flat
     assert f"climb the 300 walls in {bracket(ratio)} times the plan, {bracket(gain)} shorter than alone" in flat
     assert f"the 14 M setting climbs the 300 held-out walls in {bracket(ratio)} times the plan" in flat
-    must_go = json.loads((search / "heldout_300.json").read_text())["setting_ratio_minus_1_5"]["mean"]
+    must_go = json.loads((SEARCH / "heldout_300.json").read_text())["setting_ratio_minus_1_5"]["mean"]
     assert (f"the 14 M setting's climbs are {gain['mean']:.2f} times the plan shorter, more than the "
             f"{must_go:.2f} that must go") in flat
 
