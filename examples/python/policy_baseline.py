@@ -417,17 +417,17 @@ SETTINGS = ("lr", "entropy", "hidden", "rollout", "envs", "epochs", "minibatch",
 # --- evaluation ------------------------------------------------------------------------------
 
 
-def climb(policy, env, cap=CLIMB_CAP, verdicts_of=None):
-    """One greedy climb: (finished, actions taken, failed moves). verdicts_of: None, or the
-    (wall seed, config) env was made with, to choose only among the offered moves that
-    reach (verdict_mask)."""
+def climb(policy, env, cap=CLIMB_CAP, allowed=None):
+    """One greedy climb: (finished, actions taken, failed moves). allowed: None, or a
+    function (actions so far, state, slots, mask) -> the offered slots to choose among (the
+    verdict oracle's, or a reach estimate's veto); when it allows none, the policy's own."""
     obs, _ = env.reset()
     failed, history = 0, []
     for taken in range(1, cap + 1):
         state, slots, mask = single_features(obs, policy.max_span)
-        if verdicts_of is not None:
-            reaching = mask & verdict_mask(*verdicts_of, history, mask)
-            mask = reaching if reaching.any() else mask  # none reaches: the policy's own choice, to fail
+        if allowed is not None:
+            kept = mask & allowed(history, state, slots, mask)
+            mask = kept if kept.any() else mask  # none allowed: the policy's own choice, perhaps to fail
         action = greedy_slot(policy, state, slots, mask)
         obs, _, terminated, truncated, info = env.step(action)
         history.append(action)
@@ -454,6 +454,15 @@ def verdict_mask(wall_seed, config, history, mask):
     return reaches
 
 
+def allowed_moves(wall_seed, config, oracle, veto):
+    """climb's allowed for one wall: the verdict oracle's, the veto's, or None."""
+    if oracle:
+        return lambda history, state, slots, mask: verdict_mask(wall_seed, config, history, mask)
+    if veto is not None:
+        return lambda history, state, slots, mask: veto(state, slots)
+    return None
+
+
 def plan_lengths(wall_seeds, physics_model="kinematic"):
     """{seed: its exact shortest plan's length, or None when the planner finds none}, for
     the walls whose start the climber can take."""
@@ -470,11 +479,12 @@ def plan_lengths(wall_seeds, physics_model="kinematic"):
     return lengths
 
 
-def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None, oracle=False):
+def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None, oracle=False, veto=None):
     """Greedy climbs on random walls: the finished share and the finished climbs' mean
     length; given plans (plan_lengths), the plans' mean length on the walls climbed, the
     mean ratio and the share of climbs that finish within 1.5 times their plan's length.
-    oracle: choose only among the offered moves that reach (no longer a zero-shot climb)."""
+    oracle: choose only among the offered moves that reach (no longer a zero-shot climb);
+    veto: None, or a function (state, slots) -> the slots a learnt estimate lets through."""
     config = climbing_config(physics_model)
     lengths, plan_sum, ratios, skipped, walls = [], [], [], [], []
     for seed in wall_seeds:
@@ -483,7 +493,7 @@ def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None, oracle=F
         except ValueError as error:  # under the static model, a start that does not hold
             skipped.append({"wall_seed": seed, "why": str(error)})
             continue
-        done, length, failed = climb(policy, env, verdicts_of=(seed, config) if oracle else None)
+        done, length, failed = climb(policy, env, allowed=allowed_moves(seed, config, oracle, veto))
         wall = {"wall_seed": seed, "finished": done, "length": length, "failed_moves": failed}
         if plans is not None:
             wall["plan_length"] = plans.get(seed)

@@ -1,0 +1,360 @@
+"""A learnt reach estimate beside the shipped policy: which offered moves reach, told from
+what the policy sees, and the policy's greedy climbs with the moves it rejects vetoed
+(docs/BASELINES.md, "A learnt reach estimate").
+
+    export PYTHONPATH=build/release/python:../shared/third_party/gymnasium-1.4.0
+    /usr/bin/python3 examples/python/reach_estimate.py label --policy models/policies/reach-ppo.json \\
+        --wall-seeds 3000000:3005999 --out build/labels-1.npz
+    /usr/bin/python3 examples/python/reach_estimate.py fit --labels build/labels-*.npz --out build/reach-head.json
+    /usr/bin/python3 examples/python/reach_estimate.py evaluate --policy models/policies/reach-ppo.json \\
+        --head build/reach-head.json --veto 0.2 0.3 --wall-seeds 10000:10299 --json
+
+label climbs each random wall once with the policy, greedy but for a share of uniformly
+random moves (so that the labels also cover moves the policy would not take), and labels
+every offered move of every state visited with the climb's own verdict: each is tried in a
+copy of the climb (policy_baseline.verdict_mask, as evaluate --oracle verdict does). A row
+is what the policy's slot network reads, [state (55), slot (11)].
+
+fit trains a classifier of the same shape as the slot network on all walls but the last
+tenth, which it reports on (accuracy, AUC, and at the policy's own greedy choice), and
+writes it as plain weights: {"format": "crux-reach-head", "version": 1, "observation":
+"reach", "max_span", "input_mean", "input_scale", "layers": [...], "training": {...}}.
+
+evaluate climbs each wall greedily among the offered moves the estimate gives a
+probability of reaching of at least P (all of them, when it gives none that much): a
+zero-shot climb, since the estimate learnt on other walls.
+"""
+
+import argparse
+import json
+import pathlib
+import shlex
+import sys
+
+import numpy as np
+import torch
+
+import crux
+import policy_baseline as baseline
+from example_arguments import OneLineParser, positive, wall_seed_range
+from reachability_study import auc
+
+HEAD_FORMAT = "crux-reach-head"
+HEAD_VERSION = 1
+ROW_SIZE = baseline.STATE_SIZE + baseline.SLOT_SIZE
+# A labelled climb stops after this many actions: the plans take 7 to 20 moves, and longer
+# climbs would mostly label the states of walls the policy is lost on.
+LABEL_CAP = 40
+SCORING_BATCH = 65536  # rows scored at once: the whole set at once needs more memory than the machine has
+
+
+# --- labels ----------------------------------------------------------------------------------
+
+
+def label_wall(policy, wall_seed, config, random_share, rng):
+    """(rows, reached, chosen) of one climb of the wall: per offered move of each state
+    visited, the policy's row, the climb's verdict, and whether it is the policy's greedy choice."""
+    wall = crux.Wall.random(wall_seed)
+    env = crux.gym.ClimbEnv(wall_seed, baseline.OBSERVATION, config=config)
+    obs, info = env.reset()
+    rows, reached, chosen, holds_taken = [], [], [], []
+    for _ in range(LABEL_CAP):
+        state, slots, mask = baseline.single_features(obs, policy.max_span)
+        offered = np.flatnonzero(mask[0])
+        if offered.size == 0:
+            break
+        greedy = baseline.greedy_slot(policy, state, slots, mask)
+        rows.append(np.concatenate([np.repeat(state, offered.size, axis=0), slots[0, offered]], axis=1))
+        reached.append(verdicts(wall, config, holds_taken, info["candidate_holds"][offered]))
+        chosen.append(offered == greedy)
+        explore = rng.random() < random_share  # drawn at every state, so that one choice shifts no other draw
+        action = int(rng.choice(offered)) if explore else greedy
+        holds_taken.append(int(info["candidate_holds"][action]))
+        obs, _, terminated, _, info = env.step(action)
+        if terminated:
+            break
+    if not rows:
+        return np.zeros((0, ROW_SIZE), np.float32), np.zeros(0, bool), np.zeros(0, bool)
+    return np.concatenate(rows), np.concatenate(reached), np.concatenate(chosen)
+
+
+def verdicts(wall, config, holds_taken, holds):
+    """Whether the move to each hold reaches from the state holds_taken leads to: the
+    verdicts of policy_baseline.verdict_mask, each move tried in a new MDP that first takes
+    those moves, without the Gymnasium environment's observation around it (a third of the time)."""
+    out = np.zeros(len(holds), bool)
+    for i, hold in enumerate(holds):
+        trial = crux.ClimbMdp(wall, config=config, max_steps=None)
+        trial.reset()
+        trial.replay_actions(np.asarray(holds_taken, dtype=np.int64))
+        out[i] = trial.step(int(hold))[4]["reached"]
+    return out
+
+
+def label(policy, wall_seeds, random_share, seed, progress=None):
+    """label_wall over the walls (each with its own stream from seed and the wall's seed),
+    as arrays with each row's wall seed and state number within its wall."""
+    config = baseline.climbing_config("kinematic")
+    parts = {"rows": [], "reached": [], "chosen": [], "wall": []}
+    for wall_seed in wall_seeds:
+        try:
+            rows, reached, chosen = label_wall(policy, wall_seed, config, random_share,
+                                               np.random.default_rng([seed, wall_seed]))
+        except ValueError as error:
+            if "the start configuration" not in str(error):
+                raise
+            continue  # a start the climber cannot take: evaluate skips such walls too
+        for key, value in (("rows", rows), ("reached", reached), ("chosen", chosen),
+                           ("wall", np.full(len(reached), wall_seed, np.int64))):
+            parts[key].append(value)
+        if progress:
+            progress(wall_seed, len(reached))
+    if not parts["wall"]:  # no wall whose start the climber can take
+        return {"rows": np.zeros((0, ROW_SIZE), np.float32), "reached": np.zeros(0, bool),
+                "chosen": np.zeros(0, bool), "wall": np.zeros(0, np.int64)}
+    return {key: np.concatenate(value) for key, value in parts.items()}
+
+
+# --- the classifier ----------------------------------------------------------------------------
+
+
+class ReachHead:
+    """P(the move reaches) per offered slot, from the slot network's row: an MLP of width-1
+    convolutions (oneDNN, as the policy's) over standardised rows."""
+
+    def __init__(self, hidden, mean, scale, max_span):
+        self.net = baseline.mlp([ROW_SIZE, hidden, hidden, 1])
+        self.mean = np.asarray(mean, np.float32)
+        self.scale = np.asarray(scale, np.float32)
+        self.max_span = max_span
+
+    def logits(self, rows):
+        """The logit of each row of (N, 66), scored SCORING_BATCH rows at a time."""
+        out = []
+        with torch.no_grad():
+            for start in range(0, len(rows), SCORING_BATCH):
+                batch = (rows[start:start + SCORING_BATCH] - self.mean) / self.scale
+                out.append(self.net(torch.from_numpy(batch.T.copy()).unsqueeze(0))[0, 0].numpy())
+        return np.concatenate(out) if out else np.zeros(0, np.float32)
+
+    def veto(self, threshold):
+        """evaluate's veto: the slots of one observation's (state (1, 55), slots (1, K, 11))
+        estimated to reach with a probability of at least threshold, as (1, K) booleans."""
+        logit_threshold = np.log(threshold / (1 - threshold)) if threshold > 0 else -np.inf
+
+        def allowed(state, slots):
+            rows = np.concatenate([np.repeat(state, slots.shape[1], axis=0), slots[0]], axis=1)
+            return (self.logits(rows) >= logit_threshold)[None]
+
+        return allowed
+
+
+def fit_head(rows, reached, hidden, epochs, seed, max_span, batch=4096, lr=1e-3, threads=1, progress=None):
+    """A ReachHead trained with Adam on the logistic loss, its learning rate decayed
+    linearly to 0 over the epochs."""
+    baseline.deterministic(seed, threads)
+    mean = rows.mean(axis=0, dtype=np.float64).astype(np.float32)
+    scale = (rows.std(axis=0, dtype=np.float64) + 1e-6).astype(np.float32)
+    head = ReachHead(hidden, mean, scale, max_span)
+    inputs = torch.from_numpy(((rows - mean) / scale).T.copy())
+    targets = torch.from_numpy(reached.astype(np.float32))
+    optimiser = torch.optim.Adam(head.net.parameters(), lr=lr)
+    generator = torch.Generator().manual_seed(seed)
+    steps = epochs * -(-len(reached) // batch)
+    step = 0
+    for epoch in range(epochs):
+        for index in torch.randperm(len(reached), generator=generator).split(batch):
+            optimiser.param_groups[0]["lr"] = lr * (1 - step / steps)
+            logits = head.net(inputs[:, index].unsqueeze(0))[0, 0]
+            loss = torch.nn.functional.binary_cross_entropy_with_logits(logits, targets[index])
+            optimiser.zero_grad()
+            loss.backward()
+            optimiser.step()
+            step += 1
+        if progress:
+            progress(epoch + 1, float(loss))
+    return head
+
+
+def report(head, rows, reached, chosen):
+    """The head's accuracy and AUC on the rows, and at the policy's greedy choices."""
+    logits = head.logits(rows)
+    right = (logits > 0) == reached
+    return {"moves": int(len(reached)), "reaching_share": float(reached.mean()), "accuracy": float(right.mean()),
+            "auc": auc(logits.astype(np.float64), reached),
+            "at_the_policy_choice": {"moves": int(chosen.sum()), "accuracy": float(right[chosen].mean()),
+                                     "choice_reaches": float(reached[chosen].mean()),
+                                     "failing_passed": int((chosen & ~reached & (logits > 0)).sum()),
+                                     "reaching_rejected": int((chosen & reached & (logits <= 0)).sum())}}
+
+
+def save_head(head, path, training):
+    layers = baseline.layers_of(head.net)
+    record = {"format": HEAD_FORMAT, "version": HEAD_VERSION, "observation": baseline.OBSERVATION,
+              "max_span": head.max_span, "input_mean": head.mean.tolist(), "input_scale": head.scale.tolist(),
+              "activation": "relu", "layers": layers, "training": training}
+    baseline.write_whole(path, json.dumps(record) + "\n")
+
+
+def load_head(path):
+    """The ReachHead of a file fit wrote; ValueError naming the file on anything else."""
+    try:
+        record = json.loads(pathlib.Path(path).read_text())
+    except OSError as error:
+        raise ValueError(f"{path}: cannot read the reach head ({error.strerror})") from None
+    except (json.JSONDecodeError, UnicodeDecodeError) as error:
+        raise ValueError(f"{path}: not a reach head (not JSON: {error})") from None
+    if not isinstance(record, dict) or record.get("format") != HEAD_FORMAT:
+        raise ValueError(f"{path}: not a reach head (format is not {HEAD_FORMAT!r})")
+    if record.get("version") != HEAD_VERSION or record.get("observation") != baseline.OBSERVATION:
+        raise ValueError(f"{path}: a reach head for observation {record.get('observation')!r} version "
+                         f"{record.get('version')!r}; this takes {baseline.OBSERVATION!r} version {HEAD_VERSION}")
+    try:
+        head = ReachHead(len(record["layers"][0]["bias"]), record["input_mean"], record["input_scale"],
+                         float(record["max_span"]))
+        if head.mean.shape != (ROW_SIZE,) or head.scale.shape != (ROW_SIZE,) or not (head.scale > 0).all():
+            raise ValueError(f"input_mean and input_scale must be {ROW_SIZE} numbers, the scales positive")
+        convolutions = [layer for layer in head.net if isinstance(layer, torch.nn.Conv1d)]
+        if len(convolutions) != len(record["layers"]):
+            raise ValueError("the wrong number of layers")
+        for convolution, layer in zip(convolutions, record["layers"]):
+            weight = torch.tensor(layer["weight"], dtype=torch.float32)[:, :, None]
+            bias = torch.tensor(layer["bias"], dtype=torch.float32)
+            if weight.shape != convolution.weight.shape or bias.shape != convolution.bias.shape:
+                raise ValueError(f"a layer of shape {tuple(weight.shape[:2])} where "
+                                 f"{tuple(convolution.weight.shape[:2])} belongs")
+            convolution.weight.data.copy_(weight)
+            convolution.bias.data.copy_(bias)
+    except (KeyError, TypeError, IndexError, ValueError) as error:
+        raise ValueError(f"{path}: not a reach head ({error})") from None
+    return head, record
+
+
+# --- commands ----------------------------------------------------------------------------------
+
+
+def command_label(args):
+    policy = baseline.load_for_walls(args.policy, "reach_estimate.py")
+
+    def progress(wall_seed, moves):
+        if args.progress:
+            print(f"wall {wall_seed}: {moves} moves", file=sys.stderr, flush=True)
+
+    labels = label(policy, args.wall_seeds, args.random_share, args.seed, progress)
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    partial = args.out.with_name(args.out.name + ".partial.npz")
+    np.savez_compressed(partial, **labels, policy=str(args.policy), random_share=args.random_share, seed=args.seed)
+    partial.replace(args.out)
+    walls = len(np.unique(labels["wall"]))
+    print(json.dumps({"labels": str(args.out), "walls": walls, "skipped_walls": len(args.wall_seeds) - walls,
+                      "moves": int(len(labels["reached"])),
+                      "reaching_share": float(labels["reached"].mean()) if len(labels["reached"]) else None}))
+
+
+def read_labels(paths):
+    """The label files' arrays, concatenated; exit 2 with one line on a file that is not one."""
+    parts = []
+    for path in paths:
+        try:
+            with np.load(path) as data:
+                parts.append({key: data[key] for key in ("rows", "reached", "chosen", "wall")})
+        except (OSError, ValueError, KeyError) as error:
+            print(f"reach_estimate.py: --labels: {path}: not a label file ({error})", file=sys.stderr)
+            sys.exit(2)
+        if parts[-1]["rows"].ndim != 2 or parts[-1]["rows"].shape[1] != ROW_SIZE:
+            print(f"reach_estimate.py: --labels: {path}: rows of {parts[-1]['rows'].shape[1:]} numbers, "
+                  f"not {ROW_SIZE}", file=sys.stderr)
+            sys.exit(2)
+    return {key: np.concatenate([part[key] for part in parts]) for key in parts[0]}
+
+
+def command_fit(args):
+    labels = read_labels(args.labels)
+    walls = np.unique(labels["wall"])
+    held_out_walls = walls[len(walls) - max(1, round(len(walls) * args.held_out_share)):]
+    test = np.isin(labels["wall"], held_out_walls)
+
+    def progress(epoch, loss):
+        print(json.dumps({"epoch": epoch, "last_loss": loss}), file=sys.stderr, flush=True)
+
+    head = fit_head(labels["rows"][~test], labels["reached"][~test], args.hidden, args.epochs, args.seed,
+                    baseline.configured_max_span(), threads=args.threads, progress=progress)
+    training = {"command": " ".join(["examples/python/reach_estimate.py"] + [shlex.quote(a) for a in args.argv]),
+                "seed": args.seed, "walls": int(len(walls)), "training_moves": int((~test).sum()),
+                "held_out_walls": [int(held_out_walls[0]), int(held_out_walls[-1])],
+                "held_out": report(head, labels["rows"][test], labels["reached"][test], labels["chosen"][test])}
+    save_head(head, args.out, training)
+    print(json.dumps({"head": str(args.out), **training}, indent=1))
+
+
+def command_evaluate(args):
+    policy = baseline.load_for_walls(args.policy, "reach_estimate.py")
+    try:
+        head, _ = load_head(args.head)
+    except ValueError as error:
+        print(f"reach_estimate.py: --head: {error}", file=sys.stderr)
+        sys.exit(2)
+    if abs(head.max_span - policy.max_span) > 1e-9:
+        print(f"reach_estimate.py: --head: {args.head}: fitted with filter.max_span = {head.max_span} m, "
+              f"and the policy reads {policy.max_span} m", file=sys.stderr)
+        sys.exit(2)
+    plans = baseline.plan_lengths(args.wall_seeds)
+    results = []
+    for threshold in args.veto:
+        result = baseline.evaluate(policy, args.wall_seeds, plans=plans, veto=head.veto(threshold))
+        result["veto"] = threshold
+        result["failed_moves"] = sum(wall["failed_moves"] for wall in result["walls"])
+        results.append(result)
+        if not args.json:
+            print(f"veto {threshold}: {result['climbs']} climbs, {result['finished']:.1%} finished, "
+                  f"{result['mean_length_ratio']:.3f} times the plan, {result['failed_moves']} failed moves")
+    if args.json:
+        print(json.dumps(results if len(results) > 1 else results[0], indent=1))
+
+
+def probability(text):
+    value = baseline.unit_interval(text)
+    if value >= 1:
+        raise argparse.ArgumentTypeError(f"must be below 1, got {value}")
+    return value
+
+
+def parser():
+    top = OneLineParser(prog="reach_estimate.py", description=__doc__.split("\n\n")[0])
+    commands = top.add_subparsers(dest="command_name", required=True, parser_class=OneLineParser)
+    b = commands.add_parser("label", help="Labels every offered move of the policy's climbs with the climb's verdict")
+    b.add_argument("--policy", type=pathlib.Path, required=True, help="the policy file whose climbs are labelled")
+    b.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
+    b.add_argument("--random-share", type=baseline.unit_interval, default=0.2,
+                   help="the share of the climb's moves chosen uniformly at random instead of greedily")
+    b.add_argument("--seed", type=int, default=1, help="the random moves' seed")
+    b.add_argument("--out", type=pathlib.Path, required=True, help="the .npz file to write")
+    b.add_argument("--progress", action="store_true", help="a line per wall on stderr")
+    f = commands.add_parser("fit", help="Trains the reach head on label files and reports it on held-out walls")
+    f.add_argument("--labels", type=pathlib.Path, nargs="+", required=True, help="files label wrote")
+    f.add_argument("--out", type=pathlib.Path, required=True, help="the reach head to write (JSON)")
+    f.add_argument("--epochs", type=positive, default=24, help="passes over the training moves")
+    f.add_argument("--hidden", type=positive, default=256, help="units in each of the two hidden layers")
+    f.add_argument("--held-out-share", type=baseline.unit_interval, default=0.1,
+                   help="the share of the walls (the last by seed) kept out of training and reported on")
+    f.add_argument("--seed", type=int, default=1, help="the network's and the minibatches' seed")
+    f.add_argument("--threads", type=positive, default=1, help="torch's CPU threads (1: deterministic)")
+    e = commands.add_parser("evaluate", help="The policy's greedy climbs with the head's veto")
+    e.add_argument("--policy", type=pathlib.Path, required=True, help="a policy file policy_baseline.py wrote")
+    e.add_argument("--head", type=pathlib.Path, required=True, help="a reach head fit wrote")
+    e.add_argument("--veto", type=probability, nargs="+", required=True,
+                   help="thresholds P: the climbs choose among the moves estimated to reach with at least P")
+    e.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
+    e.add_argument("--json", action="store_true", help="print the result as JSON")
+    return top
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    args = parser().parse_args(argv)
+    args.argv = argv
+    {"label": command_label, "fit": command_fit, "evaluate": command_evaluate}[args.command_name](args)
+
+
+if __name__ == "__main__":
+    main()

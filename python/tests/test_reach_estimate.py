@@ -1,0 +1,211 @@
+"""examples/python/reach_estimate.py: its labels are the climb's own verdicts, its classifier
+learns a rule it is shown and reads back what it wrote, its veto passes to the climbs the
+moves it allows (and, allowing none, leaves the policy its own choice), and a bad head or
+label file is one line and exit code 2."""
+
+import importlib.util
+import json
+import pathlib
+import sys
+
+import numpy as np
+import pytest
+
+from needed import need
+
+gymnasium, torch = need(
+    ["gymnasium", "torch"],
+    "the estimate needs Gymnasium (../shared/third_party/gymnasium-1.4.0) and Debian's python3-torch",
+)
+
+REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
+EXAMPLES = REPOSITORY / "examples" / "python"
+SHIPPED = REPOSITORY / "models" / "policies" / "reach-ppo.json"
+sys.path.insert(0, str(EXAMPLES))  # the script imports its neighbours, as when run from its folder
+_spec = importlib.util.spec_from_file_location("reach_estimate", EXAMPLES / "reach_estimate.py")
+estimate = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(estimate)
+baseline = estimate.baseline
+
+
+@pytest.fixture(scope="module")
+def policy():
+    return baseline.load_policy(SHIPPED)[0]
+
+
+def test_the_labels_of_the_policy_choices_are_what_its_greedy_climb_met(policy):
+    # With no random moves the labelled climb is the greedy climb: its chosen moves, in
+    # order, are the climb's actions, and their labels its outcomes.
+    config = baseline.climbing_config("kinematic")
+    for wall_seed in (20000, 20001):
+        rows, reached, chosen = estimate.label_wall(policy, wall_seed, config, 0.0, np.random.default_rng(1))
+        finished, taken, failed = baseline.climb(policy, crux_env(wall_seed, config))
+        assert taken <= estimate.LABEL_CAP, "the climb fits in the label cap"
+        assert chosen.sum() == taken and (chosen & ~reached).sum() == failed, f"wall {wall_seed}"
+        assert rows.shape == (len(reached), estimate.ROW_SIZE) and 0 < reached.mean() < 1
+
+
+def test_the_labeller_verdicts_are_the_verdict_oracle_ones():
+    seed = 20241  # the random climb's draws; printed by the assertion's message
+    rng = np.random.default_rng(seed)
+    config = baseline.climbing_config("kinematic")
+    wall = baseline.crux.Wall.random(3)
+    env = crux_env(3, config)
+    obs, info = env.reset()
+    history, holds_taken, both = [], [], []
+    for _ in range(30):  # a random climb, to meet moves that fail and moves that reach
+        mask = obs["candidate_mask"][None] > 0.5
+        offered = np.flatnonzero(mask[0])
+        both.append((baseline.verdict_mask(3, config, history, mask)[0, offered].tolist(),
+                     estimate.verdicts(wall, config, holds_taken, info["candidate_holds"][offered]).tolist()))
+        action = int(rng.choice(offered))
+        history.append(action)
+        holds_taken.append(int(info["candidate_holds"][action]))
+        obs, _, terminated, _, info = env.step(action)
+        if terminated:
+            break
+    assert all(oracle == labeller for oracle, labeller in both), f"seed {seed}"
+    assert {verdict for oracle, _ in both for verdict in oracle} == {True, False}, f"seed {seed}"
+
+
+def crux_env(wall_seed, config):
+    return baseline.crux.gym.ClimbEnv(wall_seed, baseline.OBSERVATION, config=config)
+
+
+def test_random_moves_change_the_climb_and_the_same_seed_the_same_labels(policy):
+    config = baseline.climbing_config("kinematic")
+    runs = [estimate.label_wall(policy, 20000, config, share, np.random.default_rng(seed))
+            for share, seed in ((0.5, 7), (0.5, 7), (0.0, 7))]
+    for a, b in zip(runs[0], runs[1]):
+        np.testing.assert_array_equal(a, b)
+    assert len(runs[0][1]) != len(runs[2][1]) or (runs[0][0] != runs[2][0]).any()
+
+
+def synthetic_rows(count, seed):
+    """Rows whose move reaches when the slot's first reach feature is below a bound: a rule to learn."""
+    rng = np.random.default_rng(seed)
+    rows = rng.normal(size=(count, estimate.ROW_SIZE)).astype(np.float32)
+    return rows, rows[:, baseline.STATE_SIZE + 3] < 0.3
+
+
+def test_the_head_learns_a_rule_deterministically_and_reads_back_what_it_wrote(tmp_path):
+    rows, reached = synthetic_rows(6000, 11)
+    heads = [estimate.fit_head(rows, reached, 16, 4, seed=3, max_span=2.8, batch=256, lr=1e-2) for _ in range(2)]
+    test_rows, test_reached = synthetic_rows(2000, 12)
+    accuracy = ((heads[0].logits(test_rows) > 0) == test_reached).mean()
+    assert accuracy > 0.95, f"seed 11: accuracy {accuracy}"
+    for a, b in zip(heads[0].net.parameters(), heads[1].net.parameters()):
+        assert torch.equal(a, b)
+    estimate.save_head(heads[0], tmp_path / "head.json", {"seed": 3})
+    loaded, record = estimate.load_head(tmp_path / "head.json")
+    np.testing.assert_array_equal(loaded.logits(test_rows), heads[0].logits(test_rows))
+    assert record["max_span"] == 2.8 and record["training"] == {"seed": 3}
+
+
+def test_the_report_counts_by_hand():
+    head = estimate.ReachHead(4, np.zeros(estimate.ROW_SIZE), np.ones(estimate.ROW_SIZE), 2.8)
+    head.logits = lambda rows: np.array([2.0, -1.0, 0.5, -3.0])
+    reached = np.array([True, True, False, False])
+    chosen = np.array([True, True, True, False])
+    report = estimate.report(head, np.zeros((4, estimate.ROW_SIZE), np.float32), reached, chosen)
+    assert report["accuracy"] == 0.5 and report["auc"] == 0.75 and report["reaching_share"] == 0.5
+    assert report["at_the_policy_choice"] == {"moves": 3, "accuracy": 1 / 3, "choice_reaches": 2 / 3,
+                                              "failing_passed": 1, "reaching_rejected": 1}
+
+
+def test_the_veto_passes_the_moves_it_allows_and_allowing_none_leaves_the_policy_its_choice(policy):
+    plans = baseline.plan_lengths([20000])
+    alone = baseline.evaluate(policy, [20000], plans=plans)
+    assert baseline.evaluate(policy, [20000], plans=plans, veto=lambda state, slots: np.zeros(slots.shape[:2], bool)) \
+        == alone
+    head = estimate.ReachHead(4, np.zeros(estimate.ROW_SIZE), np.ones(estimate.ROW_SIZE), 2.8)
+    slots = np.zeros((1, 5, baseline.SLOT_SIZE), np.float32)
+    head.logits = lambda rows: np.array([-2.0, -0.5, 0.0, 0.5, 2.0])  # p: 0.12, 0.38, 0.5, 0.62, 0.88
+    state = np.zeros((1, baseline.STATE_SIZE), np.float32)
+    assert head.veto(0.5)(state, slots).tolist() == [[False, False, True, True, True]]
+    assert head.veto(0.0)(state, slots).all() and head.veto(0.8)(state, slots).sum() == 1
+    # A veto that allows only the last offered slot: the climb takes it at every step.
+    def last_only(state, slots):
+        offered = np.flatnonzero(np.abs(slots[0]).sum(axis=1) > 0)  # padded slots are zeros
+        return np.arange(slots.shape[1])[None] == offered[-1]
+
+    env = Recording(crux_env(20000, baseline.climbing_config("kinematic")))
+    baseline.climb(policy, env, cap=10, allowed=baseline.allowed_moves(20000, None, False, last_only))
+    assert len(env.steps) == 10 and all(action == offered[-1] for action, offered in env.steps), env.steps
+
+
+class Recording:
+    """An environment that records each action and the slots offered when it was taken."""
+
+    def __init__(self, env):
+        self.env, self.steps = env, []
+
+    def reset(self):
+        self.obs, info = self.env.reset()
+        return self.obs, info
+
+    def step(self, action):
+        self.steps.append((action, np.flatnonzero(self.obs["candidate_mask"] > 0.5)))
+        self.obs, *rest = self.env.step(action)
+        return (self.obs, *rest)
+
+
+def run(*arguments, capsys):
+    with pytest.raises(SystemExit) as exit_:
+        estimate.main(list(arguments))
+    return exit_.value.code, capsys.readouterr()
+
+
+@pytest.mark.parametrize("content, problem", [
+    (None, "cannot read the reach head"),
+    ("{not json", "not a reach head (not JSON"),
+    ('{"format": "crux-reach-head", "version": 1, "observation": "numeric"}', "a reach head for observation 'numeric'"),
+    ('{"format": "crux-reach-head", "version": 1, "observation": "reach", "max_span": 2.8, "input_mean": [0], '
+     '"input_scale": [1], "layers": [{"weight": [[1]], "bias": [0]}]}', "input_mean and input_scale must be 66"),
+])
+def test_a_bad_head_file_is_one_line_and_exit_code_2(tmp_path, capsys, content, problem):
+    path = tmp_path / "head.json"
+    if content is not None:
+        path.write_text(content)
+    code, out = run("evaluate", "--policy", str(SHIPPED), "--head", str(path), "--veto", "0.2", "--wall-seeds", "1:2",
+                    capsys=capsys)
+    assert code == 2 and out.out == "" and out.err.count("\n") == 1, out.err
+    assert out.err.startswith(f"reach_estimate.py: --head: {path}: ") and problem in out.err
+
+
+@pytest.mark.parametrize("arguments, named", [
+    (["--veto", "1"], "--veto"), (["--veto", "-0.1"], "--veto"), (["--wall-seeds", "5:2"], "--wall-seeds")])
+def test_bad_arguments_are_one_line_and_exit_code_2(tmp_path, capsys, arguments, named):
+    given = {"--veto": "0.2", "--wall-seeds": "1:2", "--policy": str(SHIPPED), "--head": str(tmp_path / "h.json")}
+    given.update(dict(zip(arguments[::2], arguments[1::2])))
+    code, out = run("evaluate", *[part for item in given.items() for part in item], capsys=capsys)
+    assert code == 2 and out.err.count("\n") == 1 and named in out.err, out.err
+
+
+def test_a_file_that_is_not_labels_is_one_line_and_exit_code_2(tmp_path, capsys):
+    bad = tmp_path / "labels.npz"
+    bad.write_text("not a zip")
+    code, out = run("fit", "--labels", str(bad), "--out", str(tmp_path / "head.json"), capsys=capsys)
+    assert code == 2 and out.err.count("\n") == 1 and out.err.startswith(f"reach_estimate.py: --labels: {bad}: ")
+    assert not (tmp_path / "head.json").exists()
+    np.savez(tmp_path / "narrow.npz", rows=np.zeros((2, 3)), reached=np.zeros(2, bool), chosen=np.zeros(2, bool),
+             wall=np.zeros(2, np.int64))
+    code, out = run("fit", "--labels", str(tmp_path / "narrow.npz"), "--out", str(tmp_path / "head.json"),
+                    capsys=capsys)
+    assert code == 2 and out.err.count("\n") == 1 and "rows of (3,) numbers, not 66" in out.err
+
+
+def test_label_and_fit_write_files_fit_and_evaluate_read(tmp_path, capsys):
+    labels = tmp_path / "labels.npz"
+    # Wall 3007399's start cannot be taken (the IK finds no posture on its four holds): skipped.
+    estimate.main(["label", "--policy", str(SHIPPED), "--wall-seeds", "3007397:3007400", "--out", str(labels)])
+    written = json.loads(capsys.readouterr().out)
+    assert (written["walls"], written["skipped_walls"]) == (3, 1) and written["moves"] > 100
+    assert not list(tmp_path.glob("*.partial*"))
+    head = tmp_path / "head.json"
+    estimate.main(["fit", "--labels", str(labels), "--out", str(head), "--epochs", "1", "--hidden", "8",
+                   "--held-out-share", "0.3"])
+    fitted = json.loads(capsys.readouterr().out)
+    assert fitted["held_out_walls"] == [3007400, 3007400] and fitted["walls"] == 3
+    assert fitted["held_out"]["moves"] + fitted["training_moves"] == written["moves"]
+    assert estimate.load_head(head)[1]["training"]["command"].startswith("examples/python/reach_estimate.py fit")
