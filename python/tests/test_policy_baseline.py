@@ -518,7 +518,7 @@ def test_every_committed_policy_s_command_writes_its_own_file():
     policies = sorted((REPOSITORY / "models" / "policies").rglob("*.json"))
     commands = {path: json.loads(path.read_text()).get("training", {}).get("command") for path in policies}
     commands = {path: command for path, command in commands.items() if command}
-    assert len(commands) == 2
+    assert len(commands) == 3  # the policy, the 6 M policy and the policy's reach head
     for path, command in commands.items():
         assert command.split(" --out ")[1].split()[0] == str(path.relative_to(REPOSITORY)), path
 
@@ -751,8 +751,6 @@ def test_baselines_reach_pilots_quote_their_record():
             f"there, against {1 - fitted['half_the_walls_reaching_share']:.0%}").replace("%", " %") in flat
     assert (f"wall 20000's takes {standing['plan_length_wall_20000']} moves, against "
             f"{standing['default_plan_length_wall_20000']}") in flat
-    assert (f"trained on nearly {0.9 * labels['moves'] / 1e6:.1f} M verdicts of the policy's climbs on training walls "
-            f"is right on {choice['classifier_right']:.0%} of the policy's choices").replace("%", " %") in flat
     focused = record["focused_on_the_policy_choice"]
     assert (f"right on {focused['right_at_the_choice']:.1%} of those choices (it passes {focused['failing_passed']} of "
             f"the {choice['failing_choices']} that fail and rejects {focused['reaching_rejected']} of those that "
@@ -778,8 +776,6 @@ def test_baselines_reach_pilots_quote_their_record():
             f"oracle) gives {min(middle):.2f} to {max(middle):.2f} at q = 0.95 to 0.98, {noisy[0.9]:.2f} at 0.9 and "
             f"{noisy[0.85]:.2f} at 0.85") in flat
     assert f"the classifiers above are right on {fitted['accuracy']:.0%}".replace("%", " %") in flat
-    best = min(row["mean_length_ratio"] for row in record["veto_on_validation_walls_10000_10299"])
-    assert f"shortens the validation climbs by {plain['mean_length_ratio'] - best:.2f} at best" in flat
     twice = fitted["twice_the_walls"]
     assert twice["moves"] > 1.9 * labels["moves"]
     accuracies = [fitted["accuracy_with_half_the_walls"], fitted["accuracy"], twice["accuracy"]]
@@ -791,8 +787,6 @@ def test_baselines_reach_pilots_quote_their_record():
             f"{later[0.2]['mean_length_ratio']:.2f} and {later[0.3]['mean_length_ratio']:.2f} at 0.2 and 0.3, "
             f"{later[0.5]['mean_length_ratio']:.2f} at 0.5, and fewer climbs finish the higher p is "
             f"({later[0.1]['finished']:.0%} to {later[0.5]['finished']:.0%})").replace("%", " %") in flat
-    gains = [b - a for a, b in zip(accuracies, accuracies[1:])]
-    assert f"the 8-epoch fits gained {min(gains) * 100:.1f} to {max(gains) * 100:.1f} points a doubling" in flat
     longer = fitted["longer_training"]
     at_choice = longer["at_the_policy_choice_6000_walls"]
     assert f"{longer['accuracy_24_epochs_6000_walls']:.3f}" == f"{longer['accuracy_64_epochs_3000_walls']:.3f}"
@@ -807,14 +801,3 @@ def test_baselines_reach_pilots_quote_their_record():
             f"{vetoes[0.3]['finished']:.0%} of the climbs finished) and {vetoes[0.5]['mean_length_ratio']:.2f} at "
             f"0.5").replace("%", " %") in flat
     assert f"{vetoes[0.2]['mean_length_ratio']:.2f}" == f"{vetoes[0.3]['mean_length_ratio']:.2f}"
-    longer_gain = longer["accuracy_24_epochs_6000_walls"] - twice["accuracy"]
-    assert f"and 24 epochs on the 6000 walls {longer_gain * 100:.1f} points more" in flat
-    best = [min(row["mean_length_ratio"] for row in rows) for rows in (
-        record["veto_on_validation_walls_10000_10299"], twice["veto_on_validation_walls_10000_10299"],
-        longer["veto_on_validation_walls_10000_10299"])]
-    assert (f"(1.58, 1.57, 1.54 at {fitted['accuracy']:.1%}, {twice['accuracy']:.1%} and "
-            f"{longer['accuracy_24_epochs_6000_walls']:.1%})").replace("%", " %") in flat
-    assert [f"{b:.2f}" for b in best] == ["1.58", "1.57", "1.54"]
-    assert (f"trained longer on two million verdicts, it is right on {at_choice['classifier_right']:.1%} of "
-            f"the policy's choices and its veto brings the validation climbs to {best[2]:.2f}").replace("%", " %") \
-        in flat

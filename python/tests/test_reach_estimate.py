@@ -209,3 +209,101 @@ def test_label_and_fit_write_files_fit_and_evaluate_read(tmp_path, capsys):
     assert fitted["held_out_walls"] == [3007400, 3007400] and fitted["walls"] == 3
     assert fitted["held_out"]["moves"] + fitted["training_moves"] == written["moves"]
     assert estimate.load_head(head)[1]["training"]["command"].startswith("examples/python/reach_estimate.py fit")
+
+
+SEARCH = REPOSITORY / "models" / "policies" / "search"
+HEAD = REPOSITORY / "models" / "policies" / "reach-ppo.reach-head.json"
+
+
+def test_the_shipped_head_climbs_its_record_s_first_held_out_wall(policy):
+    record = json.loads((SEARCH / "reach_estimate.json").read_text())["held_out_walls_20000_20299"]
+    head, file = estimate.load_head(HEAD)
+    assert file["training"]["held_out"] == json.loads((SEARCH / "reach_estimate.json").read_text())["fits"][
+        "28k_walls"]["held_out"]
+    assert "--out models/policies/reach-ppo.reach-head.json" in file["training"]["command"]
+    plans = baseline.plan_lengths([20000])
+    climbed = baseline.evaluate(policy, [20000], plans=plans, veto=head.veto(record["veto"]))["walls"]
+    assert climbed == record["evaluation"]["walls"][:1]
+
+
+def bracket(c, digits=2, sign=""):
+    return f"{c['mean']:{sign}.{digits}f} [{c['low']:.{digits}f}, {c['high']:.{digits}f}]"
+
+
+def listed(rows):
+    """Validation vetoes' ratios as the docs list them: 1.50, 1.49, 1.48 and 1.51."""
+    ratios = [f"{row['mean_length_ratio']:.2f}" for row in rows]
+    return ", ".join(ratios[:-1]) + f" and {ratios[-1]}"
+
+
+def test_baselines_reach_estimate_quotes_its_record():
+    from wall_statistics import interval, paired
+    record = json.loads((SEARCH / "reach_estimate.json").read_text())
+    flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
+    labels = record["labels"]
+    assert sum(run["moves"] for run in labels["runs"]) == labels["moves"] and len(labels["runs"]) == 8
+    assert (f"{labels['walls']:,} walls, {labels['moves']:,} moves, {labels['reaching_share']:.0%} of them reach"
+            ).replace("%", " %") in flat
+    assert f"({labels['skipped_walls']} walls skipped" in flat
+    fits = record["fits"]
+    assert labels["walls"] == fits["28k_walls"]["walls"]
+    for name, moves in (("14k_walls", "4,038,592 training moves"), ("28k_walls", "8,109,496 training moves")):
+        fit, held = fits[name], fits[name]["held_out"]
+        assert f"{fit['training_moves']:,} training moves" == moves and moves in flat
+        choice = held["at_the_policy_choice"]
+        assert (f"right on {held['accuracy']:.1%}" in flat.replace(" %", "%") and f"(AUC {held['auc']:.3f})" in flat)
+        assert (f"on {choice['accuracy']:.1%} of the policy's own choices (it passes {choice['failing_passed']}"
+                ).replace("%", " %") in flat
+        assert f"rejects {choice['reaching_rejected']}" in flat
+    first, both = (record["veto_on_validation_walls_10000_10299"][name] for name in ("14k_walls", "28k_walls"))
+    assert f"Its veto gives {listed(first)} at p = 0.1, 0.2, 0.3 and 0.5" in flat
+    assert f"Its veto gives {listed(both)} at p = 0.2, 0.3, 0.5 and 0.7" in flat
+    finished = sorted(row["finished"] for row in both)
+    failed = sorted(row["failed_moves"] for row in both)
+    assert (f"finishing {finished[-1]:.0%} to {finished[0]:.0%} of the climbs and failing {failed[0]} to {failed[-1]} "
+            f"moves").replace("%", " %") in flat
+    # The rule: the lowest ratio among the vetoes whose climbs finish at least 95 %.
+    chosen = min((row for row in both if row["finished"] >= 0.95), key=lambda row: row["mean_length_ratio"])
+    held = record["held_out_walls_20000_20299"]
+    assert held["veto"] == chosen["veto"] and f"p = {chosen['veto']}, the lowest ratio among the vetoes" in flat
+    walls = held["evaluation"]["walls"]
+    zero = json.loads((SEARCH / "heldout_300.json").read_text())["policies"][0]["evaluation"]["walls"]
+    oracle = json.loads((SEARCH / "oracle_verdict_300.json").read_text())["policies"][0]["evaluation"]["walls"]
+    assert [w["wall_seed"] for w in walls] == [w["wall_seed"] for w in zero] == list(range(20000, 20300))
+
+    def ratios_of(climbs):
+        return [w["length"] / w["plan_length"] if w["finished"] else None for w in climbs]
+
+    mine = ratios_of(walls)
+    assert interval(mine) == held["ratio"] and paired(mine, ratios_of(zero)) == held["ratio_minus_zero_shot"]
+    assert paired(mine, [1.5] * 300) == held["ratio_minus_1_5"]
+    assert paired(mine, ratios_of(oracle)) == held["ratio_minus_oracle"]
+    share = held["finished"]
+    assert (f"finishes {share['mean'] * 100:.1f} % [{share['low'] * 100:.1f}, {share['high'] * 100:.1f}] of the "
+            f"climbs, in {bracket(held['ratio'])} times the plan") in flat
+    assert f"That is {bracket(held['ratio_minus_1_5'])} against 1.5 (p = {held['ratio_minus_1_5']['p']:.2f})" in flat
+    shorter = held["ratio_minus_zero_shot"]
+    assert (f"it is {-shorter['mean']:.2f} [{-shorter['high']:.2f}, {-shorter['low']:.2f}] shorter than the policy "
+            f"alone ({held['zero_shot_ratio']['mean']:.2f}, p = {shorter['p']:.1e})") in flat
+    longer = held["ratio_minus_oracle"]
+    assert (f"{bracket(longer)} longer than with the verdict oracle ({held['oracle_ratio']['mean']:.2f}, "
+            f"p = {longer['p']:.1e})") in flat
+    assert (f"Its climbs fail {held['failed_moves']['veto']} moves, against {held['failed_moves']['zero_shot']} alone"
+            ) in flat
+    thirty = held["first_30_walls"]
+    assert thirty["finished"] == 1 and f"it finishes all 30, in {bracket(thirty['ratio'])} times the plan" in flat
+    # The lead and "Not done" quote the held-out climbs too.
+    assert f"brings the shipped policy's zero-shot climbs of the 300 walls to {bracket(held['ratio'])}" in flat
+    assert (f"{-shorter['mean']:.2f} [{-shorter['high']:.2f}, {-shorter['low']:.2f}] shorter than alone, below 1.5 in "
+            f"the mean but not significantly (p = {held['ratio_minus_1_5']['p']:.2f}") in flat
+    pilot_record = json.loads((SEARCH / "reach_pilots.json").read_text())
+    pilots = pilot_record["classifier"]
+    trend = [pilots["accuracy"], pilots["twice_the_walls"]["accuracy"],
+             pilots["longer_training"]["accuracy_24_epochs_6000_walls"], fits["14k_walls"]["held_out"]["accuracy"],
+             fits["28k_walls"]["held_out"]["accuracy"]]
+    best = [min(row["mean_length_ratio"] for row in rows) for rows in (
+        pilot_record["veto_on_validation_walls_10000_10299"],
+        pilots["twice_the_walls"]["veto_on_validation_walls_10000_10299"],
+        pilots["longer_training"]["veto_on_validation_walls_10000_10299"], first, both)]
+    assert (", ".join(f"{b:.2f}" for b in best[:-1]) + f" and {best[-1]:.2f} on the validation walls at "
+            + ", ".join(f"{a:.1%}" for a in trend[:-1]) + f" and {trend[-1]:.1%}").replace("%", " %") in flat
