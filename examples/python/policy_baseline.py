@@ -236,20 +236,26 @@ def load_policy(path):
         hidden = len(record["slot_layers"][0]["bias"])
         policy = SlotPolicy(hidden, float(record["max_span"]))
         for sequential, layers in ((policy.slot_net, record["slot_layers"]), (policy.value_net, record["value_layers"])):
-            convolutions = [layer for layer in sequential if isinstance(layer, nn.Conv1d)]
-            if len(convolutions) != len(layers):
-                raise ValueError("a network has the wrong number of layers")
-            for convolution, layer in zip(convolutions, layers):
-                weight = torch.tensor(layer["weight"], dtype=torch.float32)[:, :, None]
-                bias = torch.tensor(layer["bias"], dtype=torch.float32)
-                if weight.shape != convolution.weight.shape or bias.shape != convolution.bias.shape:
-                    raise ValueError(f"a layer of shape {tuple(weight.shape[:2])} where "
-                                     f"{tuple(convolution.weight.shape[:2])} belongs")
-                convolution.weight.data.copy_(weight)
-                convolution.bias.data.copy_(bias)
+            load_layers(sequential, layers)
     except (KeyError, TypeError, IndexError, ValueError) as error:
         raise ValueError(f"{path}: not a policy file ({error})") from None
     return policy, record
+
+
+def load_layers(sequential, layers):
+    """Copies a file's layers ({"weight", "bias"} each) into the network's convolutions;
+    ValueError when their number or shapes differ."""
+    convolutions = [layer for layer in sequential if isinstance(layer, nn.Conv1d)]
+    if len(convolutions) != len(layers):
+        raise ValueError("a network has the wrong number of layers")
+    for convolution, layer in zip(convolutions, layers):
+        weight = torch.tensor(layer["weight"], dtype=torch.float32)[:, :, None]
+        bias = torch.tensor(layer["bias"], dtype=torch.float32)
+        if weight.shape != convolution.weight.shape or bias.shape != convolution.bias.shape:
+            raise ValueError(f"a layer of shape {tuple(weight.shape[:2])} where "
+                             f"{tuple(convolution.weight.shape[:2])} belongs")
+        convolution.weight.data.copy_(weight)
+        convolution.bias.data.copy_(bias)
 
 
 # --- training: masked PPO (Huang and Ontanon 2020's invalid-action masking) ----------------
@@ -485,6 +491,8 @@ def evaluate(policy, wall_seeds, physics_model="kinematic", plans=None, oracle=F
     mean ratio and the share of climbs that finish within 1.5 times their plan's length.
     oracle: choose only among the offered moves that reach (no longer a zero-shot climb);
     veto: None, or a function (state, slots) -> the slots a learnt estimate lets through."""
+    if oracle and veto is not None:
+        raise ValueError("evaluate takes the verdict oracle or a veto, not both")
     config = climbing_config(physics_model)
     lengths, plan_sum, ratios, skipped, walls = [], [], [], [], []
     for seed in wall_seeds:

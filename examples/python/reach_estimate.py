@@ -1,6 +1,6 @@
 """A learnt reach estimate beside the shipped policy: which offered moves reach, told from
 what the policy sees, and the policy's greedy climbs with the moves it rejects vetoed
-(docs/BASELINES.md, "A learnt reach estimate").
+(docs/BASELINES.md, "A reach estimate in the repository").
 
     export PYTHONPATH=build/release/python:../shared/third_party/gymnasium-1.4.0
     /usr/bin/python3 examples/python/reach_estimate.py label --policy models/policies/reach-ppo.json \\
@@ -27,9 +27,11 @@ zero-shot climb, since the estimate learnt on other walls.
 
 import argparse
 import json
+import os
 import pathlib
 import shlex
 import sys
+import zipfile
 
 import numpy as np
 import torch
@@ -73,15 +75,16 @@ def label_wall(policy, wall_seed, config, random_share, rng):
         obs, _, terminated, _, info = env.step(action)
         if terminated:
             break
-    if not rows:
-        return np.zeros((0, ROW_SIZE), np.float32), np.zeros(0, bool), np.zeros(0, bool)
+    if not rows:  # a start that offers no move
+        empty = no_labels()
+        return empty["rows"], empty["reached"], empty["chosen"]
     return np.concatenate(rows), np.concatenate(reached), np.concatenate(chosen)
 
 
 def verdicts(wall, config, holds_taken, holds):
     """Whether the move to each hold reaches from the state holds_taken leads to: the
     verdicts of policy_baseline.verdict_mask, each move tried in a new MDP that first takes
-    those moves, without the Gymnasium environment's observation around it (a third of the time)."""
+    those moves, without the Gymnasium environment's observation around it (40 % of the time)."""
     out = np.zeros(len(holds), bool)
     for i, hold in enumerate(holds):
         trial = crux.ClimbMdp(wall, config=config, max_steps=None)
@@ -110,9 +113,13 @@ def label(policy, wall_seeds, random_share, seed, progress=None):
         if progress:
             progress(wall_seed, len(reached))
     if not parts["wall"]:  # no wall whose start the climber can take
-        return {"rows": np.zeros((0, ROW_SIZE), np.float32), "reached": np.zeros(0, bool),
-                "chosen": np.zeros(0, bool), "wall": np.zeros(0, np.int64)}
+        return no_labels()
     return {key: np.concatenate(value) for key, value in parts.items()}
+
+
+def no_labels():
+    return {"rows": np.zeros((0, ROW_SIZE), np.float32), "reached": np.zeros(0, bool), "chosen": np.zeros(0, bool),
+            "wall": np.zeros(0, np.int64)}
 
 
 # --- the classifier ----------------------------------------------------------------------------
@@ -214,17 +221,7 @@ def load_head(path):
                          float(record["max_span"]))
         if head.mean.shape != (ROW_SIZE,) or head.scale.shape != (ROW_SIZE,) or not (head.scale > 0).all():
             raise ValueError(f"input_mean and input_scale must be {ROW_SIZE} numbers, the scales positive")
-        convolutions = [layer for layer in head.net if isinstance(layer, torch.nn.Conv1d)]
-        if len(convolutions) != len(record["layers"]):
-            raise ValueError("the wrong number of layers")
-        for convolution, layer in zip(convolutions, record["layers"]):
-            weight = torch.tensor(layer["weight"], dtype=torch.float32)[:, :, None]
-            bias = torch.tensor(layer["bias"], dtype=torch.float32)
-            if weight.shape != convolution.weight.shape or bias.shape != convolution.bias.shape:
-                raise ValueError(f"a layer of shape {tuple(weight.shape[:2])} where "
-                                 f"{tuple(convolution.weight.shape[:2])} belongs")
-            convolution.weight.data.copy_(weight)
-            convolution.bias.data.copy_(bias)
+        baseline.load_layers(head.net, record["layers"])
     except (KeyError, TypeError, IndexError, ValueError) as error:
         raise ValueError(f"{path}: not a reach head ({error})") from None
     return head, record
@@ -241,38 +238,65 @@ def command_label(args):
             print(f"wall {wall_seed}: {moves} moves", file=sys.stderr, flush=True)
 
     labels = label(policy, args.wall_seeds, args.random_share, args.seed, progress)
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    partial = args.out.with_name(args.out.name + ".partial.npz")
-    np.savez_compressed(partial, **labels, policy=str(args.policy), random_share=args.random_share, seed=args.seed)
-    partial.replace(args.out)
+    # Through a file of this process's own, renamed over the output: never a half-written file.
+    partial = args.out.with_name(f"{args.out.name}.{os.getpid()}.partial.npz")
+    try:
+        args.out.parent.mkdir(parents=True, exist_ok=True)
+        np.savez_compressed(partial, **labels, policy=str(args.policy), random_share=args.random_share,
+                            seed=args.seed)
+        partial.replace(args.out)
+    except OSError as error:
+        fail("--out", f"{args.out}: cannot write it ({error.strerror})")
     walls = len(np.unique(labels["wall"]))
     print(json.dumps({"labels": str(args.out), "walls": walls, "skipped_walls": len(args.wall_seeds) - walls,
                       "moves": int(len(labels["reached"])),
                       "reaching_share": float(labels["reached"].mean()) if len(labels["reached"]) else None}))
 
 
+def fail(argument, problem):
+    """Bad input: one line naming the argument, exit code 2."""
+    print(f"reach_estimate.py: {argument}: {problem}", file=sys.stderr)
+    sys.exit(2)
+
+
+LABEL_KEYS = ("rows", "reached", "chosen", "wall", "policy")
+
+
 def read_labels(paths):
-    """The label files' arrays, concatenated; exit 2 with one line on a file that is not one."""
+    """The label files' arrays, concatenated, and the policy that labelled them; exit 2 with
+    one line on a file that is not one, or on files of different policies."""
     parts = []
     for path in paths:
         try:
-            with np.load(path) as data:
-                parts.append({key: data[key] for key in ("rows", "reached", "chosen", "wall")})
-        except (OSError, ValueError, KeyError) as error:
-            print(f"reach_estimate.py: --labels: {path}: not a label file ({error})", file=sys.stderr)
-            sys.exit(2)
-        if parts[-1]["rows"].ndim != 2 or parts[-1]["rows"].shape[1] != ROW_SIZE:
-            print(f"reach_estimate.py: --labels: {path}: rows of {parts[-1]['rows'].shape[1:]} numbers, "
-                  f"not {ROW_SIZE}", file=sys.stderr)
-            sys.exit(2)
-    return {key: np.concatenate([part[key] for part in parts]) for key in parts[0]}
+            with open(path, "rb") as file, np.load(file) as data:
+                parts.append({key: data[key] for key in LABEL_KEYS})
+        except (OSError, ValueError, KeyError, TypeError, zipfile.BadZipFile) as error:
+            fail("--labels", f"{path}: not a label file ({error or type(error).__name__})")
+        rows, count = parts[-1]["rows"], len(parts[-1]["reached"])
+        if rows.ndim != 2 or rows.shape[1] != ROW_SIZE:
+            fail("--labels", f"{path}: rows of {rows.shape[1:]} numbers, not {ROW_SIZE}")
+        if not len(rows) == count == len(parts[-1]["chosen"]) == len(parts[-1]["wall"]):
+            fail("--labels", f"{path}: its arrays differ in length")
+    policies = {str(part["policy"]) for part in parts}
+    if len(policies) > 1:
+        fail("--labels", f"files of different policies ({', '.join(sorted(policies))})")
+    return {key: np.concatenate([part[key] for part in parts]) for key in LABEL_KEYS[:-1]}, policies.pop()
 
 
 def command_fit(args):
-    labels = read_labels(args.labels)
+    labels, labelled_by = read_labels(args.labels)
     walls = np.unique(labels["wall"])
-    held_out_walls = walls[len(walls) - max(1, round(len(walls) * args.held_out_share)):]
+    held_out_count = max(1, round(len(walls) * args.held_out_share))
+    if held_out_count >= len(walls):
+        fail("--held-out-share", f"leaves no wall to train on (the labels hold {len(walls)} walls)")
+    held_out_walls = walls[len(walls) - held_out_count:]
     test = np.isin(labels["wall"], held_out_walls)
+    try:  # found before the fit, not after it
+        args.out.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        fail("--out", f"{args.out}: cannot write it ({error.strerror})")
+    if not os.access(args.out.parent, os.W_OK):
+        fail("--out", f"{args.out}: cannot write in its folder")
 
     def progress(epoch, loss):
         print(json.dumps({"epoch": epoch, "last_loss": loss}), file=sys.stderr, flush=True)
@@ -280,7 +304,8 @@ def command_fit(args):
     head = fit_head(labels["rows"][~test], labels["reached"][~test], args.hidden, args.epochs, args.seed,
                     baseline.configured_max_span(), threads=args.threads, progress=progress)
     training = {"command": " ".join(["examples/python/reach_estimate.py"] + [shlex.quote(a) for a in args.argv]),
-                "seed": args.seed, "walls": int(len(walls)), "training_moves": int((~test).sum()),
+                "seed": args.seed, "labelled_by": labelled_by, "walls": int(len(walls)),
+                "training_moves": int((~test).sum()),
                 "held_out_walls": [int(held_out_walls[0]), int(held_out_walls[-1])],
                 "held_out": report(head, labels["rows"][test], labels["reached"][test], labels["chosen"][test])}
     save_head(head, args.out, training)
@@ -292,12 +317,10 @@ def command_evaluate(args):
     try:
         head, _ = load_head(args.head)
     except ValueError as error:
-        print(f"reach_estimate.py: --head: {error}", file=sys.stderr)
-        sys.exit(2)
+        fail("--head", error)
     if abs(head.max_span - policy.max_span) > 1e-9:
-        print(f"reach_estimate.py: --head: {args.head}: fitted with filter.max_span = {head.max_span} m, "
-              f"and the policy reads {policy.max_span} m", file=sys.stderr)
-        sys.exit(2)
+        fail("--head", f"{args.head}: fitted with filter.max_span = {head.max_span} m, and the policy reads "
+             f"{policy.max_span} m")
     plans = baseline.plan_lengths(args.wall_seeds)
     results = []
     for threshold in args.veto:
@@ -306,8 +329,10 @@ def command_evaluate(args):
         result["failed_moves"] = sum(wall["failed_moves"] for wall in result["walls"])
         results.append(result)
         if not args.json:
+            ratio = result["mean_length_ratio"]
             print(f"veto {threshold}: {result['climbs']} climbs, {result['finished']:.1%} finished, "
-                  f"{result['mean_length_ratio']:.3f} times the plan, {result['failed_moves']} failed moves")
+                  f"{'no' if ratio is None else format(ratio, '.3f')} times the plan, "
+                  f"{result['failed_moves']} failed moves")
     if args.json:
         print(json.dumps(results if len(results) > 1 else results[0], indent=1))
 
@@ -322,30 +347,34 @@ def probability(text):
 def parser():
     top = OneLineParser(prog="reach_estimate.py", description=__doc__.split("\n\n")[0])
     commands = top.add_subparsers(dest="command_name", required=True, parser_class=OneLineParser)
-    b = commands.add_parser("label", help="Labels every offered move of the policy's climbs with the climb's verdict")
-    b.add_argument("--policy", type=pathlib.Path, required=True, help="the policy file whose climbs are labelled")
-    b.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
-    b.add_argument("--random-share", type=baseline.unit_interval, default=0.2,
+    labelling = commands.add_parser("label",
+                                    help="Labels every offered move of the policy's climbs with the climb's verdict")
+    labelling.add_argument("--policy", type=pathlib.Path, required=True,
+                           help="the policy file whose climbs are labelled")
+    labelling.add_argument("--wall-seeds", type=wall_seed_range, required=True,
+                           help="random walls A to B inclusive, as A:B")
+    labelling.add_argument("--random-share", type=baseline.unit_interval, default=0.2,
                    help="the share of the climb's moves chosen uniformly at random instead of greedily")
-    b.add_argument("--seed", type=int, default=1, help="the random moves' seed")
-    b.add_argument("--out", type=pathlib.Path, required=True, help="the .npz file to write")
-    b.add_argument("--progress", action="store_true", help="a line per wall on stderr")
-    f = commands.add_parser("fit", help="Trains the reach head on label files and reports it on held-out walls")
-    f.add_argument("--labels", type=pathlib.Path, nargs="+", required=True, help="files label wrote")
-    f.add_argument("--out", type=pathlib.Path, required=True, help="the reach head to write (JSON)")
-    f.add_argument("--epochs", type=positive, default=24, help="passes over the training moves")
-    f.add_argument("--hidden", type=positive, default=256, help="units in each of the two hidden layers")
-    f.add_argument("--held-out-share", type=baseline.unit_interval, default=0.1,
+    labelling.add_argument("--seed", type=int, default=1, help="the random moves' seed")
+    labelling.add_argument("--out", type=pathlib.Path, required=True, help="the .npz file to write")
+    labelling.add_argument("--progress", action="store_true", help="a line per wall on stderr")
+    fitting = commands.add_parser("fit", help="Trains the reach head on label files and reports it on held-out walls")
+    fitting.add_argument("--labels", type=pathlib.Path, nargs="+", required=True, help="files label wrote")
+    fitting.add_argument("--out", type=pathlib.Path, required=True, help="the reach head to write (JSON)")
+    fitting.add_argument("--epochs", type=positive, default=24, help="passes over the training moves")
+    fitting.add_argument("--hidden", type=positive, default=256, help="units in each of the two hidden layers")
+    fitting.add_argument("--held-out-share", type=baseline.unit_interval, default=0.1,
                    help="the share of the walls (the last by seed) kept out of training and reported on")
-    f.add_argument("--seed", type=int, default=1, help="the network's and the minibatches' seed")
-    f.add_argument("--threads", type=positive, default=1, help="torch's CPU threads (1: deterministic)")
-    e = commands.add_parser("evaluate", help="The policy's greedy climbs with the head's veto")
-    e.add_argument("--policy", type=pathlib.Path, required=True, help="a policy file policy_baseline.py wrote")
-    e.add_argument("--head", type=pathlib.Path, required=True, help="a reach head fit wrote")
-    e.add_argument("--veto", type=probability, nargs="+", required=True,
+    fitting.add_argument("--seed", type=int, default=1, help="the network's and the minibatches' seed")
+    fitting.add_argument("--threads", type=positive, default=1, help="torch's CPU threads (1: deterministic)")
+    evaluating = commands.add_parser("evaluate", help="The policy's greedy climbs with the head's veto")
+    evaluating.add_argument("--policy", type=pathlib.Path, required=True, help="a policy file policy_baseline.py wrote")
+    evaluating.add_argument("--head", type=pathlib.Path, required=True, help="a reach head fit wrote")
+    evaluating.add_argument("--veto", type=probability, nargs="+", required=True,
                    help="thresholds P: the climbs choose among the moves estimated to reach with at least P")
-    e.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
-    e.add_argument("--json", action="store_true", help="print the result as JSON")
+    evaluating.add_argument("--wall-seeds", type=wall_seed_range, required=True,
+                            help="random walls A to B inclusive, as A:B")
+    evaluating.add_argument("--json", action="store_true", help="print the result as JSON")
     return top
 
 

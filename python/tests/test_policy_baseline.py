@@ -775,7 +775,7 @@ def test_baselines_reach_pilots_quote_their_record():
     assert (f"where it climbs in {plain['mean_length_ratio']:.2f} times the plan alone and {noisy[1.0]:.2f} with the "
             f"oracle) gives {min(middle):.2f} to {max(middle):.2f} at q = 0.95 to 0.98, {noisy[0.9]:.2f} at 0.9 and "
             f"{noisy[0.85]:.2f} at 0.85") in flat
-    assert f"the classifiers above are right on {fitted['accuracy']:.0%}".replace("%", " %") in flat
+    assert f"the pilots' classifiers were right on {fitted['accuracy']:.0%}".replace("%", " %") in flat
     twice = fitted["twice_the_walls"]
     assert twice["moves"] > 1.9 * labels["moves"]
     accuracies = [fitted["accuracy_with_half_the_walls"], fitted["accuracy"], twice["accuracy"]]

@@ -189,10 +189,44 @@ def test_a_file_that_is_not_labels_is_one_line_and_exit_code_2(tmp_path, capsys)
     assert code == 2 and out.err.count("\n") == 1 and out.err.startswith(f"reach_estimate.py: --labels: {bad}: ")
     assert not (tmp_path / "head.json").exists()
     np.savez(tmp_path / "narrow.npz", rows=np.zeros((2, 3)), reached=np.zeros(2, bool), chosen=np.zeros(2, bool),
-             wall=np.zeros(2, np.int64))
+             wall=np.zeros(2, np.int64), policy="p.json")
     code, out = run("fit", "--labels", str(tmp_path / "narrow.npz"), "--out", str(tmp_path / "head.json"),
                     capsys=capsys)
     assert code == 2 and out.err.count("\n") == 1 and "rows of (3,) numbers, not 66" in out.err
+
+
+def labels_file(path, walls, policy="p.json", rows=None):
+    count = len(walls)
+    np.savez(path, rows=np.zeros((count, estimate.ROW_SIZE), np.float32) if rows is None else rows,
+             reached=np.arange(count) % 2 == 0, chosen=np.ones(count, bool), wall=np.asarray(walls, np.int64),
+             policy=policy)
+    return path
+
+
+@pytest.mark.parametrize("make, argument, problem", [
+    (lambda d: np.save(d / "l.npy", np.zeros(3)) or d / "l.npy", "--labels", "not a label file"),
+    (lambda d: (d / "l.npz").write_bytes(b"PK\x03\x04 truncated") or d / "l.npz", "--labels", "not a label file"),
+    (lambda d: labels_file(d / "l.npz", [1, 2], rows=np.zeros((3, 66), np.float32)), "--labels",
+     "its arrays differ in length"),
+    (lambda d: labels_file(d / "l.npz", [1]), "--held-out-share", "leaves no wall to train on"),
+])
+def test_labels_that_cannot_be_fitted_are_one_line_and_exit_code_2(tmp_path, capsys, make, argument, problem):
+    path = make(tmp_path)
+    code, out = run("fit", "--labels", str(path), "--out", str(tmp_path / "head.json"), capsys=capsys)
+    assert code == 2 and out.err.count("\n") == 1 and out.err.startswith(f"reach_estimate.py: {argument}: ")
+    assert problem in out.err, out.err
+    assert not (tmp_path / "head.json").exists()
+
+
+def test_label_files_of_two_policies_are_refused(tmp_path, capsys):
+    files = [labels_file(tmp_path / f"{name}.npz", [1, 2], policy=name) for name in ("a.json", "b.json")]
+    code, out = run("fit", "--labels", *map(str, files), "--out", str(tmp_path / "head.json"), capsys=capsys)
+    assert code == 2 and "files of different policies (a.json, b.json)" in out.err
+
+
+def test_evaluate_refuses_the_oracle_and_a_veto_together(policy):
+    with pytest.raises(ValueError, match="not both"):
+        baseline.evaluate(policy, [20000], oracle=True, veto=lambda state, slots: np.ones(slots.shape[:2], bool))
 
 
 def test_label_and_fit_write_files_fit_and_evaluate_read(tmp_path, capsys):
@@ -208,7 +242,14 @@ def test_label_and_fit_write_files_fit_and_evaluate_read(tmp_path, capsys):
     fitted = json.loads(capsys.readouterr().out)
     assert fitted["held_out_walls"] == [3007400, 3007400] and fitted["walls"] == 3
     assert fitted["held_out"]["moves"] + fitted["training_moves"] == written["moves"]
-    assert estimate.load_head(head)[1]["training"]["command"].startswith("examples/python/reach_estimate.py fit")
+    training = estimate.load_head(head)[1]["training"]
+    assert training["command"].startswith("examples/python/reach_estimate.py fit")
+    assert training["labelled_by"] == str(SHIPPED)
+    estimate.main(["evaluate", "--policy", str(SHIPPED), "--head", str(head), "--veto", "0.3", "0.6",
+                   "--wall-seeds", "20000:20001", "--json"])
+    results = json.loads(capsys.readouterr().out)
+    assert [r["veto"] for r in results] == [0.3, 0.6] and all(r["climbs"] == 2 for r in results)
+    assert all(r["failed_moves"] == sum(w["failed_moves"] for w in r["walls"]) for r in results)
 
 
 SEARCH = REPOSITORY / "models" / "policies" / "search"
