@@ -348,3 +348,43 @@ def test_baselines_reach_estimate_quotes_its_record():
         pilots["longer_training"]["veto_on_validation_walls_10000_10299"], first, both)]
     assert (", ".join(f"{b:.2f}" for b in best[:-1]) + f" and {best[-1]:.2f} on the validation walls at "
             + ", ".join(f"{a:.1%}" for a in trend[:-1]) + f" and {trend[-1]:.1%}").replace("%", " %") in flat
+
+
+def test_baselines_quotes_the_1500_held_out_walls():
+    from wall_statistics import interval, paired
+    record = json.loads((SEARCH / "reach_estimate.json").read_text())
+    flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
+    wide = record["held_out_walls_20000_21499"]
+    walls = wide["walls"]
+    assert [w["wall_seed"] for w in walls] == list(range(20000, 21500))
+    assert [{"wall_seed": w["wall_seed"], "plan_length": w["plan_length"], **w["veto"]} for w in walls[:300]] \
+        == record["held_out_walls_20000_20299"]["evaluation"]["walls"]
+
+    def ratios(method):
+        return [w[method]["length"] / w["plan_length"] if w[method]["finished"] and w["plan_length"] else None
+                for w in walls]
+
+    def finished(method):
+        return [float(w[method]["finished"]) for w in walls]
+
+    mine = ratios("veto")
+    assert interval(mine) == wide["ratio"] and paired(mine, [1.5] * 1500) == wide["ratio_minus_1_5"]
+    assert paired(mine, ratios("alone")) == wide["ratio_minus_alone"]
+    assert paired(finished("veto"), finished("alone")) == wide["finished_minus_alone"]
+
+    def three(c, sign=1):
+        low, high = sorted((sign * c["low"], sign * c["high"]))
+        return f"{sign * c['mean']:.3f} [{low:.3f}, {high:.3f}]"
+
+    gap, shorter, fewer = wide["ratio_minus_1_5"], wide["ratio_minus_alone"], wide["finished_minus_alone"]
+    assert (f"the veto's climbs take {three(wide['ratio'])} times the plan: {three(gap)} against 1.5 "
+            f"(p = {gap['p']:.2f}). That is {three(shorter, -1)} shorter than the policy alone "
+            f"({wide['ratio_alone']['mean']:.3f}, p = {shorter['p']:.1e}), with {wide['failed_moves']['veto']} failed "
+            f"moves against {wide['failed_moves']['alone']}") in flat
+    share = wide["finished"]
+    assert (f"finish {share['mean'] * 100:.1f} % [{share['low'] * 100:.1f}, {share['high'] * 100:.1f}] of the "
+            f"climbs against {wide['finished_alone']['mean'] * 100:.1f} % alone, {-fewer['mean'] * 100:.1f} "
+            f"[{-fewer['high'] * 100:.1f}, {-fewer['low'] * 100:.1f}] points fewer (p = {fewer['p']:.1g})") in flat
+    assert (f"the interval [{wide['ratio']['low']:.3f}, {wide['ratio']['high']:.3f}] holds 1.5 (p = "
+            f"{gap['p']:.2f})") in flat
+    assert f"nor on 1500 held-out walls ({three(wide['ratio'])}, p = {gap['p']:.2f};" in flat
