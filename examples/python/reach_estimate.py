@@ -12,8 +12,10 @@ what the policy sees, and the policy's greedy climbs with the moves it rejects v
 label climbs each random wall once with the policy, greedy but for a share of uniformly
 random moves (so that the labels also cover moves the policy would not take), and labels
 every offered move of every state visited with the climb's own verdict: each is tried in a
-copy of the climb (policy_baseline.verdict_mask, as evaluate --oracle verdict does). A row
-is what the policy's slot network reads, [state (55), slot (11)].
+new MDP that first takes the climb's moves (policy_baseline.verdict_mask's verdicts, which
+evaluate --oracle verdict uses). A row is what the policy's slot network reads, [state
+(55), slot (11)]; the file also names the policy. Walls whose start cannot be taken are
+skipped.
 
 fit trains a classifier of the same shape as the slot network on all walls but the last
 tenth, which it reports on (accuracy, AUC, and at the policy's own greedy choice), and
