@@ -219,19 +219,27 @@ def write_whole(path, text):
     os.replace(temporary, path)
 
 
-def load_policy(path):
-    """The policy of a file train wrote; ValueError naming the file on anything else."""
+def read_record(path, record_format, version, file_kind):
+    """The JSON record of a weights file of this format, version and the reach observation;
+    ValueError naming the file (a file_kind: "policy file", "reach head") on anything else."""
+    kind = file_kind.removesuffix(" file")
     try:
         record = json.loads(pathlib.Path(path).read_text())
     except OSError as error:
-        raise ValueError(f"{path}: cannot read the policy file ({error.strerror})") from None
+        raise ValueError(f"{path}: cannot read the {file_kind} ({error.strerror})") from None
     except (json.JSONDecodeError, UnicodeDecodeError) as error:
-        raise ValueError(f"{path}: not a policy file (not JSON: {error})") from None
-    if not isinstance(record, dict) or record.get("format") != POLICY_FORMAT:
-        raise ValueError(f"{path}: not a policy file (format is not {POLICY_FORMAT!r})")
-    if record.get("version") != POLICY_VERSION or record.get("observation") != OBSERVATION:
-        raise ValueError(f"{path}: a policy for observation {record.get('observation')!r} version "
-                         f"{record.get('version')!r}; this evaluator takes {OBSERVATION!r} version {POLICY_VERSION}")
+        raise ValueError(f"{path}: not a {file_kind} (not JSON: {error})") from None
+    if not isinstance(record, dict) or record.get("format") != record_format:
+        raise ValueError(f"{path}: not a {file_kind} (format is not {record_format!r})")
+    if record.get("version") != version or record.get("observation") != OBSERVATION:
+        raise ValueError(f"{path}: a {kind} for observation {record.get('observation')!r} version "
+                         f"{record.get('version')!r}; this takes {OBSERVATION!r} version {version}")
+    return record
+
+
+def load_policy(path):
+    """The policy of a file train wrote; ValueError naming the file on anything else."""
+    record = read_record(path, POLICY_FORMAT, POLICY_VERSION, "policy file")
     try:
         hidden = len(record["slot_layers"][0]["bias"])
         policy = SlotPolicy(hidden, float(record["max_span"]))

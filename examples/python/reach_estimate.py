@@ -88,17 +88,18 @@ def verdicts(wall, config, holds_taken, holds):
     verdicts of policy_baseline.verdict_mask, each move tried in a new MDP that first takes
     those moves, without the Gymnasium environment's observation around it (40 % of the time)."""
     out = np.zeros(len(holds), bool)
+    route = np.asarray(holds_taken, dtype=np.int64)
     for i, hold in enumerate(holds):
         trial = crux.ClimbMdp(wall, config=config, max_steps=None)
         trial.reset()
-        trial.replay_actions(np.asarray(holds_taken, dtype=np.int64))
+        trial.replay_actions(route)
         out[i] = trial.step(int(hold))[4]["reached"]
     return out
 
 
 def label(policy, wall_seeds, random_share, seed, progress=None):
     """label_wall over the walls (each with its own stream from seed and the wall's seed),
-    as arrays with each row's wall seed and state number within its wall."""
+    as arrays (rows, reached, chosen, and each row's wall seed)."""
     config = baseline.climbing_config("kinematic")
     parts = {"rows": [], "reached": [], "chosen": [], "wall": []}
     for wall_seed in wall_seeds:
@@ -207,17 +208,7 @@ def save_head(head, path, training):
 
 def load_head(path):
     """The ReachHead of a file fit wrote; ValueError naming the file on anything else."""
-    try:
-        record = json.loads(pathlib.Path(path).read_text())
-    except OSError as error:
-        raise ValueError(f"{path}: cannot read the reach head ({error.strerror})") from None
-    except (json.JSONDecodeError, UnicodeDecodeError) as error:
-        raise ValueError(f"{path}: not a reach head (not JSON: {error})") from None
-    if not isinstance(record, dict) or record.get("format") != HEAD_FORMAT:
-        raise ValueError(f"{path}: not a reach head (format is not {HEAD_FORMAT!r})")
-    if record.get("version") != HEAD_VERSION or record.get("observation") != baseline.OBSERVATION:
-        raise ValueError(f"{path}: a reach head for observation {record.get('observation')!r} version "
-                         f"{record.get('version')!r}; this takes {baseline.OBSERVATION!r} version {HEAD_VERSION}")
+    record = baseline.read_record(path, HEAD_FORMAT, HEAD_VERSION, "reach head")
     try:
         head = ReachHead(len(record["layers"][0]["bias"]), record["input_mean"], record["input_scale"],
                          float(record["max_span"]))
