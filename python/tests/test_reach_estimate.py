@@ -341,11 +341,12 @@ def test_baselines_reach_estimate_quotes_its_record():
     pilots = pilot_record["classifier"]
     trend = [pilots["accuracy"], pilots["twice_the_walls"]["accuracy"],
              pilots["longer_training"]["accuracy_24_epochs_6000_walls"], fits["14k_walls"]["held_out"]["accuracy"],
-             fits["28k_walls"]["held_out"]["accuracy"]]
+             fits["28k_walls"]["held_out"]["accuracy"], fits["56k_walls"]["held_out"]["accuracy"]]
     best = [min(row["mean_length_ratio"] for row in rows) for rows in (
         pilot_record["veto_on_validation_walls_10000_10299"],
         pilots["twice_the_walls"]["veto_on_validation_walls_10000_10299"],
-        pilots["longer_training"]["veto_on_validation_walls_10000_10299"], first, both)]
+        pilots["longer_training"]["veto_on_validation_walls_10000_10299"], first, both,
+        record["veto_on_validation_walls_10000_10299"]["56k_walls"])]
     assert (", ".join(f"{b:.2f}" for b in best[:-1]) + f" and {best[-1]:.2f} on the validation walls at "
             + ", ".join(f"{a:.1%}" for a in trend[:-1]) + f" and {trend[-1]:.1%}").replace("%", " %") in flat
 
@@ -388,3 +389,84 @@ def test_baselines_quotes_the_1500_held_out_walls():
     assert (f"the interval [{wide['ratio']['low']:.3f}, {wide['ratio']['high']:.3f}] holds 1.5 (p = "
             f"{gap['p']:.2f})") in flat
     assert f"nor on 1500 held-out walls ({three(wide['ratio'])}, p = {gap['p']:.2f};" in flat
+
+
+def test_baselines_quotes_the_sharper_head():
+    from wall_statistics import interval, paired
+    record = json.loads((SEARCH / "reach_estimate.json").read_text())
+    flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
+    more, fit = record["labels_beyond"], record["fits"]["56k_walls"]
+    assert sum(run["moves"] for run in more["runs"]) == more["moves"] and len(more["runs"]) == 8
+    assert fit["walls"] == record["labels"]["walls"] + more["walls"]
+    assert all(f"build/labels-{run['wall_seeds'].split(':')[0]}.npz" in fit["command"]
+               for run in record["labels"]["runs"] + more["runs"])
+    assert (f"({more['walls']:,} walls, {more['skipped_walls']} skipped; {more['moves']:,} moves) and a fit on all "
+            f"{fit['walls']:,} walls ({fit['training_moves']:,} training moves, 16 epochs") in flat
+    held, choice = fit["held_out"], fit["held_out"]["at_the_policy_choice"]
+    assert (f"right on {held['accuracy']:.1%} of the held-out tenth's moves (AUC {held['auc']:.3f}), and on "
+            f"{choice['accuracy']:.1%} of the policy's own choices (it passes {choice['failing_passed']} and rejects "
+            f"{choice['reaching_rejected']}").replace("%", " %") in flat
+    rows = record["veto_on_validation_walls_10000_10299"]["56k_walls"]
+    failed = sorted(row["failed_moves"] for row in rows)
+    assert f"Its veto gives {listed(rows)} at p = 0.2, 0.3, 0.5 and 0.7" in flat
+    assert f"failing {failed[0]} to {failed[-1]} moves: fewer failures, no shorter climbs" in flat
+    sharper = record["sharper_head_held_out_walls_20000_21499"]
+    chosen = min((row for row in rows if row["finished"] >= 0.95), key=lambda row: row["mean_length_ratio"])
+    assert sharper["veto"] == chosen["veto"] and f"The same rule chose p = {chosen['veto']}." in flat
+    assert all(f"--veto {chosen['veto']}" in command for command in sharper["commands"])
+    wide = record["held_out_walls_20000_21499"]
+    assert [w["wall_seed"] for w in sharper["walls"]] == [w["wall_seed"] for w in wide["walls"]]
+
+    def ratios(climbs):
+        return [c["length"] / w["plan_length"] if c["finished"] and w["plan_length"] else None
+                for c, w in zip(climbs, wide["walls"])]
+
+    def finished(climbs):
+        return [float(c["finished"]) for c in climbs]
+
+    first, alone = [w["veto"] for w in wide["walls"]], [w["alone"] for w in wide["walls"]]
+    mine = ratios(sharper["walls"])
+    assert interval(mine) == sharper["ratio"] and paired(mine, [1.5] * 1500) == sharper["ratio_minus_1_5"]
+    assert paired(mine, ratios(first)) == sharper["ratio_minus_first_head"]
+    assert paired(mine, ratios(alone)) == sharper["ratio_minus_alone"]
+    assert paired(finished(sharper["walls"]), finished(first)) == sharper["finished_minus_first_head"]
+    assert paired(finished(sharper["walls"]), finished(alone)) == sharper["finished_minus_alone"]
+    assert sum(w["failed_moves"] for w in sharper["walls"]) == sharper["failed_moves"]
+
+    def three(c):
+        return f"{c['mean']:.3f} [{c['low']:.3f}, {c['high']:.3f}]"
+
+    gap, versus = sharper["ratio_minus_1_5"], sharper["ratio_minus_first_head"]
+    assert (f"its climbs take {three(sharper['ratio'])} times the plan: {three(gap)} against 1.5 (p = {gap['p']:.2f}, "
+            f"to be read at {sharper['alpha']}") in flat and gap["p"] > sharper["alpha"]
+    assert f"the same as the first head's ({three(versus)}, p = {versus['p']:.2f})" in flat and versus["p"] > 0.05
+    assert f"They fail {sharper['failed_moves']} moves." in flat
+    assert (f"failed moves ({wide['failed_moves']['veto']} and {sharper['failed_moves']} on the 1500 walls, under one "
+            f"a climb, where the policy alone fails {wide['failed_moves']['alone']})") in flat
+    assert max(wide["failed_moves"]["veto"], sharper["failed_moves"]) < 1500
+    more_finished, versus_alone, share = (sharper["finished_minus_first_head"], sharper["finished_minus_alone"],
+                                          sharper["finished"])
+    points = "{:.1f} [{:.1f}, {:.1f}]"
+    assert (f"finish {share['mean']:.1%} [{share['low'] * 100:.1f}, {share['high'] * 100:.1f}] of the climbs, "
+            + points.format(*(100 * more_finished[k] for k in ("mean", "low", "high")))
+            + f" points more than the first head's (p = {more_finished['p']:.1g}), and not measurably fewer than "
+            f"alone (" + points.format(*(100 * versus_alone[k] for k in ("mean", "low", "high")))
+            + f", p = {versus_alone['p']:.2f})").replace("%", " %") in flat
+    assert versus_alone["p"] > 0.05 and more_finished["p"] < 0.05
+    # Every unfinished climb with a veto runs to the cap.
+    unfinished = [c for c in first if not c["finished"]], [c for c in sharper["walls"] if not c["finished"]]
+    assert all(c["length"] == baseline.CLIMB_CAP for climbs in unfinished for c in climbs)
+    assert (f"{len(unfinished[0])} with the first head and {len(unfinished[1])} with this one, ends at the cap of "
+            f"{baseline.CLIMB_CAP} actions") in flat
+    assert f"a head fitted on twice the labels climbs no shorter ({three(sharper['ratio'])})" in flat
+    assert f"last two heads climb alike ({wide['ratio']['mean']:.3f} and {sharper['ratio']['mean']:.3f})" in flat
+    # Finished climbs that an interval clear of 1.5 needs at this mean and spread (a normal approximation).
+    from scipy import stats
+    spread = (gap["high"] - gap["low"]) / 2 / stats.t.ppf(0.975, gap["n"] - 1) * gap["n"] ** 0.5
+    needed = [round((stats.norm.ppf(1 - alpha / 2) * spread / gap["mean"]) ** 2, -2) for alpha in (0.05, 0.025)]
+    assert (f"about {needed[0]:.0f} finished climbs would give an interval clear of 1.5 at 0.05, and about "
+            f"{needed[1]:.0f} at 0.025") in flat
+    assert f"about {needed[0]:.0f} finished climbs at that mean would settle it" in flat
+    pilot = record["pilot_veto_standing_down_on_a_seen_stance"]
+    assert (f"finished {pilot['finished']:.0%} of the climbs but took {pilot['mean_length_ratio']:.2f} times the plan "
+            f"and failed {pilot['failed_moves']} moves").replace("%", " %") in flat
