@@ -373,10 +373,6 @@ def test_baselines_quotes_the_1500_held_out_walls():
     assert paired(mine, ratios("alone")) == wide["ratio_minus_alone"]
     assert paired(finished("veto"), finished("alone")) == wide["finished_minus_alone"]
 
-    def three(c, sign=1):
-        low, high = sorted((sign * c["low"], sign * c["high"]))
-        return f"{sign * c['mean']:.3f} [{low:.3f}, {high:.3f}]"
-
     gap, shorter, fewer = wide["ratio_minus_1_5"], wide["ratio_minus_alone"], wide["finished_minus_alone"]
     assert (f"the veto's climbs take {three(wide['ratio'])} times the plan: {three(gap)} against 1.5 "
             f"(p = {gap['p']:.2f}). That is {three(shorter, -1)} shorter than the policy alone "
@@ -386,33 +382,68 @@ def test_baselines_quotes_the_1500_held_out_walls():
     assert (f"finish {share['mean'] * 100:.1f} % [{share['low'] * 100:.1f}, {share['high'] * 100:.1f}] of the "
             f"climbs against {wide['finished_alone']['mean'] * 100:.1f} % alone, {-fewer['mean'] * 100:.1f} "
             f"[{-fewer['high'] * 100:.1f}, {-fewer['low'] * 100:.1f}] points fewer (p = {fewer['p']:.1g})") in flat
-    assert (f"the interval [{wide['ratio']['low']:.3f}, {wide['ratio']['high']:.3f}] holds 1.5 (p = "
-            f"{gap['p']:.2f})") in flat
     assert f"nor on 1500 held-out walls ({three(wide['ratio'])}, p = {gap['p']:.2f};" in flat
+
+
+def quoted_points(c):
+    """A paired difference of shares in points, as the docs write it: 0.9 [0.4, 1.4]."""
+    return "{:.1f} [{:.1f}, {:.1f}]".format(*(100 * c[key] for key in ("mean", "low", "high")))
+
+
+def three(c, sign=1):
+    """An interval to three decimals, as the docs write it; sign -1 turns a difference round."""
+    low, high = sorted((sign * c["low"], sign * c["high"]))
+    return f"{sign * c['mean']:.3f} [{low:.3f}, {high:.3f}]"
+
+
+def climbs_needed(gap, alpha):
+    """Finished climbs whose interval at alpha clears 1.5 at even odds, at gap's mean and
+    spread (a normal approximation), to the hundred."""
+    from scipy import stats
+    spread = (gap["high"] - gap["low"]) / 2 / stats.t.ppf(0.975, gap["n"] - 1) * gap["n"] ** 0.5
+    return round((stats.norm.ppf(1 - alpha / 2) * spread / gap["mean"]) ** 2, -2)
 
 
 def test_baselines_quotes_the_sharper_head():
     from wall_statistics import interval, paired
     record = json.loads((SEARCH / "reach_estimate.json").read_text())
     flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
-    more, fit = record["labels_beyond"], record["fits"]["56k_walls"]
+    more, fit, first_fit = record["labels_beyond"], record["fits"]["56k_walls"], record["fits"]["28k_walls"]
     assert sum(run["moves"] for run in more["runs"]) == more["moves"] and len(more["runs"]) == 8
     assert fit["walls"] == record["labels"]["walls"] + more["walls"]
-    assert all(f"build/labels-{run['wall_seeds'].split(':')[0]}.npz" in fit["command"]
-               for run in record["labels"]["runs"] + more["runs"])
-    assert (f"({more['walls']:,} walls, {more['skipped_walls']} skipped; {more['moves']:,} moves) and a fit on all "
-            f"{fit['walls']:,} walls ({fit['training_moves']:,} training moves, 16 epochs") in flat
+    firsts = [[run["wall_seeds"].split(":")[0] for run in runs] for runs in (record["labels"]["runs"], more["runs"])]
+    assert all(f"build/labels-{first}.npz" in fit["command"] for first in firsts[0] + firsts[1])
+    assert f'first_eight="{" ".join(firsts[0])}"' in flat and f'next_eight="{" ".join(firsts[1])}"' in flat
+    epochs = [command.split("--epochs ")[1].split()[0] for command in (fit["command"], first_fit["command"])]
+    assert (f"Eight more runs of `label` over seeds {int(firsts[1][0]):,} to {int(firsts[1][-1]) + 3499:,} "
+            f"({more['walls']:,} walls, {more['skipped_walls']} skipped; {more['moves']:,} moves) and a fit on all "
+            f"{fit['walls']:,} walls ({fit['training_moves']:,} training moves, {epochs[0]} epochs where the first "
+            f"head had {epochs[1]};") in flat
     held, choice = fit["held_out"], fit["held_out"]["at_the_policy_choice"]
-    assert (f"right on {held['accuracy']:.1%} of the held-out tenth's moves (AUC {held['auc']:.3f}), and on "
-            f"{choice['accuracy']:.1%} of the policy's own choices (it passes {choice['failing_passed']} and rejects "
-            f"{choice['reaching_rejected']}").replace("%", " %") in flat
+    assert (f"right on {held['accuracy']:.1%} of its held-out tenth's moves (AUC {held['auc']:.3f}), and on "
+            f"{choice['accuracy']:.1%} of the policy's own choices there (it passes {choice['failing_passed']} and "
+            f"rejects {choice['reaching_rejected']}, of twice as many choices as above); that tenth, walls "
+            f"{fit['held_out_walls'][0]:,} to {fit['held_out_walls'][1]:,}, is not the first head's"
+            ).replace("%", " %") in flat
+    assert 1.9 < choice["moves"] / first_fit["held_out"]["at_the_policy_choice"]["moves"] < 2.1
+    assert first_fit["held_out_walls"] != fit["held_out_walls"]
     rows = record["veto_on_validation_walls_10000_10299"]["56k_walls"]
-    failed = sorted(row["failed_moves"] for row in rows)
-    assert f"Its veto gives {listed(rows)} at p = 0.2, 0.3, 0.5 and 0.7" in flat
-    assert f"failing {failed[0]} to {failed[-1]} moves: fewer failures, no shorter climbs" in flat
+    first_rows = record["veto_on_validation_walls_10000_10299"]["28k_walls"]
+    vetoes = [row["veto"] for row in rows]
+    assert vetoes == [row["veto"] for row in first_rows]
+    assert (f"Its veto gives {listed(rows)} at p = {', '.join(map(str, vetoes[:-1]))} and {vetoes[-1]} on the "
+            f"validation walls, failing {', '.join(str(row['failed_moves']) for row in rows[:-1])} and "
+            f"{rows[-1]['failed_moves']} moves where the first head's failed "
+            f"{', '.join(str(row['failed_moves']) for row in first_rows[:-1])} and {first_rows[-1]['failed_moves']}: "
+            f"fewer failures at p = 0.5 and above, more below, and no shorter climbs at any") in flat
+    assert all((row["failed_moves"] < old["failed_moves"]) == (row["veto"] >= 0.5)
+               for row, old in zip(rows, first_rows))
+    assert min(row["mean_length_ratio"] for row in rows) >= min(row["mean_length_ratio"] for row in first_rows)
     sharper = record["sharper_head_held_out_walls_20000_21499"]
     chosen = min((row for row in rows if row["finished"] >= 0.95), key=lambda row: row["mean_length_ratio"])
-    assert sharper["veto"] == chosen["veto"] and f"The same rule chose p = {chosen['veto']}." in flat
+    first_veto = record["held_out_walls_20000_20299"]["veto"]
+    assert sharper["veto"] == chosen["veto"] and (f"The same rule chose p = {chosen['veto']}, where the first head's "
+                                                  f"is {first_veto}") in flat
     assert all(f"--veto {chosen['veto']}" in command for command in sharper["commands"])
     wide = record["held_out_walls_20000_21499"]
     assert [w["wall_seed"] for w in sharper["walls"]] == [w["wall_seed"] for w in wide["walls"]]
@@ -432,41 +463,90 @@ def test_baselines_quotes_the_sharper_head():
     assert paired(finished(sharper["walls"]), finished(first)) == sharper["finished_minus_first_head"]
     assert paired(finished(sharper["walls"]), finished(alone)) == sharper["finished_minus_alone"]
     assert sum(w["failed_moves"] for w in sharper["walls"]) == sharper["failed_moves"]
-
-    def three(c):
-        return f"{c['mean']:.3f} [{c['low']:.3f}, {c['high']:.3f}]"
-
     gap, versus = sharper["ratio_minus_1_5"], sharper["ratio_minus_first_head"]
-    assert (f"its climbs take {three(sharper['ratio'])} times the plan: {three(gap)} against 1.5 (p = {gap['p']:.2f}, "
-            f"to be read at {sharper['alpha']}") in flat and gap["p"] > sharper["alpha"]
-    assert f"the same as the first head's ({three(versus)}, p = {versus['p']:.2f})" in flat and versus["p"] > 0.05
-    assert f"They fail {sharper['failed_moves']} moves." in flat
-    assert (f"failed moves ({wide['failed_moves']['veto']} and {sharper['failed_moves']} on the 1500 walls, under one "
-            f"a climb, where the policy alone fails {wide['failed_moves']['alone']})") in flat
-    assert max(wide["failed_moves"]["veto"], sharper["failed_moves"]) < 1500
+    assert (f"its climbs take {three(sharper['ratio'])} times the plan: {three(gap)} against 1.5 (p = {gap['p']:.2f}), "
+            f"and no shorter than the first head's ({three(versus)}, p = {versus['p']:.2f})") in flat
     more_finished, versus_alone, share = (sharper["finished_minus_first_head"], sharper["finished_minus_alone"],
                                           sharper["finished"])
-    points = "{:.1f} [{:.1f}, {:.1f}]"
-    assert (f"finish {share['mean']:.1%} [{share['low'] * 100:.1f}, {share['high'] * 100:.1f}] of the climbs, "
-            + points.format(*(100 * more_finished[k] for k in ("mean", "low", "high")))
-            + f" points more than the first head's (p = {more_finished['p']:.1g}), and not measurably fewer than "
-            f"alone (" + points.format(*(100 * versus_alone[k] for k in ("mean", "low", "high")))
-            + f", p = {versus_alone['p']:.2f})").replace("%", " %") in flat
+    assert (f"They finish {share['mean']:.1%} [{share['low'] * 100:.1f}, {share['high'] * 100:.1f}] of the climbs, "
+            f"{quoted_points(more_finished)} points more than the first head's veto (p = {more_finished['p']:.1g}), "
+            f"and not measurably fewer than alone ({quoted_points(versus_alone)}, p = {versus_alone['p']:.2f})"
+            ).replace("%", " %") in flat
     assert versus_alone["p"] > 0.05 and more_finished["p"] < 0.05
-    # Every unfinished climb with a veto runs to the cap.
-    unfinished = [c for c in first if not c["finished"]], [c for c in sharper["walls"] if not c["finished"]]
-    assert all(c["length"] == baseline.CLIMB_CAP for climbs in unfinished for c in climbs)
-    assert (f"{len(unfinished[0])} with the first head and {len(unfinished[1])} with this one, ends at the cap of "
-            f"{baseline.CLIMB_CAP} actions") in flat
-    assert f"a head fitted on twice the labels climbs no shorter ({three(sharper['ratio'])})" in flat
-    assert f"last two heads climb alike ({wide['ratio']['mean']:.3f} and {sharper['ratio']['mean']:.3f})" in flat
-    # Finished climbs that an interval clear of 1.5 needs at this mean and spread (a normal approximation).
-    from scipy import stats
-    spread = (gap["high"] - gap["low"]) / 2 / stats.t.ppf(0.975, gap["n"] - 1) * gap["n"] ** 0.5
-    needed = [round((stats.norm.ppf(1 - alpha / 2) * spread / gap["mean"]) ** 2, -2) for alpha in (0.05, 0.025)]
-    assert (f"about {needed[0]:.0f} finished climbs would give an interval clear of 1.5 at 0.05, and about "
-            f"{needed[1]:.0f} at 0.025") in flat
-    assert f"about {needed[0]:.0f} finished climbs at that mean would settle it" in flat
+    finished_fails = [sum(c["failed_moves"] for c in climbs if c["finished"]) for climbs in (sharper["walls"], first)]
+    assert f"Its finished climbs fail {finished_fails[0]} moves, the first head's {finished_fails[1]}." in flat
+    on_3000 = record["held_out_walls_20000_22999"]["sharper"]["ratio"]
+    assert f"a head fitted on twice the labels climbs no shorter ({three(on_3000)})" in flat
     pilot = record["pilot_veto_standing_down_on_a_seen_stance"]
     assert (f"finished {pilot['finished']:.0%} of the climbs but took {pilot['mean_length_ratio']:.2f} times the plan "
             f"and failed {pilot['failed_moves']} moves").replace("%", " %") in flat
+
+
+def test_baselines_quotes_the_3000_held_out_walls():
+    from wall_statistics import interval, paired
+    record = json.loads((SEARCH / "reach_estimate.json").read_text())
+    flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
+    wide, sharp, further = (record[key] for key in (
+        "held_out_walls_20000_21499", "sharper_head_held_out_walls_20000_21499", "held_out_walls_21500_22999"))
+    tested = record["held_out_walls_20000_22999"]
+    assert [w["wall_seed"] for w in further["walls"]] == list(range(21500, 23000))
+    plans = [w["plan_length"] for w in wide["walls"] + further["walls"]]
+    climbs = {"first": [w["veto"] for w in wide["walls"]] + [w["first"] for w in further["walls"]],
+              "sharper": sharp["walls"] + [w["sharper"] for w in further["walls"]],
+              "alone": [w["alone"] for w in wide["walls"]] + [w["alone"] for w in further["walls"]]}
+    ratios = {m: [c["length"] / p if c["finished"] and p else None for c, p in zip(cs, plans)]
+              for m, cs in climbs.items()}
+    done = {m: [float(c["finished"]) for c in cs] for m, cs in climbs.items()}
+    for m in ("first", "sharper"):
+        assert interval(ratios[m]) == tested[m]["ratio"]
+        assert paired(ratios[m], [1.5] * 3000) == tested[m]["ratio_minus_1_5"]
+        assert paired(done[m], done["alone"]) == tested[m]["finished_minus_alone"]
+        assert tested[m]["ratio_minus_1_5"]["p"] > 0.05  # "neither is below 1.5 even at 0.05"
+    assert paired(ratios["sharper"], ratios["first"]) == tested["sharper_minus_first"]["ratio"]
+    assert paired(done["sharper"], done["first"]) == tested["sharper_minus_first"]["finished"]
+    assert interval(ratios["alone"]) == tested["alone"]["ratio"]
+    first, sharper = tested["first"], tested["sharper"]
+    assert (f"the first head's veto takes {three(first['ratio'])} times the plan, {three(first['ratio_minus_1_5'])} "
+            f"against 1.5 (p = {first['ratio_minus_1_5']['p']:.2f}), and the sharper head's {three(sharper['ratio'])} "
+            f"(p = {sharper['ratio_minus_1_5']['p']:.2f}), against {tested['alone']['ratio']['mean']:.3f} alone"
+            ) in flat
+    assert tested["alpha"] == 0.05 / 4 and f"each test is read at {tested['alpha']} (Bonferroni over the four)" in flat
+    second = {m: [r for r in ratios[m][1500:] if r is not None] for m in ("first", "sharper")}
+    halves = {f"{sum(r) / len(r):.3f}" for r in second.values()}
+    assert len(halves) == 1 and f"On the second 1500 walls by themselves both vetoes take {halves.pop()}." in flat
+    gain, cost = tested["sharper_minus_first"]["finished"], sharper["finished_minus_alone"]
+    assert (f"The sharper head's veto finishes {sharper['finished']['mean']:.1%} of the climbs, {quoted_points(gain)} "
+            f"points more than the first's (p = {gain['p']:.0e}) and {quoted_points(cost)} points against alone "
+            f"({tested['alone']['finished']['mean']:.1%}, p = {cost['p']:.2f})").replace("%", " %") in flat
+    unfinished = {m: [c for c in cs if not c["finished"]] for m, cs in climbs.items()}
+    assert all(c["length"] == baseline.CLIMB_CAP for cs in unfinished.values() for c in cs)
+    alone_fails = sorted(c["failed_moves"] for c in unfinished["alone"])
+    assert (f"The policy alone's {len(unfinished['alone'])} each fail {alone_fails[0]} to {alone_fails[-1]} moves"
+            ) in flat and alone_fails[0] > 5
+    few = [sum(c["failed_moves"] <= 5 for c in unfinished[m]) for m in ("first", "sharper")]
+    rest = sorted(c["failed_moves"] for m in ("first", "sharper") for c in unfinished[m] if c["failed_moves"] > 5)
+    assert (f"Of the vetoes' {len(unfinished['first'])} and {len(unfinished['sharper'])}, {few[0]} and {few[1]} fail "
+            f"at most 5 moves and go round among moves that reach; the others fail {rest[0]} to {rest[-1]} moves "
+            f"each") in flat
+    low, high = ({f"{tested[m]['ratio'][k]:.3f}" for m in ("first", "sharper")} for k in ("low", "high"))
+    assert len(low) == len(high) == 1 and f"on 3000 held-out walls both intervals, [{low.pop()}, {high.pop()}], " \
+        "hold 1.5" in flat
+    within = max(max(-c["low"], c["high"]) for c in (sharp["ratio_minus_first_head"],
+                                                     tested["sharper_minus_first"]["ratio"]))
+    assert within < 0.013 and (f"the last two heads climb within 0.013 of each other ({wide['ratio']['mean']:.3f} "
+                               f"and {sharp['ratio']['mean']:.3f} on 1500 walls, {first['ratio']['mean']:.3f} and "
+                               f"{sharper['ratio']['mean']:.3f} on 3000)") in flat
+    needed = [climbs_needed(sharper["ratio_minus_1_5"], alpha) for alpha in (0.05, tested["alpha"])]
+    assert (f"an interval clear of 1.5 would take about {needed[0]:.0f} finished climbs at 0.05, and {needed[1]:.0f} "
+            f"at {tested['alpha']}") in flat
+    fails = [sum(c["failed_moves"] for c in climbs[m] if c["finished"]) for m in ("first", "sharper", "alone")]
+    assert (f"({fails[0]} and {fails[1]} in the finished climbs of the 3000 walls, under half a move a climb, against "
+            f"{fails[2]} alone)") in flat and max(fails[:2]) < 0.5 * 3000
+    # The lead and "Not done" quote the 3000 walls too.
+    assert (f"nor on 3000 ({three(first['ratio'])}, p = {first['ratio_minus_1_5']['p']:.2f}), where a head fitted on "
+            f"twice the labels") in flat
+    assert (f"nor on 3000 ({three(first['ratio'])}, p = {first['ratio_minus_1_5']['p']:.2f}): at the target, not "
+            f"shown below it. One fitted on twice the labels ({record['fits']['56k_walls']['held_out']['accuracy']:.1%}"
+            " "
+            f"of all moves) climbs no shorter ({sharper['ratio']['mean']:.3f}) but finishes {gain['mean'] * 100:.1f} "
+            f"points more").replace("%", " %") in flat
