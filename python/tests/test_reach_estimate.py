@@ -483,6 +483,10 @@ def test_baselines_quotes_the_sharper_head():
     pilot = record["pilot_veto_standing_down_on_a_seen_stance"]
     assert (f"finished {pilot['finished']:.0%} of the climbs but took {pilot['mean_length_ratio']:.2f} times the plan "
             f"and failed {pilot['failed_moves']} moves").replace("%", " %") in flat
+    release = record["pilot_veto_releasing_a_rejected_move_on_each_return"]
+    assert (f"finished {release['finished']:.0%} in {release['mean_length_ratio']:.2f} times the plan, failing "
+            f"{release['failed_moves']} moves").replace("%", " %") in flat
+    assert f"(up to {release['longest_ratio']:.1f} times the plan)" in flat
 
 
 def test_baselines_quotes_the_3000_held_out_walls():
