@@ -347,7 +347,7 @@ def parser():
     labelling.add_argument("--wall-seeds", type=wall_seed_range, required=True,
                            help="random walls A to B inclusive, as A:B")
     labelling.add_argument("--random-share", type=baseline.unit_interval, default=0.2,
-                   help="the share of the climb's moves chosen uniformly at random instead of greedily")
+                           help="the share of the climb's moves chosen uniformly at random instead of greedily")
     labelling.add_argument("--seed", type=int, default=1, help="the random moves' seed")
     labelling.add_argument("--out", type=pathlib.Path, required=True, help="the .npz file to write")
     labelling.add_argument("--progress", action="store_true", help="a line per wall on stderr")
@@ -357,14 +357,14 @@ def parser():
     fitting.add_argument("--epochs", type=positive, default=24, help="passes over the training moves")
     fitting.add_argument("--hidden", type=positive, default=256, help="units in each of the two hidden layers")
     fitting.add_argument("--held-out-share", type=baseline.unit_interval, default=0.1,
-                   help="the share of the walls (the last by seed) kept out of training and reported on")
+                         help="the share of the walls (the last by seed) kept out of training and reported on")
     fitting.add_argument("--seed", type=int, default=1, help="the network's and the minibatches' seed")
     fitting.add_argument("--threads", type=positive, default=1, help="torch's CPU threads (1: deterministic)")
     evaluating = commands.add_parser("evaluate", help="The policy's greedy climbs with the head's veto")
     evaluating.add_argument("--policy", type=pathlib.Path, required=True, help="a policy file policy_baseline.py wrote")
     evaluating.add_argument("--head", type=pathlib.Path, required=True, help="a reach head fit wrote")
     evaluating.add_argument("--veto", type=probability, nargs="+", required=True,
-                   help="thresholds P: the climbs choose among the moves estimated to reach with at least P")
+                            help="thresholds P: the climbs choose among the moves estimated to reach with at least P")
     evaluating.add_argument("--wall-seeds", type=wall_seed_range, required=True,
                             help="random walls A to B inclusive, as A:B")
     evaluating.add_argument("--json", action="store_true", help="print the result as JSON")

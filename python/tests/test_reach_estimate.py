@@ -267,6 +267,15 @@ def test_the_shipped_head_climbs_its_record_s_first_held_out_wall(policy):
     assert climbed == record["evaluation"]["walls"][:1]
 
 
+def length_ratios(climbs, plans):
+    """Each climb's length over its wall's plan, None when it did not finish (or has no plan)."""
+    return [c["length"] / plan if c["finished"] and plan else None for c, plan in zip(climbs, plans)]
+
+
+def finished_shares(climbs):
+    return [float(c["finished"]) for c in climbs]
+
+
 def bracket(c, digits=2, sign=""):
     return f"{c['mean']:{sign}.{digits}f} [{c['low']:.{digits}f}, {c['high']:.{digits}f}]"
 
@@ -313,7 +322,7 @@ def test_baselines_reach_estimate_quotes_its_record():
     assert [w["wall_seed"] for w in walls] == [w["wall_seed"] for w in zero] == list(range(20000, 20300))
 
     def ratios_of(climbs):
-        return [w["length"] / w["plan_length"] if w["finished"] else None for w in climbs]
+        return length_ratios(climbs, [w["plan_length"] for w in climbs])
 
     mine = ratios_of(walls)
     assert interval(mine) == held["ratio"] and paired(mine, ratios_of(zero)) == held["ratio_minus_zero_shot"]
@@ -362,11 +371,10 @@ def test_baselines_quotes_the_1500_held_out_walls():
         == record["held_out_walls_20000_20299"]["evaluation"]["walls"]
 
     def ratios(method):
-        return [w[method]["length"] / w["plan_length"] if w[method]["finished"] and w["plan_length"] else None
-                for w in walls]
+        return length_ratios([w[method] for w in walls], [w["plan_length"] for w in walls])
 
     def finished(method):
-        return [float(w[method]["finished"]) for w in walls]
+        return finished_shares(w[method] for w in walls)
 
     mine = ratios("veto")
     assert interval(mine) == wide["ratio"] and paired(mine, [1.5] * 1500) == wide["ratio_minus_1_5"]
@@ -451,19 +459,15 @@ def test_baselines_quotes_the_sharper_head():
     assert [w["wall_seed"] for w in sharper["walls"]] == [w["wall_seed"] for w in wide["walls"]]
 
     def ratios(climbs):
-        return [c["length"] / w["plan_length"] if c["finished"] and w["plan_length"] else None
-                for c, w in zip(climbs, wide["walls"])]
-
-    def finished(climbs):
-        return [float(c["finished"]) for c in climbs]
+        return length_ratios(climbs, [w["plan_length"] for w in wide["walls"]])
 
     first, alone = [w["veto"] for w in wide["walls"]], [w["alone"] for w in wide["walls"]]
     mine = ratios(sharper["walls"])
     assert interval(mine) == sharper["ratio"] and paired(mine, [1.5] * 1500) == sharper["ratio_minus_1_5"]
     assert paired(mine, ratios(first)) == sharper["ratio_minus_first_head"]
     assert paired(mine, ratios(alone)) == sharper["ratio_minus_alone"]
-    assert paired(finished(sharper["walls"]), finished(first)) == sharper["finished_minus_first_head"]
-    assert paired(finished(sharper["walls"]), finished(alone)) == sharper["finished_minus_alone"]
+    assert paired(finished_shares(sharper["walls"]), finished_shares(first)) == sharper["finished_minus_first_head"]
+    assert paired(finished_shares(sharper["walls"]), finished_shares(alone)) == sharper["finished_minus_alone"]
     assert sum(w["failed_moves"] for w in sharper["walls"]) == sharper["failed_moves"]
     gap, versus = sharper["ratio_minus_1_5"], sharper["ratio_minus_first_head"]
     assert (f"its climbs take {three(sharper['ratio'])} times the plan: {three(gap)} against 1.5 (p = {gap['p']:.2f}), "
@@ -501,9 +505,8 @@ def test_baselines_quotes_the_3000_held_out_walls():
     climbs = {"first": [w["veto"] for w in wide["walls"]] + [w["first"] for w in further["walls"]],
               "sharper": sharp["walls"] + [w["sharper"] for w in further["walls"]],
               "alone": [w["alone"] for w in wide["walls"]] + [w["alone"] for w in further["walls"]]}
-    ratios = {m: [c["length"] / p if c["finished"] and p else None for c, p in zip(cs, plans)]
-              for m, cs in climbs.items()}
-    done = {m: [float(c["finished"]) for c in cs] for m, cs in climbs.items()}
+    ratios = {m: length_ratios(cs, plans) for m, cs in climbs.items()}
+    done = {m: finished_shares(cs) for m, cs in climbs.items()}
     for m in ("first", "sharper"):
         assert interval(ratios[m]) == tested[m]["ratio"]
         assert paired(ratios[m], [1.5] * 3000) == tested[m]["ratio_minus_1_5"]
