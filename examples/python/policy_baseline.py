@@ -316,7 +316,8 @@ def ppo_update(policy, optimiser, rollout, advantage, returns, args, rng):
         for start in range(0, len(order), args.minibatch):
             batch = order[start:start + args.minibatch]
             mask = flat["mask"][batch]
-            count = max(1, int(mask.sum(axis=1).max()))  # the slots past every candidate only pad
+            # The slots past the last one offered in the batch only pad (a veto can leave gaps).
+            count = int(np.flatnonzero(mask.any(axis=0)).max(initial=0)) + 1
             state = torch.from_numpy(flat["state"][batch])
             logits = policy.logits(state, torch.from_numpy(flat["slots"][batch][:, :count]),
                                    torch.from_numpy(mask[:, :count]))
@@ -356,8 +357,11 @@ def sample_actions(policy, state, slots, mask, generator):
     return action.numpy(), log_probs.gather(1, action[:, None]).squeeze(1).numpy(), value.numpy()
 
 
-def train(args, progress=None):
-    """Masked PPO; returns (policy, history), history a record per validation."""
+def train(args, progress=None, veto=None, validation_veto=None):
+    """Masked PPO; returns (policy, history, training), history a record per validation.
+    veto: None, or a function (state (E, 55), slots (E, K, 11), mask (E, K)) -> the slots
+    a reach estimate lets through, among which the rollouts sample and the updates learn;
+    validation_veto: the same estimate's, for evaluate's validation climbs."""
     deterministic(args.seed, args.threads)
     config = climbing_config(args.physics_model, args.reward_height, args.gamma)
     # A lower finishing height makes finishes common early (a curriculum); validation keeps the walls' own.
@@ -388,6 +392,8 @@ def train(args, progress=None):
         optimiser.param_groups[0]["lr"] = args.lr * (1 - update / updates)
         for t in range(args.rollout):
             state, slots, mask = batch_features(obs, span)
+            if veto is not None:
+                mask = vetoed(mask, veto(state, slots, mask))
             action, log_prob, value = sample_actions(policy, state, slots, mask, generator)
             obs, reward, terminated, truncated, info = envs.step(action)
             rollout.state[t], rollout.slots[t], rollout.mask[t] = state, slots, mask
@@ -407,7 +413,8 @@ def train(args, progress=None):
             record = {"steps": steps, "episodes": episodes, "finished_episodes": finished,
                       "seconds": round(time.monotonic() - started, 1), **losses}
             if args.validation_walls:
-                validation = evaluate(policy, args.validation_walls, args.physics_model, validation_plans)
+                validation = evaluate(policy, args.validation_walls, args.physics_model, validation_plans,
+                                      veto=validation_veto)
                 record.update({key: validation[key] for key in VALIDATION_KEYS})
                 score = (validation["finished"], -(validation["mean_length_ratio"] or math.inf))
                 if getattr(args, "keep_best", False) and (best is None or score > best[0]):
@@ -431,6 +438,13 @@ SETTINGS = ("lr", "entropy", "hidden", "rollout", "envs", "epochs", "minibatch",
 # --- evaluation ------------------------------------------------------------------------------
 
 
+def vetoed(mask, allowed):
+    """The offered slots that are allowed, per state (rows); in a state where none is, all
+    the offered ones: the policy's own choice, perhaps to fail."""
+    kept = mask & allowed
+    return np.where(kept.any(axis=1, keepdims=True), kept, mask)
+
+
 def climb(policy, env, cap=CLIMB_CAP, allowed=None):
     """One greedy climb: (finished, actions taken, failed moves). allowed: None, or a
     function (actions so far, state, slots, mask) -> the offered slots to choose among (the
@@ -440,8 +454,7 @@ def climb(policy, env, cap=CLIMB_CAP, allowed=None):
     for taken in range(1, cap + 1):
         state, slots, mask = single_features(obs, policy.max_span)
         if allowed is not None:
-            kept = mask & allowed(history, state, slots, mask)
-            mask = kept if kept.any() else mask  # none allowed: the policy's own choice, perhaps to fail
+            mask = vetoed(mask, allowed(history, state, slots, mask))
         action = greedy_slot(policy, state, slots, mask)
         obs, _, terminated, truncated, info = env.step(action)
         history.append(action)
@@ -632,17 +645,20 @@ def comparison_markdown(summary):
 # --- commands --------------------------------------------------------------------------------
 
 
-def command_train(args):
-    args.command = " ".join(["examples/python/policy_baseline.py"] + [shlex.quote(a) for a in args.argv])
+def command_train(args, script="policy_baseline.py", veto=None, validation_veto=None, record=None):
+    """train from the command line; veto and validation_veto as train takes them, and record:
+    more entries for the policy file's training record."""
+    args.command = " ".join([f"examples/python/{script}"] + [shlex.quote(a) for a in args.argv])
 
     def progress(record):
         print(json.dumps(record), file=sys.stderr, flush=True)
 
     try:
-        policy, history, training = train(args, progress)
+        policy, history, training = train(args, progress, veto, validation_veto)
     except ValueError as error:  # a bad --init-policy file, named by the message
-        print(f"policy_baseline.py: --init-policy: {error}", file=sys.stderr)
+        print(f"{script}: --init-policy: {error}", file=sys.stderr)
         sys.exit(2)
+    training.update(record or {})
     training["history"] = history
     save_policy(policy, args.out, training)
     print(json.dumps({"policy": str(args.out), "steps": training["steps"], "last": history[-1] if history else None}))
@@ -894,15 +910,21 @@ def parser():
     return top
 
 
+def training_walls(args, command_parser):
+    """training_options' wall counts as the seeds they name; exit 2 with one line on a count
+    that would reach the validation walls."""
+    if args.train_walls and args.train_walls > VALIDATION_FIRST_SEED:
+        command_parser.error(f"--train-walls: must be at most {VALIDATION_FIRST_SEED}, the first validation wall")
+    args.train_walls = list(range(args.train_walls)) if args.train_walls else None
+    args.validation_walls = list(range(VALIDATION_FIRST_SEED, VALIDATION_FIRST_SEED + args.validation_walls))
+
+
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     args = parser().parse_args(argv)
     args.argv = argv
     if args.command_name in ("train", "search"):
-        if args.train_walls and args.train_walls > VALIDATION_FIRST_SEED:
-            parser().error(f"--train-walls: must be at most {VALIDATION_FIRST_SEED}, the first validation wall")
-        args.train_walls = list(range(args.train_walls)) if args.train_walls else None
-        args.validation_walls = list(range(VALIDATION_FIRST_SEED, VALIDATION_FIRST_SEED + args.validation_walls))
+        training_walls(args, parser())
     {"train": command_train, "search": command_search, "evaluate": command_evaluate, "compare": command_compare,
      "plot": command_plot}[args.command_name](args)
 

@@ -8,6 +8,8 @@ what the policy sees, and the policy's greedy climbs with the moves it rejects v
     /usr/bin/python3 examples/python/reach_estimate.py fit --labels build/labels-*.npz --out build/reach-head.json
     /usr/bin/python3 examples/python/reach_estimate.py evaluate --policy models/policies/reach-ppo.json \\
         --head build/reach-head.json --veto 0.2 0.3 --wall-seeds 10000:10299 --json
+    /usr/bin/python3 examples/python/reach_estimate.py train --init-policy models/policies/reach-ppo.json \
+        --head build/reach-head.json --veto 0.5 --out build/reach-ppo-vetoed.json
 
 label climbs each random wall once with the policy, greedy but for a share of uniformly
 random moves (so that the labels also cover moves the policy would not take), and labels
@@ -21,6 +23,12 @@ fit trains a classifier of the same shape as the slot network on all walls but t
 tenth, which it reports on (accuracy, AUC, and at the policy's own greedy choice), and
 writes it as plain weights: {"format": "crux-reach-head", "version": 1, "observation":
 "reach", "max_span", "input_mean", "input_scale", "layers": [...], "training": {...}}.
+
+train goes on with masked PPO from a policy, its rollouts sampling and its updates learning
+only among the offered moves the estimate lets through at P (all of them in a state where
+it passes none), so that the policy learns to rank the moves its veto will leave it; its
+validation climbs take the same veto. The policy file's training record names the head
+and P.
 
 evaluate climbs each wall greedily among the offered moves the estimate gives a
 probability of reaching of at least P (all of them, when it gives none that much): a
@@ -155,6 +163,21 @@ class ReachHead:
         def allowed(state, slots):
             rows = np.concatenate([np.repeat(state, slots.shape[1], axis=0), slots[0]], axis=1)
             return (self.logits(rows) >= logit_threshold)[None]
+
+        return allowed
+
+    def training_veto(self, threshold):
+        """train's veto: of a batch of observations (state (E, 55), slots (E, K, 11), mask
+        (E, K)), the offered slots estimated to reach with a probability of at least
+        threshold; only the offered slots are scored."""
+        logit_threshold = np.log(threshold / (1 - threshold)) if threshold > 0 else -np.inf
+
+        def allowed(state, slots, mask):
+            env_of, slot_of = np.nonzero(mask)
+            passed = np.zeros_like(mask)
+            passed[env_of, slot_of] = self.logits(np.concatenate([state[env_of], slots[env_of, slot_of]], axis=1)) \
+                >= logit_threshold
+            return passed
 
         return allowed
 
@@ -305,15 +328,29 @@ def command_fit(args):
     print(json.dumps({"head": str(args.out), **training}, indent=1))
 
 
-def command_evaluate(args):
-    policy = baseline.load_for_walls(args.policy, "reach_estimate.py")
+def head_for(path, policy):
+    """The reach head of the file, for the policy's observation; exit 2 with one line on
+    anything else."""
     try:
-        head, _ = load_head(args.head)
+        head, _ = load_head(path)
     except ValueError as error:
         fail("--head", error)
     if abs(head.max_span - policy.max_span) > 1e-9:
-        fail("--head", f"{args.head}: fitted with filter.max_span = {head.max_span} m, and the policy reads "
+        fail("--head", f"{path}: fitted with filter.max_span = {head.max_span} m, and the policy reads "
              f"{policy.max_span} m")
+    return head
+
+
+def command_train(args):
+    baseline.training_walls(args, parser())
+    head = head_for(args.head, baseline.load_for_walls(args.init_policy, "reach_estimate.py"))
+    baseline.command_train(args, "reach_estimate.py", head.training_veto(args.veto), head.veto(args.veto),
+                           {"veto": {"head": str(args.head), "threshold": args.veto}})
+
+
+def command_evaluate(args):
+    policy = baseline.load_for_walls(args.policy, "reach_estimate.py")
+    head = head_for(args.head, policy)
     plans = baseline.plan_lengths(args.wall_seeds)
     results = []
     for threshold in args.veto:
@@ -360,6 +397,18 @@ def parser():
                          help="the share of the walls (the last by seed) kept out of training and reported on")
     fitting.add_argument("--seed", type=int, default=1, help="the network's and the minibatches' seed")
     fitting.add_argument("--threads", type=positive, default=1, help="torch's CPU threads (1: deterministic)")
+    training = commands.add_parser("train", help="Masked PPO from a policy, sampling and learning only among the "
+                                   "moves the head lets through")
+    training.add_argument("--init-policy", type=pathlib.Path, required=True,
+                          help="the policy file policy_baseline.py wrote to start from")
+    training.add_argument("--head", type=pathlib.Path, required=True, help="a reach head fit wrote")
+    training.add_argument("--veto", type=probability, required=True,
+                          help="P: the rollouts and the validation climbs choose among the moves estimated to reach "
+                          "with at least P")
+    training.add_argument("--out", type=pathlib.Path, required=True, help="the policy file to write (JSON)")
+    training.add_argument("--steps", type=positive, default=1_000_000, help="environment steps")
+    training.add_argument("--seed", type=int, default=1, help="fixes the walls, the network and the sampling")
+    baseline.training_options(training)
     evaluating = commands.add_parser("evaluate", help="The policy's greedy climbs with the head's veto")
     evaluating.add_argument("--policy", type=pathlib.Path, required=True, help="a policy file policy_baseline.py wrote")
     evaluating.add_argument("--head", type=pathlib.Path, required=True, help="a reach head fit wrote")
@@ -375,7 +424,8 @@ def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     args = parser().parse_args(argv)
     args.argv = argv
-    {"label": command_label, "fit": command_fit, "evaluate": command_evaluate}[args.command_name](args)
+    {"label": command_label, "fit": command_fit, "train": command_train,
+     "evaluate": command_evaluate}[args.command_name](args)
 
 
 if __name__ == "__main__":

@@ -318,7 +318,7 @@ def test_keep_best_writes_the_weights_of_the_best_validation(tmp_path, monkeypat
     scores = iter([(0.2, 1.5), (0.6, 1.5), (0.4, 1.2), (0.6, 1.8), (0.1, 1.0)])
     weights_seen = []
 
-    def scripted_evaluate(policy, wall_seeds, physics_model="kinematic", plans=None):
+    def scripted_evaluate(policy, wall_seeds, physics_model="kinematic", plans=None, veto=None):
         weights_seen.append(policy.slot_net[0].weight.detach()[:, :, 0].tolist())
         finished, ratio = next(scores)
         return {"finished": finished, "mean_length": 10.0, "mean_length_ratio": ratio, "within_1_5_plans": 0.0}

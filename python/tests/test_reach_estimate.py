@@ -254,6 +254,74 @@ def test_label_and_fit_write_files_fit_and_evaluate_read(tmp_path, capsys):
 
 SEARCH = REPOSITORY / "models" / "policies" / "search"
 HEAD = REPOSITORY / "models" / "policies" / "reach-ppo.reach-head.json"
+SHORT = ["--steps", "512", "--envs", "8", "--rollout", "32", "--minibatch", "256", "--train-walls", "4",
+         "--validation-walls", "0", "--validate-every", "0", "--episode-steps", "60", "--lr", "3e-3"]
+
+
+def short_training(tmp_path, veto):
+    """Two updates of PPO from a small random policy, with the veto as train takes it: the
+    starting and the trained policies."""
+    baseline.deterministic(3)
+    start = tmp_path / "start.json"
+    baseline.save_policy(baseline.SlotPolicy(16, baseline.configured_max_span()), start, {"seed": 3})
+    args = baseline.parser().parse_args(["train", "--out", str(tmp_path / "x.json"), "--init-policy", str(start),
+                                         "--hidden", "16", *SHORT])
+    baseline.training_walls(args, baseline.parser())
+    args.command = "train"
+    return baseline.load_policy(start)[0], baseline.train(args, veto=veto)[0]
+
+
+def test_training_samples_and_learns_only_among_the_moves_the_veto_passes(tmp_path):
+    seen = []
+
+    def first_offered(state, slots, mask):
+        seen.append(mask.shape)
+        return mask & (np.cumsum(mask, axis=1) == 1)
+
+    start, tuned = short_training(tmp_path, first_offered)
+    assert seen and all(shape == (8, baseline.MAX_CANDIDATES) for shape in seen)
+    # One move to choose from has probability 1 whatever the weights: no gradient reaches
+    # the slot network (rollouts sampled, or updates learnt, among all offered moves would
+    # move it), while the value network learns.
+    assert all(torch.equal(a, b) for a, b in zip(start.slot_net.parameters(), tuned.slot_net.parameters()))
+    assert not all(torch.equal(a, b) for a, b in zip(start.value_net.parameters(), tuned.value_net.parameters()))
+    # A veto that passes nothing leaves every state its offered moves: the run without one.
+    _, unvetoed = short_training(tmp_path, None)
+    _, none_passed = short_training(tmp_path, lambda state, slots, mask: np.zeros_like(mask))
+    assert all(torch.equal(a, b) for a, b in zip(unvetoed.parameters(), none_passed.parameters()))
+    assert not all(torch.equal(a, b) for a, b in zip(start.slot_net.parameters(), unvetoed.slot_net.parameters()))
+
+
+def test_the_training_veto_scores_the_offered_slots_as_evaluate_s_veto_does(policy):
+    head = estimate.load_head(HEAD)[0]
+    env = crux_env(20000, baseline.climbing_config("kinematic"))
+    obs, _ = env.reset()
+    rng = np.random.default_rng(5)
+    states = []  # the states of 30 random moves, a batch as the rollouts' environments give
+    for _ in range(30):
+        states.append(baseline.single_features(obs, policy.max_span))
+        obs, *_ = env.step(int(rng.choice(np.flatnonzero(obs["candidate_mask"] > 0.5))))
+    state, slots, mask = (np.concatenate(parts) for parts in zip(*states))
+    for threshold in (0.1, 0.5, 0.9):
+        batch = head.training_veto(threshold)(state, slots, mask)
+        one_by_one = np.concatenate([head.veto(threshold)(*single[:2]) & single[2] for single in states])
+        assert (batch == one_by_one).all() and not (batch & ~mask).any(), threshold
+        assert 0 < batch.sum() < mask.sum(), (threshold, batch.sum(), mask.sum())
+
+
+def test_train_writes_a_policy_that_names_its_veto_and_refuses_a_bad_head(tmp_path, capsys):
+    out = tmp_path / "tuned.json"
+    estimate.main(["train", "--init-policy", str(SHIPPED), "--head", str(HEAD), "--veto", "0.5", "--out", str(out),
+                   *SHORT, "--hidden", "128"])
+    training = json.loads(out.read_text())["training"]
+    assert training["veto"] == {"head": str(HEAD), "threshold": 0.5}
+    assert training["command"].startswith("examples/python/reach_estimate.py train --init-policy")
+    assert baseline.load_policy(out)[0].hidden == 128 and json.loads(capsys.readouterr().out)["steps"] == 512
+    for head, problem in ((tmp_path / "missing.json", "cannot read the reach head"),):
+        code, printed = run("train", "--init-policy", str(SHIPPED), "--head", str(head), "--veto", "0.5",
+                            "--out", str(tmp_path / "x.json"), *SHORT, capsys=capsys)
+        assert code == 2 and printed.err.count("\n") == 1 and problem in printed.err, printed.err
+        assert printed.err.startswith("reach_estimate.py: --head: ") and not (tmp_path / "x.json").exists()
 
 
 def test_the_shipped_head_climbs_its_record_s_first_held_out_wall(policy):
