@@ -638,3 +638,107 @@ def test_baselines_quotes_the_3000_held_out_walls():
             " "
             f"of all moves) climbs no shorter ({sharper['ratio']['mean']:.3f}) but finishes {gain['mean'] * 100:.1f} "
             f"points more").replace("%", " %") in flat
+
+
+def test_baselines_quotes_the_policy_trained_under_its_veto():
+    from wall_statistics import interval, paired
+    record = json.loads((SEARCH / "reach_estimate.json").read_text())
+    flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
+    tuned = record["trained_under_the_veto"]
+    shipped = json.loads((REPOSITORY / "models" / "policies" / "reach-ppo-vetoed.json").read_text())["training"]
+    assert shipped["command"] == tuned["commands"]["train"] and shipped["veto"] == {"head": str(HEAD.relative_to(
+        REPOSITORY)), "threshold": 0.5} and tuned["rerun_gives_the_same_weights"]
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    assert "R=examples/python/reach_estimate.py; H=models/policies/reach-ppo.reach-head.json" in text
+    (line,) = [line for line in text.splitlines() if line.startswith("/usr/bin/python3 $R train ")]
+    expanded = line.split("#")[0].strip().replace("$R", "examples/python/reach_estimate.py").replace("$H", str(
+        HEAD.relative_to(REPOSITORY)))
+    assert expanded == "/usr/bin/python3 " + shipped["command"], expanded
+    # The validation table, and the threshold the rule of the heads above chose.
+    first_head = next(row for row in record["veto_on_validation_walls_10000_10299"]["28k_walls"] if row["veto"] == 0.5)
+    labelled = [("trained under the veto", row) for row in tuned["validation"]] + [
+        ("control: trained as long without it", tuned["validation_control"]), ("the shipped policy", first_head)]
+    for label, row in labelled:
+        assert (f"| {label} | {row['veto']} | {row['finished']:.1%} | {row['mean_length_ratio']:.3f} "
+                f"| {row['failed_moves']} |").replace("%", " %") in flat, label
+    chosen = min((row for row in tuned["validation"] if row["finished"] >= 0.95), key=lambda r: r["mean_length_ratio"])
+    assert chosen["veto"] == 0.5 and all("--veto 0.5 " in command for command in tuned["commands"]["held_out"])
+    assert (f"climbs those walls in {tuned['validation_alone']['mean_length_ratio']:.2f} times the plan: it leans on "
+            f"its veto") in flat
+    control = tuned["validation_control"]["mean_length_ratio"]
+    assert f"({control:.3f} against {first_head['mean_length_ratio']:.3f})" in flat
+    assert control > first_head["mean_length_ratio"] > chosen["mean_length_ratio"]
+    assert f"1 M steps, seed 1, {tuned['training_seconds']:.0f} s" in flat
+    # The 3000 held-out walls, recomputed from the per-wall climbs.
+    wide, further = record["held_out_walls_20000_21499"], record["held_out_walls_21500_22999"]
+    plans = [w["plan_length"] for w in wide["walls"] + further["walls"]]
+    mine = tuned["held_out_walls"]
+    assert [w["wall_seed"] for w in mine] == list(range(20000, 23000))
+    first = [w["veto"] for w in wide["walls"]] + [w["first"] for w in further["walls"]]
+    alone = [w["alone"] for w in wide["walls"]] + [w["alone"] for w in further["walls"]]
+    ratios = length_ratios(mine, plans)
+    assert interval(ratios) == tuned["ratio"] and paired(ratios, [1.5] * 3000) == tuned["ratio_minus_1_5"]
+    assert paired(ratios, length_ratios(first, plans)) == tuned["ratio_minus_first_head"]
+    assert paired(finished_shares(mine), finished_shares(first)) == tuned["finished_minus_first_head"]
+    assert paired(finished_shares(mine), finished_shares(alone)) == tuned["finished_minus_alone"]
+    assert interval(finished_shares(mine)) == tuned["finished"]
+    # Six tests against 1.5 now: the five of the 3000 walls' record and this one.
+    gap, versus = tuned["ratio_minus_1_5"], tuned["ratio_minus_first_head"]
+    assert tuned["alpha"] == record["held_out_walls_20000_22999"]["alpha"] * 5 / 6 and gap["p"] < tuned["alpha"]
+    assert (f"climbs in {three(tuned['ratio'])} times the plan: {three(gap)} against 1.5 (p = {gap['p']:.0e}), the "
+            f"sixth test against 1.5, read at {tuned['alpha']:.4f} (Bonferroni over the six)") in flat
+    assert (f"its climbs are {three(versus)} against the shipped policy's under the same veto (p = "
+            f"{versus['p']:.0e})") in flat and versus["high"] < 0
+    share, fewer, fewer_alone = tuned["finished"], tuned["finished_minus_first_head"], tuned["finished_minus_alone"]
+    assert (f"It finishes {share['mean']:.1%} [{share['low'] * 100:.1f}, {share['high'] * 100:.1f}] of the climbs, "
+            f"{quoted_points(fewer)} points against the shipped policy's under the veto (p = {fewer['p']:.2g}) and "
+            f"{quoted_points(fewer_alone)} against the policy alone (p = {fewer_alone['p']:.0e}): above the target's "
+            f"90%").replace("%", " %") in flat and share["low"] > 0.9
+    unfinished = [c for c in mine if not c["finished"]]
+    assert all(c["length"] == baseline.CLIMB_CAP for c in unfinished)
+    fails = [sum(c["failed_moves"] for c in climbs if c["finished"]) for climbs in (mine, first)]
+    assert (f"Its {len(unfinished)} unfinished climbs all run to the cap of 200 actions, "
+            f"{sum(c['failed_moves'] <= 5 for c in unfinished)} of them failing at most 5 moves; its finished climbs "
+            f"fail {fails[0]} moves, against {fails[1]} for the shipped policy under the veto") in flat
+    within = sum(c["finished"] and c["length"] <= 1.5 * plan for c, plan in zip(mine, plans)) / 3000
+    assert f"{within:.1%} of the climbs finish within 1.5 times their plan".replace("%", " %") in flat
+    # The lead and "Not done".
+    assert (f"climbs the 3000 held-out walls with the same veto in {three(tuned['ratio'])} times the plan, below 1.5 "
+            f"(p = {gap['p']:.0e}), finishing {share['mean']:.1%} of them").replace("%", " %") in flat
+    assert f"{three(tuned['ratio'])} times the plan on the 3000 walls (p = {gap['p']:.0e})" in flat
+    assert "(its command, run a second time, gave the same weights to the bit)" in flat
+
+
+def test_baselines_quotes_seeds_2_and_3_trained_under_the_veto():
+    from wall_statistics import interval, paired
+    record = json.loads((SEARCH / "reach_estimate.json").read_text())
+    flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
+    tuned = record["trained_under_the_veto"]
+    seeds, seed_one = tuned["seeds_2_and_3"]["runs"], tuned["seeds_2_and_3"]["seed_1_on_walls_20000_21499"]
+    wide = record["held_out_walls_20000_21499"]
+    plans = [w["plan_length"] for w in wide["walls"]]
+    first = length_ratios([w["veto"] for w in wide["walls"]], plans)
+    one = length_ratios(tuned["held_out_walls"][:1500], plans)
+    assert interval(one) == seed_one["ratio"] and paired(one, first) == seed_one["ratio_minus_first_head"]
+    for run in seeds:
+        assert [w["wall_seed"] for w in run["held_out_walls_20000_21499"]] == [w["wall_seed"] for w in wide["walls"]]
+        mine = length_ratios(run["held_out_walls_20000_21499"], plans)
+        assert interval(mine) == run["ratio"] and paired(mine, first) == run["ratio_minus_first_head"]
+        assert paired(mine, one) == run["ratio_minus_seed_1"]
+        assert run["command"] == tuned["commands"]["train"].replace("--seed 1", f"--seed {run['seed']}").replace(
+            "models/policies/reach-ppo-vetoed.json", f"build/reach-ppo-vetoed-s{run['seed']}.json")
+        assert run["ratio_minus_first_head"]["p"] < 0.05 < run["ratio_minus_seed_1"]["p"]
+
+    def p(c):
+        return f"p = {c['p']:.2f}" if c["p"] >= 0.01 else f"p = {c['p']:.0e}"
+
+    validation = [run["validation"]["mean_length_ratio"] for run in seeds]
+    versus_shipped = [f"{three(run['ratio_minus_first_head'])} ({p(run['ratio_minus_first_head'])})" for run in seeds]
+    versus_one = [f"{three(run['ratio_minus_seed_1'])} ({p(run['ratio_minus_seed_1'])})" for run in seeds]
+    assert (f"Seeds 2 and 3 of the same training (their weights not kept) climb the validation walls under the veto "
+            f"in {validation[0]:.3f} and {validation[1]:.3f} times the plan, and the held-out walls 20000-21499 in "
+            f"{three(seeds[0]['ratio'])} and {three(seeds[1]['ratio'])}, where seed 1 takes {three(seed_one['ratio'])} "
+            f"and the shipped policy under the veto {wide['ratio']['mean']:.3f}. Paired against the shipped policy "
+            f"under the veto, seeds 2 and 3 are {versus_shipped[0]} and {versus_shipped[1]}, seed 1 "
+            f"{three(seed_one['ratio_minus_first_head'])}; against seed 1, {versus_one[0]} and {versus_one[1]}."
+            ) in flat

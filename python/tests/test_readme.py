@@ -128,3 +128,24 @@ def test_the_tours_performed_climb_is_reported_and_viewed(tmp_path):
     assert 'class="hold-forces"' in (tmp_path / "performed.svg").read_text()
     facts = json.loads((tmp_path / "out" / "dynamic" / "summary.json").read_text())["run_facts"]["training"][0]
     assert facts["moves_simulated"] > 0
+
+
+def test_the_policy_trained_under_its_veto_climbs_as_its_record_says(repository):
+    (gymnasium,) = need(["gymnasium"], GYMNASIUM)
+    need(["torch"], "the policy needs Debian's python3-torch")
+    (line,) = [line for block in fenced("sh") for line in block.splitlines() if "reach_estimate.py evaluate" in line]
+    for folder in ("examples", "models"):
+        (repository / folder).symlink_to(README.parent / folder)
+    done = run_shell(line, repository, GYMNASIUM=str(pathlib.Path(gymnasium.__file__).parents[1]))
+    assert done.returncode == 0, done.stderr
+    # The same walls' climbs in the record docs/BASELINES.md quotes, and their plans.
+    first, last = (int(seed) for seed in line.split("--wall-seeds ")[1].split()[0].split(":"))
+    record = json.loads((README.parent / "models" / "policies" / "search" / "reach_estimate.json").read_text())
+    climbs = record["trained_under_the_veto"]["held_out_walls"][:last - first + 1]
+    plans = record["held_out_walls_20000_21499"]["walls"][:last - first + 1]
+    assert [c["wall_seed"] for c in climbs] == [p["wall_seed"] for p in plans] == list(range(first, last + 1))
+    ratios = [c["length"] / p["plan_length"] for c, p in zip(climbs, plans) if c["finished"]]
+    finished = sum(c["finished"] for c in climbs) / len(climbs)
+    assert done.stdout == (f"veto 0.5: {len(climbs)} climbs, {finished:.1%} finished, {sum(ratios) / len(ratios):.3f} "
+                           f"times the plan, {sum(c['failed_moves'] for c in climbs)} failed moves\n"), done.stdout
+
