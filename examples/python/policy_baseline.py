@@ -666,7 +666,7 @@ def command_train(args, script="policy_baseline.py", veto=None, validation_veto=
 
 
 
-def load_for_walls(path, prog="policy_baseline.py"):
+def load_for_walls(path, prog="policy_baseline.py", option="--policy"):
     """load_policy, for the walls crux builds now (the same filter.max_span), or exit 2 with one line."""
     try:
         policy, _ = load_policy(path)
@@ -674,7 +674,7 @@ def load_for_walls(path, prog="policy_baseline.py"):
             raise ValueError(f"{path}: a policy trained with filter.max_span = {policy.max_span} m, and the "
                              f"walls are climbed with {configured_max_span()} m: its observation would be another")
     except ValueError as error:
-        print(f"{prog}: --policy: {error}", file=sys.stderr)
+        print(f"{prog}: {option}: {error}", file=sys.stderr)
         sys.exit(2)
     return policy
 

@@ -8,7 +8,7 @@ what the policy sees, and the policy's greedy climbs with the moves it rejects v
     /usr/bin/python3 examples/python/reach_estimate.py fit --labels build/labels-*.npz --out build/reach-head.json
     /usr/bin/python3 examples/python/reach_estimate.py evaluate --policy models/policies/reach-ppo.json \\
         --head build/reach-head.json --veto 0.2 0.3 --wall-seeds 10000:10299 --json
-    /usr/bin/python3 examples/python/reach_estimate.py train --init-policy models/policies/reach-ppo.json \
+    /usr/bin/python3 examples/python/reach_estimate.py train --init-policy models/policies/reach-ppo.json \\
         --head build/reach-head.json --veto 0.5 --out build/reach-ppo-vetoed.json
 
 label climbs each random wall once with the policy, greedy but for a share of uniformly
@@ -343,7 +343,7 @@ def head_for(path, policy):
 
 def command_train(args):
     baseline.training_walls(args, parser())
-    head = head_for(args.head, baseline.load_for_walls(args.init_policy, "reach_estimate.py"))
+    head = head_for(args.head, baseline.load_for_walls(args.init_policy, "reach_estimate.py", "--init-policy"))
     baseline.command_train(args, "reach_estimate.py", head.training_veto(args.veto), head.veto(args.veto),
                            {"veto": {"head": str(args.head), "threshold": args.veto}})
 
@@ -403,8 +403,8 @@ def parser():
                           help="the policy file policy_baseline.py wrote to start from")
     training.add_argument("--head", type=pathlib.Path, required=True, help="a reach head fit wrote")
     training.add_argument("--veto", type=probability, required=True,
-                          help="P: the rollouts and the validation climbs choose among the moves estimated to reach "
-                          "with at least P")
+                          help="one threshold P (evaluate takes several): the rollouts and the validation climbs "
+                          "choose among the moves estimated to reach with at least P")
     training.add_argument("--out", type=pathlib.Path, required=True, help="the policy file to write (JSON)")
     training.add_argument("--steps", type=positive, default=1_000_000, help="environment steps")
     training.add_argument("--seed", type=int, default=1, help="fixes the walls, the network and the sampling")
