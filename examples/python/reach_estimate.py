@@ -136,6 +136,11 @@ def no_labels():
 # --- the classifier ----------------------------------------------------------------------------
 
 
+def logit(probability):
+    """The logit a probability threshold in [0, 1) sets on the head's output (-inf at 0)."""
+    return np.log(probability / (1 - probability)) if probability > 0 else -np.inf
+
+
 class ReachHead:
     """P(the move reaches) per offered slot, from the slot network's row: an MLP of width-1
     convolutions (oneDNN, as the policy's) over standardised rows."""
@@ -158,7 +163,7 @@ class ReachHead:
     def veto(self, threshold):
         """evaluate's veto: the slots of one observation's (state (1, 55), slots (1, K, 11))
         estimated to reach with a probability of at least threshold, as (1, K) booleans."""
-        logit_threshold = np.log(threshold / (1 - threshold)) if threshold > 0 else -np.inf
+        logit_threshold = logit(threshold)
 
         def allowed(state, slots):
             rows = np.concatenate([np.repeat(state, slots.shape[1], axis=0), slots[0]], axis=1)
@@ -170,7 +175,7 @@ class ReachHead:
         """train's veto: of a batch of observations (state (E, 55), slots (E, K, 11), mask
         (E, K)), the offered slots estimated to reach with a probability of at least
         threshold; only the offered slots are scored."""
-        logit_threshold = np.log(threshold / (1 - threshold)) if threshold > 0 else -np.inf
+        logit_threshold = logit(threshold)
 
         def allowed(state, slots, mask):
             env_of, slot_of = np.nonzero(mask)

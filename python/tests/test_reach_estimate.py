@@ -587,18 +587,25 @@ def test_baselines_quotes_the_sharper_head():
     assert f"(up to {release['longest_ratio']:.1f} times the plan)" in flat
 
 
+def held_out_3000(record):
+    """The plans of the 3000 held-out walls 20000-22999, and the climbs of each head's veto
+    and of the policy alone there, from the record's two halves."""
+    wide, sharp, further = (record[key] for key in (
+        "held_out_walls_20000_21499", "sharper_head_held_out_walls_20000_21499", "held_out_walls_21500_22999"))
+    assert [w["wall_seed"] for w in further["walls"]] == list(range(21500, 23000))
+    plans = [w["plan_length"] for w in wide["walls"] + further["walls"]]
+    return plans, {"first": [w["veto"] for w in wide["walls"]] + [w["first"] for w in further["walls"]],
+                   "sharper": sharp["walls"] + [w["sharper"] for w in further["walls"]],
+                   "alone": [w["alone"] for w in wide["walls"]] + [w["alone"] for w in further["walls"]]}
+
+
 def test_baselines_quotes_the_3000_held_out_walls():
     from wall_statistics import interval, paired
     record = json.loads((SEARCH / "reach_estimate.json").read_text())
     flat = " ".join((REPOSITORY / "docs" / "BASELINES.md").read_text().split())
-    wide, sharp, further = (record[key] for key in (
-        "held_out_walls_20000_21499", "sharper_head_held_out_walls_20000_21499", "held_out_walls_21500_22999"))
+    wide, sharp = record["held_out_walls_20000_21499"], record["sharper_head_held_out_walls_20000_21499"]
     tested = record["held_out_walls_20000_22999"]
-    assert [w["wall_seed"] for w in further["walls"]] == list(range(21500, 23000))
-    plans = [w["plan_length"] for w in wide["walls"] + further["walls"]]
-    climbs = {"first": [w["veto"] for w in wide["walls"]] + [w["first"] for w in further["walls"]],
-              "sharper": sharp["walls"] + [w["sharper"] for w in further["walls"]],
-              "alone": [w["alone"] for w in wide["walls"]] + [w["alone"] for w in further["walls"]]}
+    plans, climbs = held_out_3000(record)
     ratios = {m: length_ratios(cs, plans) for m, cs in climbs.items()}
     done = {m: finished_shares(cs) for m, cs in climbs.items()}
     for m in ("first", "sharper"):
@@ -699,12 +706,9 @@ def test_baselines_quotes_the_policy_trained_under_its_veto():
             f"command again beside two other runs, took {tuned['rerun_seconds']:.0f} s)") in flat
     assert shipped["history"][-1]["seconds"] == tuned["rerun_seconds"]
     # The 3000 held-out walls, recomputed from the per-wall climbs.
-    wide, further = record["held_out_walls_20000_21499"], record["held_out_walls_21500_22999"]
-    plans = [w["plan_length"] for w in wide["walls"] + further["walls"]]
-    mine = tuned["held_out_walls"]
+    plans, climbs = held_out_3000(record)
+    first, alone, mine = climbs["first"], climbs["alone"], tuned["held_out_walls"]
     assert [w["wall_seed"] for w in mine] == list(range(20000, 23000))
-    first = [w["veto"] for w in wide["walls"]] + [w["first"] for w in further["walls"]]
-    alone = [w["alone"] for w in wide["walls"]] + [w["alone"] for w in further["walls"]]
     ratios = length_ratios(mine, plans)
     assert interval(ratios) == tuned["ratio"] and paired(ratios, [1.5] * 3000) == tuned["ratio_minus_1_5"]
     assert paired(ratios, length_ratios(first, plans)) == tuned["ratio_minus_first_head"]

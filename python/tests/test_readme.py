@@ -62,14 +62,21 @@ def test_the_python_block_runs_with_gymnasiums_source_on_readmes_pythonpath(repo
     assert done.returncode == 0, done.stderr
 
 
-def test_the_shipped_policy_climbs_the_held_out_walls_as_readme_says(repository):
+def run_policy_line(repository, script):
+    """README's one shell line that runs the example script, from a folder with the
+    repository's examples and models, Gymnasium's source on the path: the line and its run."""
     (gymnasium,) = need(["gymnasium"], GYMNASIUM)
     need(["torch"], "the policy needs Debian's python3-torch")
-    (line,) = [line for block in fenced("sh") for line in block.splitlines() if "policy_baseline.py evaluate" in line]
+    (line,) = [line for block in fenced("sh") for line in block.splitlines() if script in line]
     for folder in ("examples", "models"):
         (repository / folder).symlink_to(README.parent / folder)
     done = run_shell(line, repository, GYMNASIUM=str(pathlib.Path(gymnasium.__file__).parents[1]))
     assert done.returncode == 0, done.stderr
+    return line, done
+
+
+def test_the_shipped_policy_climbs_the_held_out_walls_as_readme_says(repository):
+    _, done = run_policy_line(repository, "policy_baseline.py evaluate")
     # The shipped policy's held-out record, which docs/BASELINES.md quotes.
     record = json.loads((README.parent / "models" / "policies" / "reach-ppo.heldout.json").read_text())
     assert done.stdout == (f"{record['climbs']} climbs, {record['finished']:.1%} finished, mean length "
@@ -131,22 +138,16 @@ def test_the_tours_performed_climb_is_reported_and_viewed(tmp_path):
 
 
 def test_the_policy_trained_under_its_veto_climbs_as_its_record_says(repository):
-    (gymnasium,) = need(["gymnasium"], GYMNASIUM)
-    need(["torch"], "the policy needs Debian's python3-torch")
-    (line,) = [line for block in fenced("sh") for line in block.splitlines() if "reach_estimate.py evaluate" in line]
-    for folder in ("examples", "models"):
-        (repository / folder).symlink_to(README.parent / folder)
-    done = run_shell(line, repository, GYMNASIUM=str(pathlib.Path(gymnasium.__file__).parents[1]))
-    assert done.returncode == 0, done.stderr
+    line, done = run_policy_line(repository, "reach_estimate.py evaluate")
     # The same walls' climbs in the record docs/BASELINES.md quotes, and their plans.
     first, last = (int(seed) for seed in line.split("--wall-seeds ")[1].split()[0].split(":"))
     record = json.loads((README.parent / "models" / "policies" / "search" / "reach_estimate.json").read_text())
-    climbs = record["trained_under_the_veto"]["held_out_walls"][:last - first + 1]
+    tuned = record["trained_under_the_veto"]
+    climbs = tuned["held_out_walls"][:last - first + 1]
     plans = record["held_out_walls_20000_21499"]["walls"][:last - first + 1]
     assert [c["wall_seed"] for c in climbs] == [p["wall_seed"] for p in plans] == list(range(first, last + 1))
     ratios = [c["length"] / p["plan_length"] for c, p in zip(climbs, plans) if c["finished"]]
     finished = sum(c["finished"] for c in climbs) / len(climbs)
-    tuned = record["trained_under_the_veto"]
     assert (f"climbs 3000 held-out walls with it in {tuned['ratio']['mean']:.3f} times their exact plans on average "
             f"(over the {tuned['finished']['mean']:.1%} of climbs that finish)").replace("%", " %") in " ".join(
         README.read_text().split())
