@@ -11,11 +11,13 @@
 train writes the policy as plain weights in JSON (the format below), with the command and
 the seed that trained it; evaluate climbs each random wall A..B once with the policy's
 greedy action (the highest-scored offered candidate; the observation marks the moves that
-failed from the current state, so a policy that learnt to can avoid them) and compares
-the climb's length, failed moves included, with the wall's exact shortest plan (with
---oracle verdict, only among the offered moves that reach: what knowing reach would
-give, no longer zero-shot); compare puts policies beside Dyna-Q and the random policy on
-the same walls, paired over walls; plot draws the search's validation curves.
+failed from the current state, so a policy that learnt to can avoid them; among the
+moves its reach head lets through when the file's training record names a veto,
+reach_estimate.py train's, unless --no-veto) and compares the climb's length, failed moves
+included, with the wall's exact shortest plan (with --oracle verdict, only among the
+offered moves that reach: what knowing reach would give, no longer zero-shot); compare
+puts policies beside Dyna-Q and the random policy on the same walls, paired over walls
+(each under its file's veto, as evaluate); plot draws the search's validation curves.
 models/policies/reach-ppo.json is the shipped policy, its training command inside it.
 
 Training walls are random walls whose seeds each environment draws from its own stream,
@@ -575,15 +577,16 @@ def random_climb(wall_seed, seed):
     return False, None
 
 
-def compare(policies, wall_seeds, seeds):
-    """Per held-out wall: its plan, each policy's greedy climb, and Dyna-Q's and random's
-    runs with each learning seed; then each method's mean over walls (each wall its runs'
-    mean) with 95 % t-intervals, and the policy's differences paired over walls."""
+def compare(policies, wall_seeds, seeds, vetoes=None):
+    """Per held-out wall: its plan, each policy's greedy climb (under its veto, of vetoes:
+    one per policy, None for none), and Dyna-Q's and random's runs with each learning seed;
+    then each method's mean over walls (each wall its runs' mean) with 95 % t-intervals, and
+    the policy's differences paired over walls."""
     plans = plan_lengths(wall_seeds)
     walls = [{"wall_seed": seed, "plan_length": plans.get(seed), "policy": [], "dyna_q": [], "random": []}
              for seed in wall_seeds if seed in plans]
-    for policy in policies:
-        climbs = evaluate(policy, [w["wall_seed"] for w in walls], plans=plans)["walls"]
+    for policy, veto in zip(policies, vetoes or [None] * len(policies)):
+        climbs = evaluate(policy, [w["wall_seed"] for w in walls], plans=plans, veto=veto)["walls"]
         for wall, climb in zip(walls, climbs):
             length = climb["length"] if climb["finished"] else None
             wall["policy"].append({"finished": float(climb["finished"]), "length": length,
@@ -679,23 +682,66 @@ def load_for_walls(path, prog="policy_baseline.py", option="--policy"):
     return policy
 
 
+def recorded_veto(path, policy):
+    """The veto the policy file's training record names (reach_estimate.py train's "veto":
+    its reach head and threshold), as evaluate takes it, and {"head", "threshold"}; (None,
+    None) when the record names none. The head's path is read as recorded: from the current
+    folder or, failing that, from the nearest folder above the policy file that holds it.
+    ValueError naming the file on a veto that cannot be applied."""
+    named = read_record(path, POLICY_FORMAT, POLICY_VERSION, "policy file").get("training", {}).get("veto")
+    if named is None:
+        return None, None
+    import reach_estimate  # it imports this module: at the top, the import would be circular
+    try:
+        recorded, threshold = pathlib.Path(named["head"]), float(named["threshold"])
+    except (KeyError, TypeError, ValueError) as error:
+        raise ValueError(f"{path}: its training record's veto is not a head and a threshold ({error})") from None
+    if not 0 <= threshold < 1:
+        raise ValueError(f"{path}: its training record's veto threshold must be in [0, 1), got {threshold}")
+    folders = [pathlib.Path()] + list(pathlib.Path(path).resolve().parents)
+    head_path = next((folder / recorded for folder in folders if (folder / recorded).is_file()), recorded)
+    try:
+        head, _ = reach_estimate.load_head(head_path)
+        if abs(head.max_span - policy.max_span) > 1e-9:
+            raise ValueError(f"{head_path}: fitted with filter.max_span = {head.max_span} m, and the policy reads "
+                             f"{policy.max_span} m")
+    except ValueError as error:
+        raise ValueError(f"{path}: the reach head of its veto: {error}") from None
+    return head.veto(threshold), {"head": str(head_path), "threshold": threshold}
+
+
+def veto_for_walls(path, policy):
+    """recorded_veto, or exit 2 with one line."""
+    try:
+        return recorded_veto(path, policy)
+    except ValueError as error:
+        print(f"policy_baseline.py: --policy: {error}", file=sys.stderr)
+        sys.exit(2)
+
+
 def command_evaluate(args):
     policy = load_for_walls(args.policy)
+    veto, named = veto_for_walls(args.policy, policy) if not args.no_veto and args.oracle == "none" else (None, None)
     result = evaluate(policy, args.wall_seeds, args.physics_model, plan_lengths(args.wall_seeds, args.physics_model),
-                      oracle=args.oracle == "verdict")
+                      oracle=args.oracle == "verdict", veto=veto)
     result["oracle"] = args.oracle
+    result["veto"] = named
     if args.json:
         print(json.dumps(result, indent=2))
         return
     told = ", told which moves reach" if args.oracle == "verdict" else ""
+    under = f", under its veto ({named['head']} at {named['threshold']})" if named else ""
     print(f"{result['climbs']} climbs, {result['finished']:.1%} finished, mean length {result['mean_length']}, "
-          f"mean plan length {result['mean_plan_length']}{told}")
+          f"mean plan length {result['mean_plan_length']}{told}{under}")
 
 
 def command_compare(args):
     policies = [load_for_walls(path) for path in args.policy]
-    summary = compare(policies, args.wall_seeds, args.seeds)
+    vetoes = [veto_for_walls(path, policy) if not args.no_veto else (None, None)
+              for path, policy in zip(args.policy, policies)]
+    summary = compare(policies, args.wall_seeds, args.seeds, [veto for veto, _ in vetoes])
     summary["policies"] = [str(path) for path in args.policy]
+    summary["vetoes"] = [named for _, named in vetoes]
     if args.out:
         write_whole(args.out, json.dumps(summary, indent=1) + "\n")
     print(json.dumps(summary, indent=1) if args.json else comparison_markdown(summary))
@@ -893,7 +939,11 @@ def parser():
     e.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic")
     e.add_argument("--oracle", choices=("none", "verdict"), default="none",
                    help="verdict: the climbs choose only among the offered moves that reach, each tried first "
-                   "in a copy of the climb (what knowing reach would give; no longer zero-shot)")
+                   "in a copy of the climb (what knowing reach would give; no longer zero-shot), without the "
+                   "file's veto")
+    e.add_argument("--no-veto", action="store_true",
+                   help="climb without the veto the policy file's training record names (a reach head and a "
+                   "threshold, reach_estimate.py train's), which evaluate otherwise applies")
     e.add_argument("--json", action="store_true", help="print the result as JSON")
     c = commands.add_parser("compare", help="Policies against Dyna-Q and random on held-out walls, paired over walls")
     c.add_argument("--policy", type=pathlib.Path, nargs="+", required=True,
@@ -901,6 +951,9 @@ def parser():
     c.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
     c.add_argument("--seeds", type=wall_seed_range, default=range(1, 4),
                    help="Dyna-Q's and random's learning seeds A:B (default 1:3)")
+    c.add_argument("--no-veto", action="store_true",
+                   help="climb without the vetoes the policy files' training records name, which compare "
+                   "otherwise applies")
     c.add_argument("--out", type=pathlib.Path, default=None, help="also write the comparison (JSON) to this file")
     c.add_argument("--json", action="store_true", help="print the comparison as JSON, not as tables")
     g = commands.add_parser("plot", help="The search's validation curves (and a comparison's walls) as a PNG")

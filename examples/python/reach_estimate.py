@@ -348,6 +348,10 @@ def head_for(path, policy):
 
 def command_train(args):
     baseline.training_walls(args, parser())
+    if args.physics_model != "kinematic":
+        # label climbs under the kinematic model: the head's verdicts are that model's.
+        fail("--physics-model", "the reach head learnt the kinematic model's verdicts; its veto would misjudge the "
+             f"{args.physics_model} model's moves")
     head = head_for(args.head, baseline.load_for_walls(args.init_policy, "reach_estimate.py", "--init-policy"))
     baseline.command_train(args, "reach_estimate.py", head.training_veto(args.veto), head.veto(args.veto),
                            {"veto": {"head": str(args.head), "threshold": args.veto}})

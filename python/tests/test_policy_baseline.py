@@ -206,6 +206,52 @@ def test_a_bad_policy_file_is_one_line_and_exit_code_2(tmp_path, content, proble
     assert done.stderr.startswith(f"policy_baseline.py: --policy: {path}: ")
 
 
+def test_evaluate_climbs_under_the_veto_the_policy_file_names(tmp_path, monkeypatch, capsys):
+    """The shipped policy trained under its veto: evaluate applies the reach head its record
+    names, found from a folder above the policy file when the current folder has no such
+    path, and climbs as its record says; --no-veto and --oracle verdict climb without it."""
+    vetoed = REPOSITORY / "models" / "policies" / "reach-ppo-vetoed.json"
+    monkeypatch.chdir(tmp_path)
+    baseline.main(["evaluate", "--policy", str(vetoed), "--wall-seeds", "20000:20001", "--json"])
+    under = json.loads(capsys.readouterr().out)
+    assert under["veto"] == {"head": str(REPOSITORY / "models" / "policies" / "reach-ppo.reach-head.json"),
+                             "threshold": 0.5}
+    record = json.loads((SEARCH / "reach_estimate.json").read_text())["trained_under_the_veto"]["held_out_walls"]
+    assert [{key: wall[key] for key in record[0]} for wall in under["walls"]] == record[:2]
+    baseline.main(["evaluate", "--policy", str(vetoed), "--wall-seeds", "20000:20001", "--json", "--no-veto"])
+    alone = json.loads(capsys.readouterr().out)
+    policy, _ = baseline.load_policy(vetoed)
+    by_hand = baseline.evaluate(policy, [20000, 20001], plans=baseline.plan_lengths([20000, 20001]))
+    assert alone["veto"] is None and alone["walls"] == by_hand["walls"] != under["walls"]
+
+
+def policy_naming_a_veto(folder, veto):
+    baseline.deterministic(5)
+    path = folder / "policy.json"
+    baseline.save_policy(baseline.SlotPolicy(8, baseline.configured_max_span()), path, {"seed": 5, "veto": veto})
+    return path
+
+
+@pytest.mark.parametrize("veto, problem", [
+    ({"head": "missing-head.json", "threshold": 0.5}, "missing-head.json: cannot read the reach head"),
+    ({"head": "head.json", "threshold": 1.5}, "veto threshold must be in [0, 1), got 1.5"),
+    ("head.json", "its training record's veto is not a head and a threshold"),
+    ({"head": "head.json", "threshold": 0.5}, "head.json: fitted with filter.max_span = 9.0 m"),
+])
+def test_a_veto_that_cannot_be_applied_is_one_line_and_exit_code_2(tmp_path, monkeypatch, capsys, veto, problem):
+    import reach_estimate  # the module policy_baseline reads heads with
+
+    head = reach_estimate.ReachHead(4, np.zeros(reach_estimate.ROW_SIZE), np.ones(reach_estimate.ROW_SIZE), 9.0)
+    reach_estimate.save_head(head, tmp_path / "head.json", {})
+    path = policy_naming_a_veto(tmp_path, veto)
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit) as exit_:
+        baseline.main(["evaluate", "--policy", str(path), "--wall-seeds", "20000:20001"])
+    out = capsys.readouterr()
+    assert exit_.value.code == 2 and out.out == "" and out.err.count("\n") == 1, out.err
+    assert out.err.startswith(f"policy_baseline.py: --policy: {path}: ") and problem in out.err, out.err
+
+
 def test_bad_arguments_are_one_line_and_exit_code_2(tmp_path):
     done = run_evaluate("--policy", str(tmp_path / "p.json"), "--wall-seeds", "5:2")
     assert done.returncode == 2 and done.stderr.count("\n") == 1 and "--wall-seeds" in done.stderr
@@ -269,6 +315,7 @@ def test_the_comparison_is_made_of_its_parts_and_draws(tmp_path, capsys):
     baseline.main(["compare", "--policy", *map(str, paths), "--wall-seeds", "3:4", "--seeds", "1:2", "--out", str(out)])
     table = capsys.readouterr().out
     summary = json.loads(out.read_text())
+    assert summary["vetoes"] == [None, None]
     policies = [baseline.load_policy(path)[0] for path in paths]
     for wall in summary["walls"]:
         seed = wall["wall_seed"]
@@ -289,6 +336,28 @@ def test_the_comparison_is_made_of_its_parts_and_draws(tmp_path, capsys):
     baseline.main(["plot", "--search", str(SEARCH), "--comparison", str(out),
                    str(figure)])
     assert figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and not list(tmp_path.glob("*.partial*"))
+
+
+def test_compare_climbs_each_policy_under_the_veto_its_file_names(tmp_path, monkeypatch, capsys):
+    for method in ("dyna_q_climb", "random_climb"):  # their runs are checked above; here only the policy's
+        monkeypatch.setattr(baseline, method, lambda wall_seed, seed: (True, 10))
+    vetoed = REPOSITORY / "models" / "policies" / "reach-ppo-vetoed.json"
+    out = tmp_path / "comparison.json"
+    for veto in ([], ["--no-veto"]):
+        baseline.main(["compare", "--policy", str(vetoed), "--wall-seeds", "20000:20001", "--seeds", "1:1",
+                       "--out", str(out), "--json", *veto])
+        capsys.readouterr()
+        summary = json.loads(out.read_text())
+        climbs = [wall["policy"][0] for wall in summary["walls"]]
+        if veto:
+            assert summary["vetoes"] == [None]
+            policy, _ = baseline.load_policy(vetoed)
+            alone = baseline.evaluate(policy, [20000, 20001], plans=baseline.plan_lengths([20000, 20001]))["walls"]
+            assert [c["length"] for c in climbs] == [w["length"] for w in alone]
+        else:
+            assert summary["vetoes"][0]["threshold"] == 0.5
+            record = json.loads((SEARCH / "reach_estimate.json").read_text())["trained_under_the_veto"]
+            assert [c["length"] for c in climbs] == [w["length"] for w in record["held_out_walls"][:2]]
 
 
 def test_training_can_start_from_a_policy_and_refuses_a_bad_one(tmp_path, capsys):

@@ -322,9 +322,11 @@ def test_train_writes_a_policy_that_names_its_veto_and_refuses_a_bad_head(tmp_pa
     for option, policy, head, problem in (
             ("--head", SHIPPED, tmp_path / "missing.json", "cannot read the reach head"),
             ("--head", SHIPPED, narrow, "fitted with filter.max_span = 2.5 m"),
-            ("--init-policy", tmp_path / "missing.json", HEAD, "cannot read the policy file")):
+            ("--init-policy", tmp_path / "missing.json", HEAD, "cannot read the policy file"),
+            ("--physics-model", SHIPPED, HEAD, "learnt the kinematic model's verdicts")):
+        model = ["--physics-model", "static"] if option == "--physics-model" else []
         code, printed = run("train", "--init-policy", str(policy), "--head", str(head), "--veto", "0.5",
-                            "--out", str(tmp_path / "x.json"), *SHORT, capsys=capsys)
+                            "--out", str(tmp_path / "x.json"), *SHORT, *model, capsys=capsys)
         assert code == 2 and printed.err.count("\n") == 1 and problem in printed.err, printed.err
         assert printed.err.startswith(f"reach_estimate.py: {option}: ") and not (tmp_path / "x.json").exists()
 
