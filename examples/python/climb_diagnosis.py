@@ -1,7 +1,8 @@
 """Where a learnt policy's greedy climbs go wrong, measured against every climb the wall
 allows (crux.climb_graph, docs/BASELINES.md).
 
-    climb_diagnosis.py --policy FILE --wall-seeds A:B [--physics-model static] [--oracle reach|live] [--json]
+    climb_diagnosis.py --policy FILE --wall-seeds A:B [--physics-model static] [--oracle reach|live|nearest]
+                       [--mistakes SHARE --seed S] [--json]
 
 Each move of a climb is one of: optimal (to a state one action nearer the finish), a
 shortcut (nearer by more: a move the graph's routes did not reach), a detour (no nearer,
@@ -17,10 +18,15 @@ configuration they had held. A wall whose graph outgrows crux.climb_graph's budg
 solves (5 M; a random wall takes about 50,000) is skipped, named.
 
 --oracle tells the policy what it cannot see: the climbs choose greedily among the offered
-moves the graph reaches (reach), or among those that also keep a climb to the finish
-(live), less those that failed there; where that leaves none they choose among all
-(counted as oracle_fallbacks). The report then measures how far knowing that would take
-the policy.
+moves the graph reaches (reach), among those that also keep a climb to the finish (live),
+or among the live ones nearest the finish (nearest: the graph's optimal moves, the policy
+only breaking ties), less those that failed there; where that leaves none they choose
+among all (counted as oracle_fallbacks). The report then measures how far knowing that
+would take the policy. --mistakes adds a share of uniformly random offered moves, each
+wall's draws from its own stream of --seed: with --oracle nearest, a climber that knows
+the graph's best move but for that share of its choices, which measures how rarely a move
+scorer may be wrong. live_choices counts the actions taken from states that still have a
+climb to the finish.
 """
 
 import json
@@ -52,11 +58,15 @@ def climb_graph(wall, physics_model):
 
 
 def oracle_mask(mask, holds, failed, after, oracle):
-    """The policy's mask, narrowed to the offered moves the graph reaches ("reach") or to those
-    that also keep a climb to the finish ("live"), less those that failed here in the
-    environment; None where that leaves none (the climb then chooses among all it is offered)."""
-    allowed = [hold in after and not fail and (oracle == "reach" or after[hold] >= 0)
+    """The policy's mask, narrowed to the offered moves the graph reaches ("reach"), to those
+    that also keep a climb to the finish ("live"), or to the live ones nearest the finish
+    ("nearest"), less those that failed here in the environment; None where that leaves none
+    (the climb then chooses among all it is offered)."""
+    allowed = [hold in after and not fail and (oracle == "reach" or (after[hold] is not None and after[hold] >= 0))
                for hold, fail in zip(holds, failed)]
+    if oracle == "nearest" and any(allowed):
+        nearest = min(after[hold] for hold, keep in zip(holds, allowed) if keep)
+        allowed = [keep and after[hold] == nearest for hold, keep in zip(holds, allowed)]
     narrowed = mask.copy()
     narrowed[0, :len(holds)] &= np.array(allowed, dtype=bool)
     return narrowed if narrowed.any() else None
@@ -80,25 +90,59 @@ def move_kind(before, reached, finished, after, graph_reaches=False):
     return "shortcut" if after < before - 1 else "detour"
 
 
-def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP):
-    """One greedy climb (policy_baseline's climb, on the MDP, which names its configuration)."""
+def climb_verdicts(wall, config, history, holds, distance):
+    """{hold: the graph's distance after its move (0 when it finishes, None for a state the
+    graph does not hold)} for the offered holds whose move reaches in this climb: each tried
+    in a new MDP on the wall that first takes the climb's moves (history), as
+    policy_baseline.verdict_mask tries them; a new MDP for each, since the IK's cache keeps
+    the first verdict on a configuration."""
+    after = {}
+    for hold in holds:
+        trial = crux.ClimbMdp(wall, config=config, max_steps=None)
+        trial.reset()
+        for taken in history:
+            trial.step(taken)
+        raw, _, terminated, _, info = trial.step(int(hold))
+        if info["reached"]:
+            after[int(hold)] = 0 if terminated and not info["fell"] else distance.get(
+                tuple(raw["configuration"].tolist()))
+    return after
+
+
+def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP, mistakes=0.0, rng=None, verdicts=None,
+                   ties="policy"):
+    """One greedy climb (policy_baseline's climb, on the MDP, which names its configuration),
+    but for a share mistakes of uniformly random offered moves, drawn from rng. verdicts:
+    None, or (wall, config): the oracle then reads the climb's own verdicts (climb_verdicts)
+    instead of the graph's routes'. ties: "policy" (its greedy choice among the moves the
+    oracle leaves) or "first" (the first offered of them, the order the graph explores in)."""
     distance, moves = graph
+    history = []
     raw, _ = mdp.reset()
     kinds = dict.fromkeys(MOVE_KINDS, 0)
     configuration = tuple(raw["configuration"].tolist())
     held = {configuration}
-    revisited, entered_dead_end, fallbacks, ending = False, False, 0, "cap"
+    revisited, entered_dead_end, fallbacks, ending, live_choices, random_moves = False, False, 0, "cap", 0, 0
     for _ in range(cap):
+        live_choices += distance.get(configuration, -1) >= 0
         holds = np.flatnonzero(mdp.action_mask())
         graph_moves = moves.get(configuration, {})
         obs = mdp.numeric_observation(baseline.MAX_CANDIDATES, reach=True)
         state, slots, mask = baseline.single_features(obs, policy.max_span)
         if oracle != "none":
-            narrowed = oracle_mask(mask, holds, obs["candidate_failed"][:len(holds)] > 0.5, graph_moves, oracle)
+            after = graph_moves if verdicts is None else climb_verdicts(*verdicts, history, holds, distance)
+            narrowed = oracle_mask(mask, holds, obs["candidate_failed"][:len(holds)] > 0.5, after, oracle)
             fallbacks += narrowed is None
             mask = mask if narrowed is None else narrowed
-        slot = baseline.greedy_slot(policy, state, slots, mask)
+        if mistakes > 0 and rng.random() < mistakes:
+            slot = int(rng.integers(len(holds)))
+            random_moves += 1
+        elif ties == "first" and oracle != "none":
+            slot = int(np.flatnonzero(mask[0])[0])
+        else:
+            slot = baseline.greedy_slot(policy, state, slots, mask)
         raw, _, terminated, _, info = mdp.step(int(holds[slot]))
+        history.append(int(holds[slot]))
         finished = terminated and not info["fell"]
         reached_configuration = tuple(raw["configuration"].tolist())
         kind = move_kind(distance.get(configuration), info["reached"], finished, distance.get(reached_configuration),
@@ -113,31 +157,40 @@ def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP):
             held.add(reached_configuration)
         configuration = reached_configuration
     return {"ending": ending, "actions": sum(kinds.values()), "moves": kinds, "entered_dead_end": entered_dead_end,
-            "revisited": revisited, "oracle_fallbacks": fallbacks}
+            "revisited": revisited, "oracle_fallbacks": fallbacks, "live_choices": live_choices,
+            "random_moves": random_moves}
 
 
-def diagnose(policy, wall_seeds, physics_model="kinematic", oracle="none"):
-    """The climbs on the walls whose start holds, and their sums."""
+def diagnose(policy, wall_seeds, physics_model="kinematic", oracle="none", mistakes=0.0, seed=1, verdicts=False,
+             ties="policy"):
+    """The climbs on the walls whose start holds, and their sums; mistakes and ties as
+    diagnose_climb takes them, each wall's draws from the stream of (seed, the wall's seed);
+    verdicts: the oracle reads the climb's own verdicts."""
     config = baseline.climbing_config(physics_model)
     walls, skipped = [], []
-    for seed in wall_seeds:
-        wall = crux.Wall.random(seed)
+    for wall_seed in wall_seeds:
+        wall = crux.Wall.random(wall_seed)
         try:
             mdp = crux.ClimbMdp(wall, config=config, max_steps=None)
         except ValueError:
             continue  # a start that does not hold, as evaluate skips it
         graph = climb_graph(wall, physics_model)
         if graph is None:
-            skipped.append({"wall_seed": seed, "why": "its graph outgrows crux.climb_graph's budget of IK solves"})
+            skipped.append({"wall_seed": wall_seed, "why": "its graph outgrows crux.climb_graph's budget of IK solves"})
             continue
-        walls.append({"wall_seed": seed, **diagnose_climb(policy, mdp, graph, oracle)})
+        climb = diagnose_climb(policy, mdp, graph, oracle, mistakes=mistakes,
+                               rng=np.random.default_rng([seed, wall_seed]),
+                               verdicts=(wall, config) if verdicts else None, ties=ties)
+        walls.append({"wall_seed": wall_seed, **climb})
     total = {kind: sum(w["moves"][kind] for w in walls) for kind in MOVE_KINDS}
     endings = {ending: sum(w["ending"] == ending for w in walls) for ending in ("finished", "fell", "cap")}
-    return {"oracle": oracle, "climbs": len(walls), **endings,
+    return {"oracle": oracle, "verdicts": verdicts, "ties": ties, "climbs": len(walls), **endings,
             "entered_dead_end": sum(w["entered_dead_end"] for w in walls),
             "revisited": sum(w["revisited"] for w in walls),
-            "oracle_fallbacks": sum(w["oracle_fallbacks"] for w in walls), "moves": total, "walls": walls,
-            "skipped_walls": skipped}
+            "oracle_fallbacks": sum(w["oracle_fallbacks"] for w in walls), "mistakes": mistakes,
+            "random_moves": sum(w["random_moves"] for w in walls),
+            "live_choices": sum(w["live_choices"] for w in walls),
+            "moves": total, "walls": walls, "skipped_walls": skipped}
 
 
 def parser():
@@ -145,25 +198,39 @@ def parser():
     top.add_argument("--policy", type=pathlib.Path, required=True, help="a policy file (policy_baseline.py's)")
     top.add_argument("--wall-seeds", type=wall_seed_range, required=True, help="random walls A to B inclusive, as A:B")
     top.add_argument("--physics-model", choices=("kinematic", "static"), default="kinematic")
-    top.add_argument("--oracle", choices=("none", "reach", "live"), default="none",
-                     help="let the policy choose only among the moves the graph reaches (reach), or among those "
-                     "that also keep a climb to the finish (live): what the policy would do if it knew that")
+    top.add_argument("--oracle", choices=("none", "reach", "live", "nearest"), default="none",
+                     help="let the policy choose only among the moves the graph reaches (reach), among those "
+                     "that also keep a climb to the finish (live), or among the live ones nearest the finish "
+                     "(nearest): what the policy would do if it knew that")
+    top.add_argument("--verdicts", action="store_true",
+                     help="the oracle reads the climb's own verdicts (each offered move tried first in a copy of "
+                     "the climb) instead of the graph's routes', and the graph's distance of the state each reaches")
+    top.add_argument("--ties", choices=("policy", "first"), default="policy",
+                     help="among the moves the oracle leaves, the policy's greedy choice or the first offered (the "
+                     "order in which the graph explores)")
+    top.add_argument("--mistakes", type=baseline.unit_interval, default=0.0,
+                     help="the share of choices made uniformly at random among the offered moves instead")
+    top.add_argument("--seed", type=int, default=1, help="the random moves' seed (each wall its own stream of it)")
     top.add_argument("--json", action="store_true", help="the whole report, per wall, as JSON")
     return top
 
 
 def main(argv=None):
     args = parser().parse_args(argv)
+    for option, given in (("--verdicts", args.verdicts), ("--ties", args.ties != "policy")):
+        if given and args.oracle == "none":
+            parser().error(f"{option}: acts on the oracle's choice, and --oracle is none")
     result = diagnose(baseline.load_for_walls(args.policy, "climb_diagnosis.py"), args.wall_seeds, args.physics_model,
-                      args.oracle)
+                      args.oracle, args.mistakes, args.seed, args.verdicts, args.ties)
     if args.json:
         print(json.dumps(result, indent=2))
         return
     moves = ", ".join(f"{kind.replace('_', ' ')} {count}" for kind, count in result["moves"].items())
     print(f"{result['climbs']} climbs: {result['finished']} finished, {result['fell']} fell, {result['cap']} at the "
           f"cap; {result['entered_dead_end']} entered a dead end, {result['revisited']} came back to a "
-          f"configuration. Moves: {moves}" + (f"; the oracle left no move {result['oracle_fallbacks']} times"
-                                               if result["oracle"] != "none" else ""))
+          f"configuration; {result['live_choices']} choices from a live state. Moves: {moves}"
+          + (f"; the oracle left no move {result['oracle_fallbacks']} times" if result["oracle"] != "none" else "")
+          + (f"; {result['random_moves']} random moves" if result["mistakes"] > 0 else ""))
 
 
 if __name__ == "__main__":

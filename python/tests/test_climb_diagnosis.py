@@ -5,6 +5,7 @@ and bad input is one line and exit code 2."""
 import contextlib
 import io
 import json
+import math
 import pathlib
 
 import numpy as np
@@ -56,6 +57,59 @@ def test_the_oracles_narrow_the_mask_to_the_moves_the_graph_allows():
     assert diagnosis.oracle_mask(mask, holds, failed, {}, "live") is None, "none allowed"
 
 
+def test_the_nearest_oracle_keeps_the_live_moves_nearest_the_finish_and_off_graph_moves_only_reach():
+    mask = np.array([[True, True, True, True, True, False]])
+    holds = np.array([4, 7, 9, 12, 15])
+    failed = np.array([False, False, False, False, True])
+    after = {4: 2, 7: 2, 9: -1, 12: 3, 15: 1}  # 15, the nearest, failed here
+    assert diagnosis.oracle_mask(mask, holds, failed, after, "nearest").tolist() == [[1, 1, 0, 0, 0, 0]]
+    off_graph = {4: None, 7: 3}  # a verdict's state the graph does not hold: reaches, distance unknown
+    assert diagnosis.oracle_mask(mask, holds, failed, off_graph, "reach").tolist() == [[1, 1, 0, 0, 0, 0]]
+    assert diagnosis.oracle_mask(mask, holds, failed, off_graph, "nearest").tolist() == [[0, 1, 0, 0, 0, 0]]
+
+
+def test_at_the_start_the_climbs_verdicts_are_the_graphs():
+    # The graph's first state is the start in the start's posture, as every climb's: there
+    # the climb's own verdicts and distances are the graph's moves.
+    config = baseline.climbing_config("static")
+    wall = diagnosis.crux.Wall.random(20001)
+    distance, moves = diagnosis.climb_graph(wall, "static")
+    mdp = diagnosis.crux.ClimbMdp(wall, config=config, max_steps=None)
+    start = tuple(mdp.reset()[0]["configuration"].tolist())
+    holds = np.flatnonzero(mdp.action_mask())
+    assert diagnosis.climb_verdicts(wall, config, [], holds, distance) == moves[start]
+
+
+def test_the_nearest_oracle_taking_the_first_offered_follows_the_graphs_routes():
+    # Ties broken in the order the graph explores reproduce its routes, and their postures:
+    # every move optimal, the climb as long as the exact plan.
+    result = run("--policy", str(SIX_M_POLICY), "--wall-seeds", "20001:20001", "--physics-model", "static",
+                 "--oracle", "nearest", "--ties", "first")
+    (wall,) = result["walls"]
+    plan = diagnosis.crux.plan(diagnosis.crux.Wall.random(20001), config={"physics.model": "static"})
+    assert result["finished"] == 1 and result["ties"] == "first" and not result["verdicts"]
+    assert wall["actions"] == wall["moves"]["optimal"] == wall["live_choices"] == plan["length"], wall
+
+
+def test_mistakes_are_random_moves_of_their_own_stream():
+    wall = diagnosis.crux.Wall.random(20000)
+    graph = diagnosis.climb_graph(wall, "kinematic")
+    policy, _ = baseline.load_policy(SIX_M_POLICY)
+
+    def climb(mistakes, seed):
+        mdp = diagnosis.crux.ClimbMdp(wall, config=baseline.climbing_config("kinematic"), max_steps=None)
+        return diagnosis.diagnose_climb(policy, mdp, graph, "nearest", mistakes=mistakes,
+                                        rng=np.random.default_rng([seed, 20000]))
+
+    every = climb(1.0, 3)
+    assert every["random_moves"] == every["actions"] > 0
+    assert climb(1.0, 3) == every, "the same stream, the same climb"
+    assert climb(1.0, 4) != every
+    some = climb(0.2, 3)
+    assert 0 < some["random_moves"] < some["actions"]
+    assert climb(0.0, 3)["random_moves"] == 0
+
+
 def test_with_the_live_oracle_no_climb_enters_a_dead_end():
     result = run("--policy", str(SIX_M_POLICY), "--wall-seeds", "20004:20005", "--physics-model", "static",
                  "--oracle", "live")
@@ -98,6 +152,10 @@ def test_the_6m_policys_falls_under_the_static_model_follow_a_dead_end():
     (["--policy", "missing.json", "--wall-seeds", "1:2"], "climb_diagnosis.py: --policy: "),
     (["--policy", str(SIX_M_POLICY), "--wall-seeds", "2:1"], "climb_diagnosis.py: argument --wall-seeds: "),
     (["--policy", str(SIX_M_POLICY), "--wall-seeds", f"1:{2**64}"], "climb_diagnosis.py: argument --wall-seeds: "),
+    (["--policy", str(SIX_M_POLICY), "--wall-seeds", "1:2", "--verdicts"], "climb_diagnosis.py: --verdicts: "),
+    (["--policy", str(SIX_M_POLICY), "--wall-seeds", "1:2", "--ties", "first"], "climb_diagnosis.py: --ties: "),
+    (["--policy", str(SIX_M_POLICY), "--wall-seeds", "1:2", "--mistakes", "1.5"],
+     "climb_diagnosis.py: argument --mistakes: "),
 ])
 def test_bad_input_is_one_line_and_exit_code_2(capsys, arguments, problem):
     with pytest.raises(SystemExit) as stopped:
@@ -209,4 +267,57 @@ def test_the_records_6m_rows_are_what_the_diagnosis_gives_now():
     six_m = next(row for row in record["diagnoses"] if row["policy"] == "models/policies/search/reach-ppo-6m.json"
                  and row["physics_model"] == "kinematic" and row["oracle"] == "none")
     now = run("--policy", str(SIX_M_POLICY), "--wall-seeds", "20000:20001")
-    assert now["walls"] == six_m["walls"][:2]
+    assert [{key: wall[key] for key in six_m["walls"][0]} for wall in now["walls"]] == six_m["walls"][:2]
+
+
+def told_row(run_record):
+    """A told_the_best_moves run as BASELINES' table prints it."""
+    told = "the nearest moves that reach in the climb" if run_record["verdicts"] else "the graph's nearest moves"
+    ties = "the first offered" if run_record["ties"] == "first" else "the policy"
+    mistakes = f"{run_record['mistakes']:.0%}".replace("%", " %") if run_record["mistakes"] else "0"
+    finished = f"{run_record['finished']} ({run_record['finished'] / run_record['climbs']:.1%})".replace("%", " %")
+    failed = run_record["moves"]["failed"] + run_record["moves"]["failed_graph_reaches"]
+    return (f"| {told} | {ties} | {mistakes} | {finished} | {run_record['fell']} | {run_record['cap']} "
+            f"| {run_record['revisited']} | {failed} | {run_record['oracle_fallbacks']} |")
+
+
+def test_baselines_quotes_the_climbs_told_the_best_moves():
+    runs = json.loads(RECORD.read_text())["told_the_best_moves"]["runs"]
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    flat = " ".join(text.split())
+    for run_record in runs:
+        walls = run_record["walls"]
+        assert run_record["climbs"] == len(walls) == 86 and run_record["finished"] == sum(
+            w["ending"] == "finished" for w in walls)
+        flags = run_record["command"]
+        assert ("--verdicts" in flags) == run_record["verdicts"] and ("--ties first" in flags) == (
+            run_record["ties"] == "first") and (f"--mistakes {run_record['mistakes']}" in flags) == (
+            run_record["mistakes"] > 0)
+        assert told_row(run_record) in text, told_row(run_record)
+    by_flags = {(r["verdicts"], r["ties"], r["mistakes"]): r for r in runs}
+    keeping, other = by_flags[(True, "first", 0.0)], by_flags[(True, "policy", 0.0)]
+    finishes = {w["wall_seed"]: w["ending"] == "finished" for w in keeping["walls"]}
+    other_finishes = {w["wall_seed"]: w["ending"] == "finished" for w in other["walls"]}
+    only_keeping = sum(finishes[s] and not other_finishes[s] for s in finishes)
+    only_other = sum(other_finishes[s] and not finishes[s] for s in finishes)
+    sign_p = min(1.0, 2 * sum(math.comb(only_keeping + only_other, i) for i in range(min(only_keeping, only_other) + 1))
+                 / 2 ** (only_keeping + only_other))
+    share = other["finished"] / other["climbs"]
+    assert f"finishes {other['finished']} of the {other['climbs']}; all {only_keeping} walls" in flat
+    assert only_other == 0 and f"(sign test, p = {sign_p:.0e})" in flat, sign_p
+    assert f"({keeping['moves']['optimal']} optimal moves, the plans' sum)" in flat
+    assert f"In {other['oracle_fallbacks']} states no live move reached" in flat
+    for mistakes, places in ((0.1, 3), (0.2, 2)):  # the table, the prose and (a tenth) Not done
+        assert flat.count(f"{by_flags[(True, 'first', mistakes)]['finished'] / 86:.1%}".replace("%", " %")) >= places
+    assert flat.count(f"{share:.1%}".replace("%", " %")) >= 3  # the table, the lead and Not done
+
+
+def test_the_records_told_runs_are_what_the_diagnosis_gives_now():
+    runs = json.loads(RECORD.read_text())["told_the_best_moves"]["runs"]
+    arguments = ["--policy", str(SIX_M_POLICY), "--wall-seeds", "20002:20002", "--physics-model", "static",
+                 "--oracle", "nearest", "--verdicts"]
+    for run_record, extra in zip([r for r in runs if r["verdicts"] and r["mistakes"] in (0.0, 0.2)],
+                                 ([], ["--ties", "first"], ["--ties", "first", "--mistakes", "0.2", "--seed", "1"])):
+        now = run(*arguments, *extra)
+        # Each wall's draws come from its own stream: a range's climbs are the longer run's.
+        assert now["walls"] == run_record["walls"][2:3], extra
