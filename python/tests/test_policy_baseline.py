@@ -517,6 +517,27 @@ def test_baselines_long_training_table_quotes_its_record():
             f"{actions[1] - round(1.5 * plans)} more actions") in prose
 
 
+def test_baselines_quotes_the_comparison_of_the_policy_trained_under_its_veto():
+    search = REPOSITORY / "models" / "policies" / "search"
+    record = json.loads((search / "heldout_vetoed.json").read_text())
+    text = (REPOSITORY / "docs" / "BASELINES.md").read_text()
+    start = text.index("the policy trained under its veto finishes every wall:")
+    section = text[start:text.index("### The static model", start)]
+    printed = baseline.comparison_markdown(record)
+    for line in printed[:printed.index("| wall | plan |")].strip().splitlines():
+        assert line in section, line  # the summary tables as compare prints them
+    assert record["vetoes"] == [{"head": "models/policies/reach-ppo.reach-head.json", "threshold": 0.5}]
+    # Its climbs are the first 30 of the 3000 evaluated under the veto; Dyna-Q's and random's
+    # runs are those of the shipped policy's comparison.
+    under = json.loads((search / "reach_estimate.json").read_text())["trained_under_the_veto"]["held_out_walls"]
+    assert [(w["wall_seed"], w["policy"][0]["length"], w["policy"][0]["failed_moves"]) for w in record["walls"]] == [
+        (w["wall_seed"], w["length"], w["failed_moves"]) for w in under[:30]]
+    others = json.loads((search / "heldout_14m.json").read_text())["walls"]
+    assert [(w["dyna_q"], w["random"]) for w in record["walls"]] == [(w["dyna_q"], w["random"]) for w in others]
+    failed = sum(w["policy"][0]["failed_moves"] for w in record["walls"])
+    assert f"Its climbs fail {failed} moves in all" in " ".join(section.split())
+
+
 def test_baselines_14m_comparison_quotes_its_record():
     policies = REPOSITORY / "models" / "policies"
     record = json.loads((policies / "search" / "heldout_14m.json").read_text())
