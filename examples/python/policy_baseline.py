@@ -11,13 +11,14 @@
 train writes the policy as plain weights in JSON (the format below), with the command and
 the seed that trained it; evaluate climbs each random wall A..B once with the policy's
 greedy action (the highest-scored offered candidate; the observation marks the moves that
-failed from the current state, so a policy that learnt to can avoid them; among the
-moves its reach head lets through when the file's training record names a veto,
-reach_estimate.py train's, unless --no-veto) and compares the climb's length, failed moves
-included, with the wall's exact shortest plan (with --oracle verdict, only among the
-offered moves that reach: what knowing reach would give, no longer zero-shot); compare
-puts policies beside Dyna-Q and the random policy on the same walls, paired over walls
-(each under its file's veto, as evaluate); plot draws the search's validation curves.
+failed from the current state, so a policy that learnt to can avoid them) and compares
+the climb's length, failed moves included, with the wall's exact shortest plan (with
+--oracle verdict, only among the offered moves that reach: what knowing reach would
+give, no longer zero-shot). A policy file whose training record names a veto
+(reach_estimate.py train's reach head and threshold) climbs among the moves the head lets
+through, unless --no-veto, in evaluate and in compare. compare puts policies beside
+Dyna-Q and the random policy on the same walls, paired over walls; plot draws the
+search's validation curves.
 models/policies/reach-ppo.json is the shipped policy, its training command inside it.
 
 Training walls are random walls whose seeds each environment draws from its own stream,
@@ -578,8 +579,8 @@ def random_climb(wall_seed, seed):
 
 
 def compare(policies, wall_seeds, seeds, vetoes=None):
-    """Per held-out wall: its plan, each policy's greedy climb (under its veto, of vetoes:
-    one per policy, None for none), and Dyna-Q's and random's runs with each learning seed;
+    """Per held-out wall: its plan, each policy's greedy climb (under the veto vetoes gives
+    it, one per policy, None for none), and Dyna-Q's and random's runs with each learning seed;
     then each method's mean over walls (each wall its runs' mean) with 95 % t-intervals, and
     the policy's differences paired over walls."""
     plans = plan_lengths(wall_seeds)
@@ -683,12 +684,15 @@ def load_for_walls(path, prog="policy_baseline.py", option="--policy"):
 
 
 def recorded_veto(path, policy):
-    """The veto the policy file's training record names (reach_estimate.py train's "veto":
-    its reach head and threshold), as evaluate takes it, and {"head", "threshold"}; (None,
-    None) when the record names none. The head's path is read as recorded: from the current
-    folder or, failing that, from the nearest folder above the policy file that holds it.
-    ValueError naming the file on a veto that cannot be applied."""
-    named = read_record(path, POLICY_FORMAT, POLICY_VERSION, "policy file").get("training", {}).get("veto")
+    """(the veto the policy file's training record names, as evaluate takes it, {"head": its
+    path, "threshold"}), or (None, None) when the record names none. Such a veto is
+    reach_estimate.py train's: a reach head and a threshold. The head's recorded path is
+    read from the nearest folder above the policy file that holds it or, failing that, from
+    the current folder. ValueError naming the file on a veto that cannot be applied."""
+    training = read_record(path, POLICY_FORMAT, POLICY_VERSION, "policy file").get("training", {})
+    if not isinstance(training, dict):
+        raise ValueError(f"{path}: its training record is not an object")
+    named = training.get("veto")
     if named is None:
         return None, None
     import reach_estimate  # it imports this module: at the top, the import would be circular
@@ -698,13 +702,11 @@ def recorded_veto(path, policy):
         raise ValueError(f"{path}: its training record's veto is not a head and a threshold ({error})") from None
     if not 0 <= threshold < 1:
         raise ValueError(f"{path}: its training record's veto threshold must be in [0, 1), got {threshold}")
-    folders = [pathlib.Path()] + list(pathlib.Path(path).resolve().parents)
+    folders = list(pathlib.Path(path).resolve().parents) + [pathlib.Path()]
     head_path = next((folder / recorded for folder in folders if (folder / recorded).is_file()), recorded)
     try:
         head, _ = reach_estimate.load_head(head_path)
-        if abs(head.max_span - policy.max_span) > 1e-9:
-            raise ValueError(f"{head_path}: fitted with filter.max_span = {head.max_span} m, and the policy reads "
-                             f"{policy.max_span} m")
+        reach_estimate.check_span(head, policy, head_path)
     except ValueError as error:
         raise ValueError(f"{path}: the reach head of its veto: {error}") from None
     return head.veto(threshold), {"head": str(head_path), "threshold": threshold}
@@ -722,6 +724,12 @@ def veto_for_walls(path, policy):
 def command_evaluate(args):
     policy = load_for_walls(args.policy)
     veto, named = veto_for_walls(args.policy, policy) if not args.no_veto and args.oracle == "none" else (None, None)
+    if named and args.physics_model != "kinematic":
+        # reach_estimate.py label climbs only under the kinematic model: every head learnt its verdicts.
+        print(f"policy_baseline.py: --physics-model: {args.policy} names a veto whose reach head learnt the "
+              f"kinematic model's verdicts, not the {args.physics_model} model's; --no-veto climbs without it",
+              file=sys.stderr)
+        sys.exit(2)
     result = evaluate(policy, args.wall_seeds, args.physics_model, plan_lengths(args.wall_seeds, args.physics_model),
                       oracle=args.oracle == "verdict", veto=veto)
     result["oracle"] = args.oracle

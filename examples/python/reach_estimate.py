@@ -333,23 +333,29 @@ def command_fit(args):
     print(json.dumps({"head": str(args.out), **training}, indent=1))
 
 
+def check_span(head, policy, path):
+    """ValueError naming the head's file unless it reads the policy's observation (the same
+    filter.max_span)."""
+    if abs(head.max_span - policy.max_span) > 1e-9:
+        raise ValueError(f"{path}: fitted with filter.max_span = {head.max_span} m, and the policy reads "
+                         f"{policy.max_span} m")
+
+
 def head_for(path, policy):
     """The reach head of the file, for the policy's observation; exit 2 with one line on
     anything else."""
     try:
         head, _ = load_head(path)
+        check_span(head, policy, path)
     except ValueError as error:
         fail("--head", error)
-    if abs(head.max_span - policy.max_span) > 1e-9:
-        fail("--head", f"{path}: fitted with filter.max_span = {head.max_span} m, and the policy reads "
-             f"{policy.max_span} m")
     return head
 
 
 def command_train(args):
     baseline.training_walls(args, parser())
     if args.physics_model != "kinematic":
-        # label climbs under the kinematic model: the head's verdicts are that model's.
+        # label climbs only under the kinematic model, so every head's verdicts are that model's.
         fail("--physics-model", "the reach head learnt the kinematic model's verdicts; its veto would misjudge the "
              f"{args.physics_model} model's moves")
     head = head_for(args.head, baseline.load_for_walls(args.init_policy, "reach_estimate.py", "--init-policy"))

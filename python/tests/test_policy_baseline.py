@@ -24,6 +24,14 @@ gymnasium, torch = need(
 REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
 SCRIPT = REPOSITORY / "examples" / "python" / "policy_baseline.py"
 SEARCH = REPOSITORY / "models" / "policies" / "search"
+VETOED = REPOSITORY / "models" / "policies" / "reach-ppo-vetoed.json"  # the policy trained under its veto
+
+
+def climbs_under_the_veto():
+    """The policy trained under its veto: its recorded climbs of the held-out walls 20000.., under the veto."""
+    return json.loads((SEARCH / "reach_estimate.json").read_text())["trained_under_the_veto"]["held_out_walls"]
+
+
 _spec = importlib.util.spec_from_file_location("policy_baseline", SCRIPT)
 baseline = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(baseline)
@@ -213,17 +221,16 @@ def test_evaluate_climbs_under_the_veto_the_policy_file_names(tmp_path, monkeypa
     """The shipped policy trained under its veto: evaluate applies the reach head its record
     names, found from a folder above the policy file when the current folder has no such
     path, and climbs as its record says; under --no-veto it climbs alone."""
-    vetoed = REPOSITORY / "models" / "policies" / "reach-ppo-vetoed.json"
     monkeypatch.chdir(tmp_path)
-    baseline.main(["evaluate", "--policy", str(vetoed), "--wall-seeds", "20000:20000", "--json"])
+    baseline.main(["evaluate", "--policy", str(VETOED), "--wall-seeds", "20000:20000", "--json"])
     under = json.loads(capsys.readouterr().out)
     assert under["veto"] == {"head": str(REPOSITORY / "models" / "policies" / "reach-ppo.reach-head.json"),
                              "threshold": 0.5}
-    record = json.loads((SEARCH / "reach_estimate.json").read_text())["trained_under_the_veto"]["held_out_walls"]
+    record = climbs_under_the_veto()
     assert [{key: wall[key] for key in record[0]} for wall in under["walls"]] == record[:1]
-    baseline.main(["evaluate", "--policy", str(vetoed), "--wall-seeds", "20000:20000", "--json", "--no-veto"])
+    baseline.main(["evaluate", "--policy", str(VETOED), "--wall-seeds", "20000:20000", "--json", "--no-veto"])
     alone = json.loads(capsys.readouterr().out)
-    policy, _ = baseline.load_policy(vetoed)
+    policy, _ = baseline.load_policy(VETOED)
     by_hand = baseline.evaluate(policy, [20000], plans=baseline.plan_lengths([20000]))
     assert alone["veto"] is None and alone["walls"] == by_hand["walls"] != under["walls"]
 
@@ -253,6 +260,23 @@ def test_a_veto_that_cannot_be_applied_is_one_line_and_exit_code_2(tmp_path, mon
     out = capsys.readouterr()
     assert exit_.value.code == 2 and out.out == "" and out.err.count("\n") == 1, out.err
     assert out.err.startswith(f"policy_baseline.py: --policy: {path}: ") and problem in out.err, out.err
+
+
+def test_evaluate_refuses_a_veto_under_the_static_model_and_a_training_record_that_is_not_an_object(
+        tmp_path, capsys):
+    policy = policy_naming_a_veto(tmp_path, None)
+    record = json.loads(policy.read_text())
+    record["training"] = None
+    policy.write_text(json.dumps(record))
+    for arguments, option, problem in (
+            (["--policy", str(VETOED), "--physics-model", "static"], "--physics-model",
+             "learnt the kinematic model's verdicts, not the static model's; --no-veto climbs without it"),
+            (["--policy", str(policy)], "--policy", f"{policy}: its training record is not an object")):
+        with pytest.raises(SystemExit) as exit_:
+            baseline.main(["evaluate", *arguments, "--wall-seeds", "20000:20000"])
+        out = capsys.readouterr()
+        assert exit_.value.code == 2 and out.out == "" and out.err.count("\n") == 1, out.err
+        assert out.err.startswith(f"policy_baseline.py: {option}: ") and problem in out.err, out.err
 
 
 def test_bad_arguments_are_one_line_and_exit_code_2(tmp_path):
@@ -344,12 +368,11 @@ def test_the_comparison_is_made_of_its_parts_and_draws(tmp_path, capsys):
 def test_compare_climbs_each_policy_under_the_veto_its_file_names(tmp_path, monkeypatch, capsys):
     for method in ("dyna_q_climb", "random_climb"):  # their runs are checked above; here only the policy's
         monkeypatch.setattr(baseline, method, lambda wall_seed, seed: (True, 10))
-    vetoed = REPOSITORY / "models" / "policies" / "reach-ppo-vetoed.json"
     out = tmp_path / "comparison.json"
-    under = json.loads((SEARCH / "reach_estimate.json").read_text())["trained_under_the_veto"]["held_out_walls"][0]
-    alone = baseline.evaluate(baseline.load_policy(vetoed)[0], [20000], plans={})["walls"][0]
+    under = climbs_under_the_veto()[0]
+    alone = baseline.evaluate(baseline.load_policy(VETOED)[0], [20000], plans={})["walls"][0]
     for veto, climb in (([], under), (["--no-veto"], alone)):
-        baseline.main(["compare", "--policy", str(vetoed), "--wall-seeds", "20000:20000", "--seeds", "1:1",
+        baseline.main(["compare", "--policy", str(VETOED), "--wall-seeds", "20000:20000", "--seeds", "1:1",
                        "--out", str(out), "--json", *veto])
         capsys.readouterr()
         summary = json.loads(out.read_text())
@@ -529,7 +552,7 @@ def test_baselines_quotes_the_comparison_of_the_policy_trained_under_its_veto():
     assert record["vetoes"] == [{"head": "models/policies/reach-ppo.reach-head.json", "threshold": 0.5}]
     # Its climbs are the first 30 of the 3000 evaluated under the veto; Dyna-Q's and random's
     # runs are those of the shipped policy's comparison.
-    under = json.loads((search / "reach_estimate.json").read_text())["trained_under_the_veto"]["held_out_walls"]
+    under = climbs_under_the_veto()
     assert [(w["wall_seed"], w["policy"][0]["length"], w["policy"][0]["failed_moves"]) for w in record["walls"]] == [
         (w["wall_seed"], w["length"], w["failed_moves"]) for w in under[:30]]
     others = json.loads((search / "heldout_14m.json").read_text())["walls"]
