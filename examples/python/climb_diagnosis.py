@@ -1,8 +1,8 @@
 """Where a learnt policy's greedy climbs go wrong, measured against every climb the wall
 allows (crux.climb_graph, docs/BASELINES.md).
 
-    climb_diagnosis.py --policy FILE --wall-seeds A:B [--physics-model static] [--oracle reach|live|nearest]
-                       [--mistakes SHARE --seed S] [--json]
+    climb_diagnosis.py --policy FILE --wall-seeds A:B [--physics-model static]
+                       [--oracle reach|live|nearest [--verdicts] [--ties first]] [--mistakes SHARE --seed S] [--json]
 
 Each move of a climb is one of: optimal (to a state one action nearer the finish), a
 shortcut (nearer by more: a move the graph's routes did not reach), a detour (no nearer,
@@ -36,7 +36,7 @@ import numpy as np
 
 import crux
 import policy_baseline as baseline
-from example_arguments import OneLineParser, wall_seed_range
+from example_arguments import OneLineParser, integer_at_least, wall_seed_range
 
 MOVE_KINDS = ("optimal", "shortcut", "detour", "into_dead_end", "within_dead_end", "failed", "failed_graph_reaches",
               "off_graph")
@@ -115,7 +115,10 @@ def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP, mi
     but for a share mistakes of uniformly random offered moves, drawn from rng. verdicts:
     None, or (wall, config): the oracle then reads the climb's own verdicts (climb_verdicts)
     instead of the graph's routes'. ties: "policy" (its greedy choice among the moves the
-    oracle leaves) or "first" (the first offered of them, the order the graph explores in)."""
+    oracle leaves) or "first" (the first offered of them, the order the graph explores in;
+    the policy's choice where the oracle leaves none)."""
+    if mistakes > 0 and rng is None:
+        raise ValueError("random moves need their stream (rng)")
     distance, moves = graph
     history = []
     raw, _ = mdp.reset()
@@ -129,6 +132,7 @@ def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP, mi
         graph_moves = moves.get(configuration, {})
         obs = mdp.numeric_observation(baseline.MAX_CANDIDATES, reach=True)
         state, slots, mask = baseline.single_features(obs, policy.max_span)
+        narrowed = None
         if oracle != "none":
             after = graph_moves if verdicts is None else climb_verdicts(*verdicts, history, holds, distance)
             narrowed = oracle_mask(mask, holds, obs["candidate_failed"][:len(holds)] > 0.5, after, oracle)
@@ -137,8 +141,8 @@ def diagnose_climb(policy, mdp, graph, oracle="none", cap=baseline.CLIMB_CAP, mi
         if mistakes > 0 and rng.random() < mistakes:
             slot = int(rng.integers(len(holds)))
             random_moves += 1
-        elif ties == "first" and oracle != "none":
-            slot = int(np.flatnonzero(mask[0])[0])
+        elif ties == "first" and narrowed is not None:
+            slot = int(np.flatnonzero(narrowed[0])[0])
         else:
             slot = baseline.greedy_slot(policy, state, slots, mask)
         raw, _, terminated, _, info = mdp.step(int(holds[slot]))
@@ -207,21 +211,29 @@ def parser():
                      "the climb) instead of the graph's routes', and the graph's distance of the state each reaches")
     top.add_argument("--ties", choices=("policy", "first"), default="policy",
                      help="among the moves the oracle leaves, the policy's greedy choice or the first offered (the "
-                     "order in which the graph explores)")
+                     "order in which the graph explores; the policy's choice where the oracle leaves none)")
     top.add_argument("--mistakes", type=baseline.unit_interval, default=0.0,
                      help="the share of choices made uniformly at random among the offered moves instead")
-    top.add_argument("--seed", type=int, default=1, help="the random moves' seed (each wall its own stream of it)")
+    top.add_argument("--seed", type=integer_at_least(0), default=1,
+                     help="the random moves' seed (each wall its own stream of it)")
     top.add_argument("--json", action="store_true", help="the whole report, per wall, as JSON")
     return top
 
 
 def main(argv=None):
-    args = parser().parse_args(argv)
+    top = parser()
+    args = top.parse_args(argv)
     for option, given in (("--verdicts", args.verdicts), ("--ties", args.ties != "policy")):
         if given and args.oracle == "none":
-            parser().error(f"{option}: acts on the oracle's choice, and --oracle is none")
-    result = diagnose(baseline.load_for_walls(args.policy, "climb_diagnosis.py"), args.wall_seeds, args.physics_model,
-                      args.oracle, args.mistakes, args.seed, args.verdicts, args.ties)
+            top.error(f"{option}: acts on the oracle's choice, and --oracle is none")
+    policy = baseline.load_for_walls(args.policy, "climb_diagnosis.py")
+    record = baseline.read_record(args.policy, baseline.POLICY_FORMAT, baseline.POLICY_VERSION, "policy file")
+    if isinstance(record.get("training"), dict) and record["training"].get("veto") is not None:
+        # The diagnosis climbs the policy's own greedy choice, which such a file's evaluate does not.
+        top.error(f"--policy: {args.policy} names a veto (reach_estimate.py train's), which the diagnosis does "
+                  "not apply")
+    result = diagnose(policy, args.wall_seeds, args.physics_model, args.oracle, args.mistakes, args.seed,
+                      args.verdicts, args.ties)
     if args.json:
         print(json.dumps(result, indent=2))
         return
