@@ -272,6 +272,14 @@ def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
     ratios = [f"{r['held_out']['mean_length_ratio']:.2f}" for r in kinematic]
     assert f"it finished {shares[0]}, {shares[1]} and {shares[2]} of the held-out walls" in flat
     assert f"at {ratios[0]}, {ratios[1]} and {ratios[2]} times the plan" in flat
+    route = pilots["route_keeping_static_walls_1100000_1100239"]
+    labelled, start = route["rounds"][0], route["start_policy"]
+    assert f"{labelled['states']} states were labelled" in flat
+    assert f"the network chose the label in {labelled['label_chosen']:.1%}".replace("%", " %") in flat
+    assert (f"finished {labelled['validation']['finished']:.1%} of the static validation walls "
+            f"({labelled['validation']['climbs']} climbs) and {labelled['held_out']['finished']:.1%} of the "
+            f"{labelled['held_out']['climbs']} held-out ones, where the 6 M policy it started from finishes "
+            f"{start['validation']['finished']:.1%} and {start['held_out']['finished']:.1%}").replace("%", " %") in flat
     classifier = pilots["good_move_classifier_static"]
     assert f"gave {classifier['slots']:,} offered slots, {classifier['good_share']:.0%} of them good" \
         .replace("%", " %") in flat
@@ -279,6 +287,13 @@ def test_baselines_diagnosis_table_and_graph_counts_quote_their_record():
     assert f"({classifier['training_auc']:.3f} on training)" in flat
     assert f"good in {classifier['top_slot_good']:.1%} of the held-out states".replace("%", " %") in flat
     assert f"is good in {classifier['random_slot_good']:.1%}".replace("%", " %") in flat
+
+
+def test_a_random_walls_holds_are_numbered_row_by_row_from_the_bottom():
+    """The route-keeping oracle's tie order, as BASELINES' DAgger pilot describes it."""
+    for seed in (1_100_000, 1_100_239, 20_000):
+        heights = np.asarray(diagnosis.crux.Wall.random(seed).positions)[:, 2].reshape(-1, 5)
+        assert (heights[:-1].max(axis=1) < heights[1:].min(axis=1)).all(), seed
 
 
 def test_the_records_6m_rows_are_what_the_diagnosis_gives_now():
