@@ -227,8 +227,11 @@ def main(argv=None):
         if given and args.oracle == "none":
             top.error(f"{option}: acts on the oracle's choice, and --oracle is none")
     policy = baseline.load_for_walls(args.policy, "climb_diagnosis.py")
-    record = baseline.read_record(args.policy, baseline.POLICY_FORMAT, baseline.POLICY_VERSION, "policy file")
-    if isinstance(record.get("training"), dict) and record["training"].get("veto") is not None:
+    try:
+        named = baseline.named_veto(args.policy)
+    except ValueError as error:
+        top.error(f"--policy: {error}")
+    if named is not None:
         # The diagnosis climbs the policy's own greedy choice, which such a file's evaluate does not.
         top.error(f"--policy: {args.policy} names a veto (reach_estimate.py train's), which the diagnosis does "
                   "not apply")

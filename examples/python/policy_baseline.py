@@ -683,16 +683,22 @@ def load_for_walls(path, prog="policy_baseline.py", option="--policy"):
     return policy
 
 
+def named_veto(path):
+    """The veto the policy file's training record names, as recorded, or None; ValueError
+    naming the file when that record is not an object."""
+    training = read_record(path, POLICY_FORMAT, POLICY_VERSION, "policy file").get("training", {})
+    if not isinstance(training, dict):
+        raise ValueError(f"{path}: its training record is not an object")
+    return training.get("veto")
+
+
 def recorded_veto(path, policy):
     """(the veto the policy file's training record names, as evaluate takes it, {"head": its
     path, "threshold"}), or (None, None) when the record names none. Such a veto is
     reach_estimate.py train's: a reach head and a threshold. The head's recorded path is
     read from the nearest folder above the policy file that holds it or, failing that, from
     the current folder. ValueError naming the file on a veto that cannot be applied."""
-    training = read_record(path, POLICY_FORMAT, POLICY_VERSION, "policy file").get("training", {})
-    if not isinstance(training, dict):
-        raise ValueError(f"{path}: its training record is not an object")
-    named = training.get("veto")
+    named = named_veto(path)
     if named is None:
         return None, None
     import reach_estimate  # it imports this module: at the top, the import would be circular
